@@ -1,0 +1,46 @@
+# User entry points: `make run`, `make test`, `make bench`. Each installs what it needs first.
+BUILD_DIR     ?= build
+ASAN_DIR      ?= build-asan
+BENCH_DIR     ?= build-bench
+JOBS          ?= $(shell nproc)
+CMAKE_FLAGS   ?=
+
+.PHONY: all deps build run test test-release test-sanitize bench format clean
+
+all: build
+
+deps:
+	@./scripts/install-deps.sh
+
+$(BUILD_DIR)/build.ninja: | deps
+	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+build: deps $(BUILD_DIR)/build.ninja
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+run: build
+	@./scripts/run.sh $(BUILD_DIR)
+
+# Every test: the Release suite, then the core tests again under ASan + UBSan.
+test: test-release test-sanitize
+
+test-release: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+test-sanitize: deps
+	cmake -S . -B $(ASAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DMESHEDIT_SANITIZE=ON \
+	    -DMESHEDIT_BUILD_BENCH=OFF $(CMAKE_FLAGS)
+	cmake --build $(ASAN_DIR) -j $(JOBS)
+	cd $(ASAN_DIR) && ctest --output-on-failure -j $(JOBS) -L core
+
+bench: deps
+	cmake -S . -B $(BENCH_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release -DMESHEDIT_BUILD_TESTS=OFF \
+	    -DMESHEDIT_BUILD_BENCH=ON $(CMAKE_FLAGS)
+	cmake --build $(BENCH_DIR) -j $(JOBS)
+	./$(BENCH_DIR)/bench/meshedit_bench
+
+format:
+	clang-format -i $$(git ls-files '*.h' '*.cpp')
+
+clean:
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(BENCH_DIR)

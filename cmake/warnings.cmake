@@ -1,0 +1,9 @@
+# meshedit_set_warnings(target): the project's warning set, applied per target.
+function(meshedit_set_warnings target)
+    target_compile_options(${target} PRIVATE
+        -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
+        -Wnon-virtual-dtor -Wold-style-cast -Woverloaded-virtual)
+    if(MESHEDIT_WERROR)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
+endfunction()

@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// Tensor-product Bezier patches and their tessellation into a welded core mesh.
+///
+/// A patch has `rows × cols` control points stored row-major, `cp[row * cols + col]` (the
+/// .bez files use 4 × 4). It is evaluated rows-by-u then column-by-v: each row is a curve in
+/// u (along `col`), evaluated at u; the resulting column of `rows` points is a curve in v,
+/// evaluated at v. Parameters are valid in [0, 1]².
+
+#include <span>
+#include <vector>
+
+#include "meshedit/core/math.h"
+#include "meshedit/core/mesh.h"
+
+namespace meshedit {
+
+/// Value and exact first partial derivatives of a patch at (u, v).
+struct PatchPoint {
+    Vec3 position;
+    Vec3 du;      ///< ∂S/∂u
+    Vec3 dv;      ///< ∂S/∂v
+    Vec3 normal;  ///< normalize(du × dv); at a degenerate point (a pole) a limit estimate
+};
+
+struct BezierPatch {
+    int rows = 4;
+    int cols = 4;
+    std::vector<Vec3> control_points;  ///< row-major, rows × cols
+
+    const Vec3& cp(int row, int col) const { return control_points[row * cols + col]; }
+    /// S(u, v) by de Casteljau, rows by u then the column by v.
+    Vec3 evaluate(double u, double v) const;
+    /// S, ∂S/∂u, ∂S/∂v and the unit normal at (u, v).
+    PatchPoint evaluate_with_derivatives(double u, double v) const;
+    /// S(u, v) by the tensor-product Bernstein sum, for tests.
+    Vec3 evaluate_bernstein(double u, double v) const;
+};
+
+struct TessellationOptions {
+    /// Quads per patch side: each patch becomes density × density quads, split into
+    /// triangles.
+    int density = 8;
+    /// Points closer than this fraction of the bounding-box diagonal are welded.
+    double weld_tolerance = 1e-7;
+};
+
+/// Tessellates the patches into one triangle mesh: samples every patch on a
+/// (density+1)² grid, welds coincident points across patch seams, drops triangles that
+/// collapse at poles, and orients every face consistently with the majority of its
+/// component (patch sets such as the teapot mix orientations). \post validate() passes.
+Mesh tessellate(std::span<const BezierPatch> patches, const TessellationOptions& options = {});
+
+}  // namespace meshedit

@@ -1,0 +1,30 @@
+#pragma once
+/// \file
+/// Face and vertex normals.
+
+#include <vector>
+
+#include "meshedit/core/mesh.h"
+
+namespace meshedit {
+
+/// Twice the area vector of `f` (Newell's formula; for a triangle, the cross product of two
+/// edges). Its direction is the face normal, its length twice the area.
+Vec3 face_area_vector(const Mesh& mesh, Face f);
+/// Unit normal of `f` (zero for a degenerate face).
+Vec3 face_normal(const Mesh& mesh, Face f);
+
+/// Unit face normals for every face index (deleted faces get zero), written into `out`
+/// (resized; its capacity is reused between calls).
+void compute_face_normals(const Mesh& mesh, std::vector<Vec3>& out);
+
+/// Area-weighted vertex normals: for each vertex, the normalised sum of the area vectors of
+/// its faces. One pass over the faces, no circulation per vertex. Isolated vertices and
+/// vertices whose faces cancel get zero. `out` is indexed by vertex index.
+void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out);
+
+/// Convenience forms returning a new vector.
+std::vector<Vec3> face_normals(const Mesh& mesh);
+std::vector<Vec3> vertex_normals(const Mesh& mesh);
+
+}  // namespace meshedit
