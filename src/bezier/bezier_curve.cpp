@@ -1,1 +1,95 @@
-// Stub: implementation in progress.
+// De Casteljau's algorithm: the single evaluation routine for curves and patches. Everything
+// here is repeated linear interpolation of a span of points; the Bernstein form exists only
+// as an independent reference for tests.
+
+#include "meshedit/bezier/bezier_curve.h"
+
+#include <cmath>
+
+#include "meshedit/core/assert.h"
+
+namespace meshedit {
+
+void de_casteljau_step(std::span<const Vec3> in, double t, std::vector<Vec3>& out) {
+    MESHEDIT_ASSERT(in.size() >= 2);
+    const std::size_t n = in.size() - 1;
+    // Writing out[i] only reads in[i] and in[i+1], so `in` may view `out` itself (in-place
+    // reduction); shrinking a vector never reallocates, so the view stays valid.
+    if (out.size() < n) {
+        out.resize(n);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        out[i] = lerp(in[i], in[i + 1], t);
+    }
+    out.resize(n);
+}
+
+Vec3 de_casteljau_reduce(std::vector<Vec3>& points, double t, Vec3* derivative) {
+    MESHEDIT_ASSERT(!points.empty());
+    const double degree = static_cast<double>(points.size() - 1);
+    while (points.size() > 2) {
+        de_casteljau_step(points, t, points);
+    }
+    if (points.size() == 1) {
+        if (derivative != nullptr) {
+            *derivative = Vec3{};
+        }
+        return points[0];
+    }
+    // The last-but-one level (two points) gives the exact tangent: B'(t) = n (Q1 − Q0).
+    if (derivative != nullptr) {
+        *derivative = degree * (points[1] - points[0]);
+    }
+    return lerp(points[0], points[1], t);
+}
+
+std::vector<std::vector<Vec3>> de_casteljau_levels(std::span<const Vec3> control, double t) {
+    MESHEDIT_ASSERT(!control.empty());
+    std::vector<std::vector<Vec3>> levels;
+    levels.reserve(control.size());
+    levels.emplace_back(control.begin(), control.end());
+    while (levels.back().size() > 1) {
+        std::vector<Vec3> next;
+        de_casteljau_step(levels.back(), t, next);
+        levels.push_back(std::move(next));
+    }
+    return levels;
+}
+
+Vec3 de_casteljau(std::span<const Vec3> control, double t) {
+    std::vector<Vec3> points(control.begin(), control.end());
+    return de_casteljau_reduce(points, t, nullptr);
+}
+
+Vec3 de_casteljau_derivative(std::span<const Vec3> control, double t) {
+    MESHEDIT_ASSERT(!control.empty());
+    std::vector<Vec3> points(control.begin(), control.end());
+    Vec3 derivative;
+    de_casteljau_reduce(points, t, &derivative);
+    return derivative;
+}
+
+Vec3 bernstein(std::span<const Vec3> control, double t) {
+    MESHEDIT_ASSERT(!control.empty());
+    const int n = static_cast<int>(control.size()) - 1;
+    Vec3 sum;
+    double binomial = 1.0;  // C(n, i), updated incrementally
+    for (int i = 0; i <= n; ++i) {
+        sum += binomial * std::pow(t, i) * std::pow(1.0 - t, n - i) * control[i];
+        binomial = binomial * (n - i) / (i + 1);
+    }
+    return sum;
+}
+
+std::vector<Vec3> BezierCurve::polyline(int samples) const {
+    MESHEDIT_ASSERT(samples >= 1);
+    std::vector<Vec3> out;
+    out.reserve(samples + 1);
+    for (int i = 0; i <= samples; ++i) {
+        // i == samples gives exactly t = 1, so the polyline ends on the last control point.
+        out.push_back(evaluate(static_cast<double>(i) / samples));
+    }
+    return out;
+}
+
+}  // namespace meshedit

@@ -1,1 +1,131 @@
-// Tests in progress.
+// De Casteljau curves against the closed Bernstein form, level structure and derivatives.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "meshedit/bezier/bezier_curve.h"
+
+namespace meshedit {
+namespace {
+
+std::vector<Vec3> random_points(std::mt19937_64& rng, int count) {
+    std::uniform_real_distribution<double> coord(-1.0, 1.0);
+    std::vector<Vec3> p(count);
+    for (Vec3& q : p) {
+        q = {coord(rng), coord(rng), coord(rng)};
+    }
+    return p;
+}
+
+double parameter(int k) {
+    return k / 100.0;
+}  // 101 values, 0 and 1 exact
+
+TEST(DeCasteljau, HandComputedQuadratic) {
+    // Midpoints (0.5,1,0) and (1.5,1,0), then their midpoint.
+    const std::vector<Vec3> p{{0, 0, 0}, {1, 2, 0}, {2, 0, 0}};
+    EXPECT_EQ(de_casteljau(p, 0.5), Vec3(1, 1, 0));
+    EXPECT_EQ(de_casteljau_derivative(p, 0.5), Vec3(2, 0, 0));
+    EXPECT_EQ(de_casteljau_derivative(p, 0.0), Vec3(2, 4, 0));  // 2 (P1 − P0)
+}
+
+TEST(DeCasteljau, MatchesBernsteinForDegreesOneToTen) {
+    std::mt19937_64 rng(20240501);
+    for (int degree = 1; degree <= 10; ++degree) {
+        const std::vector<Vec3> p = random_points(rng, degree + 1);
+        for (int k = 0; k <= 100; ++k) {
+            const double t = parameter(k);
+            EXPECT_LT(norm(de_casteljau(p, t) - bernstein(p, t)), 1e-12)
+                << "degree " << degree << " t " << t;
+        }
+    }
+}
+
+TEST(DeCasteljau, InterpolatesEndpointsExactly) {
+    std::mt19937_64 rng(7);
+    for (int degree = 0; degree <= 10; ++degree) {
+        const std::vector<Vec3> p = random_points(rng, degree + 1);
+        EXPECT_EQ(de_casteljau(p, 0.0), p.front()) << degree;
+        EXPECT_EQ(de_casteljau(p, 1.0), p.back()) << degree;
+    }
+}
+
+TEST(DeCasteljau, LevelsShrinkByOneAndAreLerps) {
+    std::mt19937_64 rng(11);
+    for (int degree = 0; degree <= 10; ++degree) {
+        const std::vector<Vec3> p = random_points(rng, degree + 1);
+        for (double t : {0.0, 0.3, 0.5, 1.0}) {
+            const auto levels = de_casteljau_levels(p, t);
+            ASSERT_EQ(levels.size(), p.size());
+            EXPECT_EQ(levels.front(), p);
+            for (std::size_t k = 1; k < levels.size(); ++k) {
+                ASSERT_EQ(levels[k].size(), levels[k - 1].size() - 1);
+                for (std::size_t i = 0; i < levels[k].size(); ++i) {
+                    EXPECT_EQ(levels[k][i], lerp(levels[k - 1][i], levels[k - 1][i + 1], t));
+                }
+            }
+            ASSERT_EQ(levels.back().size(), 1u);
+            EXPECT_EQ(levels.back()[0], de_casteljau(p, t));
+        }
+    }
+}
+
+TEST(DeCasteljau, StepWorksInPlace) {
+    std::vector<Vec3> p{{0, 0, 0}, {2, 0, 0}, {2, 4, 0}};
+    de_casteljau_step(p, 0.25, p);
+    ASSERT_EQ(p.size(), 2u);
+    EXPECT_EQ(p[0], Vec3(0.5, 0, 0));
+    EXPECT_EQ(p[1], Vec3(2, 1, 0));
+}
+
+TEST(DeCasteljau, DerivativeMatchesClosedFormAndFiniteDifference) {
+    std::mt19937_64 rng(99);
+    for (int degree = 1; degree <= 10; ++degree) {
+        const std::vector<Vec3> p = random_points(rng, degree + 1);
+        // Closed form: n · Bernstein of the forward differences.
+        std::vector<Vec3> diff;
+        for (int i = 0; i < degree; ++i) {
+            diff.push_back(degree * (p[i + 1] - p[i]));
+        }
+        for (int k = 0; k <= 100; ++k) {
+            const double t = parameter(k);
+            const Vec3 d = de_casteljau_derivative(p, t);
+            EXPECT_LT(norm(d - bernstein(diff, t)), 1e-11) << degree << " " << t;
+            // Central difference (one-sided at the ends), O(h²) resp. O(h) accurate.
+            const double h = 1e-6;
+            const double t0 = std::max(0.0, t - h), t1 = std::min(1.0, t + h);
+            const Vec3 fd = (de_casteljau(p, t1) - de_casteljau(p, t0)) / (t1 - t0);
+            EXPECT_LT(norm(d - fd), 1e-3 * std::max(1.0, norm(d))) << degree << " " << t;
+        }
+    }
+    EXPECT_EQ(de_casteljau_derivative(std::vector<Vec3>{{1, 2, 3}}, 0.5), Vec3());
+}
+
+TEST(DeCasteljau, ReduceReturnsValueAndTangentTogether) {
+    std::mt19937_64 rng(5);
+    const std::vector<Vec3> p = random_points(rng, 6);
+    std::vector<Vec3> buffer = p;
+    Vec3 tangent;
+    const Vec3 value = de_casteljau_reduce(buffer, 0.4, &tangent);
+    EXPECT_EQ(value, de_casteljau(p, 0.4));
+    EXPECT_EQ(tangent, de_casteljau_derivative(p, 0.4));
+}
+
+TEST(BezierCurve, PolylineSamplesUniformly) {
+    const BezierCurve curve{{{0, 0, 0}, {1, 1, 0}, {2, -1, 0}, {3, 0, 0}}};
+    EXPECT_EQ(curve.degree(), 3);
+    const std::vector<Vec3> line = curve.polyline(8);
+    ASSERT_EQ(line.size(), 9u);
+    EXPECT_EQ(line.front(), curve.control_points.front());
+    EXPECT_EQ(line.back(), curve.control_points.back());
+    for (int i = 0; i <= 8; ++i) {
+        EXPECT_EQ(line[i], curve.evaluate(i / 8.0));
+    }
+    EXPECT_EQ(curve.levels(0.5).size(), 4u);
+}
+
+}  // namespace
+}  // namespace meshedit

@@ -1,1 +1,154 @@
-// Tests in progress.
+// Face and vertex normals against hand-computed values.
+
+#include "meshedit/core/normals.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "meshedit/core/shapes.h"
+#include "support/fixtures.h"
+#include "support/mesh_compare.h"
+
+namespace meshedit {
+namespace {
+
+::testing::AssertionResult near(const Vec3& actual, const Vec3& expected, double tol = 1e-15) {
+    if (norm(actual - expected) <= tol) {
+        return ::testing::AssertionSuccess();
+    }
+    return ::testing::AssertionFailure()
+           << "(" << actual.x << ", " << actual.y << ", " << actual.z << ") != (" << expected.x
+           << ", " << expected.y << ", " << expected.z << ")";
+}
+
+// Two triangles of different areas and directions sharing edge 0-1:
+//
+//            2 (0,1,0)
+//            | `.
+//            |   `.        face 0 = (0,1,2): area vector (0,0,1)
+//  (0,0,0)   0 ---- 1 (1,0,0)
+//             `.  .'       face 1 = (1,0,3), 3 = (0,-2,2): area vector (0,2,2)
+//               3          (tilted up out of the plane)
+//
+// Vertex 0's normal is the area-weighted sum (0,2,3)/√13, not the mean of the two unit
+// normals, which would be (0,1,1+√2)/|…|.
+Mesh hinge() {
+    return test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -2, 2}},
+                                 {{0, 1, 2}, {1, 0, 3}});
+}
+
+TEST(Normals, HingeIsAreaWeighted) {
+    const Mesh mesh = hinge();
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(face_area_vector(mesh, Face(0)), Vec3(0, 0, 1));
+    EXPECT_EQ(face_area_vector(mesh, Face(1)), Vec3(0, 2, 2));
+    EXPECT_TRUE(near(face_normal(mesh, Face(1)), Vec3(0, 1, 1) / std::sqrt(2.0)));
+
+    const std::vector<Vec3> n = vertex_normals(mesh);
+    ASSERT_EQ(n.size(), 4u);
+    const Vec3 shared = Vec3(0, 2, 3) / std::sqrt(13.0);
+    EXPECT_TRUE(near(n[0], shared));
+    EXPECT_TRUE(near(n[1], shared));
+    EXPECT_TRUE(near(n[2], Vec3(0, 0, 1)));
+    EXPECT_TRUE(near(n[3], Vec3(0, 1, 1) / std::sqrt(2.0)));
+    // The unweighted average really is different, so the test discriminates.
+    const Vec3 plain = normalize(Vec3(0, 0, 1) + Vec3(0, 1, 1) / std::sqrt(2.0));
+    EXPECT_GT(norm(plain - shared), 1e-2);
+}
+
+TEST(Normals, PolygonUsesNewellsSum) {
+    // Planar 2 × 1 rectangle: twice the area is 4, along +z.
+    const Mesh rect =
+        test::mesh_from_faces({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}});
+    ASSERT_VALID(rect);
+    EXPECT_EQ(face_area_vector(rect, Face(0)), Vec3(0, 0, 4));
+
+    // Non-planar quad: Newell's components Σ (y_i − y_i+1)(z_i + z_i+1) etc. give (−1,−1,2).
+    const Mesh warped =
+        test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 1}, {0, 1, 0}}, {{0, 1, 2, 3}});
+    ASSERT_VALID(warped);
+    EXPECT_EQ(face_area_vector(warped, Face(0)), Vec3(-1, -1, 2));
+    EXPECT_TRUE(near(face_normal(warped, Face(0)), Vec3(-1, -1, 2) / std::sqrt(6.0)));
+    // All four corners of a lone face share its normal.
+    for (const Vec3& n : vertex_normals(warped)) {
+        EXPECT_TRUE(near(n, Vec3(-1, -1, 2) / std::sqrt(6.0)));
+    }
+}
+
+TEST(Normals, CubeFaceNormalsAreAxes) {
+    const Mesh mesh = shapes::cube();
+    const std::vector<Vec3> n = face_normals(mesh);
+    // Faces come in pairs per side, in the order -x, +x, -y, +y, -z, +z (shapes.h).
+    const Vec3 sides[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    ASSERT_EQ(n.size(), 12u);
+    for (std::size_t f = 0; f < 12; ++f) {
+        EXPECT_EQ(n[f], sides[f / 2]) << f;
+        EXPECT_EQ(face_area_vector(mesh, Face(std::uint32_t(f))), 4.0 * sides[f / 2]) << f;
+    }
+}
+
+TEST(Normals, CubeVertexNormalsFollowTheDiagonals) {
+    // Vertex 0 lies in both triangles of its three sides; vertex 1 in both triangles of +x
+    // but one each of -y and -z, so its normal leans towards +x: (8,-4,-4)/|…|.
+    const std::vector<Vec3> n = vertex_normals(shapes::cube());
+    EXPECT_TRUE(near(n[0], Vec3(-1, -1, -1) / std::sqrt(3.0)));
+    EXPECT_TRUE(near(n[7], Vec3(1, 1, 1) / std::sqrt(3.0)));
+    EXPECT_TRUE(near(n[1], Vec3(2, -1, -1) / std::sqrt(6.0)));
+}
+
+TEST(Normals, SphereNormalsApproximatePositions) {
+    // Central projection leaves quad_sphere's corner quads skewed, hence the loose bound.
+    for (const Mesh& mesh : {shapes::icosphere(3), shapes::quad_sphere(16)}) {
+        const std::vector<Vec3> n = vertex_normals(mesh);
+        for (Vertex v : mesh.vertices()) {
+            EXPECT_NEAR(norm(n[v.idx()]), 1.0, 1e-14);
+            EXPECT_LT(norm(n[v.idx()] - mesh.position(v)), 2e-2) << v.idx();
+        }
+    }
+    // Perfectly symmetric one-rings: the icosahedron's normals are its positions.
+    const Mesh ico = shapes::icosahedron();
+    const std::vector<Vec3> n = vertex_normals(ico);
+    for (Vertex v : ico.vertices()) {
+        EXPECT_TRUE(near(n[v.idx()], ico.position(v), 1e-14));
+    }
+}
+
+TEST(Normals, IsolatedAndDeletedElementsGetZero) {
+    // Vertex 3 is referenced by no face.
+    Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 5}}, {{0, 1, 2}});
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(vertex_normals(mesh)[3], Vec3());
+
+    Mesh two = test::two_triangles();
+    two.mark_deleted(Face(1));
+    const std::vector<Vec3> fn = face_normals(two);
+    ASSERT_EQ(fn.size(), 2u);
+    EXPECT_EQ(fn[0], Vec3(0, 0, 1));
+    EXPECT_EQ(fn[1], Vec3());
+}
+
+TEST(Normals, BuffersAreReused) {
+    const Mesh big = shapes::icosphere(2);
+    const Mesh small = shapes::tetrahedron();
+    std::vector<Vec3> buffer;
+    compute_face_normals(big, buffer);  // the largest request: 320 faces
+    const Vec3* data = buffer.data();
+    compute_vertex_normals(big, buffer);
+    EXPECT_EQ(buffer.size(), big.vertices_size());
+    EXPECT_EQ(buffer.data(), data);
+    compute_vertex_normals(small, buffer);
+    EXPECT_EQ(buffer.size(), 4u);
+    EXPECT_EQ(buffer.data(), data);
+}
+
+TEST(Normals, FarFromOriginKeepsPrecision) {
+    // Newell's sum about the first corner does not lose the normal to cancellation.
+    const Vec3 o(1e8, -3e8, 2e8);
+    const Mesh mesh = test::mesh_from_faces(
+        {o, o + Vec3(1, 0, 0), o + Vec3(1, 1, 0), o + Vec3(0, 1, 0)}, {{0, 1, 2, 3}});
+    EXPECT_EQ(face_normal(mesh, Face(0)), Vec3(0, 0, 1));
+}
+
+}  // namespace
+}  // namespace meshedit

@@ -18,9 +18,12 @@ namespace meshedit {
 /// Value and exact first partial derivatives of a patch at (u, v).
 struct PatchPoint {
     Vec3 position;
-    Vec3 du;      ///< ∂S/∂u
-    Vec3 dv;      ///< ∂S/∂v
-    Vec3 normal;  ///< normalize(du × dv); at a degenerate point (a pole) a limit estimate
+    Vec3 du;  ///< ∂S/∂u
+    Vec3 dv;  ///< ∂S/∂v
+    /// normalize(du × dv); where that cross product degenerates (a pole, a collapsed edge)
+    /// it is taken at a point inset by 1e-6 (then 1e-4, 1e-2) towards the patch centre,
+    /// which approximates the limit normal with the sign of the neighbouring points.
+    Vec3 normal;
 };
 
 struct BezierPatch {
@@ -46,9 +49,16 @@ struct TessellationOptions {
 };
 
 /// Tessellates the patches into one triangle mesh: samples every patch on a
-/// (density+1)² grid, welds coincident points across patch seams, drops triangles that
-/// collapse at poles, and orients every face consistently with the majority of its
-/// component (patch sets such as the teapot mix orientations). \post validate() passes.
+/// (density+1)² grid (quad (i, j) split along its (i,j)–(i+1,j+1) diagonal unless that
+/// diagonal's ends weld together), welds points within `weld_tolerance` × bounding-box
+/// diagonal across patch seams (spatial hash; the survivors are pairwise farther apart),
+/// drops triangles with a repeated welded corner (poles), and orients the faces of each
+/// connected component consistently before building, since patch sets such as the teapot mix
+/// orientations. Each component then faces outward (positive signed volume about its
+/// centroid) if it is closed-ish (its face area vectors sum to at most half their total
+/// length), else it keeps the area-weighted majority of the input orientation. Vertices are
+/// numbered in order of first use by the faces; no isolated vertices.
+/// \post validate() passes.
 Mesh tessellate(std::span<const BezierPatch> patches, const TessellationOptions& options = {});
 
 }  // namespace meshedit

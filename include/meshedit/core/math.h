@@ -37,7 +37,13 @@ struct Vec3 {
         z *= s;
         return *this;
     }
-    constexpr Vec3& operator/=(double s) { return *this *= (1.0 / s); }
+    // True division (not multiplication by 1/s): correctly rounded, so exact cases stay exact.
+    constexpr Vec3& operator/=(double s) {
+        x /= s;
+        y /= s;
+        z /= s;
+        return *this;
+    }
 
     constexpr bool operator==(const Vec3&) const = default;
 };
