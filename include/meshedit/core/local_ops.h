@@ -4,7 +4,7 @@
 /// it): each op either succeeds, or returns a refusal with a reason and leaves the mesh
 /// exactly as it was. Each has a pure predicate (`is_*_ok`) the UI can call to grey out a
 /// command; the op calls the same predicate first. Diagrams: docs/halfedge.md and above each
-/// op in src/core/local_ops.cpp.
+/// op in src/core/flip_split.cpp, collapse.cpp and triangulate.cpp.
 
 #include <string_view>
 
@@ -51,32 +51,45 @@ private:
 /// not already exist (and would not join a vertex to itself).
 OpStatus is_flip_ok(const Mesh& mesh, Edge e);
 /// Flips `e` inside its two triangles: (a,b,c),(c,b,d) → (a,d,c),(a,b,d) where b-c is `e`.
-/// O(1), no allocation. \return the same edge handle, now joining a and d.
+/// No allocation; O(1) relinking after an O(valence(a)) search for an existing a-d edge.
+/// \return the same edge handle, now joining a and d.
 OpResult<Edge> flip(Mesh& mesh, Edge e);
 
 /// \return ok if `e` is live and every face beside it is a triangle.
 OpStatus is_split_ok(const Mesh& mesh, Edge e);
 /// Splits `e` at its midpoint. An interior edge's two triangles become four; a boundary
-/// edge's one triangle becomes two and the boundary gains the vertex. O(1), no allocation.
-/// \return the new vertex m; `halfedge(m)` runs along the original edge, from m towards
-/// `to_vertex(halfedge(e, 0))`, and `edge(halfedge(m))` is `e` itself (shortened).
+/// edge's one triangle becomes two and the boundary gains the vertex. O(1); no allocation
+/// beyond appending the new elements. A crease edge (kCreaseProperty) leaves two creases.
+/// \return the new vertex m. `halfedge(m)` is `halfedge(e, i)`, where i = 0 for an interior
+/// edge and i is the boundary side for a boundary edge: it runs along the original edge from
+/// m towards the old `to_vertex(halfedge(e, i))`, and `e` itself (shortened) is that half.
+/// So on a boundary edge `halfedge(m)` is m's outgoing boundary halfedge, as the
+/// boundary-anchor rule requires.
 OpResult<Vertex> split(Mesh& mesh, Edge e);
 
-/// \return ok if collapsing `e` keeps the mesh a valid manifold: the link condition holds,
-/// no face would lose its last edges (a boundary-spanning edge, a triangle with both other
-/// edges on the boundary), and the mesh would not shrink below a tetrahedron.
+/// \return ok if collapsing `e` keeps the mesh a valid manifold: the faces beside `e` are
+/// triangles; `e` is not an interior edge joining two boundary vertices (that would pinch
+/// the surface); the link condition holds (the endpoints' common neighbours are exactly the
+/// corners opposite `e`, and no other polygon holds both endpoints); and nothing degenerates
+/// (a tetrahedron, a lone triangle, a two-triangle pillow).
 OpStatus is_collapse_ok(const Mesh& mesh, Edge e);
 /// Collapses `e` to its midpoint. The endpoint with the smaller index survives (so CLI edge
-/// names stay predictable); the other endpoint, `e`, and the faces degenerating with it are
-/// deleted (garbage collection is left to the caller). \return the surviving vertex.
+/// names stay predictable); the other endpoint, `e`, the triangles beside `e` and one of the
+/// two edges each of them merges are deleted (garbage collection is left to the caller).
+/// O(valence). \return the surviving vertex, anchored at an outgoing boundary halfedge if
+/// it is on the boundary.
 OpResult<Vertex> collapse(Mesh& mesh, Edge e);
 
-/// \return ok if `f` is live (a triangle is ok: triangulating it changes nothing).
+/// \return ok if `f` is live and can be cut into triangles without adding an edge that
+/// already exists (a triangle is ok: triangulating it changes nothing).
 OpStatus is_triangulate_ok(const Mesh& mesh, Face f);
 /// Splits polygon `f` into triangles by diagonals inside it, never adding an edge that
-/// already exists. \return `f` (now one of the triangles).
+/// already exists: a fan from `from_vertex(halfedge(f))` if possible, else a fan from the
+/// first corner after it that allows one, else any valid triangulation (O(n³) search).
+/// \return `f` (now one of the triangles).
 OpResult<Face> triangulate(Mesh& mesh, Face f);
-/// Triangulates every non-triangle face. \return how many faces were triangulated.
+/// Triangulates every non-triangle face; faces that is_triangulate_ok() refuses are left
+/// as they are. \return how many faces were triangulated.
 std::size_t triangulate(Mesh& mesh);
 
 }  // namespace meshedit
