@@ -56,23 +56,6 @@ namespace {
 
 using Cycle = std::vector<Vec3>;
 
-bool lex_less(const Vec3& a, const Vec3& b) {
-    if (a.x != b.x) {
-        return a.x < b.x;
-    }
-    if (a.y != b.y) {
-        return a.y < b.y;
-    }
-    return a.z < b.z;
-}
-
-// Rotates the cycle to start at its lexicographically smallest corner.
-Cycle canonical(Cycle c) {
-    auto first = std::min_element(c.begin(), c.end(), lex_less);
-    std::rotate(c.begin(), first, c.end());
-    return c;
-}
-
 std::vector<Cycle> face_cycles(const Mesh& mesh) {
     std::vector<Cycle> out;
     for (Face f : mesh.faces()) {
@@ -80,21 +63,29 @@ std::vector<Cycle> face_cycles(const Mesh& mesh) {
         for (Vertex v : mesh.vertices(f)) {
             c.push_back(mesh.position(v));
         }
-        out.push_back(canonical(std::move(c)));
+        out.push_back(std::move(c));
     }
     return out;
 }
 
+// Equal up to rotation (same orientation), each corner within `tol`. Rotations are tried
+// rather than normalised, because choosing a "first" corner by exact comparison would
+// depend on rounding.
 bool close(const Cycle& a, const Cycle& b, double tol) {
     if (a.size() != b.size()) {
         return false;
     }
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        if (norm(a[i] - b[i]) > tol) {
-            return false;
+    const std::size_t k = a.size();
+    for (std::size_t shift = 0; shift < k; ++shift) {
+        bool all = true;
+        for (std::size_t i = 0; i < k && all; ++i) {
+            all = norm(a[i] - b[(i + shift) % k]) <= tol;
+        }
+        if (all) {
+            return true;
         }
     }
-    return true;
+    return false;
 }
 
 std::string describe(const Cycle& c) {

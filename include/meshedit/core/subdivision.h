@@ -15,12 +15,14 @@ inline constexpr const char* kCreaseProperty = "e:crease";
 /// Weight `u` for an interior vertex of valence n: `p' = (1 - n·u)·p + u·Σ neighbours`.
 enum class LoopWeights {
     Warren,  ///< u = 3/16 for n = 3, else 3/(8n) (the default, as in CS184)
-    Loop,    ///< Loop's original: u = (5/8 − (3/8 + 1/4·cos(2π/n))²) / n
+    Loop,    ///< Loop's original: u = (5/8 − (3/8 + 1/4·cos(2π/n))²) / n; equal to
+             ///< Warren's at n = 3 (3/16) and n = 6 (1/16), different at every other n
 };
 
 struct LoopOptions {
     LoopWeights weights = LoopWeights::Warren;
-    /// Called with the fraction done (0…1) during long runs; may be empty.
+    /// Called with the fraction done (0…1), non-decreasing, at coarse intervals (about a
+    /// hundred calls per million faces), last with exactly 1; may be empty.
     std::function<void(double)> progress;
 };
 
@@ -32,18 +34,35 @@ struct LoopReport {
 
 /// One level of Loop subdivision: every triangle becomes four.
 ///
-/// Old vertices keep their indices; the vertex inserted on old edge `e` gets index
-/// `V + e` (after garbage collection, which this performs first). Edge points are
-/// `3/8(A+B) + 1/8(C+D)`, or the midpoint on boundary and crease edges ("sharp" edges).
-/// A vertex on no sharp edge, or on exactly one (a dart), moves by the chosen weights; a
-/// vertex on exactly two sharp edges uses `3/4·p + 1/8·(a + b)` with their far ends a, b;
-/// a vertex on three or more sharp edges is a corner and stays put.
-/// Both halves of a crease edge stay creases. \post F' = 4F on a triangle mesh.
+/// Non-triangle faces are triangulated first (counted in the report) and garbage is
+/// collected first. Then, with V, E, F the counts at that point: old vertices keep their
+/// indices and the vertex inserted on edge `e` gets index `V + e`; the result has V + E
+/// vertices, 2E + 3F edges and 4F faces. Edge points are `3/8(A+B) + 1/8(C+D)`, or the
+/// midpoint on boundary and crease edges ("sharp" edges). A vertex on no sharp edge, or on
+/// exactly one (a dart), moves by the chosen weights; a vertex on exactly two sharp edges
+/// uses `3/4·p + 1/8·(a + b)` with their far ends a, b; a vertex on three or more sharp edges
+/// is a corner and stays put. Both halves of a crease edge stay creases; the new edges
+/// inside old faces are not creases.
+///
+/// Properties: vertex properties keep their values on the old vertices, new vertices get the
+/// default. Halfedge, edge and face properties other than kCreaseProperty are reset to their
+/// defaults (the elements they described no longer exist).
+/// The edge and face layout of the result is documented in src/core/subdivision.cpp.
+/// \throws std::length_error if the result would not fit 32-bit indices (checked before
+///         anything but the triangulation and collection above changes). If building the
+///         result throws (std::bad_alloc), the mesh is left empty but valid.
+/// \post validate(mesh) passes; F' = 4F.
 LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options = {});
 
-/// The classic algorithm (split every original edge, flip each new edge joining an old and a
-/// new vertex, then move), kept as the reference the fast path is tested against. It gives
-/// the same vertex indices, positions and faces as loop_subdivide().
+/// The classic algorithm (compute all positions, split every original edge in index order,
+/// flip each new edge joining an old and a new vertex, then move), kept as the reference the
+/// fast path is tested against. Built on split() and flip(); several times slower.
+/// For the same input it gives the same vertex indices, faces (by vertex index), crease edges
+/// and positions (to rounding) as loop_subdivide(). Edge and face indices differ, so after
+/// several levels the two results describe the same surface with different numbering.
+/// Properties behave as split() and flip() leave them (old elements keep their values).
+/// \throws std::logic_error if split() or flip() refuses (never on a valid manifold
+///         triangle mesh without doubled triangles).
 LoopReport loop_subdivide_classic(Mesh& mesh, const LoopOptions& options = {});
 
 }  // namespace meshedit
