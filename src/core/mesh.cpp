@@ -17,53 +17,44 @@ Mesh::Mesh(const Mesh& other)
     bind_connectivity();
 }
 
-Mesh::Mesh(Mesh&& other) noexcept
-    : vprops_(std::move(other.vprops_)),
-      hprops_(std::move(other.hprops_)),
-      eprops_(std::move(other.eprops_)),
-      fprops_(std::move(other.fprops_)),
-      n_deleted_vertices_(other.n_deleted_vertices_),
-      n_deleted_edges_(other.n_deleted_edges_),
-      n_deleted_faces_(other.n_deleted_faces_) {
-    bind_connectivity();
-    // Leave the source a valid empty mesh rather than one with dangling views.
-    other.vprops_ = PropertyContainer();
-    other.hprops_ = PropertyContainer();
-    other.eprops_ = PropertyContainer();
-    other.fprops_ = PropertyContainer();
-    other.add_connectivity();
-    other.n_deleted_vertices_ = other.n_deleted_edges_ = other.n_deleted_faces_ = 0;
+Mesh::Mesh(Mesh&& other) noexcept {
+    take_from(other);
 }
 
 Mesh& Mesh::operator=(const Mesh& other) {
     if (this != &other) {
         Mesh copy(other);
-        *this = std::move(copy);
+        take_from(copy);
     }
     return *this;
 }
 
 Mesh& Mesh::operator=(Mesh&& other) noexcept {
     if (this != &other) {
-        vprops_ = std::move(other.vprops_);
-        hprops_ = std::move(other.hprops_);
-        eprops_ = std::move(other.eprops_);
-        fprops_ = std::move(other.fprops_);
-        n_deleted_vertices_ = other.n_deleted_vertices_;
-        n_deleted_edges_ = other.n_deleted_edges_;
-        n_deleted_faces_ = other.n_deleted_faces_;
-        bind_connectivity();
-        other.vprops_ = PropertyContainer();
-        other.hprops_ = PropertyContainer();
-        other.eprops_ = PropertyContainer();
-        other.fprops_ = PropertyContainer();
-        other.add_connectivity();
-        other.n_deleted_vertices_ = other.n_deleted_edges_ = other.n_deleted_faces_ = 0;
+        take_from(other);
     }
     return *this;
 }
 
+void Mesh::take_from(Mesh& other) noexcept {
+    vprops_ = std::move(other.vprops_);
+    hprops_ = std::move(other.hprops_);
+    eprops_ = std::move(other.eprops_);
+    fprops_ = std::move(other.fprops_);
+    n_deleted_vertices_ = other.n_deleted_vertices_;
+    n_deleted_edges_ = other.n_deleted_edges_;
+    n_deleted_faces_ = other.n_deleted_faces_;
+    bind_connectivity();
+    // Leave the source a valid empty mesh rather than one with dangling views.
+    other.add_connectivity();
+    other.n_deleted_vertices_ = other.n_deleted_edges_ = other.n_deleted_faces_ = 0;
+}
+
 void Mesh::add_connectivity() {
+    vprops_ = PropertyContainer();
+    hprops_ = PropertyContainer();
+    eprops_ = PropertyContainer();
+    fprops_ = PropertyContainer();
     vpoint_ = VertexProperty<Vec3>(vprops_.add<Vec3>("v:position"));
     vhalfedge_ = VertexProperty<Halfedge>(vprops_.add<Halfedge>("v:halfedge"));
     vdeleted_ = VertexProperty<std::uint8_t>(vprops_.add<std::uint8_t>("v:deleted", 0));

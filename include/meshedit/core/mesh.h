@@ -267,6 +267,9 @@ private:
         }
     }
     bool is_connectivity(const BasePropertyArray* array) const;
+    /// Moves `other`'s arrays here and leaves `other` a valid empty mesh.
+    void take_from(Mesh& other) noexcept;
+    /// Resets every container to the connectivity properties only, at size 0.
     void add_connectivity();
     void bind_connectivity();
     void count_deleted();
