@@ -7,6 +7,8 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libgtest-dev libgmock-dev libbenchmark-dev
     clang-format
+    libpugixml-dev libtinygltf-dev nlohmann-json3-dev libtinyobjloader-dev
+    assimp-utils assimp-testmodels
 )
 
 missing=()

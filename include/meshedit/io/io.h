@@ -1,0 +1,82 @@
+#pragma once
+/// \file
+/// Reading and writing meshes and Bezier data, dispatched by file extension. Each format has
+/// its own read_X/write_X pair (collada.h, gltf.h, obj.h, bez.h); this is the front door.
+///
+/// Readers produce a MeshSoup (an indexed polygon soup plus what the file said about it);
+/// only build_mesh() turns it into a halfedge mesh. Writers always write a temporary file in
+/// the target's folder and rename it over the target, so a failed write never leaves a
+/// partial or damaged file.
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "meshedit/bezier/bezier_curve.h"
+#include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/build.h"
+#include "meshedit/core/mesh.h"
+#include "meshedit/io/io_error.h"
+
+namespace meshedit {
+
+/// A mesh as a file holds it, before it becomes a halfedge mesh.
+struct MeshSoup {
+    PolygonSoup soup;
+    /// Per-vertex normals from the file when it has them in a per-vertex form (else empty).
+    std::vector<Vec3> normals;
+    /// Crease edges as vertex index pairs (MeshEdit's own `<extra>` in COLLADA); read_mesh()
+    /// marks them in the "e:crease" edge property.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> creases;
+    /// `<unit meter="…">` of a COLLADA file (1 for formats without units).
+    double unit_meter = 1.0;
+    /// Things the reader changed or ignored that a user should hear about ("converted Z_UP
+    /// to Y_UP", "ignored 2 <lines> blocks"); one sentence each.
+    std::vector<std::string> notices;
+};
+
+/// Options for writers.
+struct IoFlags {
+    bool write_normals = true;  ///< area-weighted vertex normals, where the format has them
+};
+
+/// Formats by extension (lower-case, with dot): ".dae", ".gltf", ".glb", ".obj".
+bool is_mesh_extension(const std::string& extension);
+
+/// Reads a mesh file into a soup. \throws IoError (unknown extension, missing file, bad
+/// content), naming the file and the place.
+MeshSoup read_soup(const std::filesystem::path& path);
+
+/// A loaded, built mesh with everything the user should be told about it.
+struct LoadedMesh {
+    Mesh mesh;
+    BuildReport repairs;               ///< what build_mesh() repaired
+    std::vector<std::string> notices;  ///< from the reader
+    double unit_meter = 1.0;
+};
+
+/// read_soup() + build_mesh(). \throws IoError (a TopologyError becomes an IoError naming
+/// the file).
+LoadedMesh read_mesh(const std::filesystem::path& path);
+
+/// Writes `mesh` in the format of `path`'s extension (garbage-collected copy if needed),
+/// atomically. \throws IoError.
+void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags = {});
+
+/// Runs `write(tmp)` on a temporary path in `target`'s folder, then renames it over
+/// `target`; on any failure the temporary file is removed and `target` is untouched.
+/// \throws IoError naming `target` if the folder is not writable or the rename fails.
+void write_atomically(const std::filesystem::path& target,
+                      const std::function<void(const std::filesystem::path& tmp)>& write);
+
+/// Bezier patches of a .bez file (SPEC §2). \throws IoError.
+std::vector<BezierPatch> read_bez(const std::filesystem::path& path);
+/// A Bezier curve of a .bzc file (SPEC §2: N, then N points x y; N ≥ 2). \throws IoError.
+BezierCurve read_bzc(const std::filesystem::path& path);
+/// Writes a .bzc file atomically. \throws IoError.
+void write_bzc(const BezierCurve& curve, const std::filesystem::path& path);
+
+}  // namespace meshedit

@@ -1,0 +1,490 @@
+// COLLADA reader, part 2: one <geometry>/<mesh> (sources, accessors, <vertices>, primitive
+// blocks, MeshEdit's crease <extra>) into a local polygon soup indexed by position.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <unordered_map>
+
+#include "collada_detail.h"
+
+namespace meshedit::collada {
+namespace {
+
+// Offsets beyond this are certainly broken files; it also bounds the tuple stride.
+constexpr std::uint64_t kMaxInputOffset = 1u << 16;
+
+std::string str(std::uint64_t n) {
+    return std::to_string(n);
+}
+
+// A source's accessor: `count` tuples of `stride` numbers starting at `offset`, of which
+// `components` (positions of the named <param>s) are used.
+struct Accessor {
+    pugi::xml_node node;
+    std::uint64_t count = 0;
+    std::uint64_t stride = 1;
+    std::uint64_t offset = 0;
+    std::vector<std::uint64_t> components;
+};
+
+Accessor read_accessor(const Document& doc, pugi::xml_node source) {
+    if (std::strcmp(source.name(), "source") != 0) {
+        doc.fail(source, std::string("expected a <source>, found <") + source.name() + ">");
+    }
+    Accessor a;
+    a.node = source.child("technique_common").child("accessor");
+    if (!a.node) {
+        doc.fail(source, "missing <technique_common>/<accessor>");
+    }
+    if (!a.node.attribute("count")) {
+        doc.fail(a.node, "missing count attribute");
+    }
+    a.count = count_attribute(doc, a.node, "count", 0);
+    a.stride = count_attribute(doc, a.node, "stride", 1);
+    a.offset = count_attribute(doc, a.node, "offset", 0);
+    if (a.stride == 0) {
+        doc.fail(a.node, "stride=\"0\"");
+    }
+    // A <param> without a name is a slot the reader skips (COLLADA 1.4.1 §5 "accessor").
+    std::uint64_t slot = 0;
+    bool any_param = false;
+    for (pugi::xml_node param : a.node.children("param")) {
+        any_param = true;
+        if (*param.attribute("name").value() != '\0') {
+            a.components.push_back(slot);
+        }
+        ++slot;
+    }
+    if (!any_param) {
+        for (std::uint64_t i = 0; i < std::min<std::uint64_t>(a.stride, 4); ++i) {
+            a.components.push_back(i);
+        }
+    }
+    if (slot > a.stride) {
+        doc.fail(a.node, "has " + str(slot) + " <param>s but stride=\"" + str(a.stride) + "\"");
+    }
+    return a;
+}
+
+// The tuples of a 3-component source (positions, normals), checked against its array.
+std::vector<Vec3> read_vec3_source(const Document& doc, pugi::xml_node source, const char* what) {
+    const Accessor a = read_accessor(doc, source);
+    if (a.components.size() < 3) {
+        doc.fail(a.node, std::string(what) + " need 3 components (X, Y, Z); the accessor has " +
+                             str(a.components.size()));
+    }
+    const pugi::xml_attribute url = a.node.attribute("source");
+    const pugi::xml_node array =
+        url ? doc.resolve(url.value(), a.node) : source.child("float_array");
+    if (!array || std::strcmp(array.name(), "float_array") != 0) {
+        doc.fail(a.node, std::string("the accessor's source is not a <float_array>"));
+    }
+    const std::vector<double> values = parse_doubles(doc, array);
+    const std::uint64_t size = values.size();
+    if (array.attribute("count") && count_attribute(doc, array, "count", 0) != size) {
+        doc.fail(array, "count=\"" + std::string(array.attribute("count").value()) +
+                            "\" but it holds " + str(size) + " numbers");
+    }
+    // Checked before allocating, so a huge count attribute cannot cost memory.
+    const std::uint64_t last_component = a.components[2];
+    const bool fits =
+        a.count == 0 || (a.offset + last_component < size &&
+                         (a.count - 1) <= (size - 1 - a.offset - last_component) / a.stride);
+    if (!fits) {
+        doc.fail(a.node, "reads " + str(a.count) + " tuples of stride " + str(a.stride) +
+                             " from offset " + str(a.offset) + ", past the end of its " +
+                             "<float_array> (" + str(size) + " numbers)");
+    }
+    std::vector<Vec3> tuples(a.count);
+    for (std::uint64_t i = 0; i < a.count; ++i) {
+        const std::uint64_t base = a.offset + i * a.stride;
+        tuples[i] = {values[base + a.components[0]], values[base + a.components[1]],
+                     values[base + a.components[2]]};
+    }
+    return tuples;
+}
+
+void check_finite_positions(const Document& doc, pugi::xml_node source,
+                            const std::vector<Vec3>& positions) {
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+            if (!std::isfinite(positions[i][k])) {
+                const pugi::xml_node array = source.child("float_array");
+                doc.fail(array ? array : source,
+                         "position " + str(i) + " has a non-finite coordinate (" +
+                             (std::isnan(positions[i][k]) ? "NaN" : "infinity") + ")");
+            }
+        }
+    }
+}
+
+class GeometryReader {
+public:
+    GeometryReader(const Document& doc, pugi::xml_node geometry) : doc_(doc), geometry_(geometry) {}
+
+    GeometryData read();
+
+private:
+    struct Input {
+        pugi::xml_node node;
+        std::string_view semantic;
+        std::uint64_t offset = 0;
+        std::uint64_t limit = 0;                 // number of tuples an index may address
+        const std::vector<Vec3>* vec = nullptr;  // normals, for NORMAL
+    };
+    struct Inputs {
+        std::uint64_t stride = 0;  // max offset + 1
+        std::uint64_t vertex_offset = 0;
+        std::vector<Input> all;
+        const Input* normal() const {
+            for (const Input& input : all) {
+                if (input.semantic == "NORMAL") {
+                    return &input;
+                }
+            }
+            return nullptr;
+        }
+    };
+
+    Inputs read_inputs(pugi::xml_node primitive);
+    void read_triangles(pugi::xml_node primitive, const Inputs& inputs);
+    void read_polylist(pugi::xml_node primitive, const Inputs& inputs);
+    void read_polygons(pugi::xml_node primitive, const Inputs& inputs);
+    void read_strips(pugi::xml_node primitive, const Inputs& inputs, bool fan);
+    std::vector<std::uint32_t> read_p(pugi::xml_node primitive, pugi::xml_node p,
+                                      std::uint64_t count);
+    void add_polygons(pugi::xml_node p, const std::vector<std::uint32_t>& indices,
+                      const Inputs& inputs, const std::vector<std::uint32_t>& sizes);
+    void read_creases(pugi::xml_node mesh);
+    const std::vector<Vec3>& vec3_source(pugi::xml_node source, const char* what);
+
+    const Document& doc_;
+    pugi::xml_node geometry_;
+    pugi::xml_node vertices_;
+    GeometryData g_;
+    std::unordered_map<const void*, std::vector<Vec3>> cache_;
+    // Per-position normal agreement across corners: 0 unseen, 1 set.
+    std::vector<std::uint8_t> normal_seen_;
+    std::vector<Vec3> corner_normals_;
+    bool normals_ok_ = true;
+    bool vertex_normals_ = false;  // normals given per position in <vertices>
+};
+
+const std::vector<Vec3>& GeometryReader::vec3_source(pugi::xml_node source, const char* what) {
+    const auto it = cache_.find(source.internal_object());
+    if (it != cache_.end()) {
+        return it->second;
+    }
+    return cache_.emplace(source.internal_object(), read_vec3_source(doc_, source, what))
+        .first->second;
+}
+
+GeometryData GeometryReader::read() {
+    const pugi::xml_node mesh = geometry_.child("mesh");
+    if (!mesh) {
+        g_.notices.push_back("ignored " + doc_.where(geometry_) +
+                             ": only <mesh> geometry is supported");
+        return std::move(g_);
+    }
+    vertices_ = mesh.child("vertices");
+    if (!vertices_) {
+        doc_.fail(mesh, "missing <vertices>");
+    }
+    pugi::xml_node position_input =
+        vertices_.find_child_by_attribute("input", "semantic", "POSITION");
+    if (!position_input) {
+        doc_.fail(vertices_, "no <input semantic=\"POSITION\">");
+    }
+    const pugi::xml_node position_source =
+        doc_.resolve(position_input.attribute("source").value(), position_input);
+    g_.positions = vec3_source(position_source, "positions");
+    check_finite_positions(doc_, position_source, g_.positions);
+
+    normal_seen_.assign(g_.positions.size(), 0);
+    corner_normals_.assign(g_.positions.size(), Vec3{});
+    if (pugi::xml_node n = vertices_.find_child_by_attribute("input", "semantic", "NORMAL")) {
+        const auto& normals =
+            vec3_source(doc_.resolve(n.attribute("source").value(), n), "normals");
+        vertex_normals_ = normals.size() == g_.positions.size();
+        normals_ok_ = vertex_normals_;
+        if (vertex_normals_) {
+            corner_normals_ = normals;
+        }
+    }
+
+    std::map<std::string, int> ignored;
+    bool any_primitive = false;
+    for (pugi::xml_node child : mesh.children()) {
+        const std::string_view name = child.name();
+        if (name == "triangles" || name == "polylist" || name == "polygons" || name == "trifans" ||
+            name == "tristrips") {
+            any_primitive = true;
+            const Inputs inputs = read_inputs(child);
+            if (name == "triangles") {
+                read_triangles(child, inputs);
+            } else if (name == "polylist") {
+                read_polylist(child, inputs);
+            } else if (name == "polygons") {
+                read_polygons(child, inputs);
+            } else {
+                read_strips(child, inputs, name == "trifans");
+            }
+        } else if (name == "lines" || name == "linestrips") {
+            ++ignored[std::string(name)];
+        }
+    }
+    for (const auto& [name, n] : ignored) {
+        g_.notices.push_back("ignored " + str(static_cast<std::uint64_t>(n)) + " <" + name +
+                             "> block" + (n > 1 ? "s" : "") + " in " + doc_.where(geometry_) +
+                             " (unsupported primitive)");
+    }
+    read_creases(mesh);
+
+    if (!any_primitive) {
+        normals_ok_ = vertex_normals_;
+    }
+    if (normals_ok_ && !g_.positions.empty()) {
+        for (const Vec3& n : corner_normals_) {
+            normals_ok_ = normals_ok_ && is_finite(n);
+        }
+    }
+    if (normals_ok_ && !g_.positions.empty()) {
+        g_.normals = std::move(corner_normals_);
+    }
+    return std::move(g_);
+}
+
+GeometryReader::Inputs GeometryReader::read_inputs(pugi::xml_node primitive) {
+    Inputs inputs;
+    bool has_vertex = false;
+    for (pugi::xml_node node : primitive.children("input")) {
+        Input input;
+        input.node = node;
+        input.semantic = node.attribute("semantic").value();
+        input.offset = count_attribute(doc_, node, "offset", 0);
+        if (input.offset >= kMaxInputOffset) {
+            doc_.fail(node, "offset=\"" + str(input.offset) + "\" is too large");
+        }
+        inputs.stride = std::max(inputs.stride, input.offset + 1);
+        if (input.semantic == "VERTEX") {
+            const pugi::xml_node target = doc_.resolve(node.attribute("source").value(), node);
+            if (target != vertices_) {
+                doc_.fail(node, "the VERTEX input must name this mesh's <vertices>");
+            }
+            if (!has_vertex) {
+                inputs.vertex_offset = input.offset;
+            }
+            has_vertex = true;
+            input.limit = g_.positions.size();
+        } else if (input.semantic == "NORMAL" || input.semantic == "TEXCOORD" ||
+                   input.semantic == "COLOR") {
+            const pugi::xml_node source = doc_.resolve(node.attribute("source").value(), node);
+            if (input.semantic == "NORMAL") {
+                input.vec = &vec3_source(source, "normals");
+                input.limit = input.vec->size();
+            } else {
+                input.limit = read_accessor(doc_, source).count;
+            }
+        } else {
+            continue;  // other semantics only take part in the stride
+        }
+        inputs.all.push_back(input);
+    }
+    if (!has_vertex) {
+        doc_.fail(primitive, "no <input semantic=\"VERTEX\">");
+    }
+    return inputs;
+}
+
+std::vector<std::uint32_t> GeometryReader::read_p(pugi::xml_node primitive, pugi::xml_node p,
+                                                  std::uint64_t count) {
+    if (!p) {
+        if (count == 0) {
+            return {};
+        }
+        doc_.fail(primitive, "missing <p> (count=\"" + str(count) + "\")");
+    }
+    return parse_indices(doc_, p);
+}
+
+void GeometryReader::read_triangles(pugi::xml_node primitive, const Inputs& inputs) {
+    const pugi::xml_node p = primitive.child("p");
+    if (!primitive.attribute("count")) {
+        doc_.fail(primitive, "missing count attribute");
+    }
+    const std::uint64_t count = count_attribute(doc_, primitive, "count", 0);
+    const std::vector<std::uint32_t> indices = read_p(primitive, p, count);
+    const std::uint64_t per_triangle = 3 * inputs.stride;
+    if (indices.size() / per_triangle != count || indices.size() % per_triangle != 0) {
+        doc_.fail(p, "holds " + str(indices.size()) + " indices, but count=\"" + str(count) +
+                         "\" triangles with " + str(inputs.stride) + " index" +
+                         (inputs.stride > 1 ? "es" : "") + " per corner need " +
+                         (count <= indices.size() ? str(count * per_triangle)
+                                                  : "more than the element holds"));
+    }
+    add_polygons(p, indices, inputs, std::vector<std::uint32_t>(count, 3));
+}
+
+void GeometryReader::read_polylist(pugi::xml_node primitive, const Inputs& inputs) {
+    const pugi::xml_node p = primitive.child("p");
+    const pugi::xml_node vcount_node = primitive.child("vcount");
+    const std::uint64_t count = count_attribute(doc_, primitive, "count", 0);
+    if (!vcount_node && count > 0) {
+        doc_.fail(primitive, "missing <vcount> (count=\"" + str(count) + "\")");
+    }
+    const std::vector<std::uint32_t> vcount =
+        vcount_node ? parse_indices(doc_, vcount_node) : std::vector<std::uint32_t>{};
+    if (primitive.attribute("count") && vcount.size() != count) {
+        doc_.fail(vcount_node, "holds " + str(vcount.size()) + " polygon sizes, but count=\"" +
+                                   str(count) + "\"");
+    }
+    std::uint64_t corners = 0;
+    for (std::uint32_t n : vcount) {
+        corners += n;
+    }
+    const std::vector<std::uint32_t> indices = read_p(primitive, p, corners);
+    if (indices.size() / inputs.stride != corners || indices.size() % inputs.stride != 0) {
+        doc_.fail(p, "holds " + str(indices.size()) + " indices, but <vcount> lists " +
+                         str(corners) + " corners with " + str(inputs.stride) +
+                         " index(es) each (" + str(corners * inputs.stride) + ")");
+    }
+    add_polygons(p, indices, inputs, vcount);
+}
+
+void GeometryReader::read_polygons(pugi::xml_node primitive, const Inputs& inputs) {
+    if (const pugi::xml_node ph = primitive.child("ph")) {
+        doc_.fail(ph, "polygons with holes (<ph>) are not supported");
+    }
+    std::uint64_t n_polygons = 0;
+    for (pugi::xml_node p : primitive.children("p")) {
+        const std::vector<std::uint32_t> indices = parse_indices(doc_, p);
+        if (indices.size() % inputs.stride != 0) {
+            doc_.fail(p, "holds " + str(indices.size()) + " indices, not a multiple of the " +
+                             str(inputs.stride) + " indices per corner");
+        }
+        const auto corners = static_cast<std::uint32_t>(indices.size() / inputs.stride);
+        add_polygons(p, indices, inputs, {corners});
+        ++n_polygons;
+    }
+    if (primitive.attribute("count") &&
+        count_attribute(doc_, primitive, "count", 0) != n_polygons) {
+        doc_.fail(primitive, "count=\"" + std::string(primitive.attribute("count").value()) +
+                                 "\" but it holds " + str(n_polygons) + " <p> elements");
+    }
+    if (n_polygons == 0 && count_attribute(doc_, primitive, "count", 0) > 0) {
+        doc_.fail(primitive, "missing <p>");
+    }
+}
+
+void GeometryReader::read_strips(pugi::xml_node primitive, const Inputs& inputs, bool fan) {
+    for (pugi::xml_node p : primitive.children("p")) {
+        const std::vector<std::uint32_t> strip = parse_indices(doc_, p);
+        if (strip.size() % inputs.stride != 0) {
+            doc_.fail(p, "holds " + str(strip.size()) + " indices, not a multiple of the " +
+                             str(inputs.stride) + " indices per corner");
+        }
+        const std::size_t n = strip.size() / inputs.stride;
+        const auto position = [&](std::size_t t) {
+            return strip[t * inputs.stride + inputs.vertex_offset];
+        };
+        // Re-lay the strip's corners as separate triangles; odd strip triangles swap their
+        // first two corners to keep one orientation.
+        std::vector<std::uint32_t> corners;
+        std::size_t n_triangles = 0;
+        for (std::size_t i = 0; i + 2 < n; ++i) {
+            const std::array<std::size_t, 3> t =
+                fan ? std::array<std::size_t, 3>{0, i + 1, i + 2}
+                    : (i % 2 == 0 ? std::array<std::size_t, 3>{i, i + 1, i + 2}
+                                  : std::array<std::size_t, 3>{i + 1, i, i + 2});
+            // Repeated corners stitch strips together; they are not faces.
+            if (position(t[0]) == position(t[1]) || position(t[1]) == position(t[2]) ||
+                position(t[0]) == position(t[2])) {
+                continue;
+            }
+            for (std::size_t k : t) {
+                corners.insert(
+                    corners.end(), strip.begin() + static_cast<std::ptrdiff_t>(k * inputs.stride),
+                    strip.begin() + static_cast<std::ptrdiff_t>((k + 1) * inputs.stride));
+            }
+            ++n_triangles;
+        }
+        add_polygons(p, corners, inputs, std::vector<std::uint32_t>(n_triangles, 3));
+    }
+}
+
+void GeometryReader::add_polygons(pugi::xml_node p, const std::vector<std::uint32_t>& indices,
+                                  const Inputs& inputs, const std::vector<std::uint32_t>& sizes) {
+    const Input* normal_input = inputs.normal();
+    std::uint64_t tuple = 0;
+    for (std::uint32_t n : sizes) {
+        for (std::uint32_t k = 0; k < n; ++k, ++tuple) {
+            const std::uint64_t base = tuple * inputs.stride;
+            for (const Input& input : inputs.all) {
+                const std::uint32_t index = indices[base + input.offset];
+                if (index >= input.limit) {
+                    doc_.fail(p, std::string(input.semantic) + " index " + str(index) +
+                                     " out of range (" + str(input.limit) +
+                                     (input.semantic == "VERTEX" ? " positions)" : " entries)"));
+                }
+            }
+            const std::uint32_t position = indices[base + inputs.vertex_offset];
+            g_.indices.push_back(position);
+            if (vertex_normals_) {
+                continue;
+            }
+            if (!normal_input) {
+                normals_ok_ = false;
+                continue;
+            }
+            const Vec3& normal = (*normal_input->vec)[indices[base + normal_input->offset]];
+            // Exact comparison: shared normals repeat the same text, so they parse equal.
+            if (normal_seen_[position] == 0) {
+                normal_seen_[position] = 1;
+                corner_normals_[position] = normal;
+            } else if (!(corner_normals_[position] == normal)) {
+                normals_ok_ = false;
+            }
+        }
+        g_.face_offsets.push_back(static_cast<std::uint32_t>(g_.indices.size()));
+    }
+}
+
+void GeometryReader::read_creases(pugi::xml_node mesh) {
+    for (pugi::xml_node extra : mesh.children("extra")) {
+        const pugi::xml_node technique =
+            extra.find_child_by_attribute("technique", "profile", "MeshEdit");
+        const pugi::xml_node creases = technique.child("creases");
+        if (!creases) {
+            continue;
+        }
+        const std::vector<std::uint32_t> ends = parse_indices(doc_, creases);
+        if (ends.size() % 2 != 0) {
+            doc_.fail(creases, "holds an odd number of indices (" + str(ends.size()) + ")");
+        }
+        if (creases.attribute("count") &&
+            count_attribute(doc_, creases, "count", 0) != ends.size() / 2) {
+            doc_.fail(creases, "count=\"" + std::string(creases.attribute("count").value()) +
+                                   "\" but it holds " + str(ends.size() / 2) + " pairs");
+        }
+        for (std::size_t i = 0; i < ends.size(); i += 2) {
+            for (std::uint32_t end : {ends[i], ends[i + 1]}) {
+                if (end >= g_.positions.size()) {
+                    doc_.fail(creases, "index " + str(end) + " out of range (" +
+                                           str(g_.positions.size()) + " positions)");
+                }
+            }
+            g_.creases.emplace_back(ends[i], ends[i + 1]);
+        }
+    }
+}
+
+}  // namespace
+
+GeometryData read_geometry(const Document& doc, pugi::xml_node geometry) {
+    return GeometryReader(doc, geometry).read();
+}
+
+}  // namespace meshedit::collada

@@ -1,0 +1,581 @@
+// glTF 2.0 through tinygltf (its implementation is compiled in tinygltf_impl.cpp).
+//
+// Reading walks the default scene's node tree, applies each node's transform, and turns every
+// triangle primitive (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN) into soup faces. Every accessor
+// read is bounds-checked here rather than trusted to the loader, since a hostile file may
+// point anywhere. Writing produces one mesh with one indexed TRIANGLES primitive.
+
+#include "meshedit/io/gltf.h"
+
+#include <tiny_gltf.h>
+
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "io_detail.h"
+#include "meshedit/core/normals.h"
+
+namespace meshedit {
+namespace {
+
+/// Column-major 4×4 matrix, as glTF stores them.
+using Mat4 = std::array<double, 16>;
+
+constexpr Mat4 kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+Mat4 multiply(const Mat4& a, const Mat4& b) {
+    Mat4 r{};
+    for (int col = 0; col < 4; ++col) {
+        for (int row = 0; row < 4; ++row) {
+            double s = 0.0;
+            for (int k = 0; k < 4; ++k) {
+                s += a[k * 4 + row] * b[col * 4 + k];
+            }
+            r[col * 4 + row] = s;
+        }
+    }
+    return r;
+}
+
+Vec3 transform_point(const Mat4& m, const Vec3& p) {
+    return {m[0] * p.x + m[4] * p.y + m[8] * p.z + m[12],
+            m[1] * p.x + m[5] * p.y + m[9] * p.z + m[13],
+            m[2] * p.x + m[6] * p.y + m[10] * p.z + m[14]};
+}
+
+Vec3 column(const Mat4& m, int c) {
+    return {m[c * 4], m[c * 4 + 1], m[c * 4 + 2]};
+}
+
+double determinant3(const Mat4& m) {
+    return dot(column(m, 0), cross(column(m, 1), column(m, 2)));
+}
+
+/// Normals transform by the inverse transpose of the linear part; its rows are the cross
+/// products of the columns (the cofactor matrix, a positive multiple for det > 0).
+Vec3 transform_normal(const Mat4& m, const Vec3& n) {
+    const Vec3 c0 = column(m, 0), c1 = column(m, 1), c2 = column(m, 2);
+    const Vec3 r0 = cross(c1, c2), r1 = cross(c2, c0), r2 = cross(c0, c1);
+    const Vec3 t = r0 * n.x + r1 * n.y + r2 * n.z;
+    return normalize(determinant3(m) < 0 ? -t : t);
+}
+
+Mat4 local_matrix(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) {
+        Mat4 m;
+        std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
+        return m;
+    }
+    Mat4 t = kIdentity, r = kIdentity, s = kIdentity;
+    if (node.translation.size() == 3) {
+        t[12] = node.translation[0];
+        t[13] = node.translation[1];
+        t[14] = node.translation[2];
+    }
+    if (node.rotation.size() == 4) {
+        const double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2],
+                     w = node.rotation[3];
+        r = {1 - 2 * (y * y + z * z),
+             2 * (x * y + z * w),
+             2 * (x * z - y * w),
+             0,
+             2 * (x * y - z * w),
+             1 - 2 * (x * x + z * z),
+             2 * (y * z + x * w),
+             0,
+             2 * (x * z + y * w),
+             2 * (y * z - x * w),
+             1 - 2 * (x * x + y * y),
+             0,
+             0,
+             0,
+             0,
+             1};
+    }
+    if (node.scale.size() == 3) {
+        s[0] = node.scale[0];
+        s[5] = node.scale[1];
+        s[10] = node.scale[2];
+    }
+    return multiply(t, multiply(r, s));  // glTF: T * R * S
+}
+
+class GltfReader {
+public:
+    GltfReader(const tinygltf::Model& model, std::string file)
+        : model_(model), file_(std::move(file)) {}
+
+    MeshSoup read() {
+        const auto& scenes = model_.scenes;
+        if (!scenes.empty()) {
+            const std::size_t s =
+                model_.defaultScene >= 0 &&
+                        static_cast<std::size_t>(model_.defaultScene) < scenes.size()
+                    ? static_cast<std::size_t>(model_.defaultScene)
+                    : 0;
+            on_path_.assign(model_.nodes.size(), false);
+            for (const int n : scenes[s].nodes) {
+                visit_node(n, kIdentity);
+            }
+        } else {
+            // A file with no scene shows nothing by the letter of the spec; loading its meshes
+            // as they are is more useful, and said.
+            for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
+                add_mesh(static_cast<int>(m), kIdentity);
+            }
+            out_.notices.push_back("the file has no scene; loaded every mesh untransformed");
+        }
+        if (out_.soup.n_faces() == 0) {
+            throw IoError(file_, "", "the default scene has no triangle primitives");
+        }
+        if (skipped_primitives_ > 0) {
+            out_.notices.push_back("ignored " + std::to_string(skipped_primitives_) +
+                                   " point or line primitive(s)");
+        }
+        if (!all_have_normals_) {
+            out_.normals.clear();
+        }
+        return std::move(out_);
+    }
+
+private:
+    void visit_node(int index, const Mat4& parent) {
+        if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size()) {
+            throw IoError(
+                file_, "",
+                "a scene refers to node " + std::to_string(index) + ", which does not exist");
+        }
+        // The node graph must be a tree; a cycle would recurse forever.
+        if (on_path_[index]) {
+            throw IoError(file_, "node " + std::to_string(index), "the node is its own ancestor");
+        }
+        on_path_[index] = true;
+        const tinygltf::Node& node = model_.nodes[index];
+        const Mat4 world = multiply(parent, local_matrix(node));
+        if (node.mesh >= 0) {
+            add_mesh(node.mesh, world);
+        }
+        for (const int child : node.children) {
+            visit_node(child, world);
+        }
+        on_path_[index] = false;
+    }
+
+    void add_mesh(int mesh_index, const Mat4& world) {
+        if (static_cast<std::size_t>(mesh_index) >= model_.meshes.size()) {
+            throw IoError(
+                file_, "",
+                "a node refers to mesh " + std::to_string(mesh_index) + ", which does not exist");
+        }
+        // Primitives of one mesh instance that share a POSITION accessor share vertices
+        // (common in multi-material meshes); each instance gets its own copy.
+        std::map<int, std::uint32_t> base_of_accessor;
+        const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(mesh_index)];
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& prim = mesh.primitives[p];
+            const std::string where =
+                "mesh " + std::to_string(mesh_index) + ", primitive " + std::to_string(p);
+            if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+                prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+                ++skipped_primitives_;
+                continue;
+            }
+            const auto pos_it = prim.attributes.find("POSITION");
+            if (pos_it == prim.attributes.end()) {
+                throw IoError(file_, where, "no POSITION attribute");
+            }
+            const int pos_accessor = pos_it->second;
+            std::uint32_t base = 0;
+            std::size_t n_vertices = 0;
+            if (auto found = base_of_accessor.find(pos_accessor); found != base_of_accessor.end()) {
+                base = found->second;
+                n_vertices = model_.accessors[static_cast<std::size_t>(pos_accessor)].count;
+            } else {
+                const std::vector<Vec3> positions = read_vec3(pos_accessor, where, "POSITION");
+                base = static_cast<std::uint32_t>(out_.soup.positions.size());
+                n_vertices = positions.size();
+                for (std::size_t i = 0; i < positions.size(); ++i) {
+                    const Vec3 q = transform_point(world, positions[i]);
+                    if (!is_finite(q)) {
+                        throw IoError(file_, where,
+                                      "position " + std::to_string(i) + " is not finite");
+                    }
+                    out_.soup.positions.push_back(q);
+                }
+                add_normals(prim, world, where, n_vertices);
+                base_of_accessor.emplace(pos_accessor, base);
+            }
+            add_faces(prim, where, base, n_vertices, determinant3(world) < 0);
+        }
+    }
+
+    void add_normals(const tinygltf::Primitive& prim, const Mat4& world, const std::string& where,
+                     std::size_t n_vertices) {
+        const auto it = prim.attributes.find("NORMAL");
+        if (!all_have_normals_ || it == prim.attributes.end()) {
+            all_have_normals_ = false;
+            return;
+        }
+        const std::vector<Vec3> normals = read_vec3(it->second, where, "NORMAL");
+        if (normals.size() != n_vertices) {
+            throw IoError(file_, where,
+                          "NORMAL has " + std::to_string(normals.size()) + " elements, POSITION " +
+                              std::to_string(n_vertices));
+        }
+        for (const Vec3& n : normals) {
+            out_.normals.push_back(transform_normal(world, n));
+        }
+    }
+
+    void add_faces(const tinygltf::Primitive& prim, const std::string& where, std::uint32_t base,
+                   std::size_t n_vertices, bool mirrored) {
+        std::vector<std::uint32_t> idx;
+        if (prim.indices >= 0) {
+            idx = read_indices(prim.indices, where);
+            for (std::size_t i = 0; i < idx.size(); ++i) {
+                if (idx[i] >= n_vertices) {
+                    throw IoError(file_, where,
+                                  "index " + std::to_string(idx[i]) + " (element " +
+                                      std::to_string(i) + ") is out of range (" +
+                                      std::to_string(n_vertices) + " positions)");
+                }
+            }
+        } else {
+            idx.resize(n_vertices);
+            for (std::size_t i = 0; i < n_vertices; ++i) {
+                idx[i] = static_cast<std::uint32_t>(i);
+            }
+        }
+        auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+            // A mirroring transform turns counter-clockwise into clockwise; undo that.
+            if (mirrored) {
+                std::swap(b, c);
+            }
+            out_.soup.add_face({base + a, base + b, base + c});
+        };
+        const std::size_t n = idx.size();
+        if (prim.mode == TINYGLTF_MODE_TRIANGLES) {
+            for (std::size_t i = 0; i + 2 < n; i += 3) {
+                add(idx[i], idx[i + 1], idx[i + 2]);
+            }
+            if (n % 3 != 0) {
+                out_.notices.push_back(where + ": ignored " + std::to_string(n % 3) +
+                                       " index(es) left over after the last triangle");
+            }
+        } else if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            for (std::size_t i = 0; i + 2 < n; ++i) {
+                // Every other strip triangle is flipped so all wind the same way.
+                if (i % 2 == 0) {
+                    add(idx[i], idx[i + 1], idx[i + 2]);
+                } else {
+                    add(idx[i + 1], idx[i], idx[i + 2]);
+                }
+            }
+        } else {
+            for (std::size_t i = 1; i + 1 < n; ++i) {
+                add(idx[0], idx[i], idx[i + 1]);
+            }
+        }
+    }
+
+    /// The bytes of accessor `index`: element `i` starts at `data + i * stride`. Checks the
+    /// accessor, its buffer view and its buffer against each other.
+    const unsigned char* accessor_data(int index, const std::string& where, const char* what,
+                                       int expect_type, std::size_t* stride_out) {
+        if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
+            throw IoError(file_, where,
+                          std::string(what) + " refers to accessor " + std::to_string(index) +
+                              ", which does not exist");
+        }
+        const tinygltf::Accessor& acc = model_.accessors[static_cast<std::size_t>(index)];
+        const std::string w = where + ", " + what + " accessor " + std::to_string(index);
+        if (acc.type != expect_type) {
+            throw IoError(file_, w, "unexpected accessor type");
+        }
+        if (acc.sparse.isSparse) {
+            throw IoError(file_, w, "sparse accessors are not supported");
+        }
+        if (acc.bufferView < 0 ||
+            static_cast<std::size_t>(acc.bufferView) >= model_.bufferViews.size()) {
+            throw IoError(file_, w, "no valid bufferView");
+        }
+        const tinygltf::BufferView& view =
+            model_.bufferViews[static_cast<std::size_t>(acc.bufferView)];
+        if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size()) {
+            throw IoError(file_, w, "its bufferView has no valid buffer");
+        }
+        const std::vector<unsigned char>& data =
+            model_.buffers[static_cast<std::size_t>(view.buffer)].data;
+        const int stride = acc.ByteStride(view);
+        const int comp =
+            tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(acc.componentType));
+        const int n_comp = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(acc.type));
+        if (stride <= 0 || comp <= 0 || n_comp <= 0) {
+            throw IoError(file_, w, "invalid component type or stride");
+        }
+        const std::size_t element =
+            static_cast<std::size_t>(comp) * static_cast<std::size_t>(n_comp);
+        // All in size_t with overflow-safe ordering: count is bounded by the view's length
+        // before it is multiplied.
+        const std::size_t view_end = view.byteOffset + view.byteLength;
+        if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) {
+            throw IoError(file_, w, "its bufferView lies outside the buffer");
+        }
+        if (acc.count > 0) {
+            const std::size_t s = static_cast<std::size_t>(stride);
+            if (acc.byteOffset > view.byteLength || acc.count > view.byteLength / s + 1 ||
+                view.byteOffset + acc.byteOffset + (acc.count - 1) * s + element > view_end) {
+                throw IoError(file_, w,
+                              std::to_string(acc.count) + " elements do not fit in the bufferView");
+            }
+        }
+        *stride_out = static_cast<std::size_t>(stride);
+        return data.data() + view.byteOffset + acc.byteOffset;
+    }
+
+    std::vector<Vec3> read_vec3(int index, const std::string& where, const char* what) {
+        std::size_t stride = 0;
+        const unsigned char* bytes = accessor_data(index, where, what, TINYGLTF_TYPE_VEC3, &stride);
+        const tinygltf::Accessor& acc = model_.accessors[static_cast<std::size_t>(index)];
+        if (acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
+            throw IoError(file_, where + ", " + what + " accessor " + std::to_string(index),
+                          "only float components are supported (quantized data is not)");
+        }
+        std::vector<Vec3> out(acc.count);
+        for (std::size_t i = 0; i < acc.count; ++i) {
+            float f[3];
+            std::memcpy(f, bytes + i * stride, sizeof f);  // may be unaligned
+            out[i] = Vec3(f[0], f[1], f[2]);
+        }
+        return out;
+    }
+
+    std::vector<std::uint32_t> read_indices(int index, const std::string& where) {
+        std::size_t stride = 0;
+        const unsigned char* bytes =
+            accessor_data(index, where, "indices", TINYGLTF_TYPE_SCALAR, &stride);
+        const tinygltf::Accessor& acc = model_.accessors[static_cast<std::size_t>(index)];
+        std::vector<std::uint32_t> out(acc.count);
+        for (std::size_t i = 0; i < acc.count; ++i) {
+            const unsigned char* e = bytes + i * stride;
+            switch (acc.componentType) {
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                    out[i] = *e;
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                    std::uint16_t v;
+                    std::memcpy(&v, e, sizeof v);
+                    out[i] = v;
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+                    std::memcpy(&out[i], e, sizeof(std::uint32_t));
+                    break;
+                default:
+                    throw IoError(file_, where, "indices must be unsigned byte, short or int");
+            }
+        }
+        return out;
+    }
+
+    const tinygltf::Model& model_;
+    std::string file_;
+    MeshSoup out_;
+    std::vector<bool> on_path_;
+    bool all_have_normals_ = true;
+    std::size_t skipped_primitives_ = 0;
+};
+
+/// Images are irrelevant to geometry; accepting them unread keeps textured files loadable
+/// without an image decoder.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void*) {
+    return true;
+}
+
+std::string one_line(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) {
+        s.pop_back();
+    }
+    for (char& c : s) {
+        if (c == '\n') {
+            c = ';';
+        }
+    }
+    return s;
+}
+
+/// Appends `n` little-endian values of `T` to `buffer`.
+template <class T>
+void append(std::vector<unsigned char>& buffer, const std::vector<T>& values) {
+    const std::size_t at = buffer.size();
+    buffer.resize(at + values.size() * sizeof(T));
+    if (!values.empty()) {
+        std::memcpy(buffer.data() + at, values.data(), values.size() * sizeof(T));
+    }
+}
+
+int add_view(tinygltf::Model& model, std::size_t offset, std::size_t length, int target) {
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = offset;
+    view.byteLength = length;
+    view.target = target;
+    model.bufferViews.push_back(view);
+    return static_cast<int>(model.bufferViews.size() - 1);
+}
+
+}  // namespace
+
+MeshSoup read_gltf(const std::filesystem::path& path) {
+    const std::string file = io_detail::display_name(path);
+    const std::string bytes = io_detail::read_file(path);
+    if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
+        throw IoError(file, "", "file too large for the glTF loader (over 4 GiB)");
+    }
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skip_image, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    const std::string base_dir = path.parent_path().string();
+    // The content decides, not the extension: a binary glTF always starts with "glTF".
+    const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromMemory(
+                          &model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                          static_cast<unsigned int>(bytes.size()), base_dir)
+                    : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
+                                                 static_cast<unsigned int>(bytes.size()), base_dir);
+    } catch (const std::exception& e) {
+        throw IoError(file, "", std::string("cannot parse: ") + e.what());
+    }
+    if (!ok) {
+        throw IoError(file, "", err.empty() ? "cannot parse" : one_line(err));
+    }
+    MeshSoup soup = GltfReader(model, file).read();
+    if (!warn.empty()) {
+        soup.notices.push_back(one_line(warn));
+    }
+    return soup;
+}
+
+void write_gltf(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
+    const std::string file = io_detail::display_name(path);
+    std::optional<Mesh> storage;
+    const Mesh& dense = io_detail::compacted(mesh, storage);
+    const PolygonSoup soup = to_polygon_soup(dense);
+
+    std::vector<std::uint32_t> triangles;
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        const std::uint32_t first = soup.face_offsets[f], end = soup.face_offsets[f + 1];
+        for (std::uint32_t c = first + 1; c + 1 < end; ++c) {  // fan from the first corner
+            triangles.insert(triangles.end(),
+                             {soup.indices[first], soup.indices[c], soup.indices[c + 1]});
+        }
+    }
+    if (triangles.empty()) {
+        throw IoError(file, "", "the mesh has no faces; glTF stores triangles only");
+    }
+
+    // glTF stores 32-bit floats; min/max are required on POSITION.
+    std::vector<float> positions;
+    positions.reserve(3 * soup.positions.size());
+    std::vector<double> lo(3, std::numeric_limits<double>::infinity());
+    std::vector<double> hi(3, -std::numeric_limits<double>::infinity());
+    for (const Vec3& p : soup.positions) {
+        for (int i = 0; i < 3; ++i) {
+            if (!(std::abs(p[i]) <= FLT_MAX)) {
+                throw IoError(file, "", "a coordinate does not fit in a 32-bit float");
+            }
+            const auto f = static_cast<float>(p[i]);
+            positions.push_back(f);
+            lo[static_cast<std::size_t>(i)] = std::min(lo[static_cast<std::size_t>(i)], double{f});
+            hi[static_cast<std::size_t>(i)] = std::max(hi[static_cast<std::size_t>(i)], double{f});
+        }
+    }
+
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "MeshEdit";
+    tinygltf::Buffer buffer;
+    tinygltf::Primitive prim;
+    prim.mode = TINYGLTF_MODE_TRIANGLES;
+
+    auto add_accessor = [&model](int view, int component, int type, std::size_t count) {
+        tinygltf::Accessor acc;
+        acc.bufferView = view;
+        acc.byteOffset = 0;
+        acc.componentType = component;
+        acc.type = type;
+        acc.count = count;
+        model.accessors.push_back(acc);
+        return static_cast<int>(model.accessors.size() - 1);
+    };
+
+    std::size_t offset = buffer.data.size();
+    append(buffer.data, positions);
+    int view = add_view(model, offset, buffer.data.size() - offset, TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.attributes["POSITION"] = add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                               TINYGLTF_TYPE_VEC3, soup.positions.size());
+    model.accessors.back().minValues = lo;
+    model.accessors.back().maxValues = hi;
+
+    if (flags.write_normals) {
+        std::vector<Vec3> normals;
+        compute_vertex_normals(dense, normals);
+        std::vector<float> packed;
+        packed.reserve(3 * normals.size());
+        for (Vec3 n : normals) {
+            // glTF requires unit normals; isolated or degenerate vertices have none.
+            if (n == Vec3{}) {
+                n = Vec3(0, 1, 0);
+            }
+            packed.insert(packed.end(), {static_cast<float>(n.x), static_cast<float>(n.y),
+                                         static_cast<float>(n.z)});
+        }
+        offset = buffer.data.size();
+        append(buffer.data, packed);
+        view = add_view(model, offset, buffer.data.size() - offset, TINYGLTF_TARGET_ARRAY_BUFFER);
+        prim.attributes["NORMAL"] =
+            add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, normals.size());
+    }
+
+    offset = buffer.data.size();
+    append(buffer.data, triangles);
+    view =
+        add_view(model, offset, buffer.data.size() - offset, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    prim.indices = add_accessor(view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                                triangles.size());
+
+    model.buffers.push_back(std::move(buffer));
+    tinygltf::Mesh gmesh;
+    gmesh.primitives.push_back(std::move(prim));
+    model.meshes.push_back(std::move(gmesh));
+    tinygltf::Node node;
+    node.mesh = 0;
+    model.nodes.push_back(std::move(node));
+    tinygltf::Scene scene;
+    scene.nodes.push_back(0);
+    model.scenes.push_back(std::move(scene));
+    model.defaultScene = 0;
+
+    // Serialise in memory (buffer embedded as base64 for .gltf, as the BIN chunk for .glb),
+    // then write through write_file, which checks every step.
+    const bool binary = io_detail::lower_extension(path) == ".glb";
+    std::ostringstream stream;
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToStream(&model, stream, !binary, binary) || !stream) {
+        throw IoError(file, "", "cannot serialise the glTF model");
+    }
+    const std::string bytes = std::move(stream).str();
+    write_atomically(path,
+                     [&](const std::filesystem::path& tmp) { io_detail::write_file(tmp, bytes); });
+}
+
+}  // namespace meshedit

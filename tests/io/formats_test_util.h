@@ -1,0 +1,107 @@
+#pragma once
+/// \file
+/// Helpers for the formats tests: a scratch folder per test, file contents, data paths.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "meshedit/io/io_error.h"
+
+namespace meshedit::test {
+
+/// A fresh folder under the system temp folder, removed with everything in it at scope end.
+class ScratchDir {
+public:
+    ScratchDir() {
+        static std::atomic<int> counter{0};
+        path_ = std::filesystem::temp_directory_path() /
+                ("meshedit_formats_" + std::to_string(::getpid()) + "_" +
+                 std::to_string(counter.fetch_add(1)));
+        std::filesystem::remove_all(path_);
+        std::filesystem::create_directories(path_);
+    }
+    ~ScratchDir() {
+        std::error_code ec;
+        // A test may leave the folder read-only; make it removable again.
+        std::filesystem::permissions(path_, std::filesystem::perms::owner_all,
+                                     std::filesystem::perm_options::add, ec);
+        std::filesystem::remove_all(path_, ec);
+    }
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+    std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+    /// Names of every entry in the folder, sorted.
+    std::vector<std::string> entries() const {
+        std::vector<std::string> names;
+        for (const auto& e : std::filesystem::directory_iterator(path_)) {
+            names.push_back(e.path().filename().string());
+        }
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+private:
+    std::filesystem::path path_;
+};
+
+inline std::string slurp(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+inline void spit(const std::filesystem::path& path, const std::string& bytes) {
+    std::ofstream out(path, std::ios::binary);
+    out << bytes;
+}
+
+/// A file of tests/io/data.
+inline std::filesystem::path data_file(const std::string& name) {
+    return std::filesystem::path(MESHEDIT_TEST_DATA) / name;
+}
+
+/// A file of the repository's sample folders (bez/, dae/).
+inline std::filesystem::path sample_file(const std::string& relative) {
+    return std::filesystem::path(MESHEDIT_TEST_DATA).parent_path().parent_path().parent_path() /
+           relative;
+}
+
+/// Runs `f`, expects an IoError, and returns its what() (empty, and a failure, otherwise).
+template <class F>
+std::string io_error_of(F&& f) {
+    try {
+        f();
+    } catch (const IoError& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "expected IoError, got another exception: " << e.what();
+        return {};
+    }
+    ADD_FAILURE() << "expected IoError, nothing was thrown";
+    return {};
+}
+
+/// `text` contains `part`; the message shows both (gmock's HasSubstr without gmock).
+inline ::testing::AssertionResult contains(const std::string& text, const std::string& part) {
+    if (text.find(part) != std::string::npos) {
+        return ::testing::AssertionSuccess();
+    }
+    return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
+}
+
+}  // namespace meshedit::test
+
+#define EXPECT_CONTAINS(text, part) EXPECT_TRUE(::meshedit::test::contains((text), (part)))
