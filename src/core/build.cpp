@@ -309,25 +309,29 @@ std::string list_some(const List& items, std::size_t limit = 8) {
 }  // namespace
 
 std::string BuildReport::summary() const {
+    auto count = [](std::size_t n, const char* one, const char* many) {
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
     std::ostringstream s;
     if (!dropped_faces.empty()) {
-        s << "dropped " << dropped_faces.size()
-          << " degenerate face(s) (fewer than 3 corners or a repeated corner): "
-          << list_some(dropped_faces) << "\n";
+        s << "dropped " << count(dropped_faces.size(), "degenerate face", "degenerate faces")
+          << " (fewer than 3 corners or a repeated corner): " << list_some(dropped_faces) << "\n";
     }
     if (!nonmanifold_edges.empty()) {
         std::vector<std::string> names;
         for (const auto& [a, b] : nonmanifold_edges) {
             names.push_back(std::to_string(a) + "-" + std::to_string(b));
         }
-        s << "cut " << nonmanifold_edges.size()
-          << " non-manifold or inconsistently oriented edge(s) into boundaries: "
-          << list_some(names) << "\n";
+        s << "cut "
+          << count(nonmanifold_edges.size(), "non-manifold or inconsistently oriented edge",
+                   "non-manifold or inconsistently oriented edges")
+          << " into boundaries: " << list_some(names) << "\n";
     }
     if (!split_vertices.empty()) {
-        s << "split " << split_vertices.size() << " non-manifold vertex(es) into " << added_vertices
-          << " extra cop" << (added_vertices == 1 ? "y" : "ies") << ": "
-          << list_some(split_vertices) << "\n";
+        s << "split "
+          << count(split_vertices.size(), "non-manifold vertex", "non-manifold vertices") << " ("
+          << list_some(split_vertices) << ") by adding " << count(added_vertices, "copy", "copies")
+          << "\n";
     }
     return s.str();
 }
