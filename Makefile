@@ -21,7 +21,7 @@ build: deps $(BUILD_DIR)/build.ninja
 run: build
 	@./scripts/run.sh $(BUILD_DIR)
 
-# Every test: the Release suite, then the core tests again under ASan + UBSan.
+# Every test: the Release suite, then the core and file-format tests again under ASan + UBSan.
 test: test-release test-sanitize
 
 test-release: build
@@ -31,13 +31,19 @@ test-sanitize: deps
 	cmake -S . -B $(ASAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DMESHEDIT_SANITIZE=ON \
 	    -DMESHEDIT_BUILD_BENCH=OFF $(CMAKE_FLAGS)
 	cmake --build $(ASAN_DIR) -j $(JOBS)
-	cd $(ASAN_DIR) && ctest --output-on-failure -j $(JOBS) -L core
+	cd $(ASAN_DIR) && ctest --output-on-failure -j $(JOBS) -L "core|io"
 
 bench: deps
 	cmake -S . -B $(BENCH_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release -DMESHEDIT_BUILD_TESTS=OFF \
 	    -DMESHEDIT_BUILD_BENCH=ON $(CMAKE_FLAGS)
 	cmake --build $(BENCH_DIR) -j $(JOBS)
 	./$(BENCH_DIR)/bench/meshedit_bench
+
+# Regenerates the sample meshes in dae/ with the project's own code (docs/samples.md).
+.PHONY: samples
+samples: deps $(BUILD_DIR)/build.ninja
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target meshedit-make-samples
+	./$(BUILD_DIR)/tools/meshedit-make-samples .
 
 format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')
