@@ -9,6 +9,7 @@ packages=(
     clang-format
     libpugixml-dev libtinygltf-dev nlohmann-json3-dev libtinyobjloader-dev
     assimp-utils assimp-testmodels
+    libosmesa6-dev libgl-dev libglm-dev libopenimageio-dev openimageio-tools
 )
 
 missing=()

@@ -1,0 +1,45 @@
+#pragma once
+/// \file
+/// An orbit camera (Y up): the eye circles a target at an azimuth and elevation in degrees
+/// and a distance. Perspective by default; orthographic for 2D views (Bezier curves). Shared
+/// by the headless renderer and the interactive viewer.
+
+#include <span>
+
+#include <glm/glm.hpp>
+
+#include "meshedit/core/math.h"
+
+namespace meshedit {
+
+class Camera {
+public:
+    glm::vec3 target{0.0f};
+    float azimuth_deg = 30.0f;    ///< around +Y, 0 looks along −Z (eye on +Z)
+    float elevation_deg = 20.0f;  ///< above the XZ plane, clamped to ±89°
+    float distance = 3.0f;
+    float fov_y_deg = 40.0f;
+    /// Radius of the scene around `target`, for the near and far planes.
+    float scene_radius = 1.0f;
+
+    /// Orthographic: shows `ortho_height` world units vertically around `target`, looking
+    /// down −Z (azimuth and elevation ignored).
+    bool orthographic = false;
+    float ortho_height = 1.0f;
+
+    /// Perspective view of `box` from the current azimuth and elevation: the target becomes
+    /// the box centre and the distance the smallest at which all eight box corners fit a
+    /// viewport of `aspect` (width / height), plus a small margin. If `points` is given (the
+    /// mesh's positions, say), those are fitted instead of the corners: a tighter picture.
+    void frame(const BoundingBox& box, float aspect = 1.0f, std::span<const Vec3> points = {});
+    /// Orthographic view of the rectangle [min, max] (x, y) with `margin` around it, fitted
+    /// to `aspect` (width / height).
+    void frame_2d(glm::vec2 min, glm::vec2 max, float aspect, float margin = 0.05f);
+
+    glm::vec3 eye() const;
+    glm::mat4 view() const;
+    /// \param aspect width / height of the viewport.
+    glm::mat4 projection(float aspect) const;
+};
+
+}  // namespace meshedit

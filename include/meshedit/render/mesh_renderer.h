@@ -1,0 +1,102 @@
+#pragma once
+/// \file
+/// Draws a core Mesh with GL 3.3 core: shaded triangles (polygons fan-triangulated), an
+/// optional crisp wireframe, and an ID pass for picking.
+///
+/// Every triangle corner is its own GPU vertex (24 bytes: position, smooth and flat normals
+/// packed 10-10-10-2, a one-hot barycentric plus a mask of which triangle sides are real
+/// mesh edges). That costs 3 vertices per triangle instead of ~0.5, but it lets one buffer
+/// serve smooth and flat shading (a uniform switches), and it gives the fragment shader
+/// barycentrics for a wireframe that is crisp at any zoom and hides fan diagonals. A
+/// 1M-triangle mesh is 72 MB of vertex data.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "meshedit/core/mesh.h"
+#include "meshedit/render/camera.h"
+#include "meshedit/render/overlay.h"
+#include "meshedit/render/shader_program.h"
+#include "meshedit/render/shading.h"
+
+namespace meshedit {
+
+/// One GPU vertex (a triangle corner). Public so tests can check the packing.
+struct MeshGpuVertex {
+    float position[3];
+    std::uint32_t smooth_normal;  ///< GL_INT_2_10_10_10_REV, normalised
+    std::uint32_t flat_normal;    ///< GL_INT_2_10_10_10_REV, normalised
+    std::uint8_t corner[4];       ///< one-hot barycentric (xyz), real-edge mask (w)
+};
+
+/// The shaded mesh. Needs a current GL 3.3 core context for everything but construction;
+/// GL objects are created lazily on the first upload and freed in the destructor (with the
+/// same context current).
+class MeshRenderer {
+public:
+    MeshRenderer() = default;
+    MeshRenderer(const MeshRenderer&) = delete;
+    MeshRenderer& operator=(const MeshRenderer&) = delete;
+    ~MeshRenderer();
+
+    /// Uploads `mesh` (after any topology change). Reuses the CPU staging arrays and the GL
+    /// buffer (glBufferSubData when the size does not grow), so repeated uploads allocate
+    /// nothing once the largest size has been seen. \throws GlError on a GL failure.
+    void upload(const Mesh& mesh);
+
+    /// Re-uploads positions and normals only, for geometry-only edits (a vertex drag); the
+    /// triangle list must be unchanged since upload(). Cheaper than upload(): no
+    /// re-triangulation and no pick table rebuild.
+    void update_geometry(const Mesh& mesh);
+
+    /// Draws the surface into the current framebuffer and viewport (depth test on).
+    /// \param aspect viewport width / height.
+    void draw(const Camera& camera, float aspect, const RenderOptions& options);
+
+    /// The ID pass: writes element ids as RGB into the current (single-sample!) framebuffer,
+    /// clearing it first. Near a corner (`vertex_radius_px`) the id is the vertex; near a
+    /// real edge (`edge_radius_px`) the halfedge of that edge inside the face under the
+    /// cursor; elsewhere the face. Black is "nothing".
+    void draw_ids(const Camera& camera, float aspect, float vertex_radius_px = 6.0f,
+                  float edge_radius_px = 4.0f);
+
+    /// Decodes a pixel of the ID pass.
+    static ElementRef decode_id(const std::uint8_t* rgb);
+
+    /// Runs draw_ids() and reads the pixel at (x, y) (origin top-left, like window
+    /// coordinates) of a `width` × `height` viewport.
+    ElementRef pick(const Camera& camera, int width, int height, int x, int y);
+
+    /// The same triangles with a transform-only shader and a constant colour: the baseline
+    /// that `meshedit-render --benchmark` compares draw() against.
+    void draw_bare(const Camera& camera, float aspect);
+
+    std::size_t triangle_count() const { return triangle_count_; }
+
+private:
+    void ensure_gl_objects();
+    void fill_geometry(const Mesh& mesh);
+
+    ShaderProgram shader_;
+    ShaderProgram pick_shader_;
+    ShaderProgram bare_shader_;  ///< loaded on the first draw_bare()
+    unsigned vao_ = 0;
+    unsigned vbo_ = 0;
+    unsigned pick_tbo_buffer_ = 0;
+    unsigned pick_tbo_texture_ = 0;
+    std::size_t vbo_capacity_ = 0;   ///< bytes allocated in vbo_
+    std::size_t pick_capacity_ = 0;  ///< bytes allocated in pick_tbo_buffer_
+    std::size_t triangle_count_ = 0;
+
+    // CPU staging, kept between uploads for their capacity.
+    std::vector<MeshGpuVertex> vertices_;
+    std::vector<std::uint32_t> pick_table_;  ///< 8 uints per triangle: f, v0..2, h0..2, 0
+    std::vector<Vec3> vertex_normals_;
+    std::vector<Vec3> face_normals_;
+    std::vector<std::uint32_t> triangle_corners_;  ///< 3 vertex indices per triangle
+    std::vector<std::uint32_t> triangle_faces_;    ///< face index per triangle
+};
+
+}  // namespace meshedit

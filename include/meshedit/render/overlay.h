@@ -1,0 +1,111 @@
+#pragma once
+/// \file
+/// Overlay geometry: everything drawn on top of the shaded mesh (selection and hover
+/// highlights, boundary and crease edges, halfedge arrows, Bezier control polygons, de
+/// Casteljau levels, curves, patch control nets) as plain coloured points, lines and
+/// triangles in world space. Built on the CPU without any GL, so it is unit-tested directly;
+/// the renderer draws any OverlayBatch the same way.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "meshedit/bezier/bezier_curve.h"
+#include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/mesh.h"
+
+namespace meshedit {
+
+/// Linear RGBA colour, components in [0, 1].
+using Color = std::array<float, 4>;
+
+/// Coloured primitives in world space. Points are drawn as screen-space discs of
+/// `point_size` pixels, lines as screen-space quads `line_width` pixels wide.
+struct OverlayBatch {
+    struct Point {
+        Vec3 p;
+        Color color;
+        float size_px;
+    };
+    struct Line {
+        Vec3 a, b;
+        Color color;
+        float width_px;
+    };
+    struct Triangle {
+        Vec3 a, b, c;
+        Color color;
+    };
+    std::vector<Point> points;
+    std::vector<Line> lines;
+    std::vector<Triangle> triangles;
+
+    void clear() {
+        points.clear();
+        lines.clear();
+        triangles.clear();
+    }
+    bool empty() const { return points.empty() && lines.empty() && triangles.empty(); }
+    void append(const OverlayBatch& other);
+};
+
+/// What is selected or hovered: at most one element.
+struct ElementRef {
+    enum class Kind { None, Vertex, Edge, Halfedge, Face };
+    Kind kind = Kind::None;
+    std::uint32_t index = kInvalidIndex;
+
+    static ElementRef vertex(Vertex v) { return {Kind::Vertex, v.idx()}; }
+    static ElementRef edge(Edge e) { return {Kind::Edge, e.idx()}; }
+    static ElementRef halfedge(Halfedge h) { return {Kind::Halfedge, h.idx()}; }
+    static ElementRef face(Face f) { return {Kind::Face, f.idx()}; }
+    bool is_none() const { return kind == Kind::None; }
+};
+
+/// The overlay palette (one place, so viewer, headless renders and docs agree).
+struct OverlayStyle {
+    Color selected{1.0f, 0.55f, 0.0f, 1.0f};    ///< orange
+    Color hovered{0.2f, 0.75f, 1.0f, 1.0f};     ///< light blue
+    Color boundary{0.85f, 0.1f, 0.1f, 1.0f};    ///< red
+    Color crease{0.1f, 0.55f, 0.1f, 1.0f};      ///< green
+    float vertex_size_px = 12.0f;
+    float edge_width_px = 4.0f;
+    float feature_width_px = 2.5f;              ///< boundary and crease edges
+    float face_tint_alpha = 0.45f;
+    /// Halfedge arrows sit inside their face: pulled this fraction toward the face centre.
+    float halfedge_inset = 0.2f;
+    /// Colours of the de Casteljau levels: level k uses levels[k % size].
+    std::vector<Color> levels{{0.3f, 0.3f, 0.3f, 1.0f}, {0.1f, 0.45f, 0.9f, 1.0f},
+                              {0.1f, 0.65f, 0.3f, 1.0f}, {0.85f, 0.55f, 0.05f, 1.0f},
+                              {0.75f, 0.15f, 0.55f, 1.0f}, {0.0f, 0.6f, 0.65f, 1.0f}};
+    Color curve{0.05f, 0.05f, 0.05f, 1.0f};
+    Color evaluated_point{0.9f, 0.1f, 0.1f, 1.0f};
+    Color control_net{0.2f, 0.2f, 0.75f, 1.0f};
+};
+
+/// Boundary edges and crease edges ("e:crease") of `mesh`.
+void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out);
+
+/// The highlight of one element in `color`: a vertex disc; an edge as a thick line; a
+/// halfedge as an arrow (a line plus an arrowhead triangle) inset into its face towards the
+/// face centre, as in CS184 (a boundary halfedge is inset towards the other side's face,
+/// mirrored); a face as a translucent tint of its polygon (fan triangles, offset slightly
+/// along the normal so it wins the depth test).
+void add_element_highlight(const Mesh& mesh, ElementRef element, const Color& color,
+                           const OverlayStyle& style, OverlayBatch& out);
+
+/// A Bezier curve at parameter `t`: the control polygon (level 0) and de Casteljau levels
+/// 1 … `max_level` (each in its style colour, with its points), the evaluated point B(t)
+/// when max_level reaches the last level, and the whole curve (sampled) if `show_curve`.
+/// `max_level` < 0 means all levels.
+void add_bezier_curve(const BezierCurve& curve, double t, int max_level, bool show_curve,
+                      const OverlayStyle& style, OverlayBatch& out);
+
+/// The control nets of `patches`: the rows and columns of each control grid as lines, the
+/// control points as small discs.
+void add_control_nets(std::span<const BezierPatch> patches, const OverlayStyle& style,
+                      OverlayBatch& out);
+
+}  // namespace meshedit

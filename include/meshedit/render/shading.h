@@ -1,0 +1,48 @@
+#pragma once
+/// \file
+/// Shading modes and render options. The mode table is the single source for the
+/// `--shading` flag of `meshedit render` and the viewer's 0–9 keys.
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+namespace meshedit {
+
+/// A shading mode: number (the viewer key), name (the CLI word), one-line description.
+struct ShadingMode {
+    int number;
+    std::string_view name;
+    std::string_view description;
+};
+
+/// Modes 0–9. The number is also the `u_mode` value the mesh fragment shader switches on.
+inline constexpr std::array<ShadingMode, 10> kShadingModes{{
+    {0, "normals", "world-space normal as colour (0.5 + 0.5 n)"},
+    {1, "phong", "Blinn-Phong: key light and highlight, cool fill (smooth or flat)"},
+    {2, "grey", "flat grey: unlit-ish grey with a little face shading"},
+    {3, "studio", "two-light studio: warm key, cool fill, rim light"},
+    {4, "matcap", "matcap-like clay lookup by view-space normal (procedural, no texture)"},
+    {5, "depth", "grey by view depth (near light, far dark)"},
+    {6, "hemisphere", "sky/ground hemisphere light"},
+    // 7–9 are free for later modes; until then they alias existing ones so every key works.
+    {7, "phong7", "alias of 1 (reserved)"},
+    {8, "phong8", "alias of 1 (reserved)"},
+    {9, "phong9", "alias of 1 (reserved)"},
+}};
+
+/// Looks a mode up by name or number ("phong", "1"); nullopt if unknown.
+std::optional<ShadingMode> find_shading_mode(std::string_view name_or_number);
+
+/// What MeshRenderer::draw() draws. A plain struct with defaults.
+struct RenderOptions {
+    int shading = 1;         ///< index into kShadingModes
+    bool smooth = true;      ///< area-weighted vertex normals (else face normals)
+    bool wireframe = false;  ///< crisp ~1 px edges over the surface
+    float wire_width_px = 1.0f;
+    std::array<float, 4> wire_color{0.16f, 0.17f, 0.2f, 1.0f};
+    /// Base colour of the surface (a warm white).
+    std::array<float, 3> base_color{0.93f, 0.89f, 0.82f};
+};
+
+}  // namespace meshedit

@@ -1,0 +1,10 @@
+#version 330 core
+// A full-screen triangle from gl_VertexID (no vertex buffer).
+
+out float v_t;
+
+void main() {
+    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2)) * 2.0 - 1.0;
+    v_t = 0.5 * p.y + 0.5;
+    gl_Position = vec4(p, 1.0, 1.0);
+}

@@ -1,0 +1,102 @@
+#version 330 core
+// Shading modes 0-9 (include/meshedit/render/shading.h is the table) and the wireframe.
+// Lights are fixed in view space, so every camera angle is lit the same way.
+
+in vec3 v_position_view;
+in vec3 v_normal_view;
+in vec3 v_normal_world;
+in vec3 v_flat_normal_view;
+in vec3 v_barycentric;
+flat in int v_edge_mask;
+
+uniform int u_mode;
+uniform vec3 u_base_color;
+uniform bool u_wireframe;
+uniform float u_wire_width;   // pixels
+uniform vec4 u_wire_color;
+uniform vec2 u_depth_range;   // view-space distance of the nearest and farthest scene point
+
+out vec4 frag_color;
+
+const vec3 kKeyDir = normalize(vec3(-0.45, 0.65, 0.62));  // upper left, in front
+const vec3 kFillDir = normalize(vec3(0.7, 0.1, 0.5));     // right
+const vec3 kRimDir = normalize(vec3(0.2, 0.5, -0.85));    // behind
+
+vec3 blinn_phong(vec3 n, vec3 v, vec3 base) {
+    // Key light with a specular highlight, a weak cool fill from the right so faces turned
+    // away from the key keep their shape, and a sky-to-ground ambient.
+    float key = max(dot(n, kKeyDir), 0.0);
+    float fill = max(dot(n, kFillDir), 0.0);
+    vec3 h = normalize(kKeyDir + v);
+    float specular = pow(max(dot(n, h), 0.0), 48.0) * step(0.0, dot(n, kKeyDir));
+    float ambient = mix(0.2, 0.3, 0.5 + 0.5 * n.y);
+    return base * (ambient + 0.62 * key) + vec3(0.62, 0.68, 0.78) * base * 0.3 * fill +
+           vec3(0.32) * specular;
+}
+
+vec3 studio(vec3 n, vec3 v, vec3 base) {
+    vec3 key = vec3(1.0, 0.94, 0.86) * max(dot(n, kKeyDir), 0.0) * 0.75;
+    vec3 fill = vec3(0.55, 0.63, 0.78) * max(dot(n, kFillDir), 0.0) * 0.45;
+    float rim = pow(1.0 - max(dot(n, v), 0.0), 3.0) * max(dot(n, kRimDir) + 0.6, 0.0) * 0.5;
+    vec3 h = normalize(kKeyDir + v);
+    float specular = pow(max(dot(n, h), 0.0), 64.0) * 0.3;
+    return base * (0.16 + key + fill) + vec3(rim) + vec3(specular);
+}
+
+// A clay matcap computed from the view-space normal instead of looked up in a texture.
+vec3 matcap(vec3 n) {
+    vec2 uv = n.xy;
+    float shade = smoothstep(-0.9, 1.0, 0.45 * uv.y - 0.25 * uv.x + 0.6 * n.z);
+    vec3 color = mix(vec3(0.23, 0.19, 0.17), vec3(0.86, 0.76, 0.68), shade);
+    float spot = 1.0 - smoothstep(0.0, 0.38, length(uv - vec2(-0.32, 0.42)));
+    color += vec3(0.45) * spot * spot;
+    float rim = smoothstep(0.75, 1.0, length(uv));
+    return mix(color, vec3(0.55, 0.5, 0.52), rim * 0.5);
+}
+
+void main() {
+    vec3 n = normalize(v_normal_view);
+    vec3 v = normalize(-v_position_view);
+    // Two-sided: the back of an open surface is lit like its front, slightly darker so an
+    // inside-out mesh remains recognisable.
+    float side = 1.0;
+    if (!gl_FrontFacing) {
+        n = -n;
+        side = 0.82;
+    }
+
+    vec3 color;
+    if (u_mode == 0) {
+        color = 0.5 + 0.5 * normalize(v_normal_world);
+    } else if (u_mode == 2) {
+        vec3 fn = normalize(v_flat_normal_view) * (gl_FrontFacing ? 1.0 : -1.0);
+        color = vec3(0.62) * (0.72 + 0.28 * max(dot(fn, kKeyDir), 0.0)) * side;
+    } else if (u_mode == 3) {
+        color = studio(n, v, u_base_color) * side;
+    } else if (u_mode == 4) {
+        color = matcap(n) * side;
+    } else if (u_mode == 5) {
+        float t = clamp((-v_position_view.z - u_depth_range.x) /
+                            max(u_depth_range.y - u_depth_range.x, 1e-6), 0.0, 1.0);
+        color = vec3(mix(0.92, 0.18, t));
+    } else if (u_mode == 6) {
+        float up = 0.5 + 0.5 * normalize(v_normal_world).y * (gl_FrontFacing ? 1.0 : -1.0);
+        vec3 light = mix(vec3(0.42, 0.36, 0.30), vec3(1.0, 0.98, 0.95), up);
+        color = u_base_color * light * side;
+    } else {
+        // 1 and the reserved aliases 7-9.
+        color = blinn_phong(n, v, u_base_color) * side;
+    }
+
+    if (u_wireframe) {
+        // Distance in pixels to each real side (a side's barycentric is 0 on it).
+        vec3 d = v_barycentric / max(fwidth(v_barycentric), vec3(1e-7));
+        float dist = 1e9;
+        if ((v_edge_mask & 1) != 0) dist = min(dist, d.x);
+        if ((v_edge_mask & 2) != 0) dist = min(dist, d.y);
+        if ((v_edge_mask & 4) != 0) dist = min(dist, d.z);
+        float coverage = clamp(0.5 * u_wire_width + 0.5 - dist, 0.0, 1.0);
+        color = mix(color, u_wire_color.rgb, coverage * u_wire_color.a);
+    }
+    frag_color = vec4(color, 1.0);
+}

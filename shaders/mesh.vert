@@ -1,0 +1,33 @@
+#version 330 core
+// Shaded mesh: one GPU vertex per triangle corner (see mesh_renderer.h).
+
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec4 a_smooth_normal;  // packed 10-10-10-2, normalised
+layout(location = 2) in vec4 a_flat_normal;
+layout(location = 3) in vec4 a_corner;         // one-hot barycentric, real-edge mask / 255
+
+uniform mat4 u_view;
+uniform mat4 u_projection;
+uniform bool u_smooth;
+
+out vec3 v_position_view;
+out vec3 v_normal_view;
+out vec3 v_normal_world;
+out vec3 v_flat_normal_view;
+out vec3 v_barycentric;
+flat out int v_edge_mask;
+
+void main() {
+    vec4 p = u_view * vec4(a_position, 1.0);
+    v_position_view = p.xyz;
+    // The view matrix is a rotation plus translation, so it transforms normals directly.
+    vec3 n = u_smooth ? a_smooth_normal.xyz : a_flat_normal.xyz;
+    // A vertex whose faces cancel has a zero smooth normal: fall back to the face normal.
+    if (dot(n, n) < 1e-8) n = a_flat_normal.xyz;
+    v_normal_world = n;
+    v_normal_view = mat3(u_view) * n;
+    v_flat_normal_view = mat3(u_view) * a_flat_normal.xyz;
+    v_barycentric = a_corner.xyz;
+    v_edge_mask = int(a_corner.w * 255.0 + 0.5);
+    gl_Position = u_projection * p;
+}

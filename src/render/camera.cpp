@@ -1,0 +1,87 @@
+// Orbit camera (camera.h).
+
+#include "meshedit/render/camera.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace meshedit {
+
+glm::vec3 Camera::eye() const {
+    if (orthographic) {
+        return target + glm::vec3(0.0f, 0.0f, distance);
+    }
+    const float az = glm::radians(azimuth_deg);
+    const float el = glm::radians(std::clamp(elevation_deg, -89.0f, 89.0f));
+    const glm::vec3 offset(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+    return target + distance * offset;
+}
+
+glm::mat4 Camera::view() const {
+    return glm::lookAt(eye(), target, glm::vec3(0.0f, 1.0f, 0.0f));
+}
+
+glm::mat4 Camera::projection(float aspect) const {
+    if (orthographic) {
+        const float h = 0.5f * ortho_height;
+        const float w = h * aspect;
+        return glm::ortho(-w, w, -h, h, 0.01f * distance, distance + 2.0f * scene_radius);
+    }
+    // Near and far hug the scene's bounding sphere: depth precision where it matters.
+    const float far_plane = distance + 1.5f * scene_radius;
+    const float near_plane = std::max(distance - 1.5f * scene_radius, far_plane * 1e-3f);
+    return glm::perspective(glm::radians(fov_y_deg), aspect, near_plane, far_plane);
+}
+
+void Camera::frame(const BoundingBox& box, float aspect, std::span<const Vec3> points) {
+    orthographic = false;
+    if (box.is_empty()) {
+        target = glm::vec3(0.0f);
+        scene_radius = 1.0f;
+        distance = 3.0f;
+        return;
+    }
+    const Vec3 c = box.center();
+    target = glm::vec3(static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z));
+    scene_radius = std::max(0.5f * static_cast<float>(box.diagonal()), 1e-6f);
+
+    // Fit the eight box corners, not the bounding sphere: the sphere wastes a third of the
+    // picture on a long object. In camera axes (looking down −z, the eye at +distance on z),
+    // a corner (x, y, z) is inside when |x| ≤ (d − z)·tan(half_x), so d ≥ |x|/tan + z.
+    const float tan_y = std::tan(0.5f * glm::radians(fov_y_deg));
+    const float tan_x = tan_y * aspect;
+    distance = 1.0f;
+    const glm::mat3 rotation(view());  // world → camera rotation (translation dropped)
+    float needed = 0.0f;
+    auto fit = [&](const glm::vec3& point) {
+        const glm::vec3 p = rotation * (point - target);
+        needed = std::max(needed, std::abs(p.x) / tan_x + p.z);
+        needed = std::max(needed, std::abs(p.y) / tan_y + p.z);
+    };
+    if (points.empty()) {
+        for (int i = 0; i < 8; ++i) {
+            fit(glm::vec3((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                          (i & 4) ? box.max.z : box.min.z));
+        }
+    } else {
+        for (const Vec3& p : points) {
+            fit(glm::vec3(static_cast<float>(p.x), static_cast<float>(p.y),
+                          static_cast<float>(p.z)));
+        }
+    }
+    distance = std::max(needed * 1.08f, 1e-5f);  // a small margin around the model
+}
+
+void Camera::frame_2d(glm::vec2 min, glm::vec2 max, float aspect, float margin) {
+    orthographic = true;
+    const glm::vec2 size = max - min;
+    target = glm::vec3(0.5f * (min + max), 0.0f);
+    ortho_height = std::max(size.y, size.x / aspect) * (1.0f + 2.0f * margin);
+    distance = 1.0f;
+    scene_radius = 0.5f * glm::length(size) + 1.0f;
+}
+
+}  // namespace meshedit

@@ -1,0 +1,263 @@
+// Mesh drawing, wireframe and the ID pass (mesh_renderer.h).
+
+#include "meshedit/render/mesh_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl.h"
+#include "meshedit/core/normals.h"
+
+namespace meshedit {
+namespace {
+
+// Packs a unit vector as GL_INT_2_10_10_10_REV (x in the low bits, signed normalised).
+std::uint32_t pack_normal(const Vec3& n) {
+    auto component = [](double v) {
+        const long q = std::lround(std::clamp(v, -1.0, 1.0) * 511.0);
+        return static_cast<std::uint32_t>(q) & 0x3ffu;
+    };
+    return component(n.x) | (component(n.y) << 10) | (component(n.z) << 20);
+}
+
+// Grows `buffer` (bound to `target`) to at least `bytes`, keeping its size otherwise, then
+// uploads `data`. Growth doubles, so a slowly growing mesh does not reallocate every edit.
+void upload_buffer(GLenum target, std::size_t& capacity, const void* data, std::size_t bytes) {
+    if (bytes > capacity) {
+        capacity = std::max(bytes, capacity * 2);
+        glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_STATIC_DRAW);
+    }
+    if (bytes > 0) {
+        glBufferSubData(target, 0, static_cast<GLsizeiptr>(bytes), data);
+    }
+}
+
+void set_camera(const ShaderProgram& shader, const Camera& camera, float aspect) {
+    const glm::mat4 view = camera.view();
+    const glm::mat4 projection = camera.projection(aspect);
+    shader.set_mat4("u_view", glm::value_ptr(view));
+    shader.set_mat4("u_projection", glm::value_ptr(projection));
+}
+
+}  // namespace
+
+MeshRenderer::~MeshRenderer() {
+    // Deleting 0 is a no-op in GL, so a renderer that never uploaded needs no context.
+    if (vao_ != 0) {
+        glDeleteVertexArrays(1, &vao_);
+        glDeleteBuffers(1, &vbo_);
+        glDeleteBuffers(1, &pick_tbo_buffer_);
+        glDeleteTextures(1, &pick_tbo_texture_);
+    }
+}
+
+void MeshRenderer::ensure_gl_objects() {
+    if (vao_ != 0) {
+        return;
+    }
+    shader_ = ShaderProgram("mesh.vert", "mesh.frag");
+    pick_shader_ = ShaderProgram("pick.vert", "pick.frag");
+    glGenVertexArrays(1, &vao_);
+    glGenBuffers(1, &vbo_);
+    glBindVertexArray(vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    constexpr GLsizei stride = sizeof(MeshGpuVertex);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(offsetof(MeshGpuVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_INT_2_10_10_10_REV, GL_TRUE, stride,
+                          reinterpret_cast<const void*>(offsetof(MeshGpuVertex, smooth_normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 4, GL_INT_2_10_10_10_REV, GL_TRUE, stride,
+                          reinterpret_cast<const void*>(offsetof(MeshGpuVertex, flat_normal)));
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                          reinterpret_cast<const void*>(offsetof(MeshGpuVertex, corner)));
+    glBindVertexArray(0);
+
+    glGenBuffers(1, &pick_tbo_buffer_);
+    glGenTextures(1, &pick_tbo_texture_);
+    check_gl("MeshRenderer setup");
+}
+
+void MeshRenderer::upload(const Mesh& mesh) {
+    ensure_gl_objects();
+
+    // Fan-triangulate every face: (c0, ci, ci+1). A triangle side is a real mesh edge only
+    // for the first and last fan triangle's outer sides; the rest are diagonals, which the
+    // wireframe must not draw and picking must not report.
+    triangle_corners_.clear();
+    triangle_faces_.clear();
+    pick_table_.clear();
+    for (Face f : mesh.faces()) {
+        const Halfedge h0 = mesh.halfedge(f);
+        const Vertex c0 = mesh.from_vertex(h0);
+        const std::size_t n = mesh.valence(f);
+        Halfedge h = mesh.next(h0);
+        for (std::size_t i = 1; i + 1 < n; ++i, h = mesh.next(h)) {
+            triangle_corners_.push_back(c0.idx());
+            triangle_corners_.push_back(mesh.from_vertex(h).idx());
+            triangle_corners_.push_back(mesh.to_vertex(h).idx());
+            triangle_faces_.push_back(f.idx());
+            // Halfedges c0->c1, c1->c2, c2->c0 of this fan triangle.
+            const std::uint32_t side0 = i == 1 ? h0.idx() : kInvalidIndex;
+            const std::uint32_t side1 = h.idx();
+            const std::uint32_t side2 = i + 2 == n ? mesh.next(h).idx() : kInvalidIndex;
+            pick_table_.insert(pick_table_.end(),
+                               {f.idx(), c0.idx(), mesh.from_vertex(h).idx(),
+                                mesh.to_vertex(h).idx(), side0, side1, side2, 0u});
+        }
+    }
+    triangle_count_ = triangle_faces_.size();
+    fill_geometry(mesh);
+
+    glBindBuffer(GL_TEXTURE_BUFFER, pick_tbo_buffer_);
+    upload_buffer(GL_TEXTURE_BUFFER, pick_capacity_, pick_table_.data(),
+                  pick_table_.size() * sizeof(std::uint32_t));
+    glBindTexture(GL_TEXTURE_BUFFER, pick_tbo_texture_);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, pick_tbo_buffer_);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    check_gl("MeshRenderer::upload");
+}
+
+void MeshRenderer::update_geometry(const Mesh& mesh) {
+    ensure_gl_objects();
+    fill_geometry(mesh);
+    check_gl("MeshRenderer::update_geometry");
+}
+
+void MeshRenderer::fill_geometry(const Mesh& mesh) {
+    compute_vertex_normals(mesh, vertex_normals_);
+    compute_face_normals(mesh, face_normals_);
+    vertices_.resize(3 * triangle_count_);
+    for (std::size_t t = 0; t < triangle_count_; ++t) {
+        const std::uint32_t flat = pack_normal(face_normals_[triangle_faces_[t]]);
+        // Mask bit k: the side opposite corner k is a real edge. Side c1->c2 is opposite
+        // corner 0, c2->c0 opposite 1, c0->c1 opposite 2.
+        const std::uint32_t* sides = &pick_table_[8 * t + 4];
+        const std::uint8_t mask = static_cast<std::uint8_t>((sides[1] != kInvalidIndex ? 1 : 0) |
+                                                            (sides[2] != kInvalidIndex ? 2 : 0) |
+                                                            (sides[0] != kInvalidIndex ? 4 : 0));
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t v = triangle_corners_[3 * t + static_cast<std::size_t>(k)];
+            const Vec3& p = mesh.position(Vertex(v));
+            MeshGpuVertex& out = vertices_[3 * t + static_cast<std::size_t>(k)];
+            out.position[0] = static_cast<float>(p.x);
+            out.position[1] = static_cast<float>(p.y);
+            out.position[2] = static_cast<float>(p.z);
+            out.smooth_normal = pack_normal(vertex_normals_[v]);
+            out.flat_normal = flat;
+            out.corner[0] = k == 0 ? 255 : 0;
+            out.corner[1] = k == 1 ? 255 : 0;
+            out.corner[2] = k == 2 ? 255 : 0;
+            out.corner[3] = mask;
+        }
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    upload_buffer(GL_ARRAY_BUFFER, vbo_capacity_, vertices_.data(),
+                  vertices_.size() * sizeof(MeshGpuVertex));
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions& options) {
+    if (triangle_count_ == 0) {
+        return;
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);  // open meshes show their back side (shaded two-sided)
+    shader_.use();
+    set_camera(shader_, camera, aspect);
+    const int mode = std::clamp(options.shading, 0, 9);
+    shader_.set_int("u_mode", mode);
+    shader_.set_int("u_smooth", options.smooth ? 1 : 0);
+    shader_.set_vec3("u_base_color", options.base_color.data());
+    shader_.set_int("u_wireframe", options.wireframe ? 1 : 0);
+    shader_.set_float("u_wire_width", options.wire_width_px);
+    shader_.set_vec4("u_wire_color", options.wire_color.data());
+    // Depth mode: the scene sphere's near and far view distances.
+    const float d = glm::length(camera.eye() - camera.target);
+    shader_.set_vec2("u_depth_range", std::max(d - camera.scene_radius, 0.0f),
+                     d + camera.scene_radius);
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
+    glBindVertexArray(0);
+}
+
+void MeshRenderer::draw_bare(const Camera& camera, float aspect) {
+    if (triangle_count_ == 0) {
+        return;
+    }
+    if (!bare_shader_.is_valid()) {
+        bare_shader_ = ShaderProgram("bare.vert", "bare.frag");
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    bare_shader_.use();
+    set_camera(bare_shader_, camera, aspect);
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
+    glBindVertexArray(0);
+}
+
+void MeshRenderer::draw_ids(const Camera& camera, float aspect, float vertex_radius_px,
+                            float edge_radius_px) {
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (triangle_count_ == 0) {
+        return;
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    pick_shader_.use();
+    set_camera(pick_shader_, camera, aspect);
+    pick_shader_.set_float("u_vertex_radius", vertex_radius_px);
+    pick_shader_.set_float("u_edge_radius", edge_radius_px);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_BUFFER, pick_tbo_texture_);
+    pick_shader_.set_int("u_table", 0);
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+}
+
+ElementRef MeshRenderer::decode_id(const std::uint8_t* rgb) {
+    const std::uint32_t id =
+        (std::uint32_t{rgb[0]} << 16) | (std::uint32_t{rgb[1]} << 8) | std::uint32_t{rgb[2]};
+    const std::uint32_t index = id & 0x3fffffu;
+    switch (id >> 22) {
+        case 1:
+            return ElementRef::vertex(Vertex(index));
+        case 2:
+            return ElementRef::halfedge(Halfedge(index));
+        case 3:
+            return ElementRef::face(Face(index));
+        default:
+            return {};
+    }
+}
+
+ElementRef MeshRenderer::pick(const Camera& camera, int width, int height, int x, int y) {
+    if (x < 0 || y < 0 || x >= width || y >= height) {
+        return {};
+    }
+    draw_ids(camera, static_cast<float>(width) / static_cast<float>(height));
+    std::uint8_t rgba[4] = {0, 0, 0, 0};
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(x, height - 1 - y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    check_gl("MeshRenderer::pick");
+    return decode_id(rgba);
+}
+
+}  // namespace meshedit

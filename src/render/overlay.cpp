@@ -1,0 +1,266 @@
+#include "meshedit/render/overlay.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "meshedit/core/normals.h"
+#include "meshedit/core/subdivision.h"
+
+namespace meshedit {
+
+namespace {
+
+// Sizes of the secondary primitives, derived from the style's main sizes so a single style
+// change (e.g. HiDPI scaling of the whole palette) scales every overlay consistently.
+
+/// Halfedge shafts are cut back this fraction of the edge at each end, so arrows of the
+/// halfedges around a vertex do not touch each other.
+constexpr double kShaftShorten = 0.15;
+/// Arrowhead length as a fraction of the shaft length.
+constexpr double kArrowLength = 0.2;
+/// Arrowhead half-width relative to its length.
+constexpr double kArrowHalfWidth = 0.4;
+/// Face tints are lifted off the surface by this fraction of the bounding-box diagonal, so
+/// they win the depth test against the shaded face without visibly floating.
+constexpr double kFaceOffset = 1e-3;
+/// Samples of the full curve: fine enough to look smooth at any zoom the viewer allows.
+constexpr int kCurveSamples = 200;
+
+float level_point_size(const OverlayStyle& s) {
+    return s.vertex_size_px * (2.0f / 3.0f);
+}
+float evaluated_point_size(const OverlayStyle& s) {
+    return s.vertex_size_px * 1.25f;
+}
+float level_line_width(const OverlayStyle& s) {
+    return s.feature_width_px;
+}
+float curve_line_width(const OverlayStyle& s) {
+    return s.edge_width_px * 0.75f;
+}
+float net_line_width(const OverlayStyle& s) {
+    return s.feature_width_px * 0.6f;
+}
+float net_point_size(const OverlayStyle& s) {
+    return s.vertex_size_px * 0.5f;
+}
+
+/// Curves are 2D (SPEC §4): drop any z so every curve overlay lies in the z = 0 plane even if
+/// a file carried a stray z.
+Vec3 flat(const Vec3& p) {
+    return {p.x, p.y, 0.0};
+}
+
+// Handle checks: the viewer passes indices that may be stale after an edit (a deleted or
+// collected element), so every lookup goes through these instead of asserting.
+bool is_live(const Mesh& m, Vertex v) {
+    return m.is_valid(v) && !m.is_deleted(v);
+}
+bool is_live(const Mesh& m, Edge e) {
+    return m.is_valid(e) && !m.is_deleted(e);
+}
+bool is_live(const Mesh& m, Face f) {
+    return m.is_valid(f) && !m.is_deleted(f) && m.is_valid(m.halfedge(f));
+}
+
+Vec3 face_centroid(const Mesh& m, Face f) {
+    Vec3 c;
+    std::size_t n = 0;
+    for (Vertex v : m.vertices(f)) {
+        c += m.position(v);
+        ++n;
+    }
+    return n > 0 ? c / static_cast<double>(n) : c;
+}
+
+void add_halfedge_arrow(const Mesh& m, Halfedge h, const Color& color, const OverlayStyle& style,
+                        OverlayBatch& out) {
+    const Vec3 a = m.position(m.from_vertex(h));
+    const Vec3 b = m.position(m.to_vertex(h));
+    const Vec3 d = b - a;
+    const double dd = dot(d, d);
+
+    // The face the arrow sits in: its own, or for a boundary halfedge the twin's face, whose
+    // centroid is then mirrored across the edge so the arrow lies outside, on h's side.
+    Face f = m.face(h);
+    const bool mirrored = !f.is_valid();
+    if (mirrored) {
+        f = m.face(Mesh::twin(h));
+    }
+
+    const Vec3 tail = lerp(a, b, kShaftShorten);
+    const Vec3 head = lerp(a, b, 1.0 - kShaftShorten);
+    if (!f.is_valid() || dd == 0.0) {
+        // A dangling edge with no face on either side: no plane to inset into, so only a shaft.
+        out.lines.push_back({tail, head, color, style.edge_width_px});
+        return;
+    }
+
+    Vec3 c = face_centroid(m, f);
+    const Vec3 foot = a + d * (dot(c - a, d) / dd);  // centroid projected onto the edge line
+    if (mirrored) {
+        c = 2.0 * foot - c;
+    }
+    const double s = style.halfedge_inset;
+    const Vec3 shaft_a = tail + s * (c - tail);
+    const Vec3 shaft_b = head + s * (c - head);
+    out.lines.push_back({shaft_a, shaft_b, color, style.edge_width_px});
+
+    // Arrowhead in the face plane: `across` is perpendicular to the edge inside the plane
+    // (towards the centroid). Its half-width is capped at half the shaft's distance from the
+    // edge so the head never crosses the edge into the neighbouring face.
+    const Vec3 shaft = shaft_b - shaft_a;
+    const double shaft_len = norm(shaft);
+    const Vec3 across = normalize(c - foot);
+    const double offset = s * norm(c - foot);
+    const double length = kArrowLength * shaft_len;
+    double half_width = kArrowHalfWidth * length;
+    if (half_width > 0.5 * offset) {
+        half_width = 0.5 * offset;
+    }
+    const Vec3 base = shaft_b - normalize(shaft) * length;
+    out.triangles.push_back(
+        {shaft_b, base + across * half_width, base - across * half_width, color});
+}
+
+void add_face_tint(const Mesh& m, Face f, const Color& color, const OverlayStyle& style,
+                   OverlayBatch& out) {
+    const Vec3 lift = face_normal(m, f) * (kFaceOffset * m.bounds().diagonal());
+    Color tint = color;
+    tint[3] = style.face_tint_alpha;
+
+    // Fan from the first corner: exact for the convex faces meshes here have.
+    std::vector<Vec3> corners;
+    for (Vertex v : m.vertices(f)) {
+        corners.push_back(m.position(v) + lift);
+    }
+    for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
+        out.triangles.push_back({corners[0], corners[i], corners[i + 1], tint});
+    }
+}
+
+}  // namespace
+
+void OverlayBatch::append(const OverlayBatch& other) {
+    points.insert(points.end(), other.points.begin(), other.points.end());
+    lines.insert(lines.end(), other.lines.begin(), other.lines.end());
+    triangles.insert(triangles.end(), other.triangles.begin(), other.triangles.end());
+}
+
+void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out) {
+    const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
+    for (Edge e : mesh.edges()) {
+        // Boundary wins over crease: a boundary edge is sharp anyway, and the boundary is
+        // the more important thing to see.
+        const bool boundary = mesh.is_boundary(e);
+        if (!boundary && !(crease && crease[e] != 0)) {
+            continue;
+        }
+        out.lines.push_back({mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)),
+                             boundary ? style.boundary : style.crease, style.feature_width_px});
+    }
+}
+
+void add_element_highlight(const Mesh& mesh, ElementRef element, const Color& color,
+                           const OverlayStyle& style, OverlayBatch& out) {
+    switch (element.kind) {
+        case ElementRef::Kind::None:
+            return;
+        case ElementRef::Kind::Vertex: {
+            const Vertex v(element.index);
+            if (is_live(mesh, v)) {
+                out.points.push_back({mesh.position(v), color, style.vertex_size_px});
+            }
+            return;
+        }
+        case ElementRef::Kind::Edge: {
+            const Edge e(element.index);
+            if (is_live(mesh, e)) {
+                out.lines.push_back({mesh.position(mesh.vertex(e, 0)),
+                                     mesh.position(mesh.vertex(e, 1)), color, style.edge_width_px});
+            }
+            return;
+        }
+        case ElementRef::Kind::Halfedge: {
+            const Halfedge h(element.index);
+            if (mesh.is_valid(h) && !mesh.is_deleted(h)) {
+                add_halfedge_arrow(mesh, h, color, style, out);
+            }
+            return;
+        }
+        case ElementRef::Kind::Face: {
+            const Face f(element.index);
+            if (is_live(mesh, f)) {
+                add_face_tint(mesh, f, color, style, out);
+            }
+            return;
+        }
+    }
+}
+
+void add_bezier_curve(const BezierCurve& curve, double t, int max_level, bool show_curve,
+                      const OverlayStyle& style, OverlayBatch& out) {
+    if (curve.control_points.empty()) {
+        return;
+    }
+    const auto levels = de_casteljau_levels(curve.control_points, t);
+    const int last = static_cast<int>(levels.size()) - 1;
+    const int shown = max_level < 0 || max_level > last ? last : max_level;
+    for (int k = 0; k <= shown; ++k) {
+        const auto& level = levels[static_cast<std::size_t>(k)];
+        if (k == last) {
+            // The single point of the last level is B(t) itself: drawn once, as the evaluated
+            // point, rather than also as a level disc.
+            out.points.push_back(
+                {flat(level[0]), style.evaluated_point, evaluated_point_size(style)});
+            break;
+        }
+        const Color& color = style.levels.empty()
+                                 ? style.curve
+                                 : style.levels[static_cast<std::size_t>(k) % style.levels.size()];
+        for (std::size_t i = 0; i + 1 < level.size(); ++i) {
+            out.lines.push_back(
+                {flat(level[i]), flat(level[i + 1]), color, level_line_width(style)});
+        }
+        for (const Vec3& p : level) {
+            out.points.push_back({flat(p), color, level_point_size(style)});
+        }
+    }
+    if (show_curve && curve.degree() >= 1) {
+        const auto samples = curve.polyline(kCurveSamples);
+        for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
+            out.lines.push_back(
+                {flat(samples[i]), flat(samples[i + 1]), style.curve, curve_line_width(style)});
+        }
+    }
+}
+
+void add_control_nets(std::span<const BezierPatch> patches, const OverlayStyle& style,
+                      OverlayBatch& out) {
+    for (const BezierPatch& patch : patches) {
+        // A malformed patch (grid size disagreeing with its point count) is skipped rather
+        // than read out of bounds.
+        if (patch.rows < 1 || patch.cols < 1 ||
+            patch.control_points.size() !=
+                static_cast<std::size_t>(patch.rows) * static_cast<std::size_t>(patch.cols)) {
+            continue;
+        }
+        const float width = net_line_width(style);
+        for (int r = 0; r < patch.rows; ++r) {
+            for (int c = 0; c + 1 < patch.cols; ++c) {
+                out.lines.push_back({patch.cp(r, c), patch.cp(r, c + 1), style.control_net, width});
+            }
+        }
+        for (int c = 0; c < patch.cols; ++c) {
+            for (int r = 0; r + 1 < patch.rows; ++r) {
+                out.lines.push_back({patch.cp(r, c), patch.cp(r + 1, c), style.control_net, width});
+            }
+        }
+        for (const Vec3& p : patch.control_points) {
+            out.points.push_back({p, style.control_net, net_point_size(style)});
+        }
+    }
+}
+
+}  // namespace meshedit
