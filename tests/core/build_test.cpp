@@ -102,7 +102,8 @@ TEST(BuildMesh, NonManifoldVertexIsSplit) {
     EXPECT_EQ(count_boundary_loops(mesh), 2u);
     EXPECT_EQ(test::canonical_faces(mesh),
               (std::vector<std::vector<std::uint32_t>>{{0, 1, 2}, {3, 4, 5}}));
-    EXPECT_NE(report.summary().find("split 1 non-manifold vertex (0) by adding 1 copy"), std::string::npos);
+    EXPECT_NE(report.summary().find("split 1 non-manifold vertex (0) by adding 1 copy"),
+              std::string::npos);
 }
 
 // Three triangles on edge 0-1 (a "book"): the edge is cut into boundaries.

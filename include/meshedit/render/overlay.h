@@ -66,19 +66,19 @@ struct ElementRef {
 
 /// The overlay palette (one place, so viewer, headless renders and docs agree).
 struct OverlayStyle {
-    Color selected{1.0f, 0.55f, 0.0f, 1.0f};    ///< orange
-    Color hovered{0.2f, 0.75f, 1.0f, 1.0f};     ///< light blue
-    Color boundary{0.85f, 0.1f, 0.1f, 1.0f};    ///< red
-    Color crease{0.1f, 0.55f, 0.1f, 1.0f};      ///< green
+    Color selected{1.0f, 0.55f, 0.0f, 1.0f};  ///< orange
+    Color hovered{0.2f, 0.75f, 1.0f, 1.0f};   ///< light blue
+    Color boundary{0.85f, 0.1f, 0.1f, 1.0f};  ///< red
+    Color crease{0.1f, 0.55f, 0.1f, 1.0f};    ///< green
     float vertex_size_px = 12.0f;
     float edge_width_px = 4.0f;
-    float feature_width_px = 2.5f;              ///< boundary and crease edges
+    float feature_width_px = 2.5f;  ///< boundary and crease edges
     float face_tint_alpha = 0.45f;
     /// Halfedge arrows sit inside their face: pulled this fraction toward the face centre.
     float halfedge_inset = 0.2f;
     /// Colours of the de Casteljau levels: level k uses levels[k % size].
-    std::vector<Color> levels{{0.3f, 0.3f, 0.3f, 1.0f}, {0.1f, 0.45f, 0.9f, 1.0f},
-                              {0.1f, 0.65f, 0.3f, 1.0f}, {0.85f, 0.55f, 0.05f, 1.0f},
+    std::vector<Color> levels{{0.3f, 0.3f, 0.3f, 1.0f},    {0.1f, 0.45f, 0.9f, 1.0f},
+                              {0.1f, 0.65f, 0.3f, 1.0f},   {0.85f, 0.55f, 0.05f, 1.0f},
                               {0.75f, 0.15f, 0.55f, 1.0f}, {0.0f, 0.6f, 0.65f, 1.0f}};
     Color curve{0.05f, 0.05f, 0.05f, 1.0f};
     Color evaluated_point{0.9f, 0.1f, 0.1f, 1.0f};
