@@ -1,9 +1,17 @@
 #!/usr/bin/env bash
-# `make run`: opens the viewer on the default sample once it exists.
+# `make run`: opens the viewer on the default sample; without a viewer or a display, renders
+# the sample headless to a PNG instead and says where it is.
 set -euo pipefail
 build_dir=${1:-build}
-if [ -x "$build_dir/meshedit" ]; then
-    exec "$build_dir/meshedit" dae/teapot.dae
+sample=dae/teapot.dae
+if [ -x "$build_dir/src/viewer/meshedit-view" ] && [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+    exec "$build_dir/src/viewer/meshedit-view" "$sample"
 fi
-echo "make run: the viewer is not built yet (the halfedge core is; see README 'Status')."
-echo "Run 'make test' to build and test the core."
+if [ -z "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+    echo "make run: no display (DISPLAY is not set)."
+else
+    echo "make run: the interactive viewer is not built yet (it is the next piece of work)."
+fi
+out="$build_dir/teapot.png"
+"$build_dir/src/headless/meshedit-render" "$sample" -o "$out" --size 1024x768
+echo "make run: rendered $sample headless to $out"

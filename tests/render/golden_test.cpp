@@ -1,0 +1,237 @@
+/// \file
+/// Golden-image tests: each case renders one picture with the real headless executable
+/// (meshedit-render, OSMesa) and compares it with tests/golden/NAME.png.
+///
+/// MESHEDIT_UPDATE_GOLDEN=1 in the environment rewrites the references instead (and passes);
+/// look at every rewritten PNG before committing it. docs/rendering.md shows them all.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/run.h"
+#include "support/image_compare.h"
+
+namespace meshedit::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// One golden image: what to render and how.
+struct GoldenCase {
+    std::string name;               ///< file stem in tests/golden/ and the gtest parameter name
+    std::string input;              ///< relative to the repository root
+    std::vector<std::string> args;  ///< after `FILE -o OUT --size WxH`
+};
+
+// Small enough to keep every PNG far under 100 KB, large enough to see facets and arrows.
+const char* const kSize = "384x288";
+
+// The table. Names group by subject (prefix) so the gallery and a --gtest_filter read well.
+const std::vector<GoldenCase>& golden_cases() {
+    static const std::vector<GoldenCase> cases = {
+        // Flat vs smooth normals: smooth must hide the facets flat shows.
+        {"teapot_flat", "dae/teapot.dae", {"--shading", "phong", "--flat"}},
+        {"teapot_smooth", "dae/teapot.dae", {"--shading", "phong", "--smooth"}},
+        // Local operations on the cube (docs/samples.md reference ops), result selected.
+        // Flat normals: smooth ones on a cube make one blurry highlight and hide the edit.
+        // Each camera faces the edited edge: flip on −x (az −110), split on the −y/−z edge
+        // (from below), collapse on the +x/−z edge (az 120, at distance 7: the default framing
+        // of the collapsed cube is tighter than the input's and grazes the border).
+        {"cube_input", "dae/cube.dae", {"--flat", "--wireframe", "--camera", "-110,25"}},
+        {"cube_flip",
+         "dae/cube.dae",
+         {"--ops", "flip:0-6", "--select", "e:2-4", "--flat", "--wireframe", "--camera",
+          "-110,25"}},
+        {"cube_split",
+         "dae/cube.dae",
+         {"--ops", "split:0-1", "--select", "v:8", "--flat", "--wireframe", "--camera",
+          "-150,-35"}},
+        {"cube_split_edge",
+         "dae/cube.dae",
+         {"--ops", "split:0-1", "--select", "e:0-8", "--flat", "--wireframe", "--camera",
+          "-150,-35"}},
+        {"cube_collapse",
+         "dae/cube.dae",
+         {"--ops", "collapse:1-3", "--select", "v:1", "--flat", "--wireframe", "--camera",
+          "120,30,7"}},
+        // Loop subdivision: levels, a genus-1 surface, creases, a boundary. The torus is flat
+        // shaded without wires: at 9,216 faces 1 px wires would turn it black.
+        {"cube_loop1", "dae/cube.dae", {"--ops", "loop:1", "--wireframe"}},
+        {"cube_loop2", "dae/cube.dae", {"--ops", "loop:2", "--wireframe"}},
+        {"cube_loop3", "dae/cube.dae", {"--ops", "loop:3", "--wireframe"}},
+        {"torus_loop2", "dae/torus.dae", {"--ops", "loop:2", "--flat", "--camera", "30,40"}},
+        {"creased_input", "dae/creased.dae", {"--wireframe"}},
+        {"creased_loop3", "dae/creased.dae", {"--ops", "loop:3"}},
+        {"bowl_loop2", "dae/bowl.dae", {"--ops", "loop:2", "--camera", "30,35"}},
+        // One selection of each element type. Vertex 0 = (−0.53, 0.85, 0) and 1 = (0.53, 0.85,
+        // 0) share the faces (0,5,1) on +z and (0,1,7) on −z: each camera looks straight at
+        // its element (az = atan2(x, z), el = asin(y)), so nothing sits on the silhouette.
+        {"select_vertex",
+         "dae/icosahedron.dae",
+         {"--select", "v:0", "--wireframe", "--camera", "-90,58"}},
+        {"select_edge",
+         "dae/icosahedron.dae",
+         {"--select", "e:0-1", "--wireframe", "--camera", "0,70"}},
+        {"select_halfedge",
+         "dae/icosahedron.dae",
+         {"--select", "h:0-1", "--wireframe", "--camera", "0,70"}},
+        {"select_halfedge_twin",
+         "dae/icosahedron.dae",
+         {"--select", "h:1-0", "--wireframe", "--camera", "0,70"}},
+        {"select_face",
+         "dae/icosahedron.dae",
+         {"--select", "f:0", "--wireframe", "--camera", "-45,35"}},
+        // de Casteljau: every level of the degree-5 curve at t = 0.5, then t = 0.25.
+        {"curve6_level0", "bez/curve6.bzc", {"--level", "0", "--t", "0.5"}},
+        {"curve6_level1", "bez/curve6.bzc", {"--level", "1", "--t", "0.5"}},
+        {"curve6_level2", "bez/curve6.bzc", {"--level", "2", "--t", "0.5"}},
+        {"curve6_level3", "bez/curve6.bzc", {"--level", "3", "--t", "0.5"}},
+        {"curve6_level4", "bez/curve6.bzc", {"--level", "4", "--t", "0.5"}},
+        {"curve6_level5", "bez/curve6.bzc", {"--level", "5", "--t", "0.5"}},
+        {"curve6_t025", "bez/curve6.bzc", {"--level", "5", "--t", "0.25"}},
+        {"curve6_no_curve", "bez/curve6.bzc", {"--level", "5", "--t", "0.25", "--no-curve"}},
+        // Bezier patches tessellated, with and without their control nets.
+        {"teapot_bez", "bez/teapot.bez", {"--smooth"}},
+        {"teapot_bez_net", "bez/teapot.bez", {"--smooth", "--net"}},
+        // The wireframe overlay toggled on a smooth surface.
+        {"torus_wireframe_off", "dae/torus.dae", {"--smooth"}},
+        {"torus_wireframe_on", "dae/torus.dae", {"--smooth", "--wireframe"}},
+        // Shading modes, each on the same teapot.
+        {"shading_0_normals", "dae/teapot.dae", {"--shading", "0", "--smooth"}},
+        {"shading_1_phong", "dae/teapot.dae", {"--shading", "1", "--smooth"}},
+        {"shading_2_grey", "dae/teapot.dae", {"--shading", "2"}},
+        {"shading_3_studio", "dae/teapot.dae", {"--shading", "3", "--smooth"}},
+        {"shading_4_matcap", "dae/teapot.dae", {"--shading", "4", "--smooth"}},
+        {"shading_5_depth", "dae/teapot.dae", {"--shading", "5", "--smooth"}},
+        {"shading_6_hemisphere", "dae/teapot.dae", {"--shading", "6", "--smooth"}},
+        // 7–9 alias mode 1 until they get their own look (render/shading.h): no images yet.
+    };
+    return cases;
+}
+
+fs::path source_dir() {
+    return MESHEDIT_SOURCE_DIR;
+}
+fs::path golden_dir() {
+    return source_dir() / "tests" / "golden";
+}
+fs::path out_dir() {
+    return fs::path(MESHEDIT_BUILD_DIR) / "golden_out";
+}
+
+// MESHEDIT_RENDER_EXE in the environment runs another build (or a stand-in) instead.
+std::string render_exe() {
+    const char* env = std::getenv("MESHEDIT_RENDER_EXE");
+    return env != nullptr && *env != '\0' ? env : MESHEDIT_RENDER_EXE;
+}
+
+bool update_mode() {
+    const char* env = std::getenv("MESHEDIT_UPDATE_GOLDEN");
+    return env != nullptr && std::string(env) == "1";
+}
+
+std::string command_line(const std::string& exe, const std::vector<std::string>& args) {
+    std::string line = exe;
+    for (const std::string& a : args) {
+        line += " " + a;
+    }
+    return line;
+}
+
+// gtest prints a failing parameter; the name is what identifies it (not its bytes).
+void PrintTo(const GoldenCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
+class Golden : public ::testing::TestWithParam<GoldenCase> {};
+
+TEST_P(Golden, MatchesReference) {
+    const GoldenCase& c = GetParam();
+    const fs::path render_dir = out_dir() / "render";
+    fs::create_directories(render_dir);
+    const fs::path rendered = render_dir / (c.name + ".png");
+    fs::remove(rendered);  // a stale file must not pass for a fresh render
+
+    std::vector<std::string> args = {(source_dir() / c.input).string(), "-o", rendered.string(),
+                                     "--size", kSize};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const std::string exe = render_exe();
+    const std::string command = command_line(exe, args);
+    // llvmpipe on two shared cores needs a few seconds for the Loop-3 meshes; 120 s only
+    // catches hangs.
+    const RunResult run = run_program(exe, args, 120.0);
+    ASSERT_FALSE(run.timed_out) << "render timed out: " << command;
+    ASSERT_EQ(run.signal, 0) << "render crashed (signal " << run.signal << "): " << command
+                             << "\nstderr:\n"
+                             << run.err;
+    ASSERT_EQ(run.exit_code, 0) << "render failed: " << command << "\nstderr:\n" << run.err;
+    ASSERT_TRUE(fs::exists(rendered))
+        << "render exited 0 but wrote no " << rendered << ": " << command;
+
+    const fs::path reference = golden_dir() / (c.name + ".png");
+    if (update_mode()) {
+        if (same_file_bytes(rendered, reference)) {
+            std::cout << "golden: unchanged " << reference.string() << "\n";
+            return;
+        }
+        fs::copy_file(rendered, reference, fs::copy_options::overwrite_existing);
+        std::cout << "golden: rewrote " << reference.string() << "\n";
+        // ctest hides a passing test's output; the list of rewritten files stays here.
+        std::ofstream(out_dir() / "rewritten.txt", std::ios::app) << reference.string() << "\n";
+        return;
+    }
+    ASSERT_TRUE(fs::exists(reference))
+        << "no reference image " << reference.string() << "\n  create it with "
+        << "`MESHEDIT_UPDATE_GOLDEN=1 make test` (or `MESHEDIT_UPDATE_GOLDEN=1 ctest -L golden` "
+        << "in the build folder), then open the PNG and check it shows the right thing before "
+        << "committing it";
+    EXPECT_TRUE(images_match(rendered, reference, out_dir(), c.name)) << "command: " << command;
+}
+
+INSTANTIATE_TEST_SUITE_P(Renders, Golden, ::testing::ValuesIn(golden_cases()),
+                         [](const ::testing::TestParamInfo<GoldenCase>& param_info) {
+                             return param_info.param.name;
+                         });
+
+// Every PNG in tests/golden/ belongs to a case, so a renamed or dropped case does not leave
+// an unchecked image behind (or in the gallery).
+TEST(GoldenSet, NoOrphanReferences) {
+    std::set<std::string> names;
+    for (const GoldenCase& c : golden_cases()) {
+        EXPECT_TRUE(names.insert(c.name).second) << "duplicate case name " << c.name;
+    }
+    if (!fs::exists(golden_dir())) {
+        return;  // nothing generated yet; each case reports its missing reference
+    }
+    for (const auto& entry : fs::directory_iterator(golden_dir())) {
+        if (entry.path().extension() == ".png") {
+            EXPECT_TRUE(names.count(entry.path().stem().string()) != 0)
+                << entry.path().string() << " has no case in golden_test.cpp";
+        }
+    }
+}
+
+// The gallery in docs/rendering.md links every golden image, so the doc cannot fall behind.
+TEST(GoldenSet, GalleryListsEveryCase) {
+    std::ifstream in(source_dir() / "docs" / "rendering.md");
+    ASSERT_TRUE(in) << "docs/rendering.md is missing";
+    std::stringstream text;
+    text << in.rdbuf();
+    for (const GoldenCase& c : golden_cases()) {
+        const std::string link = "(../tests/golden/" + c.name + ".png)";
+        EXPECT_NE(text.str().find(link), std::string::npos)
+            << "docs/rendering.md has no image link " << link;
+    }
+}
+
+}  // namespace
+}  // namespace meshedit::test
