@@ -36,6 +36,22 @@ void compute_face_normals(const Mesh& mesh, std::vector<Vec3>& out) {
 void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out) {
     out.assign(mesh.vertices_size(), Vec3{});
     for (Face f : mesh.faces()) {
+        const Halfedge h0 = mesh.halfedge(f);
+        const Halfedge h1 = mesh.next(h0);
+        const Halfedge h2 = mesh.next(h1);
+        if (mesh.next(h2) == h0) {
+            // Triangles, the common case: the same cross product face_area_vector() forms,
+            // scattered to the three corners without walking the face twice.
+            const Vertex v0 = mesh.to_vertex(h2);
+            const Vertex v1 = mesh.to_vertex(h0);
+            const Vertex v2 = mesh.to_vertex(h1);
+            const Vec3& p0 = mesh.position(v0);
+            const Vec3 a = cross(mesh.position(v1) - p0, mesh.position(v2) - p0);
+            out[v0.idx()] += a;
+            out[v1.idx()] += a;
+            out[v2.idx()] += a;
+            continue;
+        }
         const Vec3 a = face_area_vector(mesh, f);
         for (Vertex v : mesh.vertices(f)) {
             out[v.idx()] += a;
