@@ -1,7 +1,17 @@
 #!/usr/bin/env bash
-# Installs every Debian package MeshEdit needs to build, test and benchmark.
-# Idempotent: when everything is present it only runs dpkg queries (well under a second).
+# Installs every Debian package MeshEdit needs to build and test; with --bench also the
+# benchmark anchors (OpenMesh, OpenSubdiv, CGAL and its demo meshes, Assimp) and perf, which
+# only `make bench` needs. Idempotent: when everything is present it only runs dpkg queries
+# (well under a second).
 set -euo pipefail
+
+bench=0
+for arg in "$@"; do
+    case "$arg" in
+        --bench) bench=1 ;;
+        *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
+    esac
+done
 
 packages=(
     build-essential cmake ninja-build pkg-config
@@ -11,6 +21,9 @@ packages=(
     assimp-utils assimp-testmodels
     libosmesa6-dev libgl-dev libglm-dev libopenimageio-dev openimageio-tools
 )
+if [ "$bench" -eq 1 ]; then
+    packages+=(libopenmesh-dev libosd-dev libcgal-dev libcgal-demo libassimp-dev linux-perf)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,432 @@
+// bench_io_draw: COLLADA loading against Assimp, and headless drawing against a bare draw of
+// the same buffers (bench/README.md). One (job, impl) per process, so page faults count:
+//
+//   bench_io_draw --job collada_load_1m_triangles --impl meshedit|assimp [--runs N] [--data DIR]
+//   bench_io_draw --job collada_load_1m_polylist  --impl meshedit|assimp [--runs N] [--data DIR]
+//   bench_io_draw --job draw_1m_triangles [--impl all] [--runs N] [--size WxH] [--samples S]
+//   bench_io_draw --generate [--data DIR]     writes the COLLADA inputs (untimed, idempotent)
+//   bench_io_draw --list                      prints "JOB IMPL" per configuration
+//
+// The inputs are generated, never committed: shapes::torus(1000, 500) (500,000 vertices,
+// 1,000,000 triangles) as a COLLADA <triangles> file (~34 MB) and as a <polylist> with one
+// normal per face (NORMAL at offset 1, so every corner has two indices). The draw job renders
+// the same torus at 1280x800 in one OSMesa context: N frames through MeshRenderer::draw
+// (smooth Blinn-Phong) and N through MeshRenderer::draw_bare (transform-only shader, same
+// vertex buffer), glFinish after each, and prints a RESULT line for each of the two.
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <GL/gl.h>
+
+#include <assimp/Importer.hpp>
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "../src/headless/osmesa_context.h"
+#include "bench_util.h"
+#include "meshedit/core/shapes.h"
+#include "meshedit/io/io.h"
+#include "meshedit/render/camera.h"
+#include "meshedit/render/mesh_renderer.h"
+#include "meshedit/render/overlay_renderer.h"
+#include "meshedit/render/render_target.h"
+#include "meshedit/render/shading.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace meshedit;
+
+constexpr int kTorusRing = 1000;  // 1000 x 500 torus: 500,000 vertices, 1,000,000 triangles
+constexpr int kTorusTube = 500;
+
+const char* const kTrianglesFile = "torus_1m_triangles.dae";
+const char* const kPolylistFile = "torus_1m_polylist.dae";
+
+/// A growing text buffer with fast number formatting (std::to_chars, shortest round trip).
+class Writer {
+public:
+    void text(std::string_view s) { out_.append(s); }
+    void number(float v) {
+        char buf[32];
+        const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+        out_.append(buf, end);
+    }
+    void number(std::uint32_t v) {
+        char buf[16];
+        const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+        out_.append(buf, end);
+    }
+    void space() { out_.push_back(' '); }
+    /// Writes the buffer to `tmp`, then renames it to `path` (no partial inputs on a crash).
+    void save(const fs::path& path) const {
+        const fs::path tmp = path.string() + ".tmp";
+        std::FILE* f = std::fopen(tmp.c_str(), "wb");
+        if (f == nullptr || std::fwrite(out_.data(), 1, out_.size(), f) != out_.size() ||
+            std::fclose(f) != 0) {
+            throw std::runtime_error("cannot write " + tmp.string());
+        }
+        fs::rename(tmp, path);
+    }
+    std::size_t size() const { return out_.size(); }
+
+private:
+    std::string out_;
+};
+
+void write_source(Writer& w, std::string_view id, const std::vector<float>& xyz) {
+    const auto count = static_cast<std::uint32_t>(xyz.size());
+    w.text("        <source id=\"");
+    w.text(id);
+    w.text("\">\n          <float_array id=\"");
+    w.text(id);
+    w.text("-array\" count=\"");
+    w.number(count);
+    w.text("\">");
+    for (std::size_t i = 0; i < xyz.size(); ++i) {
+        if (i > 0) {
+            w.space();
+        }
+        w.number(xyz[i]);
+    }
+    w.text("</float_array>\n          <technique_common>\n            <accessor source=\"#");
+    w.text(id);
+    w.text("-array\" count=\"");
+    w.number(count / 3);
+    w.text(
+        "\" stride=\"3\">\n"
+        "              <param name=\"X\" type=\"float\"/>\n"
+        "              <param name=\"Y\" type=\"float\"/>\n"
+        "              <param name=\"Z\" type=\"float\"/>\n"
+        "            </accessor>\n          </technique_common>\n        </source>\n");
+}
+
+/// The torus as COLLADA 1.4.1: <triangles> (positions only) or <polylist> (vcount 3, one
+/// normal per face at offset 1).
+void write_torus(const Mesh& mesh, const fs::path& path, bool polylist) {
+    std::vector<float> positions;
+    positions.reserve(3 * mesh.n_vertices());
+    for (Vertex v : mesh.vertices()) {
+        const Vec3& p = mesh.position(v);
+        positions.insert(positions.end(), {static_cast<float>(p.x), static_cast<float>(p.y),
+                                           static_cast<float>(p.z)});
+    }
+    std::vector<std::uint32_t> corners;
+    std::vector<float> normals;
+    corners.reserve(3 * mesh.n_faces());
+    for (Face f : mesh.faces()) {
+        const Halfedge h0 = mesh.halfedge(f);
+        const Halfedge h1 = mesh.next(h0);
+        const Halfedge h2 = mesh.next(h1);
+        for (Halfedge h : {h0, h1, h2}) {
+            corners.push_back(mesh.to_vertex(h).idx());
+        }
+        if (polylist) {
+            const Vec3 a = mesh.position(mesh.to_vertex(h0));
+            const Vec3 n = normalize(cross(mesh.position(mesh.to_vertex(h1)) - a,
+                                           mesh.position(mesh.to_vertex(h2)) - a));
+            normals.insert(normals.end(), {static_cast<float>(n.x), static_cast<float>(n.y),
+                                           static_cast<float>(n.z)});
+        }
+    }
+    const auto n_faces = static_cast<std::uint32_t>(corners.size() / 3);
+
+    Writer w;
+    w.text(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+        "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
+        "  <asset>\n    <unit name=\"meter\" meter=\"1\"/>\n    <up_axis>Y_UP</up_axis>\n"
+        "  </asset>\n  <library_geometries>\n    <geometry id=\"mesh\" name=\"mesh\">\n"
+        "      <mesh>\n");
+    write_source(w, "mesh-positions", positions);
+    if (polylist) {
+        write_source(w, "mesh-normals", normals);
+    }
+    w.text(
+        "        <vertices id=\"mesh-vertices\">\n"
+        "          <input semantic=\"POSITION\" source=\"#mesh-positions\"/>\n"
+        "        </vertices>\n");
+    w.text(polylist ? "        <polylist count=\"" : "        <triangles count=\"");
+    w.number(n_faces);
+    w.text("\">\n          <input semantic=\"VERTEX\" source=\"#mesh-vertices\" offset=\"0\"/>\n");
+    if (polylist) {
+        w.text(
+            "          <input semantic=\"NORMAL\" source=\"#mesh-normals\" offset=\"1\"/>\n"
+            "          <vcount>");
+        for (std::uint32_t f = 0; f < n_faces; ++f) {
+            w.text(f == 0 ? "3" : " 3");
+        }
+        w.text("</vcount>\n");
+    }
+    w.text("          <p>");
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        if (i > 0) {
+            w.space();
+        }
+        w.number(corners[i]);
+        if (polylist) {
+            w.space();
+            w.number(static_cast<std::uint32_t>(i / 3));
+        }
+    }
+    w.text(polylist ? "</p>\n        </polylist>\n" : "</p>\n        </triangles>\n");
+    w.text(
+        "      </mesh>\n    </geometry>\n  </library_geometries>\n"
+        "  <library_visual_scenes>\n    <visual_scene id=\"scene\" name=\"scene\">\n"
+        "      <node id=\"node\" name=\"mesh\">\n        <instance_geometry url=\"#mesh\"/>\n"
+        "      </node>\n    </visual_scene>\n  </library_visual_scenes>\n"
+        "  <scene>\n    <instance_visual_scene url=\"#scene\"/>\n  </scene>\n</COLLADA>\n");
+    w.save(path);
+    std::fprintf(stderr, "bench_io_draw: wrote %s (%.1f MB)\n", path.c_str(),
+                 static_cast<double>(w.size()) / 1e6);
+}
+
+/// Writes the missing inputs into `data`.
+void generate(const fs::path& data) {
+    fs::create_directories(data);
+    const bool need_tri = !fs::exists(data / kTrianglesFile);
+    const bool need_poly = !fs::exists(data / kPolylistFile);
+    if (!need_tri && !need_poly) {
+        return;
+    }
+    const Mesh torus = shapes::torus(kTorusRing, kTorusTube);
+    if (need_tri) {
+        write_torus(torus, data / kTrianglesFile, false);
+    }
+    if (need_poly) {
+        write_torus(torus, data / kPolylistFile, true);
+    }
+}
+
+void bench_collada(const std::string& job, const std::string& impl, int runs,
+                   const fs::path& data) {
+    const fs::path file =
+        data / (job == "collada_load_1m_triangles" ? kTrianglesFile : kPolylistFile);
+    if (!fs::exists(file)) {
+        // Generating here inflates this process's peak RSS; run_bench.py runs --generate first.
+        std::fprintf(stderr, "bench_io_draw: %s missing, generating (peak RSS includes it)\n",
+                     file.c_str());
+        generate(data);
+    }
+    const double file_mb = static_cast<double>(fs::file_size(file)) / 1e6;
+    double faces_out = 0;
+    double vertices_out = 0;
+    std::vector<double> ms;
+    if (impl == "meshedit") {
+        std::optional<LoadedMesh> loaded;
+        ms = bench::time_runs(
+            runs, [&] { loaded.reset(); }, [&] { loaded.emplace(read_mesh(file)); });
+        faces_out = static_cast<double>(loaded->mesh.n_faces());
+        vertices_out = static_cast<double>(loaded->mesh.n_vertices());
+    } else if (impl == "assimp") {
+        std::unique_ptr<Assimp::Importer> importer;
+        const aiScene* scene = nullptr;
+        ms = bench::time_runs(
+            runs, [&] { importer = std::make_unique<Assimp::Importer>(); },
+            [&] {
+                scene = importer->ReadFile(file.string(),
+                                           aiProcess_JoinIdenticalVertices | aiProcess_Triangulate);
+            });
+        if (scene == nullptr) {
+            throw std::runtime_error("Assimp: " + std::string(importer->GetErrorString()));
+        }
+        for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+            faces_out += scene->mMeshes[i]->mNumFaces;
+            vertices_out += scene->mMeshes[i]->mNumVertices;
+        }
+    } else {
+        throw std::invalid_argument("unknown impl '" + impl + "' for " + job +
+                                    " (meshedit, assimp)");
+    }
+    bench::print_result(job, impl, ms,
+                        {{"peak_rss_mb", bench::peak_rss_mb()},
+                         {"faces_out", faces_out},
+                         {"vertices_out", vertices_out},
+                         {"file_mb", file_mb},
+                         {"mb_per_s", file_mb / (bench::median_of(ms) / 1000.0)}});
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+void bench_draw(const std::string& job, const std::string& impl, int runs, int width, int height,
+                int samples) {
+    if (impl != "all" && impl != "meshedit" && impl != "bare") {
+        throw std::invalid_argument("unknown impl '" + impl + "' for " + job +
+                                    " (all, meshedit, bare: one run measures both)");
+    }
+    const Mesh mesh = shapes::torus(kTorusRing, kTorusTube);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    Camera camera;
+    camera.azimuth_deg = 30.0f;
+    camera.elevation_deg = 20.0f;
+    std::vector<Vec3> points;
+    points.reserve(mesh.n_vertices());
+    BoundingBox box;
+    for (Vertex v : mesh.vertices()) {
+        points.push_back(mesh.position(v));
+        box.add(mesh.position(v));
+    }
+    camera.frame(box, aspect, points);
+
+    headless::OsMesaContext context(width, height);
+    RenderTarget target(width, height, samples);
+    target.bind();
+    BackgroundRenderer background;
+    MeshRenderer renderer;
+    RenderOptions options;  // smooth Blinn-Phong ("phong", mode 1)
+    const auto upload_start = std::chrono::steady_clock::now();
+    renderer.upload(mesh);
+    context.finish();
+    const double upload_ms = ms_since(upload_start);
+    std::printf("INFO gl_renderer: %s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+
+    auto shaded = [&] {
+        background.draw(kBackgroundTop, kBackgroundBottom);
+        renderer.draw(camera, aspect, options);
+        context.finish();
+    };
+    auto bare = [&] {
+        background.draw(kBackgroundTop, kBackgroundBottom);
+        renderer.draw_bare(camera, aspect);
+        context.finish();
+    };
+    // One warm-up frame each (shader compilation, first-touch of the buffers), then the
+    // timed frames interleaved so drift in machine load hits both alike.
+    shaded();
+    bare();
+    std::vector<double> shaded_ms, bare_ms;
+    for (int i = 0; i < runs; ++i) {
+        auto start = std::chrono::steady_clock::now();
+        shaded();
+        shaded_ms.push_back(ms_since(start));
+        start = std::chrono::steady_clock::now();
+        bare();
+        bare_ms.push_back(ms_since(start));
+    }
+    if (glGetError() != GL_NO_ERROR) {
+        throw std::runtime_error("GL error while drawing");
+    }
+    const auto triangles = static_cast<double>(renderer.triangle_count());
+    const std::map<std::string, double> common = {{"triangles", triangles},
+                                                  {"width", static_cast<double>(width)},
+                                                  {"height", static_cast<double>(height)},
+                                                  {"samples", target.samples()}};
+    auto with = [&](std::map<std::string, double> extra) {
+        extra.insert(common.begin(), common.end());
+        extra["peak_rss_mb"] = bench::peak_rss_mb();
+        return extra;
+    };
+    bench::print_result(job, "meshedit", shaded_ms, with({{"upload_ms", upload_ms}}));
+    bench::print_result(job, "bare", bare_ms, with({}));
+}
+
+struct Args {
+    std::string job;
+    std::string impl;
+    int runs = 5;
+    fs::path data;
+    bool generate = false;
+    bool list = false;
+    int width = 1280;
+    int height = 800;
+    int samples = 4;  // meshedit-render's default
+};
+
+int to_int(const std::string& s, const char* what) {
+    int v = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size()) {
+        throw std::invalid_argument(std::string("bad ") + what + " '" + s + "'");
+    }
+    return v;
+}
+
+Args parse(int argc, char** argv) {
+    Args a;
+    a.data = fs::path(argv[0]).parent_path() / "data";
+    std::vector<std::string> args(argv + 1, argv + argc);
+    auto value = [&](std::size_t& i) -> const std::string& {
+        if (i + 1 >= args.size()) {
+            throw std::invalid_argument(args[i] + " needs a value");
+        }
+        return args[++i];
+    };
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& s = args[i];
+        if (s == "--job") {
+            a.job = value(i);
+        } else if (s == "--impl") {
+            a.impl = value(i);
+        } else if (s == "--runs") {
+            a.runs = to_int(value(i), "run count");
+        } else if (s == "--data") {
+            a.data = value(i);
+        } else if (s == "--generate") {
+            a.generate = true;
+        } else if (s == "--list") {
+            a.list = true;
+        } else if (s == "--size") {
+            const std::string& v = value(i);
+            const auto x = v.find('x');
+            if (x == std::string::npos) {
+                throw std::invalid_argument("--size wants WxH");
+            }
+            a.width = to_int(v.substr(0, x), "width");
+            a.height = to_int(v.substr(x + 1), "height");
+        } else if (s == "--samples") {
+            a.samples = to_int(value(i), "samples");
+        } else {
+            throw std::invalid_argument("unknown argument '" + s + "'");
+        }
+    }
+    if (a.runs < 1) {
+        throw std::invalid_argument("--runs must be positive");
+    }
+    return a;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const Args a = parse(argc, argv);
+        if (a.list) {
+            for (const char* job : {"collada_load_1m_triangles", "collada_load_1m_polylist"}) {
+                std::printf("%s meshedit\n%s assimp\n", job, job);
+            }
+            std::printf("draw_1m_triangles all\n");
+            return 0;
+        }
+        if (a.generate) {
+            generate(a.data);
+            return 0;
+        }
+        if (a.job == "collada_load_1m_triangles" || a.job == "collada_load_1m_polylist") {
+            bench_collada(a.job, a.impl, a.runs, a.data);
+        } else if (a.job == "draw_1m_triangles") {
+            bench_draw(a.job, a.impl.empty() ? "all" : a.impl, a.runs, a.width, a.height,
+                       a.samples);
+        } else {
+            throw std::invalid_argument("unknown job '" + a.job +
+                                        "' (collada_load_1m_triangles, collada_load_1m_polylist, "
+                                        "draw_1m_triangles; or --list, --generate)");
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_io_draw: %s\n", e.what());
+        return 2;
+    }
+    return 0;
+}

@@ -1,0 +1,543 @@
+// Loop subdivision: MeshEdit against OpenMesh LoopT, CGAL Loop_subdivision and OpenSubdiv Far.
+//
+// One (job, impl) per process, so that peak RSS belongs to one implementation:
+//
+//     bench_loop --job loop_1m_1level --impl cgal --runs 5 [--data DIR]
+//     bench_loop --list        (prints every "job impl" pair, one a line)
+//
+// Jobs: loop_1m_1level (torus(1000, 500), 1M faces, one level), loop_100k_levels_K (torus(250,
+// 200), 100k faces, K = 1..4 levels, cumulative time from the input), loop_real_NAME_levels_K
+// (NAME = bunny, armadillo from CGAL's demo data, K = 1..3). Impls: meshedit, openmesh, cgal,
+// opensubdiv_min, opensubdiv_full.
+//
+// Inputs: every implementation is built from the same position and triangle arrays (a
+// MeshEdit-built soup: the torus from shapes::torus, the real meshes read from .off and passed
+// once through build_mesh() so that all libraries get the same manifold triangles, unreferenced
+// vertices dropped). The copy of the input is made in time_runs' untimed setup, which also
+// frees the previous result; the timed body is the subdivision only:
+//   meshedit         loop_subdivide() K times on a copy of the Mesh (result: the complete
+//                    editable halfedge mesh, double positions);
+//   openmesh         LoopT<TriMesh> (default traits: float positions), operator()(mesh, K),
+//                    which includes the subdivider's prepare/cleanup (its temporary properties);
+//   cgal             Subdivision_method_3::Loop_subdivision(number_of_iterations(K)) on
+//                    Surface_mesh<Simple_cartesian<double>::Point_3>;
+//   opensubdiv_*     TopologyRefinerFactory<TopologyDescriptor>::Create from the triangle
+//                    arrays (SCHEME_LOOP, boundary VTX_BOUNDARY_EDGE_ONLY like the other
+//                    three), RefineUniform(K) (default options, or fullTopologyInLastLevel),
+//                    the allocation of the vertex buffer for all levels (as in the Far
+//                    tutorials), and PrimvarRefiner::Interpolate of the double positions level
+//                    by level. Creating the descriptor arrays is input preparation (untimed).
+//
+// Memory (method, printed as extras): rss_before_mb is the process RSS (/proc/self/statm) in
+// the first setup, after malloc_trim(0), just before the input is copied (the shared input
+// arrays and the library's own input mesh are resident, the copy that becomes the result is
+// not); peak_rss_mb is getrusage's ru_maxrss after all runs; bytes_per_face = (peak_rss −
+// rss_before) / faces_out, so it counts the result plus whatever the library needs
+// transiently at its peak; bytes_per_face_retained = (RSS right after the last run −
+// rss_before) / faces_out, the memory the result keeps. For OpenSubdiv the "result" is the
+// refiner with every level plus the vertex buffer of every level (what the Far tutorials
+// keep). None of the anchors has memory accounting of its own; for MeshEdit
+// bytes_per_face_exact = mesh.bytes() / faces_out (capacity of all property arrays).
+
+#include <malloc.h>
+#include <unistd.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bench_util.h"
+#include "meshedit/core/build.h"
+#include "meshedit/core/mesh.h"
+#include "meshedit/core/shapes.h"
+#include "meshedit/core/subdivision.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using meshedit::Vec3;
+using meshedit::bench::print_result;
+using meshedit::bench::time_runs;
+
+const char* const kImpls[] = {"meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full"};
+const char* const kDataTarball = "/usr/share/doc/libcgal-dev/data.tar.gz";
+
+// ------------------------------------------------------------------------------ inputs
+
+/// The shared input: positions and triangles (counter-clockwise), every vertex referenced.
+struct Input {
+    std::vector<Vec3> positions;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+double current_rss_mb() {
+    long pages = 0;
+    long resident = 0;
+    if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) {
+            resident = 0;
+        }
+        std::fclose(f);
+    }
+    return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) /
+           (1024.0 * 1024.0);
+}
+
+double mem_available_mb() {
+    std::ifstream in("/proc/meminfo");
+    std::string key;
+    double kib = 0;
+    std::string unit;
+    while (in >> key >> kib >> unit) {
+        if (key == "MemAvailable:") {
+            return kib / 1024.0;
+        }
+    }
+    return 0;
+}
+
+/// Triangles of a soup of triangles (anything else is an error: all inputs here are triangles).
+Input input_from_soup(const meshedit::PolygonSoup& soup) {
+    Input in;
+    std::vector<std::uint32_t> remap(soup.positions.size(), UINT32_MAX);
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        if (soup.face_offsets[f + 1] - soup.face_offsets[f] != 3) {
+            throw std::runtime_error("input face " + std::to_string(f) + " is not a triangle");
+        }
+        std::array<std::uint32_t, 3> t{};
+        for (int i = 0; i < 3; ++i) {
+            const std::uint32_t v = soup.indices[soup.face_offsets[f] + i];
+            if (remap[v] == UINT32_MAX) {
+                remap[v] = static_cast<std::uint32_t>(in.positions.size());
+                in.positions.push_back(soup.positions[v]);
+            }
+            t[i] = remap[v];
+        }
+        in.triangles.push_back(t);
+    }
+    return in;
+}
+
+meshedit::PolygonSoup read_off(const fs::path& path) {
+    std::ifstream file(path);
+    if (!file) {
+        throw std::runtime_error("cannot open " + path.string());
+    }
+    // Strip comments, then read whitespace-separated tokens.
+    std::stringstream text;
+    std::string line;
+    while (std::getline(file, line)) {
+        text << line.substr(0, line.find('#')) << '\n';
+    }
+    std::string header;
+    text >> header;
+    if (header != "OFF") {
+        throw std::runtime_error(path.string() + ": not an OFF file");
+    }
+    std::size_t nv = 0;
+    std::size_t nf = 0;
+    std::size_t ne = 0;
+    text >> nv >> nf >> ne;
+    meshedit::PolygonSoup soup;
+    soup.positions.resize(nv);
+    for (auto& p : soup.positions) {
+        text >> p.x >> p.y >> p.z;
+    }
+    std::vector<std::uint32_t> corners;
+    for (std::size_t f = 0; f < nf; ++f) {
+        std::size_t n = 0;
+        text >> n;
+        corners.resize(n);
+        for (auto& c : corners) {
+            text >> c;
+        }
+        // Fan-triangulate polygons (the CGAL demo meshes are all triangles).
+        for (std::size_t i = 1; i + 1 < n; ++i) {
+            soup.add_face({corners[0], corners[i], corners[i + 1]});
+        }
+    }
+    if (!text) {
+        throw std::runtime_error(path.string() + ": truncated");
+    }
+    return soup;
+}
+
+/// The .off of `name`, extracted from the CGAL demo tarball into `data_dir` on first use.
+fs::path real_mesh_path(const std::string& name, const fs::path& data_dir) {
+    const std::string member =
+        "data/meshes/" + std::string(name == "bunny" ? "bunny00" : name) + ".off";
+    const fs::path path = data_dir / member;
+    if (!fs::exists(path)) {
+        fs::create_directories(data_dir);
+        const std::string cmd =
+            "tar xzf " + std::string(kDataTarball) + " -C '" + data_dir.string() + "' " + member;
+        if (std::system(cmd.c_str()) != 0 || !fs::exists(path)) {
+            throw std::runtime_error("could not extract " + member + " from " + kDataTarball +
+                                     " (install libcgal-demo)");
+        }
+    }
+    return path;
+}
+
+// ------------------------------------------------------------------------------ jobs
+
+struct Job {
+    std::string name;
+    std::string input;  // "torus_1m", "torus_100k", or a real mesh name
+    int levels = 1;
+};
+
+std::vector<Job> all_jobs() {
+    std::vector<Job> jobs{{"loop_1m_1level", "torus_1m", 1}};
+    for (int k = 1; k <= 4; ++k) {
+        jobs.push_back({"loop_100k_levels_" + std::to_string(k), "torus_100k", k});
+    }
+    for (const char* name : {"bunny", "armadillo"}) {
+        for (int k = 1; k <= 3; ++k) {
+            jobs.push_back(
+                {"loop_real_" + std::string(name) + "_levels_" + std::to_string(k), name, k});
+        }
+    }
+    return jobs;
+}
+
+Input load_input(const Job& job, const fs::path& data_dir) {
+    if (job.input == "torus_1m") {
+        return input_from_soup(meshedit::to_polygon_soup(meshedit::shapes::torus(1000, 500)));
+    }
+    if (job.input == "torus_100k") {
+        return input_from_soup(meshedit::to_polygon_soup(meshedit::shapes::torus(250, 200)));
+    }
+    const meshedit::PolygonSoup raw = read_off(real_mesh_path(job.input, data_dir));
+    meshedit::BuildReport report;
+    const meshedit::Mesh mesh = meshedit::build_mesh(raw, &report);
+    if (report.repaired()) {
+        std::printf(
+            "NOTE %s: input repaired by build_mesh (%s); every impl gets the repaired "
+            "triangles\n",
+            job.input.c_str(), report.summary().c_str());
+    }
+    return input_from_soup(meshedit::to_polygon_soup(mesh));
+}
+
+// ------------------------------------------------------------------------------ impls
+
+/// What one implementation run leaves behind, for the extras.
+struct Outcome {
+    std::vector<double> ms;
+    double faces_out = 0;
+    double vertices_out = 0;
+    double rss_after_mb = 0;  // RSS with the last result still alive
+    std::map<std::string, double> extra;
+};
+
+Outcome run_meshedit(const Input& in, int levels, int runs,
+                     const std::function<void()>& before_copy) {
+    meshedit::PolygonSoup soup;
+    soup.positions = in.positions;
+    for (const auto& t : in.triangles) {
+        soup.add_face({t[0], t[1], t[2]});
+    }
+    const meshedit::Mesh input = meshedit::build_mesh(soup);
+    soup = {};
+    meshedit::Mesh mesh;
+    Outcome out;
+    out.ms = time_runs(
+        runs,
+        [&] {
+            mesh = meshedit::Mesh();
+            before_copy();
+            mesh = input;
+        },
+        [&] {
+            for (int i = 0; i < levels; ++i) {
+                meshedit::loop_subdivide(mesh);
+            }
+        });
+    out.rss_after_mb = current_rss_mb();
+    out.faces_out = static_cast<double>(mesh.n_faces());
+    out.vertices_out = static_cast<double>(mesh.n_vertices());
+    out.extra["bytes_per_face_exact"] = static_cast<double>(mesh.bytes()) / out.faces_out;
+    return out;
+}
+
+using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+Outcome run_openmesh(const Input& in, int levels, int runs,
+                     const std::function<void()>& before_copy) {
+    OMesh input;
+    std::vector<OMesh::VertexHandle> vh;
+    vh.reserve(in.positions.size());
+    for (const Vec3& p : in.positions) {
+        vh.push_back(input.add_vertex(OMesh::Point(static_cast<float>(p.x), static_cast<float>(p.y),
+                                                   static_cast<float>(p.z))));
+    }
+    for (const auto& t : in.triangles) {
+        input.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
+    }
+    if (input.n_faces() != in.triangles.size()) {
+        std::printf("NOTE openmesh: %zu of %zu input triangles refused by add_face\n",
+                    in.triangles.size() - input.n_faces(), in.triangles.size());
+    }
+    OMesh mesh;
+    Outcome out;
+    out.ms = time_runs(
+        runs,
+        [&] {
+            mesh = OMesh();
+            before_copy();
+            mesh = input;
+        },
+        [&] {
+            OpenMesh::Subdivider::Uniform::LoopT<OMesh> loop;
+            loop(mesh, static_cast<std::size_t>(levels));
+        });
+    out.rss_after_mb = current_rss_mb();
+    out.faces_out = static_cast<double>(mesh.n_faces());
+    out.vertices_out = static_cast<double>(mesh.n_vertices());
+    return out;
+}
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using CMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+Outcome run_cgal(const Input& in, int levels, int runs, const std::function<void()>& before_copy) {
+    CMesh input;
+    using Size = CMesh::size_type;
+    input.reserve(static_cast<Size>(in.positions.size()),
+                  static_cast<Size>(3 * in.triangles.size() / 2),
+                  static_cast<Size>(in.triangles.size()));
+    std::vector<CMesh::Vertex_index> vh;
+    vh.reserve(in.positions.size());
+    for (const Vec3& p : in.positions) {
+        vh.push_back(input.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
+    }
+    for (const auto& t : in.triangles) {
+        input.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
+    }
+    if (input.number_of_faces() != in.triangles.size()) {
+        std::printf("NOTE cgal: %zu of %zu input triangles refused by add_face\n",
+                    in.triangles.size() - input.number_of_faces(), in.triangles.size());
+    }
+    CMesh mesh;
+    Outcome out;
+    out.ms = time_runs(
+        runs,
+        [&] {
+            mesh = CMesh();
+            before_copy();
+            mesh = input;
+        },
+        [&] {
+            CGAL::Subdivision_method_3::Loop_subdivision(
+                mesh, CGAL::parameters::number_of_iterations(levels));
+        });
+    out.rss_after_mb = current_rss_mb();
+    out.faces_out = static_cast<double>(mesh.number_of_faces());
+    out.vertices_out = static_cast<double>(mesh.number_of_vertices());
+    return out;
+}
+
+/// Primvar for PrimvarRefiner::Interpolate.
+struct OsdPoint {
+    double x = 0;
+    double y = 0;
+    double z = 0;
+    void Clear(void* = nullptr) { x = y = z = 0; }
+    void AddWithWeight(const OsdPoint& p, float w) {
+        x += w * p.x;
+        y += w * p.y;
+        z += w * p.z;
+    }
+};
+
+Outcome run_opensubdiv(const Input& in, int levels, int runs, bool full_topology,
+                       const std::function<void()>& before_copy) {
+    namespace Far = OpenSubdiv::Far;
+    namespace Sdc = OpenSubdiv::Sdc;
+    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+
+    // Input preparation (untimed): the descriptor's arrays.
+    const std::vector<int> verts_per_face(in.triangles.size(), 3);
+    std::vector<int> face_verts;
+    face_verts.reserve(3 * in.triangles.size());
+    for (const auto& t : in.triangles) {
+        face_verts.insert(face_verts.end(),
+                          {static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
+    }
+    Far::TopologyDescriptor desc;
+    desc.numVertices = static_cast<int>(in.positions.size());
+    desc.numFaces = static_cast<int>(in.triangles.size());
+    desc.numVertsPerFace = verts_per_face.data();
+    desc.vertIndicesPerFace = face_verts.data();
+    Sdc::Options sdc;
+    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+
+    std::unique_ptr<Far::TopologyRefiner> refiner;
+    std::vector<OsdPoint> points;
+    Outcome out;
+    out.ms = time_runs(
+        runs,
+        [&] {
+            refiner.reset();
+            points = std::vector<OsdPoint>();
+            before_copy();
+        },
+        [&] {
+            refiner.reset(Factory::Create(desc, Factory::Options(Sdc::SCHEME_LOOP, sdc)));
+            Far::TopologyRefiner::UniformOptions options(levels);
+            options.fullTopologyInLastLevel = full_topology;
+            refiner->RefineUniform(options);
+            points.resize(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
+            for (std::size_t i = 0; i < in.positions.size(); ++i) {
+                points[i] = {in.positions[i].x, in.positions[i].y, in.positions[i].z};
+            }
+            Far::PrimvarRefiner primvar(*refiner);
+            OsdPoint* src = points.data();
+            for (int level = 1; level <= levels; ++level) {
+                OsdPoint* dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+                primvar.Interpolate(level, src, dst);
+                src = dst;
+            }
+        });
+    out.rss_after_mb = current_rss_mb();
+    out.faces_out = refiner->GetLevel(levels).GetNumFaces();
+    out.vertices_out = refiner->GetLevel(levels).GetNumVertices();
+    return out;
+}
+
+// ------------------------------------------------------------------------------ main
+
+/// Rough upper bound of the peak memory of one run, bytes per output face (measured peaks: 70
+/// to 90 for meshedit, openmesh, cgal, 130 for opensubdiv_min and 230 for opensubdiv_full at 4
+/// levels), to skip instead of risking the OOM killer.
+double peak_bytes_per_face_bound(const std::string& impl) {
+    return impl == "openmesh" || impl == "cgal" ? 500.0 : 400.0;
+}
+
+int usage() {
+    std::fprintf(stderr,
+                 "usage: bench_loop --job JOB --impl IMPL [--runs N] [--data DIR]\n"
+                 "       bench_loop --list\n");
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string job_name;
+    std::string impl;
+    int runs = 5;
+    fs::path data_dir = fs::canonical("/proc/self/exe").parent_path() / "loop_data";
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const bool has_value = i + 1 < argc;
+        if (arg == "--list") {
+            for (const Job& job : all_jobs()) {
+                for (const char* name : kImpls) {
+                    std::printf("%s %s\n", job.name.c_str(), name);
+                }
+            }
+            return 0;
+        } else if (arg == "--job" && has_value) {
+            job_name = argv[++i];
+        } else if (arg == "--impl" && has_value) {
+            impl = argv[++i];
+        } else if (arg == "--runs" && has_value) {
+            runs = std::atoi(argv[++i]);
+        } else if (arg == "--data" && has_value) {
+            data_dir = argv[++i];
+        } else {
+            return usage();
+        }
+    }
+    std::optional<Job> job;
+    for (const Job& j : all_jobs()) {
+        if (j.name == job_name) {
+            job = j;
+        }
+    }
+    bool known_impl = false;
+    for (const char* name : kImpls) {
+        known_impl = known_impl || impl == name;
+    }
+    if (!job || !known_impl || runs < 1) {
+        return usage();
+    }
+
+    try {
+        const Input input = load_input(*job, data_dir);
+        const double faces_in = static_cast<double>(input.triangles.size());
+        double faces_expected = faces_in;
+        for (int k = 0; k < job->levels; ++k) {
+            faces_expected *= 4;
+        }
+        const double bound_mb =
+            faces_expected * peak_bytes_per_face_bound(impl) / (1024.0 * 1024.0);
+        const double available_mb = mem_available_mb();
+        if (available_mb > 0 && bound_mb > 0.8 * available_mb) {
+            std::printf("NOTE %s %s skipped: may need up to %.0f MiB, %.0f MiB available\n",
+                        job->name.c_str(), impl.c_str(), bound_mb, available_mb);
+            print_result(job->name, impl, {0.0}, {{"skipped", 1}, {"faces_in", faces_in}});
+            return 0;
+        }
+
+        double rss_before = -1;
+        const std::function<void()> before_copy = [&] {
+            if (rss_before < 0) {
+                malloc_trim(0);  // freed heap pages of the input preparation would hide the copy
+                rss_before = current_rss_mb();
+            }
+        };
+        Outcome out;
+        if (impl == "meshedit") {
+            out = run_meshedit(input, job->levels, runs, before_copy);
+        } else if (impl == "openmesh") {
+            out = run_openmesh(input, job->levels, runs, before_copy);
+        } else if (impl == "cgal") {
+            out = run_cgal(input, job->levels, runs, before_copy);
+        } else {
+            out = run_opensubdiv(input, job->levels, runs, impl == "opensubdiv_full", before_copy);
+        }
+        const double peak = meshedit::bench::peak_rss_mb();
+        const double mib = 1024.0 * 1024.0;
+        if (out.faces_out != faces_expected) {
+            std::printf("NOTE %s %s: faces_out %.0f, expected %.0f\n", job->name.c_str(),
+                        impl.c_str(), out.faces_out, faces_expected);
+        }
+        std::map<std::string, double> extra = out.extra;
+        extra["faces_in"] = faces_in;
+        extra["faces_out"] = out.faces_out;
+        extra["vertices_out"] = out.vertices_out;
+        extra["levels"] = job->levels;
+        extra["peak_rss_mb"] = peak;
+        extra["rss_before_mb"] = rss_before;
+        extra["bytes_per_face"] = (peak - rss_before) * mib / out.faces_out;
+        extra["bytes_per_face_retained"] = (out.rss_after_mb - rss_before) * mib / out.faces_out;
+        print_result(job->name, impl, out.ms, extra);
+    } catch (const std::exception& e) {
+        std::printf("NOTE %s %s failed: %s\n", job_name.c_str(), impl.c_str(), e.what());
+        print_result(job_name, impl, {0.0}, {{"skipped", 1}});
+        return 1;
+    }
+    return 0;
+}

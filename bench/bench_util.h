@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// Shared by every benchmark program: repeated timing, peak RSS, and the RESULT line that
+/// bench/run_bench.py collects (see bench/README.md).
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace meshedit::bench {
+
+/// Milliseconds of each of `runs` calls of `body`; `setup` runs before each call, untimed.
+inline std::vector<double> time_runs(int runs, const std::function<void()>& setup,
+                                     const std::function<void()>& body) {
+    std::vector<double> ms;
+    for (int i = 0; i < runs; ++i) {
+        if (setup) {
+            setup();
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        body();
+        const auto t1 = std::chrono::steady_clock::now();
+        ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    }
+    return ms;
+}
+
+inline double min_of(std::vector<double> v) { return *std::min_element(v.begin(), v.end()); }
+inline double median_of(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// Peak resident set size of this process so far, in MiB.
+inline double peak_rss_mb() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+/// Prints `RESULT {"job": …, "impl": …, "runs": n, "min_ms": …, "median_ms": …, extras}`.
+inline void print_result(const std::string& job, const std::string& impl,
+                         const std::vector<double>& ms,
+                         const std::map<std::string, double>& extra = {}) {
+    std::printf("RESULT {\"job\": \"%s\", \"impl\": \"%s\", \"runs\": %zu, \"min_ms\": %.3f, "
+                "\"median_ms\": %.3f",
+                job.c_str(), impl.c_str(), ms.size(), min_of(ms), median_of(ms));
+    for (const auto& [key, value] : extra) {
+        std::printf(", \"%s\": %.6g", key.c_str(), value);
+    }
+    std::printf("}\n");
+    std::fflush(stdout);
+}
+
+}  // namespace meshedit::bench

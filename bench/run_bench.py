@@ -1,0 +1,523 @@
+#!/usr/bin/env python3
+"""Runs every benchmark configuration and writes docs/performance.md (bench/README.md).
+
+Every (job, impl) configuration runs in a fresh process: `PROG --job J --impl I --runs N`.
+The programs print `RESULT {json}` lines (and optional `INFO text` lines); this script
+collects them and renders a table per job, the ratios MeshEdit / anchor, and the targets of
+issue 6 with a "met?" column computed from the numbers of this run.
+
+A program that is not built is skipped with a note. A program that answers `--list` with
+lines "JOB IMPL" defines its own configurations; otherwise the defaults below are used.
+Each configuration has a timeout (--timeout) and the whole run a budget (--budget): what is
+left when the budget is spent is reported as skipped, never silently dropped.
+
+Standard library only. Progress goes to stderr.
+"""
+
+import argparse
+import datetime
+import json
+import os
+import platform
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+# Default configurations when a program does not answer --list.
+DEFAULT_CONFIGS = {
+    "bench_loop": [
+        (job, impl)
+        for job in ["loop_1m_1level"]
+        + [f"loop_100k_levels_{k}" for k in range(1, 5)]
+        + [f"loop_real_{name}_levels_{k}" for name in ("bunny00", "armadillo") for k in range(1, 4)]
+        for impl in ("meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full")
+    ],
+    "bench_ops": [
+        (job, impl)
+        for job in ("flips_1e6", "splits_1e6", "normals_6p4m")
+        for impl in ("meshedit", "openmesh", "cgal")
+    ],
+    "bench_io_draw": [
+        (job, impl)
+        for job in ("collada_load_1m_triangles", "collada_load_1m_polylist")
+        for impl in ("meshedit", "assimp")
+    ]
+    + [("draw_1m_triangles", "all")],  # one run measures "meshedit" and "bare"
+}
+PROGRAMS = ["bench_loop", "bench_ops", "bench_io_draw"]
+# Untimed preparation (input generation) run once before a program's configurations.
+PREPARE = {"bench_io_draw": ["--generate"]}
+
+JOB_TITLES = {
+    "loop_1m_1level": "Loop subdivision, 1 level, 1M-face torus (→ 4M faces)",
+    "flips_1e6": "1,000,000 random edge flips on the 100k torus",
+    "splits_1e6": "1,000,000 random edge splits on the 100k torus",
+    "normals_6p4m": "Area-weighted vertex normals, 6.4M faces "
+    "(anchors weight differently: OpenMesh and CGAL do not weight by area the same way)",
+    "collada_load_1m_triangles": "Load a 1M-triangle COLLADA `<triangles>` file into a mesh "
+    "(MeshEdit: parse + halfedge build; Assimp: ReadFile with JoinIdenticalVertices | "
+    "Triangulate)",
+    "collada_load_1m_polylist": "Load a 1M-triangle COLLADA `<polylist>` with per-face normals "
+    "(same impls)",
+    "draw_1m_triangles": "Headless draw of a 1M-triangle torus at 1280×800 (OSMesa); MeshEdit's "
+    "smooth Blinn-Phong renderer vs a trivial shader over the same vertex buffer, one process, "
+    "glFinish after each frame",
+}
+
+
+def log(message):
+    print(f"run_bench: {message}", file=sys.stderr, flush=True)
+
+
+def job_title(job):
+    if job in JOB_TITLES:
+        return JOB_TITLES[job]
+    m = re.fullmatch(r"loop_100k_levels_(\d+)", job)
+    if m:
+        return f"Loop subdivision, {m.group(1)} level(s), 100k-face torus"
+    m = re.fullmatch(r"loop_real_(.+)_levels_(\d+)", job)
+    if m:
+        return f"Loop subdivision, {m.group(2)} level(s), real mesh {m.group(1)}"
+    return job
+
+
+def command_output(args):
+    try:
+        return subprocess.run(args, capture_output=True, text=True, timeout=20).stdout
+    except (OSError, subprocess.SubprocessError):
+        return ""
+
+
+# ---------------------------------------------------------------------------------------------
+# Running
+
+
+def run_process(cmd, cwd, timeout):
+    """Runs cmd in its own session; on timeout kills that process group. Returns
+    (returncode or None on timeout, stdout, stderr, seconds)."""
+    start = time.monotonic()
+    proc = subprocess.Popen(
+        cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        start_new_session=True)
+    try:
+        out, err = proc.communicate(timeout=timeout)
+        return proc.returncode, out, err, time.monotonic() - start
+    except subprocess.TimeoutExpired:
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        out, err = proc.communicate()
+        return None, out, err, time.monotonic() - start
+
+
+def list_configs(program_path, name):
+    rc, out, _, _ = run_process([program_path, "--list"], os.path.dirname(program_path), 20)
+    if rc == 0:
+        pairs = [tuple(line.split()) for line in out.splitlines() if line.strip()]
+        if pairs and all(len(p) == 2 for p in pairs):
+            return pairs, "--list"
+    return DEFAULT_CONFIGS[name], "defaults in run_bench.py"
+
+
+def parse_output(out):
+    results, info = [], []
+    for line in out.splitlines():
+        if line.startswith("RESULT "):
+            try:
+                results.append(json.loads(line[len("RESULT "):]))
+            except json.JSONDecodeError:
+                info.append(f"unparsable RESULT line: {line[:120]}")
+        elif line.startswith("INFO "):
+            info.append(line[len("INFO "):].strip())
+    return results, info
+
+
+def matches(only, program, job):
+    return not only or any(word in job or word in program for word in only)
+
+
+def run_all(args):
+    """Returns (records, notes, programs_seen). A record: dict with job, impl, status and the
+    RESULT fields when there are any."""
+    bench_dir = os.path.join(os.path.abspath(args.build), "bench")
+    deadline = time.monotonic() + args.budget
+    records, notes, jobs_info = [], [], {}
+    plan = []
+    for name in PROGRAMS:
+        path = os.path.join(bench_dir, name)
+        if not (os.path.isfile(path) and os.access(path, os.X_OK)):
+            wanted = [c for c in DEFAULT_CONFIGS[name] if matches(args.only, name, c[0])]
+            if wanted:
+                notes.append(f"`{name}` is not built ({path} missing): its "
+                             f"{len(wanted)} configuration(s) were skipped.")
+                log(f"{name}: not built, skipping")
+                for job, impl in wanted:
+                    records.append({"job": job, "impl": impl, "status": f"{name} not built"})
+            continue
+        configs, source = list_configs(path, name)
+        configs = [c for c in configs if matches(args.only, name, c[0])]
+        if configs:
+            log(f"{name}: {len(configs)} configuration(s) ({source})")
+            plan.append((name, path, configs))
+
+    total = sum(len(c) for _, _, c in plan)
+    done = 0
+    for name, path, configs in plan:
+        if name in PREPARE:
+            remaining = deadline - time.monotonic()
+            log(f"{name}: preparing inputs ({' '.join(PREPARE[name])})")
+            rc, out, err, secs = run_process([path] + PREPARE[name], os.path.dirname(path),
+                                             max(1.0, min(args.timeout, remaining)))
+            if rc != 0:
+                notes.append(f"`{name} {' '.join(PREPARE[name])}` failed ({rc}): "
+                             f"{err.strip().splitlines()[-1:] or ''}")
+            else:
+                log(f"{name}: inputs ready in {secs:.1f} s")
+        for job, impl in configs:
+            done += 1
+            remaining = deadline - time.monotonic()
+            if remaining < 5:
+                records.append({"job": job, "impl": impl,
+                                "status": f"skipped: time budget of {args.budget:.0f} s spent"})
+                log(f"[{done}/{total}] {job} {impl}: skipped (budget)")
+                continue
+            timeout = min(args.timeout, remaining)
+            cmd = [path, "--job", job, "--impl", impl, "--runs", str(args.runs)]
+            log(f"[{done}/{total}] {job} {impl} (timeout {timeout:.0f} s) ...")
+            rc, out, err, secs = run_process(cmd, os.path.dirname(path), timeout)
+            results, info = parse_output(out)
+            if info:
+                jobs_info.setdefault(job, [])
+                for line in info:
+                    if line not in jobs_info[job]:
+                        jobs_info[job].append(line)
+            for r in results:
+                r["status"] = "ok" if rc == 0 else f"exit {rc}"
+                records.append(r)
+            if rc is None:
+                status = f"timed out after {timeout:.0f} s"
+            elif rc != 0:
+                last = err.strip().splitlines()[-1] if err.strip() else ""
+                status = f"failed (exit {rc}): {last[:160]}"
+            else:
+                status = "ok"
+            if not results or rc != 0:
+                if not results:
+                    records.append({"job": job, "impl": impl, "status": status})
+            summary = ", ".join(f"{r['impl']} median {r['median_ms']:.1f} ms" for r in results)
+            log(f"[{done}/{total}] {job} {impl}: {status} in {secs:.1f} s"
+                + (f" ({summary})" if summary else ""))
+    return records, notes, jobs_info
+
+
+# ---------------------------------------------------------------------------------------------
+# Machine description
+
+
+def machine_description(build):
+    lscpu = {}
+    for line in command_output(["lscpu"]).splitlines():
+        key, _, value = line.partition(":")
+        lscpu[key.strip()] = value.strip()
+    mem = ""
+    try:
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemTotal:"):
+                    mem = f"{int(line.split()[1]) / 1024 / 1024:.1f} GiB"
+    except OSError:
+        pass
+    compiler, build_type, flags = "", "", ""
+    try:
+        with open(os.path.join(build, "CMakeCache.txt")) as f:
+            cache = dict(re.findall(r"^([A-Z_]+):[A-Z]+=(.*)$", f.read(), re.M))
+        cxx = cache.get("CMAKE_CXX_COMPILER", "c++")
+        compiler = (command_output([cxx, "--version"]).splitlines() or [cxx])[0]
+        build_type = cache.get("CMAKE_BUILD_TYPE", "")
+        flags = cache.get(f"CMAKE_CXX_FLAGS_{build_type.upper()}", "")
+    except OSError:
+        pass
+    packages = []
+    for pkg in ("libassimp-dev", "libopenmesh-dev", "libcgal-dev", "libosd-dev",
+                "libosmesa6"):
+        version = command_output(["dpkg-query", "-W", "-f=${Version}", pkg]).strip()
+        if version:
+            packages.append(f"{pkg} {version}")
+    cores = lscpu.get("CPU(s)", str(os.cpu_count()))
+    threads = lscpu.get("Thread(s) per core", "?")
+    return [
+        ("CPU", lscpu.get("Model name", platform.processor() or "unknown")),
+        ("Logical CPUs", f"{cores} ({threads} thread(s) per core)"),
+        ("Memory", mem),
+        ("Kernel", f"{platform.system()} {platform.release()}"),
+        ("Compiler", f"{compiler}; {build_type} ({flags})"),
+        ("Anchor packages", ", ".join(packages)),
+        ("Load average at start", " ".join(f"{x:.2f}" for x in os.getloadavg())),
+    ]
+
+
+# ---------------------------------------------------------------------------------------------
+# Report
+
+
+def fmt_ms(x):
+    return f"{x:,.1f}" if x >= 10 else f"{x:.3f}"
+
+
+def fmt_num(x):
+    if x is None:
+        return "–"
+    if abs(x) >= 1e4 and float(x).is_integer():
+        return f"{int(x):,}"
+    return f"{x:.4g}"
+
+
+def by_job(records):
+    jobs = {}
+    for r in records:
+        jobs.setdefault(r["job"], []).append(r)
+    return jobs
+
+
+def ok_results(rows):
+    return {r["impl"]: r for r in rows if "median_ms" in r}
+
+
+def ratio_info(rows):
+    """(meshedit median, {anchor: ratio}, fastest anchor name, ratio vs fastest)."""
+    res = ok_results(rows)
+    me = res.get("meshedit")
+    anchors = {k: v for k, v in res.items() if k != "meshedit"}
+    if me is None or not anchors:
+        return me, {}, None, None
+    ratios = {k: me["median_ms"] / v["median_ms"] for k, v in anchors.items() if v["median_ms"] > 0}
+    fastest = min(anchors, key=lambda k: anchors[k]["median_ms"])
+    return me, ratios, fastest, ratios.get(fastest)
+
+
+MAIN_EXTRAS = ("peak_rss_mb", "bytes_per_face", "faces_out")
+
+
+def job_table(job, rows, info):
+    lines = [f"### `{job}`", "", job_title(job), ""]
+    me, ratios, fastest, vs_fastest = ratio_info(rows)
+    lines.append("| impl | runs | min ms | median ms | MeshEdit / impl (median) | peak RSS MB "
+                 "| bytes/face | faces out | other | status |")
+    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---|---|")
+    order = sorted(rows, key=lambda r: (r["impl"] != "meshedit", r["impl"]))
+    for r in order:
+        if "median_ms" in r:
+            ratio = "1" if r["impl"] == "meshedit" else (
+                f"{ratios[r['impl']]:.3f}" if r["impl"] in ratios else "–")
+            other = ", ".join(f"{k} {fmt_num(v)}" for k, v in sorted(r.items())
+                              if k not in MAIN_EXTRAS and isinstance(v, (int, float))
+                              and k not in ("runs", "min_ms", "median_ms"))
+            lines.append(
+                f"| {r['impl']} | {r['runs']} | {fmt_ms(r['min_ms'])} | {fmt_ms(r['median_ms'])} "
+                f"| {ratio} | {fmt_num(r.get('peak_rss_mb'))} | {fmt_num(r.get('bytes_per_face'))} "
+                f"| {fmt_num(r.get('faces_out'))} | {other} | {r['status']} |")
+        else:
+            lines.append(f"| {r['impl']} | – | – | – | – | – | – | – | | {r['status']} |")
+    lines.append("")
+    if vs_fastest is not None:
+        lines.append(f"MeshEdit / fastest anchor ({fastest}): **{vs_fastest:.3f}** "
+                     + (f"(MeshEdit {1 / vs_fastest:.2f}× faster)." if vs_fastest < 1 else
+                        f"(MeshEdit {vs_fastest:.2f}× slower)."))
+        lines.append("")
+    for line in info:
+        lines.append(f"Note: {line}")
+        lines.append("")
+    return lines
+
+
+def targets_table(jobs):
+    rows = []
+
+    def res(job):
+        return ok_results(jobs.get(job, []))
+
+    def not_measured(job, what):
+        rows_ = jobs.get(job)
+        if not rows_:
+            return f"not measured ({job} not run)"
+        statuses = sorted({r["status"] for r in rows_ if "median_ms" not in r})
+        return f"not measured ({what}; {'; '.join(statuses) or 'missing impl'})"
+
+    # Loop, 1 level, 1M.
+    me, ratios, fastest, r = ratio_info(jobs.get("loop_1m_1level", []))
+    if r is not None:
+        rows.append(("Loop, 1 level, 1M → 4M faces", "≤ 1/3 of the fastest anchor",
+                     f"{r:.3f} of {fastest}", "yes" if r <= 1 / 3 else "no"))
+    else:
+        rows.append(("Loop, 1 level, 1M → 4M faces", "≤ 1/3 of the fastest anchor",
+                     not_measured("loop_1m_1level", "MeshEdit or anchors missing"), "n/a"))
+    # Loop, levels 1–4 on 100k.
+    parts, worst, missing = [], None, []
+    for k in range(1, 5):
+        job = f"loop_100k_levels_{k}"
+        _, _, fastest, r = ratio_info(jobs.get(job, []))
+        if r is None:
+            missing.append(str(k))
+            continue
+        parts.append(f"L{k}: {r:.3f} of {fastest}")
+        worst = r if worst is None else max(worst, r)
+    if missing:
+        parts.append(f"levels {', '.join(missing)} not measured")
+    measured = "; ".join(parts)
+    met = "n/a" if worst is None else ("yes" if worst <= 1 / 3 and not missing else
+                                       ("no" if worst > 1 / 3 else "partly measured"))
+    rows.append(("Loop, levels 1–4 on 100k faces", "≤ 1/3 of the fastest anchor",
+                 measured or "not measured", met))
+    # Bytes per face after Loop: the first Loop job where MeshEdit and CGAL both report it.
+    loop_jobs = ["loop_1m_1level"] + sorted(j for j in jobs if j.startswith("loop_") and
+                                            j != "loop_1m_1level")
+    found = None
+    for job in loop_jobs:
+        rr = res(job)
+        if "bytes_per_face" in rr.get("meshedit", {}) and "bytes_per_face" in rr.get("cgal", {}):
+            found = (job, rr["meshedit"]["bytes_per_face"], rr["cgal"]["bytes_per_face"])
+            break
+    if found:
+        job, me_b, cgal_b = found
+        rows.append(("bytes per face after Loop", "≤ 0.85 × CGAL's",
+                     f"{me_b:.1f} vs {cgal_b:.1f} = {me_b / cgal_b:.3f} ({job})",
+                     "yes" if me_b <= 0.85 * cgal_b else "no"))
+    else:
+        rows.append(("bytes per face after Loop", "≤ 0.85 × CGAL's",
+                     "not measured (no Loop job with bytes_per_face for meshedit and cgal)",
+                     "n/a"))
+    # Flips and splits: ≤ 0.5 × CGAL and ≤ 0.5 × OpenMesh.
+    for job, label in (("flips_1e6", "1e6 random flips"), ("splits_1e6", "1e6 random splits")):
+        _, ratios, _, _ = ratio_info(jobs.get(job, []))
+        parts = [f"{a}: {ratios[a]:.3f}" for a in ("cgal", "openmesh") if a in ratios]
+        if len(parts) == 2:
+            met = "yes" if ratios["cgal"] <= 0.5 and ratios["openmesh"] <= 0.5 else "no"
+        else:
+            met = "n/a" if not parts else "partly measured"
+        rows.append((label, "≤ 0.5 × CGAL and ≤ 0.5 × OpenMesh",
+                     "; ".join(parts) or not_measured(job, "MeshEdit or anchors missing"), met))
+    # Normals.
+    _, ratios, _, _ = ratio_info(jobs.get("normals_6p4m", []))
+    if "openmesh" in ratios:
+        rows.append(("area-weighted normals, 6.4M faces", "≤ 0.1 × OpenMesh",
+                     f"{ratios['openmesh']:.3f}", "yes" if ratios["openmesh"] <= 0.1 else "no"))
+    else:
+        rows.append(("area-weighted normals, 6.4M faces", "≤ 0.1 × OpenMesh",
+                     not_measured("normals_6p4m", "MeshEdit or OpenMesh missing"), "n/a"))
+    # COLLADA.
+    for job, label in (("collada_load_1m_triangles", "COLLADA load, 1M triangles"),
+                       ("collada_load_1m_polylist",
+                        "COLLADA load, 1M triangles, `<polylist>` + per-face normals (variant)")):
+        _, ratios, _, _ = ratio_info(jobs.get(job, []))
+        if "assimp" in ratios:
+            speedup = 1 / ratios["assimp"]
+            rows.append((label, "≥ 4 × faster than Assimp", f"{speedup:.2f}× faster",
+                         "yes" if speedup >= 4 else "no"))
+        else:
+            rows.append((label, "≥ 4 × faster than Assimp",
+                         not_measured(job, "MeshEdit or Assimp missing"), "n/a"))
+    # Draw.
+    _, ratios, _, _ = ratio_info(jobs.get("draw_1m_triangles", []))
+    if "bare" in ratios:
+        rows.append(("draw 1M triangles headless", "≤ 1.2 × the bare draw",
+                     f"{ratios['bare']:.3f} × bare", "yes" if ratios["bare"] <= 1.2 else "no"))
+    else:
+        rows.append(("draw 1M triangles headless", "≤ 1.2 × the bare draw",
+                     not_measured("draw_1m_triangles", "meshedit or bare missing"), "n/a"))
+
+    lines = ["| job | target | measured (median, MeshEdit / anchor) | met? |", "|---|---|---|---|"]
+    lines += [f"| {a} | {b} | {c} | {d} |" for a, b, c, d in rows]
+    return lines
+
+
+def render(args, records, notes, jobs_info, machine, started, wall):
+    jobs = by_job(records)
+    lines = [
+        "# Performance",
+        "",
+        "Generated by `bench/run_bench.py` (`make bench`); do not edit by hand. MeshEdit against "
+        "the libraries an editor would otherwise use, on identical inputs, in the same run "
+        "(issue 6).",
+        "",
+        "## Machine",
+        "",
+        "| | |",
+        "|---|---|",
+    ]
+    lines += [f"| {k} | {v} |" for k, v in machine]
+    lines += [
+        f"| Date | {started.strftime('%Y-%m-%d %H:%M UTC')} |",
+        f"| Wall time of the measurements | {wall / 60:.1f} min |",
+        "",
+        "## How to reproduce",
+        "",
+        "    make bench",
+        "",
+        "installs the anchors (`scripts/install-deps.sh --bench`), builds `build-bench` in "
+        "Release with `MESHEDIT_BUILD_BENCH=ON`, and runs",
+        "",
+        f"    python3 bench/run_bench.py --build build-bench --out docs/performance.md "
+        f"--runs {args.runs} --timeout {args.timeout:.0f} --budget {args.budget:.0f}",
+        "",
+        "Every (job, impl) configuration runs in a **fresh process** (`PROG --job J --impl I "
+        f"--runs {args.runs}`), so page-fault and allocator warm-up costs are inside the "
+        "numbers of every implementation alike. Inside that process the job is repeated "
+        f"{args.runs} times; the table gives the minimum and the median. The headless draw is "
+        "the exception by design: MeshEdit's renderer and the bare draw run in *one* process "
+        "and GL context, frames interleaved, `glFinish` after each. Ratios are MeshEdit's "
+        "median over the anchor's median (below 1: MeshEdit is faster). Inputs are generated "
+        "or unpacked at bench time into the build folder, never committed.",
+        "",
+    ]
+    if notes:
+        lines += ["Notes on this run:", ""] + [f"- {n}" for n in notes] + [""]
+    lines += ["## Targets (issue 6)", ""] + targets_table(jobs) + [""]
+    lines += ["## Results per job", ""]
+    for job, rows in jobs.items():
+        lines += job_table(job, rows, jobs_info.get(job, []))
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--build", default="build-bench", help="CMake build folder")
+    parser.add_argument("--out", default="docs/performance.md", help="the Markdown report")
+    parser.add_argument("--runs", type=int, default=5, help="repetitions per configuration")
+    parser.add_argument("--timeout", type=float, default=240,
+                        help="seconds per configuration before it is killed")
+    parser.add_argument("--budget", type=float, default=900,
+                        help="seconds for all configurations; the rest is reported as skipped")
+    parser.add_argument("--only", default="",
+                        help="comma-separated substrings of job or program names, e.g. "
+                        "collada,draw")
+    args = parser.parse_args()
+    if args.runs < 1:
+        parser.error("--runs must be positive")
+    args.only = [w for w in args.only.split(",") if w]
+    if not os.path.isdir(args.build):
+        parser.error(f"no build folder {args.build} (configure with MESHEDIT_BUILD_BENCH=ON)")
+
+    started = datetime.datetime.now(datetime.timezone.utc)
+    machine = machine_description(args.build)
+    t0 = time.monotonic()
+    records, notes, jobs_info = run_all(args)
+    wall = time.monotonic() - t0
+    text = render(args, records, notes, jobs_info, machine, started, wall)
+    out_dir = os.path.dirname(os.path.abspath(args.out))
+    os.makedirs(out_dir, exist_ok=True)
+    tmp = args.out + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    shutil.move(tmp, args.out)
+    ok = sum(1 for r in records if r.get("status") == "ok")
+    log(f"wrote {args.out}: {ok} result(s), {len(records) - ok} not measured, "
+        f"{wall:.0f} s of measurements")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
