@@ -31,7 +31,9 @@ inline std::vector<double> time_runs(int runs, const std::function<void()>& setu
     return ms;
 }
 
-inline double min_of(std::vector<double> v) { return *std::min_element(v.begin(), v.end()); }
+inline double min_of(std::vector<double> v) {
+    return *std::min_element(v.begin(), v.end());
+}
 inline double median_of(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
@@ -49,9 +51,10 @@ inline double peak_rss_mb() {
 inline void print_result(const std::string& job, const std::string& impl,
                          const std::vector<double>& ms,
                          const std::map<std::string, double>& extra = {}) {
-    std::printf("RESULT {\"job\": \"%s\", \"impl\": \"%s\", \"runs\": %zu, \"min_ms\": %.3f, "
-                "\"median_ms\": %.3f",
-                job.c_str(), impl.c_str(), ms.size(), min_of(ms), median_of(ms));
+    std::printf(
+        "RESULT {\"job\": \"%s\", \"impl\": \"%s\", \"runs\": %zu, \"min_ms\": %.3f, "
+        "\"median_ms\": %.3f",
+        job.c_str(), impl.c_str(), ms.size(), min_of(ms), median_of(ms));
     for (const auto& [key, value] : extra) {
         std::printf(", \"%s\": %.6g", key.c_str(), value);
     }
