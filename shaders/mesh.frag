@@ -15,6 +15,14 @@ uniform bool u_wireframe;
 uniform float u_wire_width;   // pixels
 uniform vec4 u_wire_color;
 uniform vec2 u_depth_range;   // view-space distance of the nearest and farthest scene point
+// Blinn-Phong (mode 1): the viewer's shading panel edits these; the defaults in
+// include/meshedit/render/shading.h reproduce the fixed look of the golden images.
+uniform float u_ambient;      // scales the sky-to-ground ambient term
+uniform float u_diffuse;
+uniform float u_specular;
+uniform float u_shininess;
+uniform vec3 u_light_dir;     // view space, towards the light
+uniform vec3 u_light_color;
 
 out vec4 frag_color;
 
@@ -25,13 +33,14 @@ const vec3 kRimDir = normalize(vec3(0.2, 0.5, -0.85));    // behind
 vec3 blinn_phong(vec3 n, vec3 v, vec3 base) {
     // Key light with a specular highlight, a weak cool fill from the right so faces turned
     // away from the key keep their shape, and a sky-to-ground ambient.
-    float key = max(dot(n, kKeyDir), 0.0);
+    vec3 l = normalize(u_light_dir);
+    float key = max(dot(n, l), 0.0);
     float fill = max(dot(n, kFillDir), 0.0);
-    vec3 h = normalize(kKeyDir + v);
-    float specular = pow(max(dot(n, h), 0.0), 48.0) * step(0.0, dot(n, kKeyDir));
-    float ambient = mix(0.2, 0.3, 0.5 + 0.5 * n.y);
-    return base * (ambient + 0.62 * key) + vec3(0.62, 0.68, 0.78) * base * 0.3 * fill +
-           vec3(0.32) * specular;
+    vec3 h = normalize(l + v);
+    float specular = pow(max(dot(n, h), 0.0), u_shininess) * step(0.0, dot(n, l));
+    float ambient = u_ambient * mix(0.2, 0.3, 0.5 + 0.5 * n.y);
+    return base * ambient + u_light_color * base * (u_diffuse * key) +
+           vec3(0.62, 0.68, 0.78) * base * 0.3 * fill + u_light_color * (u_specular * specular);
 }
 
 vec3 studio(vec3 n, vec3 v, vec3 base) {

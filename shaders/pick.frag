@@ -1,21 +1,25 @@
 #version 330 core
-// ID pass: the element under the pixel as 24-bit RGB: kind (1 vertex, 2 halfedge, 3 face)
-// in the top 2 bits, index in the low 22. The per-triangle table holds, at texel 2t, the
-// face and the three corner vertices, at 2t+1 the halfedges c0->c1, c1->c2, c2->c0
-// (0xffffffff for a fan diagonal, which is no mesh edge).
+// ID pass: the element under the pixel. RGB holds a 24-bit index, alpha the kind (1 vertex,
+// 2 edge, 3 halfedge, 4 face; 0 is the cleared "nothing"). The per-triangle table holds, at
+// texel 2t, the face and the three corner vertices, at 2t+1 the halfedges c0->c1, c1->c2,
+// c2->c0 (0xffffffff for a fan diagonal, which is no mesh edge).
+//
+// Within a triangle, as in CS184: near a corner the vertex; within u_edge_radius pixels of
+// a real side the edge; in the band just inside it (where the halfedge arrow is drawn) the
+// halfedge of that side in this face; elsewhere the face.
 
 in vec3 v_barycentric;
 
 uniform usamplerBuffer u_table;
 uniform float u_vertex_radius;  // pixels
 uniform float u_edge_radius;    // pixels
+uniform float u_halfedge_band;  // barycentric: the inner band's width relative to the face
 
 out vec4 frag_color;
 
 vec4 encode(uint kind, uint index) {
-    uint id = (kind << 22) | (index & 0x3fffffu);
-    return vec4(float((id >> 16) & 0xffu), float((id >> 8) & 0xffu), float(id & 0xffu), 255.0) /
-           255.0;
+    return vec4(float((index >> 16) & 0xffu), float((index >> 8) & 0xffu),
+                float(index & 0xffu), float(kind)) / 255.0;
 }
 
 void main() {
@@ -31,20 +35,26 @@ void main() {
         frag_color = encode(1u, fv[1 + k]);
         return;
     }
-    // Side c_j -> c_(j+1) lies opposite corner j+2.
-    vec3 d = b / w;
+    // Side c_j -> c_(j+1) lies opposite corner j+2: its barycentric is 0 on the side.
     int j = -1;
-    float best = u_edge_radius;
+    float best = 1e9;
     for (int s = 0; s < 3; ++s) {
-        float dist = d[(s + 2) % 3];
-        if (hs[s] != 0xffffffffu && dist < best) {
-            best = dist;
+        float bs = b[(s + 2) % 3];
+        if (hs[s] != 0xffffffffu && bs < best) {
+            best = bs;
             j = s;
         }
     }
     if (j >= 0) {
-        frag_color = encode(2u, hs[j]);
-        return;
+        float pixels = best / w[(j + 2) % 3];
+        if (pixels < u_edge_radius) {
+            frag_color = encode(2u, hs[j] >> 1);  // edge e holds halfedges 2e and 2e+1
+            return;
+        }
+        if (best < u_halfedge_band || pixels < 2.5 * u_edge_radius) {
+            frag_color = encode(3u, hs[j]);
+            return;
+        }
     }
-    frag_color = encode(3u, fv[0]);
+    frag_color = encode(4u, fv[0]);
 }

@@ -181,6 +181,12 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
     shader_.set_int("u_wireframe", options.wireframe ? 1 : 0);
     shader_.set_float("u_wire_width", options.wire_width_px);
     shader_.set_vec4("u_wire_color", options.wire_color.data());
+    shader_.set_float("u_ambient", options.phong.ambient);
+    shader_.set_float("u_diffuse", options.phong.diffuse);
+    shader_.set_float("u_specular", options.phong.specular);
+    shader_.set_float("u_shininess", options.phong.shininess);
+    shader_.set_vec3("u_light_dir", options.phong.light_dir.data());
+    shader_.set_vec3("u_light_color", options.phong.light_color.data());
     // Depth mode: the scene sphere's near and far view distances.
     const float d = glm::length(camera.eye() - camera.target);
     shader_.set_vec2("u_depth_range", std::max(d - camera.scene_radius, 0.0f),
@@ -223,6 +229,7 @@ void MeshRenderer::draw_ids(const Camera& camera, float aspect, float vertex_rad
     set_camera(pick_shader_, camera, aspect);
     pick_shader_.set_float("u_vertex_radius", vertex_radius_px);
     pick_shader_.set_float("u_edge_radius", edge_radius_px);
+    pick_shader_.set_float("u_halfedge_band", 0.15f);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_BUFFER, pick_tbo_texture_);
     pick_shader_.set_int("u_table", 0);
@@ -232,30 +239,39 @@ void MeshRenderer::draw_ids(const Camera& camera, float aspect, float vertex_rad
     glBindTexture(GL_TEXTURE_BUFFER, 0);
 }
 
-ElementRef MeshRenderer::decode_id(const std::uint8_t* rgb) {
-    const std::uint32_t id =
-        (std::uint32_t{rgb[0]} << 16) | (std::uint32_t{rgb[1]} << 8) | std::uint32_t{rgb[2]};
-    const std::uint32_t index = id & 0x3fffffu;
-    switch (id >> 22) {
+ElementRef MeshRenderer::decode_id(const std::uint8_t* rgba) {
+    const std::uint32_t index =
+        (std::uint32_t{rgba[0]} << 16) | (std::uint32_t{rgba[1]} << 8) | std::uint32_t{rgba[2]};
+    switch (rgba[3]) {
         case 1:
             return ElementRef::vertex(Vertex(index));
         case 2:
-            return ElementRef::halfedge(Halfedge(index));
+            return ElementRef::edge(Edge(index));
         case 3:
+            return ElementRef::halfedge(Halfedge(index));
+        case 4:
             return ElementRef::face(Face(index));
         default:
             return {};
     }
 }
 
-ElementRef MeshRenderer::pick(const Camera& camera, int width, int height, int x, int y) {
+ElementRef MeshRenderer::pick(const Camera& camera, int width, int height, int x, int y,
+                              float vertex_radius_px, float edge_radius_px) {
     if (x < 0 || y < 0 || x >= width || y >= height) {
         return {};
     }
-    draw_ids(camera, static_cast<float>(width) / static_cast<float>(height));
+    // Only the pixel under the cursor is shaded (scissor): on a million triangles the pass
+    // costs the vertex work alone.
+    const int row = height - 1 - y;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, row, 1, 1);
+    draw_ids(camera, static_cast<float>(width) / static_cast<float>(height), vertex_radius_px,
+             edge_radius_px);
+    glDisable(GL_SCISSOR_TEST);
     std::uint8_t rgba[4] = {0, 0, 0, 0};
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(x, height - 1 - y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glReadPixels(x, row, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     check_gl("MeshRenderer::pick");
     return decode_id(rgba);
 }

@@ -55,19 +55,22 @@ public:
     /// \param aspect viewport width / height.
     void draw(const Camera& camera, float aspect, const RenderOptions& options);
 
-    /// The ID pass: writes element ids as RGB into the current (single-sample!) framebuffer,
-    /// clearing it first. Near a corner (`vertex_radius_px`) the id is the vertex; near a
-    /// real edge (`edge_radius_px`) the halfedge of that edge inside the face under the
-    /// cursor; elsewhere the face. Black is "nothing".
+    /// The ID pass: writes element ids into the current (single-sample, RGBA8!) framebuffer,
+    /// clearing it first: index in RGB (24 bits), kind in alpha. Near a corner
+    /// (`vertex_radius_px`) the vertex; within `edge_radius_px` of a real edge the edge; in
+    /// the band just inside it (2.5 × the edge radius, or 15% of the face's height, where
+    /// the halfedge arrow is drawn) the halfedge of that side in this face; elsewhere the
+    /// face. Alpha 0 is "nothing".
     void draw_ids(const Camera& camera, float aspect, float vertex_radius_px = 6.0f,
                   float edge_radius_px = 4.0f);
 
-    /// Decodes a pixel of the ID pass.
-    static ElementRef decode_id(const std::uint8_t* rgb);
+    /// Decodes an RGBA pixel of the ID pass.
+    static ElementRef decode_id(const std::uint8_t* rgba);
 
-    /// Runs draw_ids() and reads the pixel at (x, y) (origin top-left, like window
-    /// coordinates) of a `width` × `height` viewport.
-    ElementRef pick(const Camera& camera, int width, int height, int x, int y);
+    /// Runs draw_ids() on the pixel at (x, y) alone (origin top-left, like window
+    /// coordinates) of a `width` × `height` viewport and reads it back.
+    ElementRef pick(const Camera& camera, int width, int height, int x, int y,
+                    float vertex_radius_px = 6.0f, float edge_radius_px = 4.0f);
 
     /// The same triangles with a transform-only shader and a constant colour: the baseline
     /// that `meshedit-render --benchmark` compares draw() against.

@@ -34,6 +34,18 @@ inline constexpr std::array<ShadingMode, 10> kShadingModes{{
 /// Looks a mode up by name or number ("phong", "1"); nullopt if unknown.
 std::optional<ShadingMode> find_shading_mode(std::string_view name_or_number);
 
+/// Blinn-Phong coefficients of shading mode 1 (the viewer's shading panel edits them). The
+/// light direction is in view space (x right, y up, z towards the viewer), so the lighting
+/// follows the camera.
+struct PhongParams {
+    float ambient = 1.0f;  ///< scales the sky-to-ground ambient (0.2 below … 0.3 above)
+    float diffuse = 0.62f;
+    float specular = 0.32f;
+    float shininess = 48.0f;
+    std::array<float, 3> light_dir{-0.45f, 0.65f, 0.62f};  ///< upper left, in front
+    std::array<float, 3> light_color{1.0f, 1.0f, 1.0f};
+};
+
 /// What MeshRenderer::draw() draws. A plain struct with defaults.
 struct RenderOptions {
     int shading = 1;         ///< index into kShadingModes
@@ -43,6 +55,7 @@ struct RenderOptions {
     std::array<float, 4> wire_color{0.16f, 0.17f, 0.2f, 1.0f};
     /// Base colour of the surface (a warm white).
     std::array<float, 3> base_color{0.93f, 0.89f, 0.82f};
+    PhongParams phong;
 };
 
 }  // namespace meshedit
