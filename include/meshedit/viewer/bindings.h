@@ -1,0 +1,120 @@
+#pragma once
+/// \file
+/// The one table that binds keys to commands. The window dispatches through it, the help
+/// overlay lists it, and the README's keys table is generated from it (a test checks the
+/// README against key_table_markdown()). Adding a key is adding a row here.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "meshedit/viewer/keys.h"
+
+namespace meshedit::viewer {
+
+/// What the document shows: a mesh file, Bezier patches (.bez, edited as their welded
+/// tessellation) or a Bezier curve (.bzc).
+enum class Mode { Mesh, Surface, Curve };
+
+/// A set of modes a binding is active in.
+enum ModeMask : unsigned {
+    kMeshMode = 1u << 0,
+    kSurfaceMode = 1u << 1,
+    kCurveMode = 1u << 2,
+    kMeshModes = kMeshMode | kSurfaceMode,
+    kAllModes = kMeshMode | kSurfaceMode | kCurveMode,
+};
+
+constexpr ModeMask mode_bit(Mode mode) {
+    return mode == Mode::Mesh ? kMeshMode : mode == Mode::Surface ? kSurfaceMode : kCurveMode;
+}
+
+/// Everything a key can ask for.
+enum class Command {
+    // Local operations on the selected edge, and whole-mesh operations.
+    Flip,
+    Split,
+    Collapse,
+    Loop,
+    ToggleCrease,
+    // Moving the selection through the connectivity.
+    Next,
+    Twin,
+    ToHalfedge,
+    ToVertex,
+    ToEdge,
+    ToFace,
+    // Display.
+    ToggleSmooth,
+    ToggleWireframe,
+    Shading,  ///< argument: the mode number 0–9
+    ToggleInfo,
+    ToggleHelp,
+    ResetCamera,
+    Screenshot,
+    // History and files.
+    Undo,
+    Redo,
+    Save,
+    SaveAs,
+    Open,
+    Escape,  ///< clears the selection; with nothing selected, quits
+    Quit,
+    // Curve mode.
+    LevelDown,  ///< one more de Casteljau level shown
+    LevelUp,
+    ToggleCurve,
+    DecreaseT,
+    IncreaseT,
+    AddPoint,
+    RemovePoint,
+    // Surface mode.
+    DensityUp,
+    DensityDown,
+    ToggleNets,
+};
+
+/// A command with its argument (only Shading uses one).
+struct Action {
+    Command command;
+    int argument = 0;
+    friend bool operator==(const Action&, const Action&) = default;
+};
+
+struct Binding {
+    Key key;
+    unsigned mods;   ///< exact Shift/Ctrl/Alt combination (Mods bits)
+    unsigned modes;  ///< ModeMask
+    Action action;
+    /// How the help and README write the key(s); bindings that share `label` and `help`
+    /// form one row ("0–9", "L / U").
+    std::string_view label;
+    std::string_view help;
+};
+
+/// Every key binding, in help order.
+std::span<const Binding> bindings();
+
+/// The action bound to `key` with exactly `mods` (Shift/Ctrl/Alt; other bits ignored) in
+/// `mode`, if any.
+std::optional<Action> lookup(Key key, unsigned mods, Mode mode);
+
+/// One row of the help overlay / README table.
+struct HelpRow {
+    std::string keys;
+    std::string action;
+    std::string modes;  ///< "" for all modes, else e.g. "curve" or "mesh, surface"
+};
+
+/// Key rows (bindings merged by label and help, in table order) followed by the mouse rows.
+std::vector<HelpRow> help_rows();
+
+/// The mouse actions (not dispatched through the key table, listed for the help).
+std::span<const HelpRow> mouse_rows();
+
+/// The README's keys-and-mouse table: a Markdown table of help_rows().
+std::string key_table_markdown();
+
+}  // namespace meshedit::viewer

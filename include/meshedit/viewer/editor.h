@@ -1,0 +1,188 @@
+#pragma once
+/// \file
+/// The viewer's logic without a window or GL: the open document, selection, undo history,
+/// display toggles and every key command. The window (src/viewer/app.cpp) turns input into
+/// calls here and reads back what to redraw; unit tests drive the same calls directly.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "meshedit/core/mesh.h"
+#include "meshedit/render/overlay.h"
+#include "meshedit/render/shading.h"
+#include "meshedit/viewer/bindings.h"
+#include "meshedit/viewer/history.h"
+
+namespace meshedit::viewer {
+
+/// What a command changed, so the window knows what to re-upload or do.
+enum Change : unsigned {
+    kNothing = 0,
+    kTopology = 1u << 0,   ///< the mesh's elements changed: full upload
+    kGeometry = 1u << 1,   ///< positions only (same triangles): update_geometry()
+    kSelection = 1u << 2,  ///< selection or hover overlay
+    kDisplay = 1u << 3,    ///< render options, panels, curve level/t, nets
+    kCurve = 1u << 4,      ///< curve control points
+    kResetCamera = 1u << 5,
+    kScreenshot = 1u << 6,   ///< the window should write a screenshot
+    kAskSavePath = 1u << 7,  ///< the window should ask for a path, then call save_as()
+    kAskOpenPath = 1u << 8,  ///< the window should ask for a path, then call open()
+    kQuit = 1u << 9,
+    kDocument = 1u << 10,  ///< a different document (open, undo/redo): reframe nothing,
+                           ///< re-upload everything
+};
+
+/// The result of a command: what changed, and a status line for the user (empty when there
+/// is nothing to say). `refused` marks a command that did nothing and says why.
+struct Outcome {
+    unsigned changes = kNothing;
+    std::string message;
+    bool refused = false;
+};
+
+/// The viewer's render defaults: the renderer's, with the wireframe on.
+inline RenderOptions with_wireframe() {
+    RenderOptions options;
+    options.wireframe = true;
+    return options;
+}
+
+/// Display state: not part of the document, not undone.
+struct ViewState {
+    RenderOptions render = with_wireframe();  ///< edges visible: they are what one picks
+    bool show_info = true;
+    bool show_help = false;
+    bool show_nets = false;  ///< Surface mode
+    bool show_curve = true;  ///< Curve mode
+    double t = 0.5;          ///< Curve mode: de Casteljau parameter
+    int level = -1;          ///< Curve mode: levels shown (−1 = all, with B(t))
+};
+
+class Editor {
+public:
+    explicit Editor(HistoryLimits limits = {});
+
+    // ------------------------------------------------------------------------ files
+
+    /// Opens `path` (.dae .gltf .glb .obj → Mesh, .bez → Surface, .bzc → Curve). On failure
+    /// throws IoError and leaves the current document untouched. Clears history and
+    /// selection; the document is clean (not dirty).
+    Outcome open(const std::filesystem::path& path);
+    /// Replaces the document with an in-memory one (tests, new documents); clean.
+    void set_document(Document document, std::filesystem::path path = {});
+
+    /// Saves to path() atomically (Ctrl+S). Refused (with reason) when there is no path or
+    /// the format cannot hold the document (a .bez path in Surface mode: the edited mesh is
+    /// no patch set — use save as a mesh file). IoErrors become refused outcomes.
+    Outcome save();
+    /// Saves to `path` and makes it the document's path (Ctrl+Shift+S after the window has
+    /// asked for a path). Mesh/Surface write a mesh format; Curve writes .bzc.
+    Outcome save_as(const std::filesystem::path& path);
+
+    // ---------------------------------------------------------------------- commands
+
+    /// Runs one key action (the window looks it up in bindings()).
+    Outcome run(Action action);
+    /// Looks `key`+`mods` up in the binding table for the current mode and runs it; an
+    /// unbound key returns an empty Outcome.
+    Outcome press(Key key, unsigned mods);
+
+    /// Selection and hover from picking (ElementRef of the mesh, or in Curve mode a Vertex
+    /// ref whose index is a control point). Invalid or deleted elements select nothing.
+    Outcome select(ElementRef element);
+    void set_hover(ElementRef element) { hover_ = element; }
+
+    /// Dragging the selected vertex (or control point): begin records one undo step,
+    /// move sets its position (world space; z ignored in Curve mode), end finishes. A drag
+    /// with no movement leaves no undo step and does not dirty the document.
+    bool begin_drag();
+    Outcome drag_to(const Vec3& position);
+    void end_drag();
+    bool dragging() const { return dragging_; }
+
+    /// Curve mode: t in [0, 1], clamped (the scroll wheel and [ ]).
+    Outcome set_t(double t);
+
+    // ----------------------------------------------------------------------- state
+
+    const Document& document() const { return doc_; }
+    const Mesh& mesh() const { return doc_.mesh; }
+    Mode mode() const { return doc_.mode; }
+    const ElementRef& selection() const { return doc_.selection; }
+    const ElementRef& hover() const { return hover_; }
+    ViewState& view() { return view_; }
+    const ViewState& view() const { return view_; }
+    const History& history() const { return history_; }
+    const std::filesystem::path& path() const { return path_; }
+    /// Unsaved changes: the content differs from what was last opened or saved (undoing
+    /// back to the saved state makes it clean again).
+    bool dirty() const { return doc_.revision != saved_revision_; }
+    /// "name.dae — V 8 E 18 F 12 *" for the window title.
+    std::string title() const;
+    /// Quitting with unsaved changes is refused once with a warning; this says whether the
+    /// next Quit/Escape-quit will go through.
+    bool quit_armed() const { return quit_armed_; }
+
+private:
+    /// Records the current document in the history and gives it a new revision; call
+    /// before mutating doc_.
+    void begin_edit();
+    /// Garbage-collects the mesh, remapping the selection, when it has deleted elements.
+    void compact();
+
+    Outcome run_mesh_op(Command command);
+    Outcome run_navigation(Command command);
+    Outcome run_curve(Action action);
+    Outcome run_surface(Command command);
+    Outcome undo();
+    Outcome redo();
+    Outcome quit(bool from_escape);
+    Outcome run_display(Action action);
+    /// Records `before` (a copy of doc_ taken before the mutation) in the history and gives
+    /// doc_ a new revision; for edits that may throw half-way (Loop).
+    void commit_edit(Document before);
+    /// Writes the document to `path` (save and save as).
+    Outcome write_to(const std::filesystem::path& path);
+
+    Document doc_;
+    History history_;
+    ViewState view_;
+    ElementRef hover_;
+    std::filesystem::path path_;
+    std::uint64_t saved_revision_ = 0;
+    std::uint64_t next_revision_ = 1;
+    bool dragging_ = false;
+    bool drag_moved_ = false;
+    bool quit_armed_ = false;
+    std::uint32_t drag_index_ = 0;  ///< the vertex or control point being dragged
+    /// Surface mode: revisions whose mesh is exactly tessellate(patches, density), so a
+    /// density change can say whether it replaces mesh edits.
+    std::unordered_set<std::uint64_t> pristine_revisions_;
+};
+
+// --------------------------------------------------------------------- selection helpers
+
+/// The selection after garbage collection: the element's new index, or none if it was
+/// deleted.
+ElementRef remap(const ElementRef& element, const GarbageCollectionMap& map);
+
+/// True if `element` names a live element of `mesh`.
+bool is_live(const Mesh& mesh, const ElementRef& element);
+
+/// A one-line description for the status line and info panel ("edge 5 (2–7)").
+std::string describe(const Mesh& mesh, const ElementRef& element);
+
+/// The info panel's rows for an element of a mesh: kind and index, position, degree,
+/// boundary and crease flags, neighbours' indices, and for a halfedge its next, twin, vertex
+/// (to and from), edge and face. Empty for none.
+std::vector<std::pair<std::string, std::string>> element_info(const Mesh& mesh,
+                                                              const ElementRef& element);
+/// The same for control point `index` of a curve.
+std::vector<std::pair<std::string, std::string>> control_point_info(const BezierCurve& curve,
+                                                                    std::uint32_t index);
+
+}  // namespace meshedit::viewer

@@ -1,0 +1,71 @@
+#pragma once
+/// \file
+/// Undo/redo by whole-document snapshots, bounded in bytes and in steps.
+///
+/// A snapshot is the document before an edit (mesh, patches, curve, selection), so undo is
+/// exact bit for bit and every edit — local op, Loop, crease, drag, retessellation — is
+/// undone the same way. Memory: the stacks together hold at most `max_bytes` (default
+/// 512 MiB) and `max_steps` (default 200) snapshots; the oldest undo steps go first. At
+/// least one undo step is always kept, so a document larger than the budget still undoes
+/// its last edit (then the bound is one snapshot).
+
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <vector>
+
+#include "meshedit/bezier/bezier_curve.h"
+#include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/mesh.h"
+#include "meshedit/render/overlay.h"
+#include "meshedit/viewer/bindings.h"
+
+namespace meshedit::viewer {
+
+/// The editable state: what undo restores and save writes.
+struct Document {
+    Mode mode = Mode::Mesh;
+    Mesh mesh;                         ///< Mesh and Surface modes
+    std::vector<BezierPatch> patches;  ///< Surface mode
+    int density = 8;                   ///< Surface mode: quads per patch side
+    BezierCurve curve;                 ///< Curve mode
+    ElementRef selection;              ///< Curve mode: Vertex = control point index
+    std::uint64_t revision = 0;        ///< identifies the content; new on every edit
+
+    /// Bytes this document holds (for the history budget).
+    std::size_t bytes() const;
+};
+
+struct HistoryLimits {
+    std::size_t max_bytes = std::size_t{512} << 20;
+    std::size_t max_steps = 200;
+};
+
+class History {
+public:
+    explicit History(HistoryLimits limits = {}) : limits_(limits) {}
+
+    /// Records `before` (the document as it was before an edit) and clears the redo stack.
+    void push(Document before);
+    /// Swaps `current` with the last undo step (current goes to redo). False if none.
+    bool undo(Document& current);
+    /// Swaps `current` with the last redo step. False if none.
+    bool redo(Document& current);
+    void clear();
+
+    std::size_t undo_steps() const { return undo_.size(); }
+    std::size_t redo_steps() const { return redo_.size(); }
+    std::size_t bytes() const { return bytes_; }
+    const HistoryLimits& limits() const { return limits_; }
+
+private:
+    void trim();
+
+    HistoryLimits limits_;
+    std::deque<Document> undo_;
+    std::vector<Document> redo_;
+    std::size_t bytes_ = 0;  ///< of undo_ and redo_ together
+};
+
+}  // namespace meshedit::viewer

@@ -1,0 +1,186 @@
+// The key table: the one place keys meet commands. The help overlay and the README's keys
+// table are generated from it (tests/viewer/bindings_test.cpp checks the README).
+
+#include "meshedit/viewer/bindings.h"
+
+#include <array>
+
+namespace meshedit::viewer {
+
+namespace {
+
+constexpr Key num(int d) {
+    return static_cast<Key>(static_cast<int>(Key::Num0) + d);
+}
+
+constexpr std::string_view kShadingHelp =
+    "shading mode (0 normals as colour, 1 Blinn-Phong, 2 flat grey, 3 studio, 4 matcap, "
+    "5 depth, 6 hemisphere)";
+constexpr std::string_view kTHelp = "decrease / increase t by 0.01";
+
+// clang-format off
+constexpr std::array kBindings{
+    // Local operations and Loop (mesh and surface modes).
+    Binding{key_of('F'), kNoMods, kMeshModes, {Command::Flip}, "F", "flip the selected edge"},
+    Binding{key_of('S'), kNoMods, kMeshModes, {Command::Split}, "S", "split the selected edge"},
+    Binding{key_of('C'), kNoMods, kMeshModes, {Command::Collapse}, "C", "collapse the selected edge"},
+    Binding{key_of('L'), kNoMods, kMeshModes, {Command::Loop}, "L / U", "Loop-subdivide the mesh"},
+    Binding{key_of('U'), kNoMods, kMeshModes, {Command::Loop}, "L / U", "Loop-subdivide the mesh"},
+    // Navigation.
+    Binding{key_of('N'), kNoMods, kMeshModes, {Command::Next}, "N", "selected halfedge → next"},
+    Binding{key_of('T'), kNoMods, kMeshModes, {Command::Twin}, "T", "selected halfedge → twin"},
+    Binding{key_of('H'), kNoMods, kMeshModes, {Command::ToHalfedge}, "H", "from the selection go to its halfedge"},
+    Binding{key_of('V'), kNoMods, kMeshModes, {Command::ToVertex}, "V", "from the selection go to its vertex"},
+    Binding{key_of('E'), kNoMods, kMeshModes, {Command::ToEdge}, "E", "from the selection go to its edge"},
+    Binding{key_of('G'), kNoMods, kMeshModes, {Command::ToFace}, "G", "from the selection go to its face"},
+    Binding{key_of('K'), kNoMods, kMeshModes, {Command::ToggleCrease}, "K", "toggle crease on the selected edge"},
+    // Display.
+    Binding{key_of('Q'), kNoMods, kMeshModes, {Command::ToggleSmooth}, "Q", "toggle smooth (area-weighted vertex normals) / flat shading"},
+    Binding{key_of('W'), kNoMods, kMeshModes, {Command::ToggleWireframe}, "W", "toggle wireframe overlay"},
+    Binding{num(0), kNoMods, kMeshModes, {Command::Shading, 0}, "0–9", kShadingHelp},
+    Binding{num(1), kNoMods, kMeshModes, {Command::Shading, 1}, "0–9", kShadingHelp},
+    Binding{num(2), kNoMods, kMeshModes, {Command::Shading, 2}, "0–9", kShadingHelp},
+    Binding{num(3), kNoMods, kMeshModes, {Command::Shading, 3}, "0–9", kShadingHelp},
+    Binding{num(4), kNoMods, kMeshModes, {Command::Shading, 4}, "0–9", kShadingHelp},
+    Binding{num(5), kNoMods, kMeshModes, {Command::Shading, 5}, "0–9", kShadingHelp},
+    Binding{num(6), kNoMods, kMeshModes, {Command::Shading, 6}, "0–9", kShadingHelp},
+    Binding{num(7), kNoMods, kMeshModes, {Command::Shading, 7}, "0–9", kShadingHelp},
+    Binding{num(8), kNoMods, kMeshModes, {Command::Shading, 8}, "0–9", kShadingHelp},
+    Binding{num(9), kNoMods, kMeshModes, {Command::Shading, 9}, "0–9", kShadingHelp},
+    Binding{key_of('I'), kNoMods, kAllModes, {Command::ToggleInfo}, "I", "toggle info panel"},
+    Binding{Key::Slash, kShift, kAllModes, {Command::ToggleHelp}, "? / F1", "help overlay (this list)"},
+    Binding{Key::F1, kNoMods, kAllModes, {Command::ToggleHelp}, "? / F1", "help overlay (this list)"},
+    // History and files.
+    Binding{key_of('Z'), kCtrl, kAllModes, {Command::Undo}, "Ctrl+Z", "undo"},
+    Binding{key_of('Z'), kCtrl | kShift, kAllModes, {Command::Redo}, "Ctrl+Shift+Z / Ctrl+Y", "redo"},
+    Binding{key_of('Y'), kCtrl, kAllModes, {Command::Redo}, "Ctrl+Shift+Z / Ctrl+Y", "redo"},
+    Binding{key_of('S'), kCtrl, kAllModes, {Command::Save}, "Ctrl+S", "save"},
+    Binding{key_of('S'), kCtrl | kShift, kAllModes, {Command::SaveAs}, "Ctrl+Shift+S", "save as"},
+    Binding{key_of('O'), kCtrl, kAllModes, {Command::Open}, "Ctrl+O", "open a file"},
+    Binding{key_of('P'), kNoMods, kAllModes, {Command::Screenshot}, "P", "screenshot to PNG"},
+    Binding{Key::Space, kNoMods, kAllModes, {Command::ResetCamera}, "Space", "reset the camera"},
+    Binding{Key::Escape, kNoMods, kAllModes, {Command::Escape}, "Esc", "clear the selection; with nothing selected, quit"},
+    Binding{key_of('Q'), kCtrl, kAllModes, {Command::Quit}, "Ctrl+Q", "quit"},
+    // Curve mode.
+    Binding{key_of('E'), kNoMods, kCurveMode, {Command::LevelDown}, "E", "show one more de Casteljau level"},
+    Binding{key_of('E'), kShift, kCurveMode, {Command::LevelUp}, "Shift+E", "show one level fewer"},
+    Binding{key_of('C'), kNoMods, kCurveMode, {Command::ToggleCurve}, "C", "toggle the curve"},
+    Binding{Key::LeftBracket, kNoMods, kCurveMode, {Command::DecreaseT}, "[ / ]", kTHelp},
+    Binding{Key::RightBracket, kNoMods, kCurveMode, {Command::IncreaseT}, "[ / ]", kTHelp},
+    Binding{Key::Equal, kShift, kCurveMode, {Command::AddPoint}, "+", "add a control point"},
+    Binding{Key::Equal, kNoMods, kCurveMode, {Command::AddPoint}, "+", "add a control point"},
+    Binding{Key::KeypadAdd, kNoMods, kCurveMode, {Command::AddPoint}, "+", "add a control point"},
+    Binding{Key::Minus, kNoMods, kCurveMode, {Command::RemovePoint}, "-", "remove a control point"},
+    Binding{Key::KeypadSubtract, kNoMods, kCurveMode, {Command::RemovePoint}, "-", "remove a control point"},
+    // Surface mode.
+    Binding{Key::Equal, kShift, kSurfaceMode, {Command::DensityUp}, "+", "tessellation density up"},
+    Binding{Key::Equal, kNoMods, kSurfaceMode, {Command::DensityUp}, "+", "tessellation density up"},
+    Binding{Key::KeypadAdd, kNoMods, kSurfaceMode, {Command::DensityUp}, "+", "tessellation density up"},
+    Binding{Key::Minus, kNoMods, kSurfaceMode, {Command::DensityDown}, "-", "tessellation density down"},
+    Binding{Key::KeypadSubtract, kNoMods, kSurfaceMode, {Command::DensityDown}, "-", "tessellation density down"},
+    Binding{key_of('B'), kNoMods, kSurfaceMode, {Command::ToggleNets}, "B", "toggle control nets"},
+};
+
+const std::array<HelpRow, 6> kMouseRows{{
+    {"left-click", "select the element under the cursor (vertex near a corner, edge near an edge, halfedge just inside it, else face)", ""},
+    {"left-drag on empty space", "orbit", ""},
+    {"middle-drag / Shift+left-drag", "pan", ""},
+    {"wheel", "zoom to the cursor (curve mode: change t)", ""},
+    {"left-drag on the selected vertex", "move it in the screen plane (curve mode: control points)", ""},
+    {"drop a file", "open it", ""},
+}};
+// clang-format on
+
+std::string modes_text(unsigned modes) {
+    if ((modes & kAllModes) == kAllModes) {
+        return "";
+    }
+    std::string out;
+    const auto add = [&](unsigned bit, const char* name) {
+        if ((modes & bit) != 0) {
+            if (!out.empty()) {
+                out += ", ";
+            }
+            out += name;
+        }
+    };
+    add(kMeshMode, "mesh");
+    add(kSurfaceMode, "surface");
+    add(kCurveMode, "curve");
+    return out;
+}
+
+std::string escape_cell(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (char c : text) {
+        if (c == '|') {
+            out += '\\';
+        }
+        out += c;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::span<const Binding> bindings() {
+    return kBindings;
+}
+
+std::optional<Action> lookup(Key key, unsigned mods, Mode mode) {
+    const unsigned wanted = mods & (kShift | kCtrl | kAlt);
+    const unsigned bit = mode_bit(mode);
+    for (const Binding& b : kBindings) {
+        if (b.key == key && b.mods == wanted && (b.modes & bit) != 0) {
+            return b.action;
+        }
+    }
+    return std::nullopt;
+}
+
+std::span<const HelpRow> mouse_rows() {
+    return kMouseRows;
+}
+
+std::vector<HelpRow> help_rows() {
+    // Merge bindings that share label and help (in first-occurrence order); their modes
+    // are united.
+    struct Merged {
+        std::string_view label;
+        std::string_view help;
+        unsigned modes;
+    };
+    std::vector<Merged> merged;
+    for (const Binding& b : kBindings) {
+        bool found = false;
+        for (Merged& m : merged) {
+            if (m.label == b.label && m.help == b.help) {
+                m.modes |= b.modes;
+                found = true;
+                break;
+            }
+        }
+        if (!found) {
+            merged.push_back({b.label, b.help, b.modes});
+        }
+    }
+    std::vector<HelpRow> rows;
+    rows.reserve(merged.size() + kMouseRows.size());
+    for (const Merged& m : merged) {
+        rows.push_back({std::string(m.label), std::string(m.help), modes_text(m.modes)});
+    }
+    rows.insert(rows.end(), kMouseRows.begin(), kMouseRows.end());
+    return rows;
+}
+
+std::string key_table_markdown() {
+    std::string out = "| keys | action | modes |\n|---|---|---|\n";
+    for (const HelpRow& row : help_rows()) {
+        out += "| " + escape_cell(row.keys) + " | " + escape_cell(row.action) + " | " +
+               (row.modes.empty() ? std::string("all") : escape_cell(row.modes)) + " |\n";
+    }
+    return out;
+}
+
+}  // namespace meshedit::viewer

@@ -1,0 +1,293 @@
+// Selection helpers: remapping through garbage collection, liveness, the one-line
+// description and the info panel's rows.
+
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "meshedit/core/normals.h"
+#include "meshedit/core/subdivision.h"
+#include "meshedit/viewer/editor.h"
+
+namespace meshedit::viewer {
+
+namespace {
+
+using Kind = ElementRef::Kind;
+using Rows = std::vector<std::pair<std::string, std::string>>;
+
+/// Lists longer than this are cut ("…, 31 (40 in all)") so a huge valence cannot flood the
+/// panel.
+constexpr std::size_t kMaxListed = 32;
+
+std::string number(double value) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.4f", value);
+    std::string s(buf);
+    if (s == "-0.0000") {
+        s = "0.0000";
+    }
+    return s;
+}
+
+std::string point(const Vec3& p) {
+    // Appended piecewise: `"(" + string` trips a GCC 12 -Wrestrict false positive.
+    std::string out(1, '(');
+    out += number(p.x);
+    out += ", ";
+    out += number(p.y);
+    out += ", ";
+    out += number(p.z);
+    out += ')';
+    return out;
+}
+
+/// A curve point: curves are 2D.
+std::string point2(const Vec3& p) {
+    std::string out(1, '(');
+    out += number(p.x);
+    out += ", ";
+    out += number(p.y);
+    out += ')';
+    return out;
+}
+
+template <class H>
+std::string index_list(const std::vector<H>& handles) {
+    std::string out;
+    for (std::size_t i = 0; i < handles.size() && i < kMaxListed; ++i) {
+        if (i > 0) {
+            out += ", ";
+        }
+        out += handles[i].is_valid() ? std::to_string(handles[i].idx()) : "none";
+    }
+    if (handles.size() > kMaxListed) {
+        out += ", … (" + std::to_string(handles.size()) + " in all)";
+    }
+    return out.empty() ? "none" : out;
+}
+
+std::string yes_no(bool b) {
+    return b ? "yes" : "no";
+}
+
+const char* kind_name(Kind kind) {
+    switch (kind) {
+        case Kind::Vertex:
+            return "vertex";
+        case Kind::Edge:
+            return "edge";
+        case Kind::Halfedge:
+            return "halfedge";
+        case Kind::Face:
+            return "face";
+        case Kind::None:
+            break;
+    }
+    return "nothing";
+}
+
+std::size_t kind_size(const Mesh& mesh, Kind kind) {
+    switch (kind) {
+        case Kind::Vertex:
+            return mesh.vertices_size();
+        case Kind::Edge:
+            return mesh.edges_size();
+        case Kind::Halfedge:
+            return mesh.halfedges_size();
+        case Kind::Face:
+            return mesh.faces_size();
+        case Kind::None:
+            break;
+    }
+    return 0;
+}
+
+bool is_crease(const Mesh& mesh, Edge e) {
+    const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
+    return crease && crease[e] != 0;
+}
+
+template <class H>
+ElementRef remap_one(const std::vector<H>& map, std::uint32_t index, Kind kind) {
+    if (index >= map.size() || !map[index].is_valid()) {
+        return {};
+    }
+    return {kind, map[index].idx()};
+}
+
+Rows vertex_info(const Mesh& mesh, Vertex v) {
+    Rows rows;
+    rows.emplace_back("position", point(mesh.position(v)));
+    if (mesh.is_isolated(v)) {
+        rows.emplace_back("degree", "0");
+        rows.emplace_back("boundary", "isolated vertex");
+        return rows;
+    }
+    std::vector<Vertex> ring(mesh.vertices(v).begin(), mesh.vertices(v).end());
+    std::vector<Face> faces(mesh.faces(v).begin(), mesh.faces(v).end());
+    rows.emplace_back("degree", std::to_string(mesh.valence(v)));
+    rows.emplace_back("boundary", yes_no(mesh.is_boundary(v)));
+    rows.emplace_back("neighbours", index_list(ring));
+    rows.emplace_back("faces", index_list(faces));
+    rows.emplace_back("halfedge", std::to_string(mesh.halfedge(v).idx()));
+    return rows;
+}
+
+Rows edge_info(const Mesh& mesh, Edge e) {
+    const Halfedge h = Mesh::halfedge(e, 0);
+    const Vertex a = mesh.from_vertex(h);
+    const Vertex b = mesh.to_vertex(h);
+    const Vec3& pa = mesh.position(a);
+    const Vec3& pb = mesh.position(b);
+    Rows rows;
+    rows.emplace_back("vertices", index_list(std::vector<Vertex>{a, b}));
+    rows.emplace_back("halfedges", index_list(std::vector<Halfedge>{h, Mesh::twin(h)}));
+    rows.emplace_back("midpoint", point(0.5 * (pa + pb)));
+    rows.emplace_back("length", number(distance(pa, pb)));
+    rows.emplace_back("boundary", yes_no(mesh.is_boundary(e)));
+    rows.emplace_back("crease", yes_no(is_crease(mesh, e)));
+    rows.emplace_back("faces", index_list(std::vector<Face>{mesh.face(e, 0), mesh.face(e, 1)}));
+    return rows;
+}
+
+Rows halfedge_info(const Mesh& mesh, Halfedge h) {
+    Rows rows;
+    rows.emplace_back("from", std::to_string(mesh.from_vertex(h).idx()));
+    rows.emplace_back("vertex", std::to_string(mesh.to_vertex(h).idx()));
+    rows.emplace_back("next", std::to_string(mesh.next(h).idx()));
+    rows.emplace_back("prev", std::to_string(mesh.prev(h).idx()));
+    rows.emplace_back("twin", std::to_string(Mesh::twin(h).idx()));
+    rows.emplace_back("edge", std::to_string(Mesh::edge(h).idx()));
+    const Face f = mesh.face(h);
+    rows.emplace_back("face", f.is_valid() ? std::to_string(f.idx()) : "none (boundary)");
+    return rows;
+}
+
+Rows face_info(const Mesh& mesh, Face f) {
+    std::vector<Vertex> corners(mesh.vertices(f).begin(), mesh.vertices(f).end());
+    std::vector<Halfedge> sides(mesh.halfedges(f).begin(), mesh.halfedges(f).end());
+    std::vector<Face> neighbours;
+    neighbours.reserve(sides.size());
+    for (Halfedge h : sides) {
+        neighbours.push_back(mesh.face(Mesh::twin(h)));
+    }
+    const Vec3 area = face_area_vector(mesh, f);
+    Rows rows;
+    rows.emplace_back("degree", std::to_string(sides.size()));
+    rows.emplace_back("vertices", index_list(corners));
+    rows.emplace_back("halfedges", index_list(sides));
+    rows.emplace_back("neighbours", index_list(neighbours));
+    rows.emplace_back("boundary", yes_no(mesh.is_boundary(f)));
+    rows.emplace_back("normal", point(normalize(area)));
+    rows.emplace_back("area", number(0.5 * norm(area)));
+    return rows;
+}
+
+}  // namespace
+
+ElementRef remap(const ElementRef& element, const GarbageCollectionMap& map) {
+    switch (element.kind) {
+        case Kind::Vertex:
+            return remap_one(map.vertices, element.index, Kind::Vertex);
+        case Kind::Edge:
+            return remap_one(map.edges, element.index, Kind::Edge);
+        case Kind::Halfedge:
+            return remap_one(map.halfedges, element.index, Kind::Halfedge);
+        case Kind::Face:
+            return remap_one(map.faces, element.index, Kind::Face);
+        case Kind::None:
+            break;
+    }
+    return {};
+}
+
+bool is_live(const Mesh& mesh, const ElementRef& element) {
+    if (element.kind == Kind::None || element.index >= kind_size(mesh, element.kind)) {
+        return false;
+    }
+    switch (element.kind) {
+        case Kind::Vertex:
+            return !mesh.is_deleted(Vertex(element.index));
+        case Kind::Edge:
+            return !mesh.is_deleted(Edge(element.index));
+        case Kind::Halfedge:
+            return !mesh.is_deleted(Halfedge(element.index));
+        case Kind::Face:
+            return !mesh.is_deleted(Face(element.index));
+        case Kind::None:
+            break;
+    }
+    return false;
+}
+
+std::string describe(const Mesh& mesh, const ElementRef& element) {
+    if (element.kind == Kind::None) {
+        return "nothing selected";
+    }
+    std::string out = std::string(kind_name(element.kind)) + " " + std::to_string(element.index);
+    if (element.index >= kind_size(mesh, element.kind)) {
+        return out + " (not in the mesh)";
+    }
+    if (!is_live(mesh, element)) {
+        return out + " (deleted)";
+    }
+    if (element.kind == Kind::Edge || element.kind == Kind::Halfedge) {
+        const Halfedge h = element.kind == Kind::Edge ? Mesh::halfedge(Edge(element.index), 0)
+                                                      : Halfedge(element.index);
+        const char* joint = element.kind == Kind::Edge ? "–" : "→";
+        out += " (" + std::to_string(mesh.from_vertex(h).idx()) + joint +
+               std::to_string(mesh.to_vertex(h).idx()) + ")";
+    }
+    return out;
+}
+
+std::vector<std::pair<std::string, std::string>> element_info(const Mesh& mesh,
+                                                              const ElementRef& element) {
+    if (element.kind == Kind::None) {
+        return {};
+    }
+    Rows rows{{"type", kind_name(element.kind)}, {"index", std::to_string(element.index)}};
+    if (!is_live(mesh, element)) {
+        rows.emplace_back("state", element.index >= kind_size(mesh, element.kind)
+                                       ? "not in the mesh"
+                                       : "deleted");
+        return rows;
+    }
+    Rows more;
+    switch (element.kind) {
+        case Kind::Vertex:
+            more = vertex_info(mesh, Vertex(element.index));
+            break;
+        case Kind::Edge:
+            more = edge_info(mesh, Edge(element.index));
+            break;
+        case Kind::Halfedge:
+            more = halfedge_info(mesh, Halfedge(element.index));
+            break;
+        case Kind::Face:
+            more = face_info(mesh, Face(element.index));
+            break;
+        case Kind::None:
+            break;
+    }
+    rows.insert(rows.end(), std::make_move_iterator(more.begin()),
+                std::make_move_iterator(more.end()));
+    return rows;
+}
+
+std::vector<std::pair<std::string, std::string>> control_point_info(const BezierCurve& curve,
+                                                                    std::uint32_t index) {
+    if (index >= curve.control_points.size()) {
+        return {};
+    }
+    const Vec3& p = curve.control_points[index];
+    return {{"type", "control point"},
+            {"index", std::to_string(index)},
+            {"position", point2(p)},
+            {"points", std::to_string(curve.control_points.size())},
+            {"degree", std::to_string(curve.degree())}};
+}
+
+}  // namespace meshedit::viewer

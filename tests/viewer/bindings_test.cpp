@@ -1,0 +1,292 @@
+// The key table (SPEC §4): every key does what its help says, in the modes it says; no two
+// bindings compete for a key; every command is reachable; the README's table is generated
+// from the table.
+
+#include "meshedit/viewer/bindings.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace meshedit::viewer {
+namespace {
+
+constexpr unsigned kShiftCtrl = kShift | kCtrl;
+
+struct Expected {
+    Key key;
+    unsigned mods;
+    unsigned modes;  ///< where the key must give `action`
+    Action action;
+};
+
+// Written by hand from SPEC §4 (keys, curve mode, surface mode), not from the table.
+const std::vector<Expected>& expected_bindings() {
+    static const std::vector<Expected> table = [] {
+        std::vector<Expected> t{
+            {key_of('F'), 0, kMeshModes, {Command::Flip}},
+            {key_of('S'), 0, kMeshModes, {Command::Split}},
+            {key_of('C'), 0, kMeshModes, {Command::Collapse}},
+            {key_of('L'), 0, kMeshModes, {Command::Loop}},
+            {key_of('U'), 0, kMeshModes, {Command::Loop}},
+            {key_of('N'), 0, kMeshModes, {Command::Next}},
+            {key_of('T'), 0, kMeshModes, {Command::Twin}},
+            {key_of('H'), 0, kMeshModes, {Command::ToHalfedge}},
+            {key_of('V'), 0, kMeshModes, {Command::ToVertex}},
+            {key_of('E'), 0, kMeshModes, {Command::ToEdge}},
+            {key_of('G'), 0, kMeshModes, {Command::ToFace}},
+            {key_of('K'), 0, kMeshModes, {Command::ToggleCrease}},
+            {key_of('Q'), 0, kMeshModes, {Command::ToggleSmooth}},
+            {key_of('W'), 0, kMeshModes, {Command::ToggleWireframe}},
+            {key_of('I'), 0, kAllModes, {Command::ToggleInfo}},
+            {Key::Slash, kShift, kAllModes, {Command::ToggleHelp}},
+            {Key::F1, 0, kAllModes, {Command::ToggleHelp}},
+            {key_of('Z'), kCtrl, kAllModes, {Command::Undo}},
+            {key_of('Z'), kShiftCtrl, kAllModes, {Command::Redo}},
+            {key_of('Y'), kCtrl, kAllModes, {Command::Redo}},
+            {key_of('S'), kCtrl, kAllModes, {Command::Save}},
+            {key_of('S'), kShiftCtrl, kAllModes, {Command::SaveAs}},
+            {key_of('O'), kCtrl, kAllModes, {Command::Open}},
+            {key_of('P'), 0, kAllModes, {Command::Screenshot}},
+            {Key::Space, 0, kAllModes, {Command::ResetCamera}},
+            {Key::Escape, 0, kAllModes, {Command::Escape}},
+            {key_of('Q'), kCtrl, kAllModes, {Command::Quit}},
+            // Curve mode.
+            {key_of('E'), 0, kCurveMode, {Command::LevelDown}},
+            {key_of('E'), kShift, kCurveMode, {Command::LevelUp}},
+            {key_of('C'), 0, kCurveMode, {Command::ToggleCurve}},
+            {Key::LeftBracket, 0, kCurveMode, {Command::DecreaseT}},
+            {Key::RightBracket, 0, kCurveMode, {Command::IncreaseT}},
+            {Key::Equal, kShift, kCurveMode, {Command::AddPoint}},
+            {Key::Equal, 0, kCurveMode, {Command::AddPoint}},
+            {Key::KeypadAdd, 0, kCurveMode, {Command::AddPoint}},
+            {Key::Minus, 0, kCurveMode, {Command::RemovePoint}},
+            {Key::KeypadSubtract, 0, kCurveMode, {Command::RemovePoint}},
+            // Surface mode.
+            {Key::Equal, kShift, kSurfaceMode, {Command::DensityUp}},
+            {Key::Equal, 0, kSurfaceMode, {Command::DensityUp}},
+            {Key::KeypadAdd, 0, kSurfaceMode, {Command::DensityUp}},
+            {Key::Minus, 0, kSurfaceMode, {Command::DensityDown}},
+            {Key::KeypadSubtract, 0, kSurfaceMode, {Command::DensityDown}},
+            {key_of('B'), 0, kSurfaceMode, {Command::ToggleNets}},
+        };
+        for (int d = 0; d <= 9; ++d) {
+            t.push_back({key_of(static_cast<char>('0' + d)), 0, kMeshModes, {Command::Shading, d}});
+        }
+        return t;
+    }();
+    return table;
+}
+
+constexpr Mode kModes[] = {Mode::Mesh, Mode::Surface, Mode::Curve};
+
+const char* name(Mode m) {
+    return m == Mode::Mesh ? "mesh" : m == Mode::Surface ? "surface" : "curve";
+}
+
+TEST(Bindings, KeyOf) {
+    EXPECT_EQ(key_of('a'), Key::A);
+    EXPECT_EQ(key_of('A'), Key::A);
+    EXPECT_EQ(static_cast<int>(key_of('z')), 'Z');
+    EXPECT_EQ(key_of('0'), Key::Num0);
+    EXPECT_EQ(static_cast<int>(key_of('7')), '7');
+}
+
+TEST(Bindings, EveryKeyOfTheSpecDoesWhatItSays) {
+    for (const Expected& e : expected_bindings()) {
+        for (Mode mode : kModes) {
+            const std::optional<Action> got = lookup(e.key, e.mods, mode);
+            SCOPED_TRACE(::testing::Message() << "key " << static_cast<int>(e.key) << " mods "
+                                              << e.mods << " in " << name(mode));
+            if ((e.modes & mode_bit(mode)) != 0) {
+                ASSERT_TRUE(got.has_value());
+                EXPECT_EQ(*got, e.action);
+            } else if (got) {
+                // Another binding may own the key in this mode; it must be in the list too.
+                bool listed = false;
+                for (const Expected& other : expected_bindings()) {
+                    listed |= other.key == e.key && other.mods == e.mods &&
+                              (other.modes & mode_bit(mode)) != 0 && other.action == *got;
+                }
+                EXPECT_TRUE(listed) << "unexpected binding";
+            }
+        }
+    }
+}
+
+TEST(Bindings, TableHasNothingBeyondTheExpectedList) {
+    for (const Binding& b : bindings()) {
+        bool found = false;
+        for (const Expected& e : expected_bindings()) {
+            found |=
+                e.key == b.key && e.mods == b.mods && e.modes == b.modes && e.action == b.action;
+        }
+        EXPECT_TRUE(found) << "binding " << b.label << " (" << b.help
+                           << ") is not in the spec list";
+    }
+    EXPECT_EQ(bindings().size(), expected_bindings().size());
+}
+
+TEST(Bindings, SameKeyDiffersByMode) {
+    EXPECT_EQ(lookup(key_of('E'), 0, Mode::Mesh), Action{Command::ToEdge});
+    EXPECT_EQ(lookup(key_of('E'), 0, Mode::Surface), Action{Command::ToEdge});
+    EXPECT_EQ(lookup(key_of('E'), 0, Mode::Curve), Action{Command::LevelDown});
+    EXPECT_EQ(lookup(key_of('E'), kShift, Mode::Curve), Action{Command::LevelUp});
+    EXPECT_FALSE(lookup(key_of('E'), kShift, Mode::Mesh));
+    EXPECT_EQ(lookup(key_of('C'), 0, Mode::Mesh), Action{Command::Collapse});
+    EXPECT_EQ(lookup(key_of('C'), 0, Mode::Curve), Action{Command::ToggleCurve});
+    EXPECT_EQ(lookup(Key::Equal, kShift, Mode::Surface), Action{Command::DensityUp});
+    EXPECT_EQ(lookup(Key::Equal, kShift, Mode::Curve), Action{Command::AddPoint});
+    EXPECT_FALSE(lookup(Key::Equal, kShift, Mode::Mesh));
+    EXPECT_FALSE(lookup(key_of('F'), 0, Mode::Curve));
+    EXPECT_FALSE(lookup(key_of('B'), 0, Mode::Mesh));
+}
+
+TEST(Bindings, ModifiersAreExactAndLockBitsIgnored) {
+    EXPECT_EQ(lookup(Key::Slash, kShift, Mode::Mesh), Action{Command::ToggleHelp});
+    EXPECT_FALSE(lookup(Key::Slash, 0, Mode::Mesh));
+    EXPECT_FALSE(lookup(key_of('F'), kCtrl, Mode::Mesh));
+    EXPECT_FALSE(lookup(key_of('F'), kAlt, Mode::Mesh));
+    EXPECT_EQ(lookup(key_of('Q'), 0, Mode::Mesh), Action{Command::ToggleSmooth});
+    EXPECT_EQ(lookup(key_of('Q'), kCtrl, Mode::Mesh), Action{Command::Quit});
+    EXPECT_EQ(lookup(key_of('S'), kCtrl | kShift, Mode::Mesh), Action{Command::SaveAs});
+    // GLFW's Caps Lock (0x10) and Num Lock (0x20) bits, and Super (0x8), are masked off.
+    EXPECT_EQ(lookup(key_of('F'), 0x10, Mode::Mesh), Action{Command::Flip});
+    EXPECT_EQ(lookup(key_of('Z'), kCtrl | 0x20, Mode::Mesh), Action{Command::Undo});
+    EXPECT_EQ(lookup(key_of('F'), 0x8, Mode::Mesh), Action{Command::Flip});
+    EXPECT_FALSE(lookup(Key::Unknown, 0, Mode::Mesh));
+}
+
+TEST(Bindings, NoTwoBindingsCompete) {
+    const auto table = bindings();
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        for (std::size_t j = i + 1; j < table.size(); ++j) {
+            const Binding& a = table[i];
+            const Binding& b = table[j];
+            EXPECT_FALSE(a.key == b.key && a.mods == b.mods && (a.modes & b.modes) != 0)
+                << a.label << " (" << a.help << ") and " << b.label << " (" << b.help
+                << ") share a key in some mode";
+        }
+    }
+}
+
+TEST(Bindings, EveryCommandIsReachable) {
+    std::set<int> bound;
+    for (const Binding& b : bindings()) {
+        bound.insert(static_cast<int>(b.action.command));
+        EXPECT_NE(b.modes & kAllModes, 0u) << b.label;
+        EXPECT_EQ(b.modes & ~unsigned{kAllModes}, 0u) << b.label;
+        EXPECT_FALSE(b.label.empty());
+        EXPECT_FALSE(b.help.empty());
+    }
+    for (int c = static_cast<int>(Command::Flip); c <= static_cast<int>(Command::ToggleNets); ++c) {
+        EXPECT_TRUE(bound.count(c)) << "Command " << c << " has no key";
+    }
+    // Every shading mode 0–9 has its digit.
+    std::set<int> shading;
+    for (const Binding& b : bindings()) {
+        if (b.action.command == Command::Shading) {
+            shading.insert(b.action.argument);
+        }
+    }
+    EXPECT_EQ(shading, (std::set<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9}));
+}
+
+TEST(Bindings, HelpRowsMergeByLabelAndHelp) {
+    const std::vector<HelpRow> rows = help_rows();
+    ASSERT_FALSE(rows.empty());
+    const auto count = [&](const std::string& keys) {
+        std::size_t n = 0;
+        for (const HelpRow& r : rows) {
+            n += r.keys == keys;
+        }
+        return n;
+    };
+    const auto find = [&](const std::string& keys, const std::string& modes) -> const HelpRow* {
+        for (const HelpRow& r : rows) {
+            if (r.keys == keys && r.modes == modes) {
+                return &r;
+            }
+        }
+        return nullptr;
+    };
+    EXPECT_EQ(count("0–9"), 1u);
+    ASSERT_NE(find("0–9", "mesh, surface"), nullptr);
+    EXPECT_NE(find("0–9", "mesh, surface")->action.find("1 Blinn-Phong"), std::string::npos);
+    EXPECT_EQ(count("L / U"), 1u);
+    EXPECT_EQ(count("? / F1"), 1u);
+    EXPECT_EQ(count("Ctrl+Shift+Z / Ctrl+Y"), 1u);
+    EXPECT_EQ(count("[ / ]"), 1u);
+    // C and +/- have one row per meaning.
+    EXPECT_EQ(count("C"), 2u);
+    ASSERT_NE(find("C", "mesh, surface"), nullptr);
+    ASSERT_NE(find("C", "curve"), nullptr);
+    EXPECT_EQ(find("C", "curve")->action, "toggle the curve");
+    ASSERT_NE(find("+", "curve"), nullptr);
+    ASSERT_NE(find("+", "surface"), nullptr);
+    ASSERT_NE(find("-", "curve"), nullptr);
+    ASSERT_NE(find("-", "surface"), nullptr);
+    ASSERT_NE(find("Esc", ""), nullptr);
+    ASSERT_NE(find("F", "mesh, surface"), nullptr);
+    EXPECT_EQ(find("F", "mesh, surface")->action, "flip the selected edge");
+    // Key rows come first, then the mouse rows.
+    const auto mouse = mouse_rows();
+    ASSERT_EQ(mouse.size(), 6u);
+    ASSERT_GE(rows.size(), mouse.size());
+    for (std::size_t i = 0; i < mouse.size(); ++i) {
+        EXPECT_EQ(rows[rows.size() - mouse.size() + i].keys, mouse[i].keys);
+    }
+    EXPECT_EQ(rows.front().keys, "F");
+}
+
+TEST(Bindings, MarkdownTable) {
+    const std::string md = key_table_markdown();
+    EXPECT_EQ(md, key_table_markdown()) << "deterministic";
+    EXPECT_EQ(md.rfind("| keys | action | modes |\n|---|---|---|\n| F | flip the selected edge | "
+                       "mesh, surface |\n",
+                       0),
+              0u)
+        << md;
+    EXPECT_NE(md.find("| Esc | clear the selection; with nothing selected, quit | all |\n"),
+              std::string::npos);
+    EXPECT_NE(md.find("| wheel | zoom to the cursor (curve mode: change t) | all |\n"),
+              std::string::npos);
+    // One line per help row plus the two header lines, each a well-formed 3-column row.
+    std::istringstream in(md);
+    std::string line;
+    std::size_t lines = 0;
+    while (std::getline(in, line)) {
+        ++lines;
+        EXPECT_EQ(line.front(), '|');
+        EXPECT_EQ(line.back(), '|');
+    }
+    EXPECT_EQ(lines, help_rows().size() + 2);
+}
+
+TEST(Bindings, ReadmeKeysTableIsGenerated) {
+    const std::string path = MESHEDIT_SOURCE_DIR "/README.md";
+    std::ifstream in(path, std::ios::binary);
+    ASSERT_TRUE(in) << "cannot read " << path;
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string readme = buffer.str();
+    const std::string begin = "<!-- keys:begin -->\n";
+    const std::string end = "<!-- keys:end -->";
+    const std::size_t b = readme.find(begin);
+    const std::size_t e = readme.find(end);
+    ASSERT_NE(b, std::string::npos) << "README.md lacks the line " << begin;
+    ASSERT_NE(e, std::string::npos) << "README.md lacks the line " << end;
+    ASSERT_LT(b, e);
+    const std::string actual = readme.substr(b + begin.size(), e - b - begin.size());
+    EXPECT_EQ(actual, key_table_markdown())
+        << "README.md's keys table is out of date with src/viewer/bindings.cpp. Replace the "
+           "lines between <!-- keys:begin --> and <!-- keys:end --> in README.md with:\n"
+        << key_table_markdown();
+}
+
+}  // namespace
+}  // namespace meshedit::viewer
