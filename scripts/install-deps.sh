@@ -20,6 +20,8 @@ packages=(
     libpugixml-dev libtinygltf-dev nlohmann-json3-dev libtinyobjloader-dev
     assimp-utils assimp-testmodels
     libosmesa6-dev libgl-dev libglm-dev libopenimageio-dev openimageio-tools
+    libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri
+    fonts-dejavu-core xvfb xdotool imagemagick x11-utils
 )
 if [ "$bench" -eq 1 ]; then
     packages+=(libopenmesh-dev libosd-dev libcgal-dev libcgal-demo libassimp-dev linux-perf)

@@ -8,9 +8,9 @@ if [ -x "$build_dir/src/viewer/meshedit-view" ] && [ -n "${DISPLAY:-}${WAYLAND_D
     exec "$build_dir/src/viewer/meshedit-view" "$sample"
 fi
 if [ -z "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
-    echo "make run: no display (DISPLAY is not set)."
+    echo "make run: no display (DISPLAY is not set), so no viewer window; rendering headless instead."
 else
-    echo "make run: the interactive viewer is not built yet (it is the next piece of work)."
+    echo "make run: the viewer was not built (configure with -DMESHEDIT_BUILD_VIEWER=ON)."
 fi
 out="$build_dir/teapot.png"
 "$build_dir/src/headless/meshedit-render" "$sample" -o "$out" --size 1024x768

@@ -105,6 +105,11 @@ void main() {
         if ((v_edge_mask & 2) != 0) dist = min(dist, d.y);
         if ((v_edge_mask & 4) != 0) dist = min(dist, d.z);
         float coverage = clamp(0.5 * u_wire_width + 0.5 - dist, 0.0, 1.0);
+        // Fade the wire out where triangles get too small to show their edges (a dense mesh
+        // would otherwise turn solid wire colour): gone below 2 px, full from 6 px.
+        vec3 w = fwidth(v_barycentric);
+        float height_px = 1.0 / max(max(w.x, w.y), max(w.z, 1e-7));
+        coverage *= clamp((height_px - 2.0) / 4.0, 0.0, 1.0);
         color = mix(color, u_wire_color.rgb, coverage * u_wire_color.a);
     }
     frag_color = vec4(color, 1.0);

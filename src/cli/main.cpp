@@ -29,7 +29,8 @@ constexpr const char* kUsage =
     "  check FILE                              validate the halfedge invariants\n"
     "  eval FILE.bzc --t T [--levels]          evaluate a Bezier curve (de Casteljau)\n"
     "  eval FILE.bez --uv U,V [--patch I]      evaluate a Bezier patch\n"
-    "  [view] FILE                             the interactive viewer (not built yet)\n"
+    "  [view] FILE [--size WxH]                the interactive viewer (meshedit-view)\n"
+    "  render FILE -o OUT.png [options]        render headless (meshedit-render)\n"
     "\n"
     "Run 'meshedit <command> --help' for a command's options and examples,\n"
     "'meshedit --version' for the version.\n"
@@ -37,12 +38,6 @@ constexpr const char* kUsage =
 
 void print_error(const std::string& message) {
     std::fprintf(stderr, "meshedit: %s\n", message.c_str());
-}
-
-int viewer_not_built(const std::string& file) {
-    print_error("the interactive viewer is not built yet; for " + file + " use 'meshedit info " +
-                file + "' (or 'meshedit render' when it is built)");
-    return 1;
 }
 
 // Git-style external subcommand: `meshedit render …` runs `meshedit-render …` from the
@@ -61,6 +56,20 @@ void exec_external(const std::string& command, char** argv) {
         argv[1] = const_cast<char*>(tool.c_str());
         ::execv(tool.c_str(), argv + 1);
     }
+}
+
+// `meshedit FILE …` and `meshedit view FILE …`: runs meshedit-view with argv[first…].
+int exec_viewer(int argc, char** argv, int first) {
+    std::vector<char*> args{const_cast<char*>("view")};
+    args.insert(args.end(), argv + first, argv + argc);
+    args.push_back(nullptr);
+    std::vector<char*> with_program{argv[0]};
+    with_program.insert(with_program.end(), args.begin(), args.end());
+    exec_external("view", with_program.data());
+    print_error(
+        "the viewer (meshedit-view) is not installed beside meshedit; render headless "
+        "with 'meshedit render FILE -o out.png'");
+    return 1;
 }
 
 bool looks_like_file(const std::string& word) {
@@ -108,16 +117,7 @@ int dispatch(int argc, char** argv) {
         return run_eval(rest);
     }
     if (command == "view") {
-        if (!rest.empty() && (rest[0] == "-h" || rest[0] == "--help")) {
-            std::printf(
-                "usage: meshedit [view] FILE\n\nOpens FILE in the interactive viewer. The "
-                "viewer is not built yet: use 'meshedit info FILE' or 'meshedit render'.\n");
-            return 0;
-        }
-        if (rest.size() != 1) {
-            throw UsageError("view: expected one FILE (see meshedit view --help)");
-        }
-        return viewer_not_built(rest[0]);
+        return exec_viewer(argc, argv, 2);
     }
     exec_external(command, argv);
     if (command == "render") {
@@ -125,7 +125,7 @@ int dispatch(int argc, char** argv) {
         return 1;
     }
     if (command[0] != '-' && looks_like_file(command)) {
-        return viewer_not_built(command);
+        return exec_viewer(argc, argv, 1);
     }
     throw UsageError("unknown command '" + command + "' (see meshedit --help)");
 }

@@ -1,0 +1,658 @@
+#include "app.h"
+
+#include <GL/glcorearb.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "meshedit/io/io_error.h"
+#include "meshedit/render/image.h"
+#include "meshedit/render/overlay.h"
+
+namespace meshedit::viewer {
+
+namespace {
+
+// The key codes of keys.h are GLFW's; a mismatch here would silently rebind keys.
+static_assert(static_cast<int>(Key::A) == GLFW_KEY_A && static_cast<int>(Key::F1) == GLFW_KEY_F1);
+static_assert(static_cast<int>(Key::Escape) == GLFW_KEY_ESCAPE &&
+              static_cast<int>(Key::KeypadAdd) == GLFW_KEY_KP_ADD &&
+              static_cast<int>(Key::LeftBracket) == GLFW_KEY_LEFT_BRACKET);
+static_assert(kShift == GLFW_MOD_SHIFT && kCtrl == GLFW_MOD_CONTROL && kAlt == GLFW_MOD_ALT);
+
+constexpr float kOrbitDegreesPerPixel = 0.4f;
+constexpr float kZoomPerWheelStep = 0.85f;
+constexpr double kClickSlopPixels = 3.0;
+constexpr float kControlPointPickPixels = 12.0f;
+constexpr double kHoverDelaySeconds = 0.03;
+
+App& app_of(GLFWwindow* window) {
+    return *static_cast<App*>(glfwGetWindowUserPointer(window));
+}
+
+glm::vec3 to_glm(const Vec3& p) {
+    return {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
+}
+
+std::filesystem::path unused_path(const std::filesystem::path& stem, int& counter) {
+    while (true) {
+        std::filesystem::path path = stem;
+        path += '-';
+        path += std::to_string(++counter);
+        path += ".png";
+        if (!std::filesystem::exists(path)) {
+            return path;
+        }
+    }
+}
+
+// DejaVu Sans (Debian's fonts-dejavu-core) for arrows and dashes in the panels; ImGui's
+// built-in font is ASCII only and stays the fallback.
+void load_ui_font() {
+    static const ImWchar ranges[] = {0x0020, 0x00FF,  // Latin-1
+                                     0x2010, 0x2027,  // dashes, bullets, ellipsis
+                                     0x2190, 0x21FF,  // arrows
+                                     0x2200, 0x22FF,  // maths (≤, ×)
+                                     0};
+    const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    ImGuiIO& io = ImGui::GetIO();
+    if (std::filesystem::exists(path) &&
+        io.Fonts->AddFontFromFileTTF(path, 15.0f, nullptr, ranges) != nullptr) {
+        return;
+    }
+    io.Fonts->AddFontDefault();
+}
+
+}  // namespace
+
+App::App(const ViewerOptions& options) {
+    glfwSetErrorCallback([](int code, const char* text) {
+        std::fprintf(stderr, "meshedit: GLFW error %d: %s\n", code, text);
+    });
+    if (!glfwInit()) {
+        throw std::runtime_error("cannot initialise GLFW (is there a display?)");
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SAMPLES, 4);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    window_ = glfwCreateWindow(options.width, options.height, "MeshEdit", nullptr, nullptr);
+    if (!window_) {
+        glfwTerminate();
+        throw std::runtime_error("cannot open an OpenGL 3.3 core window");
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(options.vsync ? 1 : 0);
+    glfwSetWindowUserPointer(window_, this);
+
+    glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) {
+        app_of(w).on_key(key, action, mods);
+    });
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int mods) {
+        app_of(w).on_mouse_button(button, action, mods);
+    });
+    glfwSetCursorPosCallback(window_,
+                             [](GLFWwindow* w, double x, double y) { app_of(w).on_cursor(x, y); });
+    glfwSetScrollCallback(window_,
+                          [](GLFWwindow* w, double, double dy) { app_of(w).on_scroll(dy); });
+    glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
+        app_of(w).on_drop(count, paths);
+    });
+    glfwSetWindowCloseCallback(window_, [](GLFWwindow* w) { app_of(w).on_close_request(); });
+    glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) {
+        App& app = app_of(w);
+        app.pick_target_.reset();  // re-created at the new size on the next pick
+        app.cursor_moved_ = true;
+        app.redraw_frames_ = 2;
+    });
+    glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { app_of(w).redraw_frames_ = 2; });
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's folder
+    load_ui_font();
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().WindowRounding = 4.0f;
+    ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 0.88f;
+    ImGui_ImplGlfw_InitForOpenGL(window_, true);  // chains to the callbacks above
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    mesh_renderer_ = std::make_unique<MeshRenderer>();
+    overlay_renderer_ = std::make_unique<OverlayRenderer>();
+    background_ = std::make_unique<BackgroundRenderer>();
+
+    if (!options.file.empty()) {
+        open_file(options.file);
+    } else {
+        set_status("drop a file on the window or press Ctrl+O to open one; ? for help", false);
+    }
+    reset_camera();
+}
+
+App::~App() {
+    // GL objects go while their context is current.
+    glfwMakeContextCurrent(window_);
+    pick_target_.reset();
+    mesh_renderer_.reset();
+    overlay_renderer_.reset();
+    background_.reset();
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+}
+
+int App::run() {
+    std::string title;
+    while (!quit_) {
+        if (redraw_frames_ > 0) {
+            glfwPollEvents();
+        } else if (cursor_moved_) {
+            glfwWaitEventsTimeout(kHoverDelaySeconds);
+        } else {
+            glfwWaitEventsTimeout(0.5);  // idle: no frames drawn, the CPU stays free
+        }
+        if (glfwWindowShouldClose(window_)) {
+            break;
+        }
+        // Hover picking waits until the cursor rests a moment: on a big mesh without a GPU
+        // one ID pass costs the whole vertex stage, which must not run per motion event.
+        if (cursor_moved_ && drag_ == DragMode::None &&
+            glfwGetTime() - last_cursor_time_ >= kHoverDelaySeconds) {
+            update_hover();
+        }
+        if (const std::string t = editor_.title(); t != title) {
+            title = t;
+            glfwSetWindowTitle(window_, ("MeshEdit — " + title).c_str());
+        }
+        if (redraw_frames_ > 0) {
+            draw_frame();
+            --redraw_frames_;
+        }
+    }
+    return 0;
+}
+
+// ------------------------------------------------------------------------------ input
+
+void App::on_key(int key, int action, int mods) {
+    redraw_frames_ = 2;
+    if (panels_.prompting()) {
+        if (action == GLFW_PRESS && (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)) {
+            panels_.submit_prompt();
+        } else if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) {
+            panels_.cancel_prompt();
+        }
+        return;
+    }
+    if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard) {
+        return;
+    }
+    apply(editor_.press(static_cast<Key>(key), static_cast<unsigned>(mods)));
+}
+
+void App::on_mouse_button(int button, int action, int mods) {
+    redraw_frames_ = 2;
+    if (action == GLFW_PRESS && ImGui::GetIO().WantCaptureMouse) {
+        return;
+    }
+    if (action == GLFW_PRESS) {
+        press_at_ = cursor_;
+        if (button == GLFW_MOUSE_BUTTON_MIDDLE ||
+            (button == GLFW_MOUSE_BUTTON_LEFT && (mods & GLFW_MOD_SHIFT))) {
+            drag_ = DragMode::Pan;
+            return;
+        }
+        if (button != GLFW_MOUSE_BUTTON_LEFT) {
+            return;
+        }
+        // Pressing on a vertex (or control point) selects it and may drag it; anywhere
+        // else the press becomes a click (select) or, once it moves, an orbit.
+        const ElementRef hit = pick_at_cursor();
+        if (hit.kind == ElementRef::Kind::Vertex) {
+            apply(editor_.select(hit));
+            if (editor_.begin_drag()) {
+                drag_ = DragMode::Element;
+                return;
+            }
+        }
+        drag_ = DragMode::Pending;
+        return;
+    }
+    // Release.
+    if (drag_ == DragMode::Element) {
+        editor_.end_drag();
+        apply({kSelection, "", false});
+    } else if (drag_ == DragMode::Pending && button == GLFW_MOUSE_BUTTON_LEFT) {
+        const ElementRef hit = pick_at_cursor();
+        Outcome outcome = editor_.select(hit);
+        if (outcome.message.empty()) {
+            outcome.message = describe(editor_.mesh(), hit);
+        }
+        apply(outcome);
+    }
+    drag_ = DragMode::None;
+    cursor_moved_ = true;
+}
+
+void App::on_cursor(double x, double y) {
+    const glm::dvec2 previous = cursor_;
+    cursor_ = {x, y};
+    cursor_moved_ = true;
+    last_cursor_time_ = glfwGetTime();
+    const glm::vec2 delta(cursor_ - previous);
+    switch (drag_) {
+        case DragMode::None:
+            return;  // hover is updated once per frame in run()
+        case DragMode::Pending:
+            if (glm::length(cursor_ - press_at_) < kClickSlopPixels) {
+                return;
+            }
+            if (!mesh_mode()) {
+                drag_ = DragMode::Pan;  // curves are 2D: dragging empty paper pans
+                return;
+            }
+            drag_ = DragMode::Orbit;
+            [[fallthrough]];
+        case DragMode::Orbit:
+            camera_.azimuth_deg -= delta.x * kOrbitDegreesPerPixel;
+            camera_.elevation_deg =
+                std::clamp(camera_.elevation_deg + delta.y * kOrbitDegreesPerPixel, -89.0f, 89.0f);
+            break;
+        case DragMode::Pan: {
+            // One window pixel moves the target by the world size of a pixel at its depth.
+            int w = 0, h = 0;
+            glfwGetWindowSize(window_, &w, &h);
+            const float world_height =
+                camera_.orthographic
+                    ? camera_.ortho_height
+                    : 2.0f * camera_.distance * std::tan(glm::radians(camera_.fov_y_deg) / 2.0f);
+            const float per_pixel = world_height / static_cast<float>(std::max(h, 1));
+            const glm::mat4 view = camera_.view();
+            const glm::vec3 right(view[0][0], view[1][0], view[2][0]);
+            const glm::vec3 up(view[0][1], view[1][1], view[2][1]);
+            camera_.target += (-delta.x * right + delta.y * up) * per_pixel;
+            update_camera_planes();
+            break;
+        }
+        case DragMode::Element:
+            drag_element_to_cursor();
+            break;
+    }
+    redraw_frames_ = 2;
+}
+
+void App::on_scroll(double dy) {
+    redraw_frames_ = 2;
+    if (ImGui::GetIO().WantCaptureMouse) {
+        return;
+    }
+    if (!mesh_mode()) {
+        apply(editor_.set_t(editor_.view().t + 0.01 * dy));
+        return;
+    }
+    // Zoom to the cursor: the point under it on the plane through the target stays put.
+    const glm::vec2 p = cursor_pixels();
+    const glm::vec3 eye = camera_.eye();
+    const glm::vec3 forward = glm::normalize(camera_.target - eye);
+    const glm::vec3 ray = glm::normalize(unproject(p, 1.0f) - eye);
+    const float along = glm::dot(camera_.target - eye, forward) / glm::dot(ray, forward);
+    const glm::vec3 under_cursor = eye + ray * along;
+    const float factor = std::pow(kZoomPerWheelStep, static_cast<float>(dy));
+    camera_.distance =
+        std::clamp(camera_.distance * factor, 1e-4f * scene_radius_, 1e3f * scene_radius_);
+    camera_.target += (under_cursor - camera_.target) * (1.0f - factor);
+    update_camera_planes();
+}
+
+void App::on_drop(int count, const char** paths) {
+    if (count > 0) {
+        open_file(paths[0]);
+        if (count > 1) {
+            set_status(status_ + " (" + std::to_string(count - 1) + " more dropped files ignored)",
+                       status_error_);
+        }
+    }
+}
+
+void App::on_close_request() {
+    // The window's close button follows the same rule as Ctrl+Q.
+    glfwSetWindowShouldClose(window_, GLFW_FALSE);
+    apply(editor_.run({Command::Quit}));
+}
+
+// --------------------------------------------------------------------------- commands
+
+void App::set_status(std::string message, bool error) {
+    status_ = std::move(message);
+    status_error_ = error;
+    if (error) {
+        std::fprintf(stderr, "meshedit: %s\n", status_.c_str());
+    }
+    redraw_frames_ = 2;
+}
+
+void App::open_file(const std::filesystem::path& path) {
+    try {
+        const Outcome outcome = editor_.open(path);
+        upload_document();
+        reset_camera();
+        apply(outcome);
+    } catch (const IoError& e) {
+        set_status(std::string(e.what()) + " — the current document stays open", true);
+    } catch (const std::exception& e) {
+        set_status(path.string() + ": " + e.what() + " — the current document stays open", true);
+    }
+}
+
+void App::apply(const Outcome& outcome) {
+    redraw_frames_ = 2;
+    if (!outcome.message.empty()) {
+        set_status(outcome.message, outcome.refused);
+    }
+    const unsigned c = outcome.changes;
+    if (c & (kTopology | kDocument)) {
+        upload_document();
+    } else if (c & kGeometry) {
+        mesh_renderer_->update_geometry(editor_.mesh());
+        cursor_moved_ = true;
+    }
+    if (c & (kTopology | kGeometry | kSelection | kDisplay | kCurve | kDocument)) {
+        rebuild_overlay();
+    }
+    if (c & kResetCamera) {
+        reset_camera();
+    }
+    if (c & kScreenshot) {
+        write_screenshot();
+    }
+    if (c & kAskSavePath) {
+        panels_.ask_path(Panels::Prompt::SaveAs, editor_.path().string());
+    }
+    if (c & kAskOpenPath) {
+        panels_.ask_path(Panels::Prompt::Open, editor_.path().parent_path().string());
+    }
+    if (c & kQuit) {
+        quit_ = true;
+    }
+}
+
+void App::upload_document() {
+    if (mesh_mode()) {
+        mesh_renderer_->upload(editor_.mesh());
+        has_mesh_on_gpu_ = true;
+    } else {
+        has_mesh_on_gpu_ = false;
+    }
+    editor_.set_hover({});
+    cursor_moved_ = true;
+    rebuild_overlay();
+}
+
+void App::rebuild_overlay() {
+    const OverlayStyle style;
+    OverlayBatch batch;
+    const ViewState& view = editor_.view();
+    if (mesh_mode()) {
+        const Mesh& mesh = editor_.mesh();
+        if (editor_.mode() == Mode::Mesh) {
+            add_feature_edges(mesh, style, batch);
+        }
+        if (view.show_nets) {
+            add_control_nets(editor_.document().patches, style, batch);
+        }
+        if (is_live(mesh, editor_.hover()) &&
+            !(editor_.hover().kind == editor_.selection().kind &&
+              editor_.hover().index == editor_.selection().index)) {
+            add_element_highlight(mesh, editor_.hover(), style.hovered, style, batch);
+        }
+        if (is_live(mesh, editor_.selection())) {
+            add_element_highlight(mesh, editor_.selection(), style.selected, style, batch);
+        }
+    } else {
+        const BezierCurve& curve = editor_.document().curve;
+        const Color frame{0.72f, 0.74f, 0.78f, 1.0f};
+        const Vec3 c[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+        for (int i = 0; i < 4; ++i) {
+            batch.lines.push_back({c[i], c[(i + 1) % 4], frame, 1.0f});
+        }
+        add_bezier_curve(curve, view.t, view.level, view.show_curve, style, batch);
+        const auto mark = [&](const ElementRef& e, const Color& color) {
+            if (e.kind == ElementRef::Kind::Vertex && e.index < curve.control_points.size()) {
+                batch.points.push_back({curve.control_points[e.index], color, 16.0f});
+            }
+        };
+        mark(editor_.hover(), style.hovered);
+        mark(editor_.selection(), style.selected);
+    }
+    overlay_renderer_->upload(batch);
+    redraw_frames_ = 2;
+}
+
+// ----------------------------------------------------------------------------- camera
+
+void App::reset_camera() {
+    const glm::ivec2 size = framebuffer_size();
+    const float a = aspect();
+    camera_ = Camera();
+    if (!mesh_mode()) {
+        camera_.frame_2d({0.0f, 0.0f}, {1.0f, 1.0f}, a);
+    } else {
+        // The same framing as `meshedit render`: the live vertices fitted to the view.
+        const Mesh& mesh = editor_.mesh();
+        std::vector<Vec3> points;
+        points.reserve(mesh.n_vertices());
+        BoundingBox box;
+        for (Vertex v : mesh.vertices()) {
+            points.push_back(mesh.position(v));
+            box.add(mesh.position(v));
+        }
+        if (points.empty()) {
+            box.add({-1, -1, -1});
+            box.add({1, 1, 1});
+        }
+        camera_.frame(box, a, points);
+    }
+    scene_center_ = camera_.target;
+    scene_radius_ = camera_.orthographic ? 1.0f : camera_.scene_radius;
+    (void)size;
+    cursor_moved_ = true;
+    redraw_frames_ = 2;
+}
+
+void App::update_camera_planes() {
+    // Near and far planes follow the scene's sphere even when the target has wandered off
+    // its centre (pan, zoom to cursor).
+    if (!camera_.orthographic) {
+        camera_.scene_radius = scene_radius_ + glm::length(camera_.target - scene_center_);
+    }
+    cursor_moved_ = true;
+}
+
+glm::ivec2 App::framebuffer_size() const {
+    int w = 1, h = 1;
+    glfwGetFramebufferSize(window_, &w, &h);
+    return {std::max(w, 1), std::max(h, 1)};
+}
+
+float App::aspect() const {
+    const glm::ivec2 s = framebuffer_size();
+    return static_cast<float>(s.x) / static_cast<float>(s.y);
+}
+
+glm::vec2 App::cursor_pixels() const {
+    int ww = 1, wh = 1;
+    glfwGetWindowSize(window_, &ww, &wh);
+    const glm::ivec2 fb = framebuffer_size();
+    return {static_cast<float>(cursor_.x * fb.x / std::max(ww, 1)),
+            static_cast<float>(cursor_.y * fb.y / std::max(wh, 1))};
+}
+
+glm::vec3 App::unproject(glm::vec2 p, float ndc_z) const {
+    const glm::ivec2 size = framebuffer_size();
+    const glm::vec4 ndc(2.0f * (p.x + 0.5f) / static_cast<float>(size.x) - 1.0f,
+                        1.0f - 2.0f * (p.y + 0.5f) / static_cast<float>(size.y), ndc_z, 1.0f);
+    const glm::vec4 world = glm::inverse(camera_.projection(aspect()) * camera_.view()) * ndc;
+    return glm::vec3(world) / world.w;
+}
+
+// ---------------------------------------------------------------------------- picking
+
+ElementRef App::pick_at_cursor() {
+    const glm::vec2 p = cursor_pixels();
+    const glm::ivec2 size = framebuffer_size();
+    if (!mesh_mode()) {
+        // Control points: the nearest within a few pixels.
+        const glm::mat4 clip = camera_.projection(aspect()) * camera_.view();
+        const auto& points = editor_.document().curve.control_points;
+        ElementRef best;
+        float best_distance = kControlPointPickPixels;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const glm::vec4 c = clip * glm::vec4(to_glm(points[i]), 1.0f);
+            const glm::vec2 s((c.x / c.w * 0.5f + 0.5f) * static_cast<float>(size.x),
+                              (0.5f - c.y / c.w * 0.5f) * static_cast<float>(size.y));
+            if (const float d = glm::length(s - p); d < best_distance) {
+                best_distance = d;
+                best = ElementRef::vertex(Vertex(static_cast<std::uint32_t>(i)));
+            }
+        }
+        return best;
+    }
+    if (!has_mesh_on_gpu_) {
+        return {};
+    }
+    if (!pick_target_ || pick_target_->width() != size.x || pick_target_->height() != size.y) {
+        pick_target_ = std::make_unique<RenderTarget>(size.x, size.y, 1);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    pick_target_->bind();
+    const float scale = static_cast<float>(size.y) / std::max(1.0f, ImGui::GetIO().DisplaySize.y);
+    const ElementRef hit = mesh_renderer_->pick(camera_, size.x, size.y, static_cast<int>(p.x),
+                                                static_cast<int>(p.y), 6.0f * scale, 4.0f * scale);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, size.x, size.y);
+    last_pick_ms_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return is_live(editor_.mesh(), hit) ? hit : ElementRef{};
+}
+
+void App::update_hover() {
+    cursor_moved_ = false;
+    // Over a panel (or with a prompt open) nothing in the scene is under the cursor.
+    const bool over_ui = ImGui::GetIO().WantCaptureMouse || panels_.prompting() ||
+                         glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_FALSE;
+    const ElementRef hit = over_ui ? ElementRef{} : pick_at_cursor();
+    const ElementRef& old = editor_.hover();
+    if (hit.kind != old.kind || hit.index != old.index) {
+        editor_.set_hover(hit);
+        rebuild_overlay();
+    }
+}
+
+void App::drag_element_to_cursor() {
+    const ElementRef& s = editor_.selection();
+    Vec3 position;
+    if (mesh_mode()) {
+        position = editor_.mesh().position(Vertex(s.index));
+    } else {
+        position = editor_.document().curve.control_points[s.index];
+    }
+    // Keep the point's depth; move it to where the cursor is in the screen plane.
+    const glm::vec4 c =
+        camera_.projection(aspect()) * camera_.view() * glm::vec4(to_glm(position), 1.0f);
+    const glm::vec3 moved = unproject(cursor_pixels() - glm::vec2(0.5f), c.z / c.w);
+    apply(editor_.drag_to(Vec3{moved.x, moved.y, moved.z}));
+}
+
+// ---------------------------------------------------------------------------- drawing
+
+void App::draw_scene(int width, int height) {
+    const float a = static_cast<float>(width) / static_cast<float>(height);
+    if (mesh_mode()) {
+        background_->draw(kBackgroundTop, kBackgroundBottom);
+        if (has_mesh_on_gpu_) {
+            mesh_renderer_->draw(camera_, a, editor_.view().render);
+        }
+    } else {
+        const float paper[3] = {0.97f, 0.97f, 0.96f};
+        background_->draw(paper, paper);
+    }
+    overlay_renderer_->draw(camera_, width, height);
+}
+
+void App::draw_frame() {
+    const auto start = std::chrono::steady_clock::now();
+    const glm::ivec2 size = framebuffer_size();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, size.x, size.y);
+    draw_scene(size.x, size.y);
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    FrameStats stats;
+    stats.frame_ms = last_frame_ms_;
+    stats.pick_ms = last_pick_ms_;
+    stats.width = size.x;
+    stats.height = size.y;
+    stats.triangles = has_mesh_on_gpu_ ? mesh_renderer_->triangle_count() : 0;
+    const PanelRequests requests = panels_.draw(editor_, stats, status_, status_error_);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    glfwSwapBuffers(window_);
+    last_frame_ms_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+    if (requests.save_as) {
+        apply(editor_.save_as(*requests.save_as));
+    }
+    if (requests.open) {
+        open_file(*requests.open);
+    }
+    if (requests.view_changed) {
+        redraw_frames_ = std::max(redraw_frames_, 1);
+    }
+}
+
+void App::write_screenshot() {
+    // The 3D view without the panels and without the hover highlight (it follows the mouse,
+    // not the document), at the framebuffer's size, 4× MSAA like the window.
+    const ElementRef hover = editor_.hover();
+    editor_.set_hover({});
+    rebuild_overlay();
+    editor_.set_hover(hover);
+    const glm::ivec2 size = framebuffer_size();
+    RenderTarget target(size.x, size.y, 4);
+    target.bind();
+    draw_scene(size.x, size.y);
+    const Image image = target.read();
+    rebuild_overlay();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, size.x, size.y);
+    std::filesystem::path stem =
+        editor_.path().empty() ? "meshedit" : "meshedit-" + editor_.path().stem().string();
+    const std::filesystem::path path = unused_path(stem, screenshot_count_);
+    try {
+        write_png(image, path);
+        set_status("screenshot saved to " + std::filesystem::absolute(path).string(), false);
+        std::printf("meshedit: screenshot %s\n", std::filesystem::absolute(path).c_str());
+        std::fflush(stdout);
+    } catch (const std::exception& e) {
+        set_status(std::string("screenshot failed: ") + e.what(), true);
+    }
+}
+
+}  // namespace meshedit::viewer

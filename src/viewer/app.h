@@ -1,0 +1,108 @@
+#pragma once
+// Private: the viewer window. Owns the GLFW window, the GL renderers, the camera and the
+// mouse; everything about the document and its commands is the Editor's (editor.h).
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "meshedit/render/camera.h"
+#include "meshedit/render/mesh_renderer.h"
+#include "meshedit/render/overlay_renderer.h"
+#include "meshedit/render/render_target.h"
+#include "meshedit/viewer/editor.h"
+#include "panels.h"
+
+struct GLFWwindow;
+
+namespace meshedit::viewer {
+
+struct ViewerOptions {
+    std::filesystem::path file;  ///< empty: start with nothing open
+    int width = 1280;            ///< window size in screen coordinates
+    int height = 800;
+    bool vsync = true;
+};
+
+class App {
+public:
+    /// Opens the window (throws std::runtime_error if GLFW or GL 3.3 is unavailable) and
+    /// the file, if any; a file that does not open is reported and the window stays.
+    explicit App(const ViewerOptions& options);
+    App(const App&) = delete;
+    App& operator=(const App&) = delete;
+    ~App();
+
+    /// The event loop; returns the exit status (0 on a normal quit).
+    int run();
+
+private:
+    enum class DragMode { None, Pending, Orbit, Pan, Element };
+
+    // GLFW callbacks (installed before ImGui's, which chains to them).
+    void on_key(int key, int action, int mods);
+    void on_mouse_button(int button, int action, int mods);
+    void on_cursor(double x, double y);
+    void on_scroll(double dy);
+    void on_drop(int count, const char** paths);
+    void on_close_request();
+
+    /// Reacts to what a command changed: uploads, overlay, camera, prompts, status line.
+    void apply(const Outcome& outcome);
+    void open_file(const std::filesystem::path& path);
+    void set_status(std::string message, bool error);
+
+    void upload_document();
+    void rebuild_overlay();
+    void reset_camera();
+    void update_camera_planes();
+
+    /// The element under the cursor (ID pass for meshes, nearest control point for curves).
+    ElementRef pick_at_cursor();
+    void update_hover();
+    /// Moves the dragged vertex or control point under the cursor, in the screen plane.
+    void drag_element_to_cursor();
+
+    void draw_scene(int width, int height);
+    void draw_frame();
+    void write_screenshot();
+
+    /// Cursor position in framebuffer pixels (HiDPI: window coordinates × content scale).
+    glm::vec2 cursor_pixels() const;
+    glm::ivec2 framebuffer_size() const;
+    float aspect() const;
+    /// The world point under framebuffer pixel `p` at normalised device depth `ndc_z`.
+    glm::vec3 unproject(glm::vec2 p, float ndc_z) const;
+    bool mesh_mode() const { return editor_.mode() != Mode::Curve; }
+
+    GLFWwindow* window_ = nullptr;
+    Editor editor_;
+    Camera camera_;
+    glm::vec3 scene_center_{0.0f};
+    float scene_radius_ = 1.0f;
+
+    std::unique_ptr<MeshRenderer> mesh_renderer_;
+    std::unique_ptr<OverlayRenderer> overlay_renderer_;
+    std::unique_ptr<BackgroundRenderer> background_;
+    std::unique_ptr<RenderTarget> pick_target_;
+    bool has_mesh_on_gpu_ = false;
+
+    Panels panels_;
+    std::string status_;
+    bool status_error_ = false;
+
+    DragMode drag_ = DragMode::None;
+    glm::dvec2 cursor_{0.0};         ///< window coordinates
+    glm::dvec2 press_at_{0.0};       ///< where the left button went down
+    bool cursor_moved_ = true;       ///< the hover pick is stale
+    double last_cursor_time_ = 0.0;  ///< glfwGetTime() of the last cursor motion
+    int redraw_frames_ = 2;          ///< frames still to draw (ImGui settles over two)
+    double last_frame_ms_ = 0.0;
+    double last_pick_ms_ = 0.0;
+    int screenshot_count_ = 0;
+    bool quit_ = false;
+};
+
+}  // namespace meshedit::viewer

@@ -1,0 +1,58 @@
+#pragma once
+// Private: the Dear ImGui panels of the viewer — info (selection, statistics, shading
+// options), help overlay (from the binding table), status line and the path prompt for
+// "save as" and "open". Reads the Editor, changes only its ViewState.
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "meshedit/viewer/editor.h"
+
+namespace meshedit::viewer {
+
+struct FrameStats {
+    double frame_ms = 0.0;  ///< CPU + GPU time of the last drawn frame
+    double pick_ms = 0.0;   ///< the last ID-pass pick (one scissored pixel, read back)
+    int width = 0, height = 0;
+    std::size_t triangles = 0;
+};
+
+/// What the user asked for in a panel this frame.
+struct PanelRequests {
+    std::optional<std::filesystem::path> save_as;
+    std::optional<std::filesystem::path> open;
+    bool view_changed = false;  ///< a shading control moved
+};
+
+class Panels {
+public:
+    enum class Prompt { None, SaveAs, Open };
+
+    /// Shows the path prompt (a small modal) pre-filled with `initial`.
+    void ask_path(Prompt prompt, const std::string& initial);
+    bool prompting() const { return prompt_ != Prompt::None; }
+    /// Return / Esc pressed while prompting. The window forwards them because ImGui 1.86
+    /// polls key state once per frame and misses a press and release within one frame
+    /// (fast typists, xdotool).
+    void submit_prompt() { submit_ = true; }
+    void cancel_prompt() { cancel_ = true; }
+
+    /// Draws every visible panel; call between ImGui::NewFrame() and ImGui::Render().
+    PanelRequests draw(Editor& editor, const FrameStats& stats, const std::string& status,
+                       bool status_error);
+
+private:
+    void draw_info(Editor& editor, const FrameStats& stats, PanelRequests& requests);
+    void draw_help(Mode mode);
+    void draw_status(const Editor& editor, const std::string& status, bool status_error);
+    void draw_prompt(PanelRequests& requests);
+
+    Prompt prompt_ = Prompt::None;
+    bool prompt_fresh_ = false;  ///< open the popup and focus the text field next frame
+    bool submit_ = false, cancel_ = false;
+    std::string path_;
+};
+
+}  // namespace meshedit::viewer
