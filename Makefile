@@ -21,7 +21,8 @@ build: deps $(BUILD_DIR)/build.ninja
 run: build
 	@./scripts/run.sh $(BUILD_DIR)
 
-# Every test: the Release suite, then the core and file-format tests again under ASan + UBSan.
+# Every test: the Release suite (unit, CLI, golden images, the viewer under Xvfb), then the
+# core, file-format and viewer command-layer tests again under ASan + UBSan.
 test: test-release test-sanitize
 
 test-release: build
@@ -29,9 +30,9 @@ test-release: build
 
 test-sanitize: deps
 	cmake -S . -B $(ASAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DMESHEDIT_SANITIZE=ON \
-	    -DMESHEDIT_BUILD_BENCH=OFF $(CMAKE_FLAGS)
+	    -DMESHEDIT_BUILD_BENCH=OFF -DMESHEDIT_BUILD_VIEWER=OFF $(CMAKE_FLAGS)
 	cmake --build $(ASAN_DIR) -j $(JOBS)
-	cd $(ASAN_DIR) && ctest --output-on-failure -j $(JOBS) -L "core|io"
+	cd $(ASAN_DIR) && ctest --output-on-failure -j $(JOBS) -L "core|io|viewer"
 
 # Every comparison of issue 6 (bench/README.md): installs the anchors, builds the benchmark
 # programs in Release (only those; a program not declared yet is skipped by run_bench.py) and
