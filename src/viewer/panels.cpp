@@ -88,8 +88,8 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
     const History& history = editor.history();
     ImGui::Text("undo %zu, redo %zu (%.1f of %zu MiB)", history.undo_steps(), history.redo_steps(),
                 static_cast<double>(history.bytes()) / (1 << 20), history.limits().max_bytes >> 20);
-    ImGui::Text("frame %.1f ms, pick %.1f ms, %dx%d px", stats.frame_ms, stats.pick_ms, stats.width,
-                stats.height);
+    ImGui::Text("frame %.1f ms, pick %.1f ms", stats.frame_ms, stats.pick_ms);
+    ImGui::Text("%d × %d px", stats.width, stats.height);
 
     ImGui::Separator();
     ImGui::TextDisabled("Selection");
