@@ -351,10 +351,15 @@ void App::open_file(const std::filesystem::path& path) {
         upload_document();
         reset_camera();
         apply(outcome);
-    } catch (const IoError& e) {
-        set_status(std::string(e.what()) + " — the current document stays open", true);
     } catch (const std::exception& e) {
-        set_status(path.string() + ": " + e.what() + " — the current document stays open", true);
+        // IoError names the file itself; anything else (no memory) gets the path added.
+        std::string message = dynamic_cast<const IoError*>(&e) != nullptr
+                                  ? std::string(e.what())
+                                  : path.string() + ": " + e.what();
+        if (!editor_.path().empty()) {
+            message += " — " + editor_.path().filename().string() + " stays open";
+        }
+        set_status(std::move(message), true);
     }
 }
 
