@@ -58,7 +58,7 @@ std::filesystem::path unused_path(const std::filesystem::path& stem, int& counte
 
 // DejaVu Sans (Debian's fonts-dejavu-core) for arrows and dashes in the panels; ImGui's
 // built-in font is ASCII only and stays the fallback.
-void load_ui_font() {
+void load_ui_font(float scale) {
     static const ImWchar ranges[] = {0x0020, 0x00FF,  // Latin-1
                                      0x2010, 0x2027,  // dashes, bullets, ellipsis
                                      0x2190, 0x21FF,  // arrows
@@ -67,10 +67,12 @@ void load_ui_font() {
     const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     ImGuiIO& io = ImGui::GetIO();
     if (std::filesystem::exists(path) &&
-        io.Fonts->AddFontFromFileTTF(path, 15.0f, nullptr, ranges) != nullptr) {
+        io.Fonts->AddFontFromFileTTF(path, 15.0f * scale, nullptr, ranges) != nullptr) {
         return;
     }
-    io.Fonts->AddFontDefault();
+    ImFontConfig config;
+    config.SizePixels = 13.0f * scale;
+    io.Fonts->AddFontDefault(&config);
 }
 
 }  // namespace
@@ -122,9 +124,15 @@ App::App(const ViewerOptions& options) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's folder
-    load_ui_font();
+    // HiDPI: the monitor's content scale (e.g. 2 on a 4K laptop panel at 200 %) sizes the
+    // panels' text and spacing; the 3D view already renders at framebuffer resolution.
+    float content_scale = 1.0f, unused = 1.0f;
+    glfwGetWindowContentScale(window_, &content_scale, &unused);
+    content_scale = std::clamp(content_scale, 1.0f, 4.0f);
+    load_ui_font(content_scale);
     ImGui::StyleColorsDark();
-    ImGui::GetStyle().WindowRounding = 4.0f;
+    ImGui::GetStyle().ScaleAllSizes(content_scale);
+    ImGui::GetStyle().WindowRounding = 4.0f * content_scale;
     ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 0.88f;
     ImGui_ImplGlfw_InitForOpenGL(window_, true);  // chains to the callbacks above
     ImGui_ImplOpenGL3_Init("#version 330 core");
