@@ -35,6 +35,9 @@ constexpr float kZoomPerWheelStep = 0.85f;
 constexpr double kClickSlopPixels = 3.0;
 constexpr float kControlPointPickPixels = 12.0f;
 constexpr double kHoverDelaySeconds = 0.03;
+// Frames drawn after any input: an ImGui window that changed its content (a header opened)
+// takes two more frames to resize to it.
+constexpr int kSettleFrames = 3;
 
 App& app_of(GLFWwindow* window) {
     return *static_cast<App*>(glfwGetWindowUserPointer(window));
@@ -117,9 +120,10 @@ App::App(const ViewerOptions& options) {
         App& app = app_of(w);
         app.pick_target_.reset();  // re-created at the new size on the next pick
         app.cursor_moved_ = true;
-        app.redraw_frames_ = 2;
+        app.redraw_frames_ = kSettleFrames;
     });
-    glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { app_of(w).redraw_frames_ = 2; });
+    glfwSetWindowRefreshCallback(window_,
+                                 [](GLFWwindow* w) { app_of(w).redraw_frames_ = kSettleFrames; });
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -197,7 +201,7 @@ int App::run() {
 // ------------------------------------------------------------------------------ input
 
 void App::on_key(int key, int action, int mods) {
-    redraw_frames_ = 2;
+    redraw_frames_ = kSettleFrames;
     if (panels_.prompting()) {
         if (action == GLFW_PRESS && (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)) {
             panels_.submit_prompt();
@@ -213,8 +217,11 @@ void App::on_key(int key, int action, int mods) {
 }
 
 void App::on_mouse_button(int button, int action, int mods) {
-    redraw_frames_ = 2;
-    if (action == GLFW_PRESS && ImGui::GetIO().WantCaptureMouse) {
+    redraw_frames_ = kSettleFrames;
+    // ImGui's WantCaptureMouse is from the last drawn frame, which may predate the pointer's
+    // arrival (events come in bursts); the panels' rectangles do not move with the pointer.
+    if (action == GLFW_PRESS &&
+        (ImGui::GetIO().WantCaptureMouse || panels_.contains(glm::vec2(cursor_)))) {
         return;
     }
     if (action == GLFW_PRESS) {
@@ -300,12 +307,12 @@ void App::on_cursor(double x, double y) {
             drag_element_to_cursor();
             break;
     }
-    redraw_frames_ = 2;
+    redraw_frames_ = kSettleFrames;
 }
 
 void App::on_scroll(double dy) {
-    redraw_frames_ = 2;
-    if (ImGui::GetIO().WantCaptureMouse) {
+    redraw_frames_ = kSettleFrames;
+    if (ImGui::GetIO().WantCaptureMouse || panels_.contains(glm::vec2(cursor_))) {
         return;
     }
     if (!mesh_mode()) {
@@ -350,7 +357,7 @@ void App::set_status(std::string message, bool error) {
     if (error) {
         std::fprintf(stderr, "meshedit: %s\n", status_.c_str());
     }
-    redraw_frames_ = 2;
+    redraw_frames_ = kSettleFrames;
 }
 
 void App::open_file(const std::filesystem::path& path) {
@@ -372,7 +379,7 @@ void App::open_file(const std::filesystem::path& path) {
 }
 
 void App::apply(const Outcome& outcome) {
-    redraw_frames_ = 2;
+    redraw_frames_ = kSettleFrames;
     if (!outcome.message.empty()) {
         set_status(outcome.message, outcome.refused);
     }
@@ -452,7 +459,7 @@ void App::rebuild_overlay() {
         mark(editor_.selection(), style.selected);
     }
     overlay_renderer_->upload(batch);
-    redraw_frames_ = 2;
+    redraw_frames_ = kSettleFrames;
 }
 
 // ----------------------------------------------------------------------------- camera
@@ -483,7 +490,7 @@ void App::reset_camera() {
     scene_radius_ = camera_.orthographic ? 1.0f : camera_.scene_radius;
     (void)size;
     cursor_moved_ = true;
-    redraw_frames_ = 2;
+    redraw_frames_ = kSettleFrames;
 }
 
 void App::update_camera_planes() {
@@ -566,6 +573,7 @@ void App::update_hover() {
     cursor_moved_ = false;
     // Over a panel (or with a prompt open) nothing in the scene is under the cursor.
     const bool over_ui = ImGui::GetIO().WantCaptureMouse || panels_.prompting() ||
+                         panels_.contains(glm::vec2(cursor_)) ||
                          glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_FALSE;
     const ElementRef hit = over_ui ? ElementRef{} : pick_at_cursor();
     const ElementRef& old = editor_.hover();

@@ -98,7 +98,7 @@ private:
     glm::dvec2 press_at_{0.0};       ///< where the left button went down
     bool cursor_moved_ = true;       ///< the hover pick is stale
     double last_cursor_time_ = 0.0;  ///< glfwGetTime() of the last cursor motion
-    int redraw_frames_ = 2;          ///< frames still to draw (ImGui settles over two)
+    int redraw_frames_ = 3;          ///< frames still to draw (ImGui settles over a few)
     double last_frame_ms_ = 0.0;
     double last_pick_ms_ = 0.0;
     int screenshot_count_ = 0;

@@ -50,9 +50,23 @@ void Panels::ask_path(Prompt prompt, const std::string& initial) {
     path_ = initial;
 }
 
+bool Panels::contains(glm::vec2 point) const {
+    return std::any_of(rects_.begin(), rects_.end(), [&](const auto& r) {
+        return point.x >= r.first.x && point.y >= r.first.y && point.x < r.second.x &&
+               point.y < r.second.y;
+    });
+}
+
+void Panels::remember_rect() {
+    const ImVec2 pos = ImGui::GetWindowPos();
+    const ImVec2 size = ImGui::GetWindowSize();
+    rects_.emplace_back(glm::vec2(pos.x, pos.y), glm::vec2(pos.x + size.x, pos.y + size.y));
+}
+
 PanelRequests Panels::draw(Editor& editor, const FrameStats& stats, const std::string& status,
                            bool status_error) {
     PanelRequests requests;
+    rects_.clear();
     if (editor.view().show_info) {
         draw_info(editor, stats, requests);
     }
@@ -68,6 +82,7 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSizeConstraints(ImVec2(280, 0), ImVec2(640, 10000));
     if (!ImGui::Begin("Info (I)", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        remember_rect();
         ImGui::End();
         return;
     }
@@ -140,6 +155,7 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
         }
         requests.view_changed |= changed;
     }
+    remember_rect();
     ImGui::End();
 }
 
@@ -153,6 +169,7 @@ void Panels::draw_help(Mode mode) {
     if (!ImGui::Begin("Keys and mouse (? or F1 to close)", nullptr,
                       ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                           ImGuiWindowFlags_NoCollapse)) {
+        remember_rect();
         ImGui::End();
         return;
     }
@@ -194,6 +211,7 @@ void Panels::draw_help(Mode mode) {
         }
         ImGui::Spacing();
     }
+    remember_rect();
     ImGui::End();
 }
 
@@ -218,6 +236,7 @@ void Panels::draw_status(const Editor& editor, const std::string& status, bool s
             ImGui::TextDisabled("? or F1: keys and mouse");
         }
     }
+    remember_rect();
     ImGui::End();
 }
 

@@ -7,6 +7,10 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include "meshedit/viewer/editor.h"
 
@@ -39,6 +43,9 @@ public:
     void submit_prompt() { submit_ = true; }
     void cancel_prompt() { cancel_ = true; }
 
+    /// True if `point` (window coordinates) lies on a panel drawn in the last frame.
+    bool contains(glm::vec2 point) const;
+
     /// Draws every visible panel; call between ImGui::NewFrame() and ImGui::Render().
     PanelRequests draw(Editor& editor, const FrameStats& stats, const std::string& status,
                        bool status_error);
@@ -49,6 +56,10 @@ private:
     void draw_status(const Editor& editor, const std::string& status, bool status_error);
     void draw_prompt(PanelRequests& requests);
 
+    /// Remembers the current ImGui window's rectangle (call between Begin and End).
+    void remember_rect();
+
+    std::vector<std::pair<glm::vec2, glm::vec2>> rects_;  ///< min, max of last frame's panels
     Prompt prompt_ = Prompt::None;
     bool prompt_fresh_ = false;  ///< open the popup and focus the text field next frame
     bool submit_ = false, cancel_ = false;
