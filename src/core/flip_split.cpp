@@ -10,6 +10,43 @@
 
 namespace meshedit {
 
+namespace {
+
+// Whether the loop through `h` has three halfedges: on a valid mesh (prev is the inverse of
+// next) the same as is_triangle(face(h)), but from a halfedge the caller holds rather than
+// halfedge(face(h)), and with two dependent reads instead of three (next(next(h)) against
+// prev(h), which is read at the same time as next(h)). On a large mesh each is a cache miss.
+bool is_triangle_loop(const Mesh& mesh, Halfedge h) {
+    return mesh.next(mesh.next(h)) == mesh.prev(h);
+}
+
+// Whether a halfedge a -> v exists, given a's two outgoing halfedges `ab` and `ac = ccw(ab)`
+// (the sides of a triangle at a). find_halfedge() rotates once around a from halfedge(a);
+// this walks clockwise from `ab` and counter-clockwise from `ac` at the same time until the
+// two meet, so on a large mesh the two chains of cache misses overlap and each is half as
+// long.
+bool has_outgoing_to(const Mesh& mesh, Halfedge ab, Halfedge ac, Vertex v) {
+    Halfedge cw = ab;
+    Halfedge ccw = ac;
+    for (;;) {
+        if (mesh.to_vertex(cw) == v || mesh.to_vertex(ccw) == v) {
+            return true;
+        }
+        const Halfedge ccw_next = mesh.ccw_rotated(ccw);
+        if (ccw_next == cw) {
+            return false;  // every outgoing halfedge checked
+        }
+        const Halfedge cw_next = mesh.cw_rotated(cw);
+        if (cw_next == ccw_next) {
+            return mesh.to_vertex(cw_next) == v;  // the last one
+        }
+        cw = cw_next;
+        ccw = ccw_next;
+    }
+}
+
+}  // namespace
+
 OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
     MESHEDIT_ASSERT(mesh.is_valid(e));
     if (mesh.is_deleted(e)) {
@@ -20,14 +57,16 @@ OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
     }
     const Halfedge h0 = Mesh::halfedge(e, 0);
     const Halfedge t0 = Mesh::halfedge(e, 1);
-    if (!mesh.is_triangle(mesh.face(h0)) || !mesh.is_triangle(mesh.face(t0))) {
+    if (!is_triangle_loop(mesh, h0) || !is_triangle_loop(mesh, t0)) {
         return OpStatus::refused("cannot flip: an adjacent face is not a triangle");
     }
-    const Vertex a = mesh.to_vertex(mesh.next(h0));
+    const Halfedge h1 = mesh.next(h0);  // c -> a
+    const Halfedge h2 = mesh.prev(h0);  // a -> b
+    const Vertex a = mesh.to_vertex(h1);
     const Vertex d = mesh.to_vertex(mesh.next(t0));
     // a == d happens on a two-triangle "pillow"; an existing a-d edge would be doubled (this
     // also covers an endpoint of valence 3, whose third face already holds a-d).
-    if (a == d || mesh.find_halfedge(a, d).is_valid()) {
+    if (a == d || has_outgoing_to(mesh, h2, Mesh::twin(h1), d)) {
         return OpStatus::refused("cannot flip: the new edge already exists");
     }
     return OpStatus::ok();
@@ -51,10 +90,10 @@ OpResult<Edge> flip(Mesh& mesh, Edge e) {
     // Collect.
     const Halfedge h0 = Mesh::halfedge(e, 0);
     const Halfedge h1 = mesh.next(h0);
-    const Halfedge h2 = mesh.next(h1);
+    const Halfedge h2 = mesh.prev(h0);
     const Halfedge t0 = Mesh::twin(h0);
     const Halfedge t1 = mesh.next(t0);
-    const Halfedge t2 = mesh.next(t1);
+    const Halfedge t2 = mesh.prev(t0);
     const Vertex a = mesh.to_vertex(h1);
     const Vertex b = mesh.to_vertex(t0);
     const Vertex c = mesh.to_vertex(h0);
@@ -96,7 +135,8 @@ OpStatus is_split_ok(const Mesh& mesh, Edge e) {
     if (!f0.is_valid() && !f1.is_valid()) {
         return OpStatus::refused("cannot split: the edge has no face");
     }
-    if ((f0.is_valid() && !mesh.is_triangle(f0)) || (f1.is_valid() && !mesh.is_triangle(f1))) {
+    if ((f0.is_valid() && !is_triangle_loop(mesh, Mesh::halfedge(e, 0))) ||
+        (f1.is_valid() && !is_triangle_loop(mesh, Mesh::halfedge(e, 1)))) {
         return OpStatus::refused("cannot split: an adjacent face is not a triangle");
     }
     // Two triangles on the same three corners (a "pillow"): the spokes m-a and m-d coincide.
@@ -126,25 +166,42 @@ OpResult<Vertex> split(Mesh& mesh, Edge e) {
     if (const OpStatus ok = is_split_ok(mesh, e); !ok) {
         return ok;
     }
-    // Collect.
+    // Collect every value first: on a large mesh these reads are cache misses at random
+    // places, and issued together, before any write or allocation, they overlap.
     const unsigned i = mesh.is_boundary(Mesh::halfedge(e, 1)) ? 1 : 0;
     const Halfedge h0 = Mesh::halfedge(e, i);
     const Halfedge t0 = Mesh::twin(h0);
     const Halfedge t1 = mesh.next(t0);
-    const Halfedge t2 = mesh.next(t1);
+    const Halfedge t2 = mesh.prev(t0);
+    const Halfedge h1 = mesh.next(h0);    // unused on the boundary
+    const Halfedge h2 = mesh.prev(h0);    // on the boundary: the boundary halfedge before h0
+    const Vertex a = mesh.to_vertex(h1);  // unused on the boundary
     const Vertex b = mesh.to_vertex(t0);
     const Vertex c = mesh.to_vertex(h0);
     const Vertex d = mesh.to_vertex(t1);
     const Face f0 = mesh.face(h0);
     const Face f1 = mesh.face(t0);
+    const bool top = f0.is_valid();
+    const Vec3 midpoint = 0.5 * (mesh.position(b) + mesh.position(c));
+    const bool b_anchored_at_h0 = mesh.halfedge(b) == h0;
 
-    // Allocate.
-    const Vertex m = mesh.add_vertex(0.5 * (mesh.position(b) + mesh.position(c)));
-    const Halfedge s0 = mesh.new_edge(b, m);
+    // Allocate, in one step per element kind: m; edges s, w (and u with a top face); faces
+    // f3 (and f2).
+    const auto first_v = static_cast<std::uint32_t>(mesh.vertices_size());
+    const auto first_e = static_cast<std::uint32_t>(mesh.edges_size());
+    const auto first_f = static_cast<std::uint32_t>(mesh.faces_size());
+    mesh.add_elements(1, top ? 3 : 2, top ? 2 : 1);
+    const Vertex m(first_v);
+    const Halfedge s0 = Mesh::halfedge(Edge(first_e), 0);
     const Halfedge s1 = Mesh::twin(s0);
-    const Halfedge w0 = mesh.new_edge(m, d);
+    const Halfedge w0 = Mesh::halfedge(Edge(first_e + 1), 0);
     const Halfedge w1 = Mesh::twin(w0);
-    const Face f3 = mesh.new_face();
+    const Face f3(first_f);
+    mesh.position(m) = midpoint;
+    mesh.set_vertex(s0, m);
+    mesh.set_vertex(s1, b);
+    mesh.set_vertex(w0, d);
+    mesh.set_vertex(w1, m);
     // Both halves of a crease stay creases (Loop subdivision relies on it).
     if (auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
         crease[Mesh::edge(s0)] = crease[e];
@@ -165,17 +222,15 @@ OpResult<Vertex> split(Mesh& mesh, Edge e) {
     mesh.set_halfedge(f3, s1);
 
     // Relink the top: a boundary loop gains s0 before h0, a face splits into f0 and f2.
-    if (!f0.is_valid()) {
-        mesh.set_next(mesh.prev(h0), s0);
-        mesh.set_next(s0, h0);
-        mesh.set_face(s0, Face());
+    if (!top) {
+        mesh.set_next(h2, s0);
+        mesh.set_next(s0, h0);  // face(s0) stays unset: a boundary halfedge
     } else {
-        const Halfedge h1 = mesh.next(h0);
-        const Halfedge h2 = mesh.next(h1);
-        const Vertex a = mesh.to_vertex(h1);
-        const Halfedge u0 = mesh.new_edge(m, a);
+        const Halfedge u0 = Mesh::halfedge(Edge(first_e + 2), 0);
         const Halfedge u1 = Mesh::twin(u0);
-        const Face f2 = mesh.new_face();
+        const Face f2(first_f + 1);
+        mesh.set_vertex(u0, a);
+        mesh.set_vertex(u1, m);
         // f0 = h0 -> h1 -> u1, f2 = s0 -> u0 -> h2.
         mesh.set_next(h1, u1);
         mesh.set_next(u1, h0);
@@ -193,7 +248,7 @@ OpResult<Vertex> split(Mesh& mesh, Edge e) {
     // Anchors: h0 now leaves m (on a boundary split it is m's outgoing boundary halfedge);
     // if b was anchored at h0, s0 replaces it and is a boundary halfedge exactly when h0 is.
     mesh.set_halfedge(m, h0);
-    if (mesh.halfedge(b) == h0) {
+    if (b_anchored_at_h0) {
         mesh.set_halfedge(b, s0);
     }
     return m;

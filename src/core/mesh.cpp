@@ -120,6 +120,13 @@ Face Mesh::new_face() {
     return Face(static_cast<std::uint32_t>(fprops_.size() - 1));
 }
 
+void Mesh::add_elements(std::size_t nv, std::size_t ne, std::size_t nf) {
+    vprops_.push_back_n(nv);
+    eprops_.push_back_n(ne);
+    hprops_.push_back_n(2 * ne);
+    fprops_.push_back_n(nf);
+}
+
 void Mesh::reserve(std::size_t nv, std::size_t ne, std::size_t nf) {
     vprops_.reserve(nv);
     eprops_.reserve(ne);

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <random>
+#include <string_view>
 
 #include "core/op_test_util.h"
 #include "meshedit/core/local_ops.h"
@@ -115,6 +116,98 @@ void sweep(const test::NamedMesh& shape, unsigned seed, long n_ops, Tally& tally
         if (k % 97 == 0) {
             mesh.garbage_collection();
             ASSERT_VALID(mesh) << "after garbage collection";
+        }
+    }
+}
+
+// is_flip_ok() and is_split_ok() as first written: whole faces through is_triangle(face),
+// the a-d search through find_halfedge() from halfedge(a). The optimised predicates (which
+// start from the edge's own halfedges) must refuse exactly the same edges for the same reasons.
+std::string_view reference_flip_refusal(const Mesh& mesh, Edge e) {
+    if (mesh.is_deleted(e)) {
+        return "edge is deleted";
+    }
+    if (mesh.is_boundary(e)) {
+        return "cannot flip a boundary edge";
+    }
+    const Halfedge h0 = Mesh::halfedge(e, 0);
+    const Halfedge t0 = Mesh::halfedge(e, 1);
+    if (!mesh.is_triangle(mesh.face(h0)) || !mesh.is_triangle(mesh.face(t0))) {
+        return "cannot flip: an adjacent face is not a triangle";
+    }
+    const Vertex a = mesh.to_vertex(mesh.next(h0));
+    const Vertex d = mesh.to_vertex(mesh.next(t0));
+    if (a == d || mesh.find_halfedge(a, d).is_valid()) {
+        return "cannot flip: the new edge already exists";
+    }
+    return {};
+}
+
+std::string_view reference_split_refusal(const Mesh& mesh, Edge e) {
+    if (mesh.is_deleted(e)) {
+        return "edge is deleted";
+    }
+    const Face f0 = mesh.face(e, 0);
+    const Face f1 = mesh.face(e, 1);
+    if (!f0.is_valid() && !f1.is_valid()) {
+        return "cannot split: the edge has no face";
+    }
+    if ((f0.is_valid() && !mesh.is_triangle(f0)) || (f1.is_valid() && !mesh.is_triangle(f1))) {
+        return "cannot split: an adjacent face is not a triangle";
+    }
+    if (f0.is_valid() && f1.is_valid() &&
+        mesh.to_vertex(mesh.next(Mesh::halfedge(e, 0))) ==
+            mesh.to_vertex(mesh.next(Mesh::halfedge(e, 1)))) {
+        return "cannot split: the new edges would coincide";
+    }
+    return {};
+}
+
+::testing::AssertionResult predicates_match_reference(const Mesh& mesh) {
+    for (std::uint32_t i = 0; i < mesh.edges_size(); ++i) {
+        const Edge e(i);
+        if (is_flip_ok(mesh, e).reason() != reference_flip_refusal(mesh, e)) {
+            return ::testing::AssertionFailure() << "is_flip_ok differs on edge " << i;
+        }
+        if (is_split_ok(mesh, e).reason() != reference_split_refusal(mesh, e)) {
+            return ::testing::AssertionFailure() << "is_split_ok differs on edge " << i;
+        }
+    }
+    return ::testing::AssertionSuccess();
+}
+
+// Every edge, deleted ones included, of meshes with a wide range of valences (fans of 3 to
+// 12 triangles; random flips, splits and collapses of the corpus, which also adds polygons'
+// neighbours, boundaries and tombstones).
+TEST(OpSweep, PredicatesMatchReference) {
+    for (int n = 3; n <= 12; ++n) {
+        EXPECT_TRUE(predicates_match_reference(test::one_ring(n))) << "one_ring " << n;
+    }
+    auto corpus = test::sweep_corpus();
+    corpus.push_back({"quad grid", test::mesh_from_faces(
+                                       {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}},
+                                       {{0, 1, 2, 3}, {0, 3, 4}})});
+    for (const auto& shape : corpus) {
+        SCOPED_TRACE(shape.name);
+        std::mt19937 rng(17);
+        Mesh mesh = shape.mesh;
+        for (int k = 0; k < 300; ++k) {
+            ASSERT_TRUE(predicates_match_reference(mesh)) << "step " << k;
+            std::uniform_int_distribution<std::uint32_t> pick(
+                0, static_cast<std::uint32_t>(mesh.edges_size() - 1));
+            const Edge e(pick(rng));
+            switch (k % 3) {
+                case 0:
+                    flip(mesh, e);
+                    break;
+                case 1:
+                    split(mesh, e);
+                    break;
+                default:
+                    if (mesh.n_faces() > shape.mesh.n_faces() / 2) {
+                        collapse(mesh, e);
+                    }
+            }
         }
     }
 }

@@ -5,6 +5,7 @@
 
 #include "meshedit/core/mesh.h"
 #include "support/fixtures.h"
+#include "support/mesh_compare.h"
 
 namespace meshedit {
 namespace {
@@ -42,6 +43,43 @@ TEST(Properties, GrowWithElements) {
     mesh.add_vertex({1, 0, 0});
     ASSERT_EQ(label.vector().size(), 2u);
     EXPECT_EQ(label[Vertex(1)], -1);
+}
+
+TEST(Properties, PushBackNAppendsDefaultsToEveryArray) {
+    PropertyContainer c;
+    auto* label = c.add<int>("label", -1);
+    auto* point = c.add<Vec3>("point");
+    c.push_back_n(3);
+    c.push_back_n(0);
+    EXPECT_EQ(c.size(), 3u);
+    EXPECT_EQ(label->vector(), (std::vector<int>{-1, -1, -1}));
+    EXPECT_EQ(point->vector(), std::vector<Vec3>(3));
+}
+
+// add_elements() gives the same arrays as the one-at-a-time calls in the documented order
+// (vertices, then edges, then faces), user properties included.
+TEST(Properties, AddElementsEqualsOneAtATime) {
+    Mesh bulk = test::two_triangles();
+    bulk.add_property<Edge, std::uint8_t>("e:crease", 0);
+    bulk.add_property<Halfedge, int>("h:label", 7);
+    Mesh single = bulk;
+    bulk.add_elements(1, 3, 2);
+    single.add_vertex({});
+    for (int i = 0; i < 3; ++i) {
+        single.new_edge(Vertex(), Vertex());
+    }
+    single.new_face();
+    single.new_face();
+    EXPECT_TRUE(test::identical(bulk, single));
+    EXPECT_EQ(bulk.vertices_size(), 5u);
+    EXPECT_EQ(bulk.edges_size(), 8u);
+    EXPECT_EQ(bulk.faces_size(), 4u);
+    EXPECT_EQ(bulk.n_vertices(), 5u);  // new elements are live
+    EXPECT_EQ((bulk.get_property<Halfedge, int>("h:label").vector()),
+              (single.get_property<Halfedge, int>("h:label").vector()));
+    EXPECT_FALSE(bulk.halfedge(Vertex(4)).is_valid());
+    EXPECT_FALSE(bulk.next(Halfedge(15)).is_valid());
+    EXPECT_FALSE(bulk.to_vertex(Halfedge(15)).is_valid());
 }
 
 TEST(Properties, ScopedPropertyIsRemovedEvenOnException) {

@@ -86,6 +86,11 @@ public:
     Halfedge new_edge(Vertex from, Vertex to);
     /// Adds a face element with no halfedge yet (callers link it).
     Face new_face();
+    /// Appends `nv` vertices, `ne` edges (`2 ne` halfedges) and `nf` faces with every property
+    /// at its default (positions zero, connectivity unset), one call per property array. The
+    /// new indices start at the previous `*_size()`, in the order add_vertex(), new_edge()
+    /// and new_face() would have given them. For local ops that create several elements.
+    void add_elements(std::size_t nv, std::size_t ne, std::size_t nf);
 
     /// Reserves room for that many elements in every array (no effect on sizes).
     void reserve(std::size_t n_vertices, std::size_t n_edges, std::size_t n_faces);

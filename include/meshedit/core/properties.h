@@ -29,6 +29,8 @@ public:
     virtual void reserve(std::size_t n) = 0;
     virtual void resize(std::size_t n) = 0;
     virtual void push_back() = 0;
+    /// Appends `k` default elements.
+    virtual void push_back_n(std::size_t k) = 0;
     virtual void shrink_to_fit() = 0;
     /// Keeps the elements `kept[0], kept[1], …` (strictly increasing) as `0, 1, …`.
     virtual void compact(const std::vector<std::uint32_t>& kept) = 0;
@@ -55,6 +57,11 @@ public:
     void reserve(std::size_t n) override { data_.reserve(n); }
     void resize(std::size_t n) override { data_.resize(n, default_); }
     void push_back() override { data_.push_back(default_); }
+    void push_back_n(std::size_t k) override {
+        for (std::size_t i = 0; i < k; ++i) {
+            data_.push_back(default_);
+        }
+    }
     void shrink_to_fit() override { data_.shrink_to_fit(); }
     void compact(const std::vector<std::uint32_t>& kept) override {
         for (std::size_t i = 0; i < kept.size(); ++i) {
@@ -192,6 +199,13 @@ public:
             a->push_back();
         }
         ++size_;
+    }
+    /// Appends `k` default elements to every array: one call per array, not one per element.
+    void push_back_n(std::size_t k) {
+        for (auto& a : arrays_) {
+            a->push_back_n(k);
+        }
+        size_ += k;
     }
     void shrink_to_fit() {
         for (auto& a : arrays_) {
