@@ -4,8 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <random>
 
+#include "meshedit/core/build.h"
+#include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
 #include "support/fixtures.h"
 #include "support/mesh_compare.h"
@@ -126,6 +131,80 @@ TEST(Normals, IsolatedAndDeletedElementsGetZero) {
     ASSERT_EQ(fn.size(), 2u);
     EXPECT_EQ(fn[0], Vec3(0, 0, 1));
     EXPECT_EQ(fn[1], Vec3());
+}
+
+// The vertex normals as first written: one pass over the faces scattering each face's area
+// vector (face_area_vector()) to its corners in face order. compute_vertex_normals() gives the
+// same bits up to 65,536 faces (one chunk); beyond, a vertex whose faces lie in two chunks
+// gets its sums in another order, equal up to rounding.
+std::vector<Vec3> scattered_vertex_normals(const Mesh& mesh) {
+    std::vector<Vec3> out(mesh.vertices_size());
+    for (Face f : mesh.faces()) {
+        const Vec3 a = face_area_vector(mesh, f);
+        for (Vertex v : mesh.vertices(f)) {
+            out[v.idx()] += a;
+        }
+    }
+    for (Vec3& n : out) {
+        n = normalize(n);
+    }
+    return out;
+}
+
+::testing::AssertionResult equals_scattered(const Mesh& mesh, const std::vector<Vec3>& n,
+                                            double tol = 0.0) {
+    const std::vector<Vec3> expected = scattered_vertex_normals(mesh);
+    if (n.size() != expected.size()) {
+        return ::testing::AssertionFailure() << "size " << n.size();
+    }
+    for (std::size_t i = 0; i < n.size(); ++i) {
+        if (auto r = near(n[i], expected[i], tol); !r) {
+            return r << " at vertex " << i;
+        }
+    }
+    return ::testing::AssertionSuccess();
+}
+
+TEST(Normals, VertexNormalsEqualTheFaceScatter) {
+    Mesh collapsed = shapes::icosphere(2);  // with tombstones
+    for (std::uint32_t e : {3u, 40u, 200u}) {
+        collapse(collapsed, Edge(e));
+    }
+    const Mesh meshes[] = {
+        shapes::quad_sphere(8), shapes::cylinder(9, 4), shapes::grid(6, 4),
+        test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}, {-1, 0.5, 0}},
+                              {{0, 1, 2, 3}, {0, 3, 4}}),
+        collapsed};
+    for (const Mesh& mesh : meshes) {
+        ASSERT_VALID(mesh);
+        EXPECT_TRUE(equals_scattered(mesh, vertex_normals(mesh)));
+    }
+}
+
+// 180,000 faces: above the threshold for threads, three chunks. Every thread count gives the
+// same bits, also when the face order has nothing to do with the vertex order (almost every
+// corner then belongs to another chunk).
+TEST(Normals, ThreadedVertexNormalsAreIndependentOfThreads) {
+    PolygonSoup shuffled = to_polygon_soup(shapes::torus(300, 300));
+    std::vector<std::uint32_t> order(shuffled.n_faces());
+    std::iota(order.begin(), order.end(), 0u);
+    std::shuffle(order.begin(), order.end(), std::mt19937(5));
+    PolygonSoup soup;
+    soup.positions = shuffled.positions;
+    for (std::uint32_t f : order) {
+        const std::uint32_t* c = &shuffled.indices[shuffled.face_offsets[f]];
+        soup.add_face({c[0], c[1], c[2]});
+    }
+    for (const Mesh& mesh : {shapes::torus(300, 300), build_mesh(soup)}) {
+        ASSERT_GE(mesh.n_faces(), 100'000u);
+        std::vector<Vec3> one, two, all;
+        compute_vertex_normals(mesh, one, 1);
+        compute_vertex_normals(mesh, two, 2);
+        compute_vertex_normals(mesh, all);
+        EXPECT_EQ(one, two);
+        EXPECT_EQ(one, all);
+        EXPECT_TRUE(equals_scattered(mesh, all, 1e-15));
+    }
 }
 
 TEST(Normals, BuffersAreReused) {
