@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -629,6 +630,36 @@ TEST(LoopProgress, NonDecreasingAndEndsAtOne) {
         EXPECT_GE(seen.front(), 0.0);
         EXPECT_EQ(seen.back(), 1.0);
     }
+}
+
+// 102,400 faces: just above the threshold for threads. One thread and all of them give the same
+// arrays, bit for bit, and progress still comes in order from the calling thread.
+TEST(LoopThreads, SameResultOnAnyNumberOfThreads) {
+    Mesh input = shapes::torus(256, 200);
+    auto crease = input.add_property<Edge, std::uint8_t>(kCreaseProperty, 0);
+    for (std::uint32_t e = 0; e < input.edges_size(); e += 7) {
+        crease[Edge(e)] = 1;
+    }
+    Mesh serial = input;
+    LoopOptions one;
+    one.max_threads = 1;
+    loop_subdivide(serial, one);  // validates itself in debug builds
+
+    Mesh threaded = input;
+    std::vector<double> seen;
+    const std::thread::id caller = std::this_thread::get_id();
+    bool other_thread = false;
+    LoopOptions all;
+    all.progress = [&](double t) {
+        seen.push_back(t);
+        other_thread = other_thread || std::this_thread::get_id() != caller;
+    };
+    loop_subdivide(threaded, all);
+    EXPECT_TRUE(test::identical(threaded, serial));
+    EXPECT_FALSE(other_thread);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    ASSERT_FALSE(seen.empty());
+    EXPECT_EQ(seen.back(), 1.0);
 }
 
 }  // namespace

@@ -24,6 +24,10 @@ struct LoopOptions {
     /// Called with the fraction done (0…1), non-decreasing, at coarse intervals (about a
     /// hundred calls per million faces), last with exactly 1; may be empty.
     std::function<void(double)> progress;
+    /// Threads for meshes of 100,000 faces or more (smaller ones use the calling thread):
+    /// 0 means std::thread::hardware_concurrency(). The result is the same for any number.
+    /// loop_subdivide() only; progress is always called from the calling thread.
+    unsigned max_threads = 0;
 };
 
 /// What loop_subdivide() did besides subdividing.
