@@ -272,14 +272,7 @@ void bench_draw(const std::string& job, const std::string& impl, int runs, int w
     Camera camera;
     camera.azimuth_deg = 30.0f;
     camera.elevation_deg = 20.0f;
-    std::vector<Vec3> points;
-    points.reserve(mesh.n_vertices());
-    BoundingBox box;
-    for (Vertex v : mesh.vertices()) {
-        points.push_back(mesh.position(v));
-        box.add(mesh.position(v));
-    }
-    camera.frame(box, aspect, points);
+    camera.frame_mesh(mesh, aspect);
 
     headless::OsMesaContext context(width, height);
     RenderTarget target(width, height, samples);

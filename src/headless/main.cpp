@@ -345,12 +345,7 @@ int run(const Options& options) {
         if (!options.select.empty() || !options.ops.empty()) {
             throw UsageError("--select and --ops need a mesh or .bez file, not a curve");
         }
-        // A faint frame of the [0,1]² view the curve lives in.
-        const Color frame{0.72f, 0.74f, 0.78f, 1.0f};
-        const Vec3 c[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-        for (int i = 0; i < 4; ++i) {
-            overlay.lines.push_back({c[i], c[(i + 1) % 4], frame, 1.0f});
-        }
+        add_unit_square(style, overlay);
         add_bezier_curve(curve, options.t, options.level, options.curve, style, overlay);
     } else {
         if (is_surface) {
@@ -387,24 +382,15 @@ int run(const Options& options) {
     } else {
         camera.azimuth_deg = options.azimuth.value_or(30.0f);
         camera.elevation_deg = options.elevation.value_or(20.0f);
-        // Fit the points themselves (live vertices, plus control points when the nets are
-        // drawn): tighter than the box corners.
-        std::vector<Vec3> points;
-        points.reserve(mesh.n_vertices());
-        BoundingBox box;
-        for (Vertex v : mesh.vertices()) {
-            points.push_back(mesh.position(v));
-            box.add(mesh.position(v));
-        }
+        // The control points count too when the nets are drawn.
+        std::vector<Vec3> control_points;
         if (options.net) {
             for (const auto& patch : patches) {
-                for (const Vec3& p : patch.control_points) {
-                    points.push_back(p);
-                    box.add(p);
-                }
+                control_points.insert(control_points.end(), patch.control_points.begin(),
+                                      patch.control_points.end());
             }
         }
-        camera.frame(box, aspect, points);
+        camera.frame_mesh(mesh, aspect, control_points);
         if (options.distance) {
             camera.distance = *options.distance;
         }

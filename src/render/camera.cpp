@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -34,6 +35,25 @@ glm::mat4 Camera::projection(float aspect) const {
     const float far_plane = distance + 1.5f * scene_radius;
     const float near_plane = std::max(distance - 1.5f * scene_radius, far_plane * 1e-3f);
     return glm::perspective(glm::radians(fov_y_deg), aspect, near_plane, far_plane);
+}
+
+void Camera::frame_mesh(const Mesh& mesh, float aspect, std::span<const Vec3> extra) {
+    // Fitting the points themselves is tighter than fitting the box corners.
+    std::vector<Vec3> points;
+    points.reserve(mesh.n_vertices() + extra.size());
+    for (Vertex v : mesh.vertices()) {
+        points.push_back(mesh.position(v));
+    }
+    points.insert(points.end(), extra.begin(), extra.end());
+    BoundingBox box;
+    for (const Vec3& p : points) {
+        box.add(p);
+    }
+    if (points.empty()) {
+        box.add({-1, -1, -1});
+        box.add({1, 1, 1});
+    }
+    frame(box, aspect, points);
 }
 
 void Camera::frame(const BoundingBox& box, float aspect, std::span<const Vec3> points) {

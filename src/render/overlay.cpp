@@ -263,4 +263,11 @@ void add_control_nets(std::span<const BezierPatch> patches, const OverlayStyle& 
     }
 }
 
+void add_unit_square(const OverlayStyle& style, OverlayBatch& out) {
+    const Vec3 c[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    for (int i = 0; i < 4; ++i) {
+        out.lines.push_back({c[i], c[(i + 1) % 4], style.unit_square, 1.0f});
+    }
+}
+
 }  // namespace meshedit

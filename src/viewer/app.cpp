@@ -444,11 +444,7 @@ void App::rebuild_overlay() {
         }
     } else {
         const BezierCurve& curve = editor_.document().curve;
-        const Color frame{0.72f, 0.74f, 0.78f, 1.0f};
-        const Vec3 c[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-        for (int i = 0; i < 4; ++i) {
-            batch.lines.push_back({c[i], c[(i + 1) % 4], frame, 1.0f});
-        }
+        add_unit_square(style, batch);
         add_bezier_curve(curve, view.t, view.level, view.show_curve, style, batch);
         const auto mark = [&](const ElementRef& e, const Color& color) {
             if (e.kind == ElementRef::Kind::Vertex && e.index < curve.control_points.size()) {
@@ -465,30 +461,15 @@ void App::rebuild_overlay() {
 // ----------------------------------------------------------------------------- camera
 
 void App::reset_camera() {
-    const glm::ivec2 size = framebuffer_size();
     const float a = aspect();
     camera_ = Camera();
     if (!mesh_mode()) {
         camera_.frame_2d({0.0f, 0.0f}, {1.0f, 1.0f}, a);
     } else {
-        // The same framing as `meshedit render`: the live vertices fitted to the view.
-        const Mesh& mesh = editor_.mesh();
-        std::vector<Vec3> points;
-        points.reserve(mesh.n_vertices());
-        BoundingBox box;
-        for (Vertex v : mesh.vertices()) {
-            points.push_back(mesh.position(v));
-            box.add(mesh.position(v));
-        }
-        if (points.empty()) {
-            box.add({-1, -1, -1});
-            box.add({1, 1, 1});
-        }
-        camera_.frame(box, a, points);
+        camera_.frame_mesh(editor_.mesh(), a);  // the same opening view as `meshedit render`
     }
     scene_center_ = camera_.target;
     scene_radius_ = camera_.orthographic ? 1.0f : camera_.scene_radius;
-    (void)size;
     cursor_moved_ = true;
     redraw_frames_ = kSettleFrames;
 }

@@ -140,13 +140,7 @@ Camera opening_camera(const Mesh& mesh, float aspect) {
     Camera camera;
     camera.azimuth_deg = 30.0f;
     camera.elevation_deg = 20.0f;
-    std::vector<Vec3> points;
-    BoundingBox box;
-    for (Vertex v : mesh.vertices()) {
-        points.push_back(mesh.position(v));
-        box.add(mesh.position(v));
-    }
-    camera.frame(box, aspect, points);
+    camera.frame_mesh(mesh, aspect);
     return camera;
 }
 

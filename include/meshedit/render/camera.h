@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "meshedit/core/math.h"
+#include "meshedit/core/mesh.h"
 
 namespace meshedit {
 
@@ -32,6 +33,9 @@ public:
     /// viewport of `aspect` (width / height), plus a small margin. If `points` is given (the
     /// mesh's positions, say), those are fitted instead of the corners: a tighter picture.
     void frame(const BoundingBox& box, float aspect = 1.0f, std::span<const Vec3> points = {});
+    /// frame() on the live vertices of `mesh` plus `extra` points (e.g. control points): the
+    /// opening view of `meshedit render` and of the viewer. An empty mesh frames [-1, 1]³.
+    void frame_mesh(const Mesh& mesh, float aspect, std::span<const Vec3> extra = {});
     /// Orthographic view of the rectangle [min, max] (x, y) with `margin` around it, fitted
     /// to `aspect` (width / height).
     void frame_2d(glm::vec2 min, glm::vec2 max, float aspect, float margin = 0.05f);

@@ -83,6 +83,7 @@ struct OverlayStyle {
     Color curve{0.05f, 0.05f, 0.05f, 1.0f};
     Color evaluated_point{0.9f, 0.1f, 0.1f, 1.0f};
     Color control_net{0.2f, 0.2f, 0.75f, 1.0f};
+    Color unit_square{0.72f, 0.74f, 0.78f, 1.0f};
 };
 
 /// Boundary edges and crease edges ("e:crease") of `mesh`.
@@ -102,6 +103,9 @@ void add_element_highlight(const Mesh& mesh, ElementRef element, const Color& co
 /// `max_level` < 0 means all levels.
 void add_bezier_curve(const BezierCurve& curve, double t, int max_level, bool show_curve,
                       const OverlayStyle& style, OverlayBatch& out);
+
+/// The faint outline of the unit square [0,1]² that curves are drawn in (curve mode).
+void add_unit_square(const OverlayStyle& style, OverlayBatch& out);
 
 /// The control nets of `patches`: the rows and columns of each control grid as lines, the
 /// control points as small discs.
