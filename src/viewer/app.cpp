@@ -362,10 +362,7 @@ void App::set_status(std::string message, bool error) {
 
 void App::open_file(const std::filesystem::path& path) {
     try {
-        const Outcome outcome = editor_.open(path);
-        upload_document();
-        reset_camera();
-        apply(outcome);
+        apply(editor_.open(path));  // uploads, reframes and rebuilds the overlay
     } catch (const std::exception& e) {
         // IoError names the file itself; anything else (no memory) gets the path added.
         std::string message = dynamic_cast<const IoError*>(&e) != nullptr
@@ -391,7 +388,9 @@ void App::apply(const Outcome& outcome) {
         cursor_moved_ = true;
     }
     if (c & (kTopology | kGeometry | kSelection | kDisplay | kCurve | kDocument)) {
-        rebuild_overlay();
+        // Feature edges walk every edge: redone only when the mesh or a crease changed,
+        // not when the selection or hover moves.
+        rebuild_overlay((c & (kTopology | kGeometry | kDisplay | kDocument)) != 0);
     }
     if (c & kResetCamera) {
         reset_camera();
@@ -418,19 +417,21 @@ void App::upload_document() {
         has_mesh_on_gpu_ = false;
     }
     editor_.set_hover({});
-    cursor_moved_ = true;
-    rebuild_overlay();
+    cursor_moved_ = true;  // the caller rebuilds the overlay
 }
 
-void App::rebuild_overlay() {
+void App::rebuild_overlay(bool features_changed) {
     const OverlayStyle style;
-    OverlayBatch batch;
     const ViewState& view = editor_.view();
+    if (features_changed) {
+        features_.clear();
+        if (editor_.mode() == Mode::Mesh) {
+            add_feature_edges(editor_.mesh(), style, features_);
+        }
+    }
+    OverlayBatch batch = features_;
     if (mesh_mode()) {
         const Mesh& mesh = editor_.mesh();
-        if (editor_.mode() == Mode::Mesh) {
-            add_feature_edges(mesh, style, batch);
-        }
         if (view.show_nets) {
             add_control_nets(editor_.document().patches, style, batch);
         }

@@ -55,7 +55,9 @@ private:
     void set_status(std::string message, bool error);
 
     void upload_document();
-    void rebuild_overlay();
+    /// Uploads the overlay: cached boundary/crease edges (recomputed if `features_changed`),
+    /// control nets or the curve, hover and selection highlights.
+    void rebuild_overlay(bool features_changed = false);
     void reset_camera();
     void update_camera_planes();
 
@@ -88,6 +90,7 @@ private:
     std::unique_ptr<BackgroundRenderer> background_;
     std::unique_ptr<RenderTarget> pick_target_;
     bool has_mesh_on_gpu_ = false;
+    OverlayBatch features_;  ///< boundary and crease edges of the current mesh
 
     Panels panels_;
     std::string status_;
