@@ -5,38 +5,20 @@
 //   2. pair each face halfedge u->v with the one v->u, bucketing halfedges by their smaller
 //      endpoint; an edge used by more than two faces, or twice in one direction, is cut:
 //      all its halfedges stay unpaired and become boundary;
-//   3. group the corners around each vertex into fans (union-find over corners linked
-//      through paired edges); every fan after the first gets a copy of the vertex;
+//   3. group the corners around each vertex into fans (walks over corners linked through
+//      paired edges); every fan after the first gets a copy of the vertex;
 //   4. assign edges in order of first appearance, add boundary twins, link boundary loops.
 #include "meshedit/core/build.h"
 
 #include <algorithm>
-#include <numeric>
 #include <sstream>
+
+#include "parallel.h"
 
 namespace meshedit {
 namespace {
 
 constexpr std::uint32_t kNone = kInvalidIndex;
-
-struct UnionFind {
-    std::vector<std::uint32_t> parent;
-    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    std::uint32_t find(std::uint32_t x) {
-        while (parent[x] != x) {
-            parent[x] = parent[parent[x]];  // path halving
-            x = parent[x];
-        }
-        return x;
-    }
-    void unite(std::uint32_t a, std::uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) {
-            parent[std::max(a, b)] = std::min(a, b);
-        }
-    }
-};
 
 bool has_repeated_corner(const std::uint32_t* c, std::size_t k) {
     for (std::size_t i = 0; i < k; ++i) {
@@ -50,13 +32,37 @@ bool has_repeated_corner(const std::uint32_t* c, std::size_t k) {
 }
 
 // Face halfedges of the kept faces, in CSR order: halfedge h runs from corner[h] to
-// corner[next[h]].
+// corner[next[h]], and face f owns [first[f], first[f + 1]). When no face is dropped,
+// `corner` and `first` are the soup's own arrays, not copies.
 struct SoupHalfedges {
-    std::vector<std::uint32_t> corner;
+    const std::uint32_t* corner = nullptr;
+    const std::uint32_t* first = nullptr;
+    std::uint32_t n_halfedges = 0;
+    std::uint32_t n_faces = 0;
     std::vector<std::uint32_t> next;
-    std::vector<std::uint32_t> prev;
-    std::vector<std::uint32_t> face;
-    std::vector<std::uint32_t> first;  // first halfedge of each kept face
+    std::vector<std::uint32_t> kept_corner;  // storage when faces were dropped
+    std::vector<std::uint32_t> kept_first;
+
+    // No prev array: inside a face it is h - 1; a face's first halfedge walks its face once.
+    std::uint32_t prev(std::uint32_t h) const {
+        if (h > 0 && next[h - 1] == h) {
+            return h - 1;
+        }
+        std::uint32_t x = h;
+        while (next[x] != h) {
+            x = next[x];
+        }
+        return x;
+    }
+};
+
+// Scratch storage of two words per face halfedge, used twice so that its memory is faulted
+// in once (fresh pages dominate the cost of big builds): pair_halfedges() sorts {other
+// endpoint, halfedge} entries in it, then build_mesh() keeps each face halfedge's {fan vertex,
+// mesh halfedge} there.
+struct TwoWords {
+    std::uint32_t first;
+    std::uint32_t second;
 };
 
 void check_input(const PolygonSoup& soup) {
@@ -83,91 +89,204 @@ void check_input(const PolygonSoup& soup) {
     }
 }
 
-SoupHalfedges collect_faces(const PolygonSoup& soup, BuildReport& report) {
-    SoupHalfedges fh;
-    fh.corner.reserve(soup.indices.size());
-    fh.first.reserve(soup.n_faces());
+void collect_faces(const PolygonSoup& soup, SoupHalfedges& fh, BuildReport& report) {
+    const std::uint32_t* off = soup.face_offsets.data();
     for (std::uint32_t f = 0; f < soup.n_faces(); ++f) {
-        const std::uint32_t* c = soup.indices.data() + soup.face_offsets[f];
-        const std::size_t k = soup.face_offsets[f + 1] - soup.face_offsets[f];
-        if (k < 3 || has_repeated_corner(c, k)) {
+        const std::size_t k = off[f + 1] - off[f];
+        if (k < 3 || has_repeated_corner(soup.indices.data() + off[f], k)) {
             report.dropped_faces.push_back(f);
-            continue;
         }
-        fh.first.push_back(static_cast<std::uint32_t>(fh.corner.size()));
-        fh.corner.insert(fh.corner.end(), c, c + k);
     }
-    const std::size_t nh = fh.corner.size();
-    fh.next.resize(nh);
-    fh.prev.resize(nh);
-    fh.face.resize(nh);
-    for (std::uint32_t f = 0; f < fh.first.size(); ++f) {
+    if (report.dropped_faces.empty()) {
+        fh.corner = soup.indices.data();
+        fh.first = off;
+        fh.n_halfedges = static_cast<std::uint32_t>(soup.indices.size());
+        fh.n_faces = static_cast<std::uint32_t>(soup.n_faces());
+    } else {
+        fh.kept_corner.reserve(soup.indices.size());
+        fh.kept_first.reserve(soup.face_offsets.size());
+        fh.kept_first.push_back(0);
+        std::size_t d = 0;  // next dropped face
+        for (std::uint32_t f = 0; f < soup.n_faces(); ++f) {
+            if (d < report.dropped_faces.size() && report.dropped_faces[d] == f) {
+                ++d;
+                continue;
+            }
+            fh.kept_corner.insert(fh.kept_corner.end(), soup.indices.begin() + off[f],
+                                  soup.indices.begin() + off[f + 1]);
+            fh.kept_first.push_back(static_cast<std::uint32_t>(fh.kept_corner.size()));
+        }
+        fh.corner = fh.kept_corner.data();
+        fh.first = fh.kept_first.data();
+        fh.n_halfedges = static_cast<std::uint32_t>(fh.kept_corner.size());
+        fh.n_faces = static_cast<std::uint32_t>(fh.kept_first.size() - 1);
+    }
+    fh.next.resize(fh.n_halfedges);
+    for (std::uint32_t f = 0; f < fh.n_faces; ++f) {
         const std::uint32_t b = fh.first[f];
-        const std::uint32_t e =
-            f + 1 < fh.first.size() ? fh.first[f + 1] : static_cast<std::uint32_t>(nh);
-        for (std::uint32_t h = b; h < e; ++h) {
-            fh.next[h] = h + 1 < e ? h + 1 : b;
-            fh.prev[h] = h > b ? h - 1 : e - 1;
-            fh.face[h] = f;
+        const std::uint32_t e = fh.first[f + 1];
+        for (std::uint32_t h = b; h + 1 < e; ++h) {
+            fh.next[h] = h + 1;
         }
+        fh.next[e - 1] = b;
     }
-    return fh;
 }
 
 // mate[h] = the opposite face halfedge, or kNone for an unpaired (boundary or cut) one.
+// Meshes this big pair their halfedges on several threads; the result is the same.
+constexpr std::size_t kParallelHalfedges = std::size_t{1} << 18;
+constexpr std::size_t kVerticesPerChunk = std::size_t{1} << 14;
+
+// `n_pairs` counts the pairs made; `bucket` is scratch.
 std::vector<std::uint32_t> pair_halfedges(const SoupHalfedges& fh, std::size_t n_vertices,
+                                          std::vector<TwoWords>& bucket, std::uint32_t& n_pairs,
                                           BuildReport& report) {
-    const std::size_t nh = fh.corner.size();
-    auto from = [&](std::uint32_t h) { return fh.corner[h]; };
-    auto to = [&](std::uint32_t h) { return fh.corner[fh.next[h]]; };
+    const std::uint32_t nh = fh.n_halfedges;
+    const std::uint32_t* corner = fh.corner;
+    const std::uint32_t* next = fh.next.data();
+    const unsigned threads = parallel::thread_count(nh, kParallelHalfedges);
 
-    // Bucket halfedges by their smaller endpoint (counting sort).
-    std::vector<std::uint32_t> start(n_vertices + 1, 0);
-    for (std::uint32_t h = 0; h < nh; ++h) {
-        ++start[std::min(from(h), to(h)) + 1];
-    }
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<std::uint32_t> bucket(nh);
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::uint32_t h = 0; h < nh; ++h) {
-        bucket[fill[std::min(from(h), to(h))]++] = h;
-    }
-
-    std::vector<std::uint32_t> mate(nh, kNone);
-    std::vector<std::uint8_t> seen(nh, 0);
-    for (std::uint32_t a = 0; a < n_vertices; ++a) {
-        for (std::uint32_t i = start[a]; i < start[a + 1]; ++i) {
-            const std::uint32_t h = bucket[i];
-            if (seen[h]) {
-                continue;
+    // Bucket halfedges by their smaller endpoint: a counting sort, stable in h, whose count
+    // and fill passes each thread runs over its own part of the halfedges (part p's entries
+    // go after those of parts < p in every bucket, which keeps it stable). Each entry is
+    // {other endpoint, h}, so that scanning a bucket reads one small contiguous range instead
+    // of chasing corner[next[h]] for every candidate; `other` becomes kNone once handled.
+    const std::size_t part = (std::size_t{nh} + threads - 1) / threads;
+    std::vector<std::vector<std::uint32_t>> fill(threads);
+    parallel::for_chunks(nh, part, threads, [&](std::size_t begin, std::size_t end) {
+        std::vector<std::uint32_t>& count = fill[begin / part];
+        count.assign(n_vertices, 0);
+        for (std::size_t h = begin; h < end; ++h) {
+            ++count[std::min(corner[h], corner[next[h]])];
+        }
+    });
+    std::vector<std::uint32_t> start(n_vertices + 1);
+    std::uint32_t sum = 0;
+    for (std::size_t a = 0; a < n_vertices; ++a) {
+        start[a] = sum;
+        for (std::vector<std::uint32_t>& count : fill) {
+            const std::uint32_t n = count.empty() ? 0 : count[a];
+            if (!count.empty()) {
+                count[a] = sum;  // from counts to this part's first slot in bucket a
             }
-            // All halfedges of the bucket joining the same two vertices as h.
-            const std::uint32_t b = from(h) == a ? to(h) : from(h);
-            std::uint32_t count = 0, forward = 0, backward = 0;
-            std::uint32_t h_fwd = kNone, h_bwd = kNone;
-            for (std::uint32_t j = i; j < start[a + 1]; ++j) {
-                const std::uint32_t g = bucket[j];
-                if (from(g) == b || to(g) == b) {
-                    seen[g] = 1;
-                    ++count;
-                    if (from(g) == from(h)) {
-                        ++forward;
-                        h_fwd = g;
-                    } else {
-                        ++backward;
-                        h_bwd = g;
-                    }
-                }
-            }
-            if (forward == 1 && backward == 1) {
-                mate[h_fwd] = h_bwd;
-                mate[h_bwd] = h_fwd;
-            } else if (count > 1) {
-                report.nonmanifold_edges.emplace_back(a, b);
-            }
+            sum += n;
         }
     }
+    start[n_vertices] = sum;
+    bucket.resize(nh);
+    parallel::for_chunks(nh, part, threads, [&](std::size_t begin, std::size_t end) {
+        std::vector<std::uint32_t>& slot = fill[begin / part];
+        for (std::size_t h = begin; h < end; ++h) {
+            const std::uint32_t u = corner[h];
+            const std::uint32_t v = corner[next[h]];
+            bucket[slot[std::min(u, v)]++] = {std::max(u, v), static_cast<std::uint32_t>(h)};
+        }
+    });
+    fill = {};
+
+    // Buckets are independent: chunks of vertices scan theirs on any thread, and their
+    // reports are joined in vertex order.
+    std::vector<std::uint32_t> mate(nh, kNone);
+    const std::size_t n_chunks = (n_vertices + kVerticesPerChunk - 1) / kVerticesPerChunk;
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> cut(n_chunks);
+    std::vector<std::uint32_t> pairs(n_chunks, 0);
+    parallel::for_chunks(n_vertices, kVerticesPerChunk, threads,
+                         [&](std::size_t first, std::size_t last) {
+                             const std::size_t c = first / kVerticesPerChunk;
+                             for (std::size_t a = first; a < last; ++a) {
+                                 const std::uint32_t end = start[a + 1];
+                                 for (std::uint32_t i = start[a]; i < end; ++i) {
+                                     const std::uint32_t b = bucket[i].first;
+                                     if (b == kNone) {
+                                         continue;
+                                     }
+                                     // All halfedges of the bucket joining a and b; forward ones
+                                     // run like bucket[i].
+                                     const std::uint32_t h = bucket[i].second;
+                                     std::uint32_t count = 0, forward = 0, backward = 0;
+                                     std::uint32_t h_fwd = kNone, h_bwd = kNone;
+                                     for (std::uint32_t j = i; j < end; ++j) {
+                                         if (bucket[j].first == b) {
+                                             bucket[j].first = kNone;
+                                             const std::uint32_t g = bucket[j].second;
+                                             ++count;
+                                             if (corner[g] == corner[h]) {
+                                                 ++forward;
+                                                 h_fwd = g;
+                                             } else {
+                                                 ++backward;
+                                                 h_bwd = g;
+                                             }
+                                         }
+                                     }
+                                     if (forward == 1 && backward == 1) {
+                                         mate[h_fwd] = h_bwd;
+                                         mate[h_bwd] = h_fwd;
+                                         ++pairs[c];
+                                     } else if (count > 1) {
+                                         cut[c].emplace_back(static_cast<std::uint32_t>(a), b);
+                                     }
+                                 }
+                             }
+                         });
+    for (std::size_t c = 0; c < n_chunks; ++c) {
+        n_pairs += pairs[c];
+        report.nonmanifold_edges.insert(report.nonmanifold_edges.end(), cut[c].begin(),
+                                        cut[c].end());
+    }
     return mate;
+}
+
+// The vertex each corner belongs to. Corner h is where halfedge h arrives (at
+// corner[next[h]]). The corners around a vertex are linked through paired edges, h to
+// mate[next[h]]; each linked group is one fan, and every fan after the first gets a copy of
+// the vertex. A corner has at most one link out and one in, so a fan is a path or a cycle and
+// one walk each way labels it. Fans are numbered in order of their smallest corner.
+// Writes slots[h].first; the slots start as kNone.
+void label_fans(const SoupHalfedges& fh, const std::vector<std::uint32_t>& mate,
+                const std::vector<Vec3>& positions, std::vector<TwoWords>& slots,
+                std::vector<Vec3>& extra_positions, BuildReport& report) {
+    const std::uint32_t nh = fh.n_halfedges;
+    const std::size_t nv_in = positions.size();
+    auto fan_vertex = [&](std::uint32_t h) -> std::uint32_t& { return slots[h].first; };
+    std::vector<std::uint8_t> used(nv_in, 0);
+    for (std::uint32_t h = 0; h < nh; ++h) {
+        if (fan_vertex(h) != kNone) {
+            continue;
+        }
+        const std::uint32_t v = fh.corner[fh.next[h]];
+        std::uint32_t label = v;
+        if (!used[v]) {
+            used[v] = 1;
+        } else {
+            if (used[v] == 1) {
+                report.split_vertices.push_back(v);
+                used[v] = 2;
+            }
+            label = static_cast<std::uint32_t>(nv_in + extra_positions.size());
+            extra_positions.push_back(positions[v]);
+        }
+        fan_vertex(h) = label;
+        // Forward (out-links) until the fan ends or closes into a cycle back at h.
+        std::uint32_t c = mate[fh.next[h]];
+        while (c != kNone && c != h) {
+            fan_vertex(c) = label;
+            c = mate[fh.next[c]];
+        }
+        if (c == h) {
+            continue;
+        }
+        // An open fan: also backward (in-links) from h.
+        for (std::uint32_t m = mate[h]; m != kNone;) {
+            c = fh.prev(m);
+            fan_vertex(c) = label;
+            m = mate[c];
+        }
+    }
+    std::sort(report.split_vertices.begin(), report.split_vertices.end());
+    report.added_vertices = extra_positions.size();
+    report.isolated_vertices =
+        static_cast<std::size_t>(std::count(used.begin(), used.end(), std::uint8_t{0}));
 }
 
 }  // namespace
@@ -176,93 +295,84 @@ Mesh build_mesh(const PolygonSoup& soup, BuildReport* report_out) {
     check_input(soup);
     BuildReport report;
     const std::size_t nv_in = soup.positions.size();
-    const SoupHalfedges fh = collect_faces(soup, report);
-    const std::vector<std::uint32_t> mate = pair_halfedges(fh, nv_in, report);
-    const auto nh = static_cast<std::uint32_t>(fh.corner.size());
-    const auto nf = static_cast<std::uint32_t>(fh.first.size());
+    SoupHalfedges fh;
+    collect_faces(soup, fh, report);
+    std::uint32_t n_pairs = 0;
+    std::vector<TwoWords> slots;
+    const std::vector<std::uint32_t> mate = pair_halfedges(fh, nv_in, slots, n_pairs, report);
+    const std::uint32_t nh = fh.n_halfedges;
+    const std::uint32_t nf = fh.n_faces;
 
-    // Corners: corner h is where halfedge h arrives (at corner[next[h]]). Corners around a
-    // vertex are linked through paired edges; each linked group is one fan.
-    UnionFind fans(nh);
-    for (std::uint32_t h = 0; h < nh; ++h) {
-        const std::uint32_t m = mate[fh.next[h]];
-        if (m != kNone) {
-            fans.unite(h, m);
-        }
-    }
-    std::vector<std::uint32_t> fan_vertex(nh, kNone);
-    std::vector<std::uint8_t> used(nv_in, 0);
     std::vector<Vec3> extra_positions;
-    for (std::uint32_t h = 0; h < nh; ++h) {
-        const std::uint32_t root = fans.find(h);
-        if (fan_vertex[root] != kNone) {
-            continue;
-        }
-        const std::uint32_t v = fh.corner[fh.next[h]];
-        if (!used[v]) {
-            used[v] = 1;
-            fan_vertex[root] = v;
-        } else {
-            if (used[v] == 1) {
-                report.split_vertices.push_back(v);
-                used[v] = 2;
-            }
-            fan_vertex[root] = static_cast<std::uint32_t>(nv_in + extra_positions.size());
-            extra_positions.push_back(soup.positions[v]);
-        }
-    }
-    std::sort(report.split_vertices.begin(), report.split_vertices.end());
-    report.added_vertices = extra_positions.size();
-    report.isolated_vertices =
-        static_cast<std::size_t>(std::count(used.begin(), used.end(), std::uint8_t{0}));
-    auto arrival = [&](std::uint32_t h) { return Vertex(fan_vertex[fans.find(h)]); };
-
-    // Edges in order of first appearance: a paired edge is (h, mate); an unpaired one is
-    // (h, boundary twin).
-    std::vector<std::uint32_t> mesh_halfedge(nh, kNone);
-    std::uint32_t n_edges = 0;
-    for (std::uint32_t h = 0; h < nh; ++h) {
-        if (mesh_halfedge[h] != kNone) {
-            continue;
-        }
-        mesh_halfedge[h] = 2 * n_edges;
-        if (mate[h] != kNone) {
-            mesh_halfedge[mate[h]] = 2 * n_edges + 1;
-        }
-        ++n_edges;
-    }
+    // From here on slots[h] = {fan vertex, mesh halfedge} of face halfedge h.
+    std::fill(slots.begin(), slots.end(), TwoWords{kNone, kNone});
+    label_fans(fh, mate, soup.positions, slots, extra_positions, report);
+    auto fan_vertex = [&](std::uint32_t h) { return slots[h].first; };
+    auto mesh_halfedge = [&](std::uint32_t h) -> std::uint32_t& { return slots[h].second; };
 
     Mesh mesh;
-    mesh.resize(nv_in + extra_positions.size(), n_edges, nf);
+    mesh.resize(nv_in + extra_positions.size(), nh - n_pairs, nf);
     std::copy(soup.positions.begin(), soup.positions.end(), mesh.position_vector().begin());
     std::copy(extra_positions.begin(), extra_positions.end(),
               mesh.position_vector().begin() + static_cast<std::ptrdiff_t>(nv_in));
 
-    std::vector<Halfedge> out_boundary(mesh.vertices_size());
-    for (std::uint32_t h = 0; h < nh; ++h) {
-        const Halfedge mh(mesh_halfedge[h]);
-        const Vertex v = arrival(h);
-        mesh.set_vertex(mh, v);
-        mesh.set_face(mh, Face(fh.face[h]));
-        mesh.set_next(mh, Halfedge(mesh_halfedge[fh.next[h]]));
-        if (!mesh.halfedge(v).is_valid()) {
-            mesh.set_halfedge(v, Halfedge(mesh_halfedge[fh.next[h]]));
-        }
-        if (mate[h] == kNone) {
-            // Boundary twin: runs from v back to where h starts; v's outgoing boundary.
-            const Halfedge b = Mesh::twin(mh);
-            mesh.set_vertex(b, arrival(fh.prev[h]));
-            mesh.set_face(b, Face());
-            out_boundary[v.idx()] = b;
-        }
-    }
+    // Edges in order of first appearance: a paired edge is (h, mate); an unpaired one is
+    // (h, boundary twin). A face's halfedges are numbered before its corners pick their
+    // vertex's halfedge (the first corner in order wins), as both only look back.
+    std::uint32_t n_edges = 0;
     for (std::uint32_t f = 0; f < nf; ++f) {
-        mesh.set_halfedge(Face(f), Halfedge(mesh_halfedge[fh.first[f]]));
+        const std::uint32_t begin = fh.first[f];
+        const std::uint32_t end = fh.first[f + 1];
+        for (std::uint32_t h = begin; h < end; ++h) {
+            if (mesh_halfedge(h) == kNone) {
+                mesh_halfedge(h) = 2 * n_edges;
+                if (mate[h] != kNone) {
+                    mesh_halfedge(mate[h]) = 2 * n_edges + 1;
+                }
+                ++n_edges;
+            }
+        }
+        for (std::uint32_t h = begin; h < end; ++h) {
+            const Vertex v(fan_vertex(h));
+            if (!mesh.halfedge(v).is_valid()) {
+                mesh.set_halfedge(v, Halfedge(mesh_halfedge(h + 1 < end ? h + 1 : begin)));
+            }
+        }
     }
-    // Boundary loops: each vertex has at most one outgoing boundary halfedge (one fan).
-    for (std::uint32_t h = 0; h < nh; ++h) {
-        if (mate[h] == kNone) {
-            const Halfedge b = Mesh::twin(Halfedge(mesh_halfedge[h]));
+    // The links touch each mesh halfedge, face and boundary vertex from one face halfedge
+    // only, so chunks of faces write them on any thread. A fan has at most one unpaired
+    // corner (its start), so a vertex has at most one outgoing boundary halfedge.
+    constexpr std::size_t kFacesPerChunk = std::size_t{1} << 14;
+    const unsigned threads = parallel::thread_count(nh, kParallelHalfedges);
+    std::vector<std::vector<std::uint32_t>> unpaired((nf + kFacesPerChunk - 1) / kFacesPerChunk);
+    std::vector<Halfedge> out_boundary(mesh.vertices_size());
+    parallel::for_chunks(nf, kFacesPerChunk, threads, [&](std::size_t first, std::size_t last) {
+        std::vector<std::uint32_t>& chunk_unpaired = unpaired[first / kFacesPerChunk];
+        for (std::size_t f = first; f < last; ++f) {
+            const std::uint32_t begin = fh.first[f];
+            const std::uint32_t end = fh.first[f + 1];
+            mesh.set_halfedge(Face(static_cast<std::uint32_t>(f)), Halfedge(mesh_halfedge(begin)));
+            for (std::uint32_t h = begin; h < end; ++h) {
+                const Halfedge mh(mesh_halfedge(h));
+                const Vertex v(fan_vertex(h));
+                mesh.set_vertex(mh, v);
+                mesh.set_face(mh, Face(static_cast<std::uint32_t>(f)));
+                mesh.set_next(mh, Halfedge(mesh_halfedge(h + 1 < end ? h + 1 : begin)));
+                if (mate[h] == kNone) {
+                    // Boundary twin: runs from v back to where h starts; v's outgoing boundary.
+                    const Halfedge b = Mesh::twin(mh);
+                    mesh.set_vertex(b, Vertex(fan_vertex(h > begin ? h - 1 : end - 1)));
+                    mesh.set_face(b, Face());
+                    out_boundary[v.idx()] = b;
+                    chunk_unpaired.push_back(h);
+                }
+            }
+        }
+    });
+    // Boundary loops, in order of the unpaired face halfedges.
+    for (const std::vector<std::uint32_t>& chunk_unpaired : unpaired) {
+        for (const std::uint32_t h : chunk_unpaired) {
+            const Halfedge b = Mesh::twin(Halfedge(mesh_halfedge(h)));
             mesh.set_next(b, out_boundary[mesh.to_vertex(b).idx()]);
         }
     }
