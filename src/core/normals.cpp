@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "meshedit/core/topology.h"
 #include "parallel.h"
 
 namespace meshedit {
@@ -31,6 +32,43 @@ Vec3 face_area_vector(const Mesh& mesh, Face f) {
 
 Vec3 face_normal(const Mesh& mesh, Face f) {
     return normalize(face_area_vector(mesh, f));
+}
+
+double signed_volume(const Mesh& mesh) {
+    Vec3 origin;
+    for (Vertex v : mesh.vertices()) {
+        origin = mesh.position(v);
+        break;
+    }
+    // Each fan triangle with the origin spans a tetrahedron of volume (p0 · (d1 × d2)) / 6,
+    // and face_area_vector is the sum of those d1 × d2.
+    double sum = 0;
+    for (Face f : mesh.faces()) {
+        const Vec3 p0 = mesh.position(mesh.from_vertex(mesh.halfedge(f))) - origin;
+        sum += dot(p0, face_area_vector(mesh, f));
+    }
+    return sum / 6.0;
+}
+
+bool is_closed_and_outward(const Mesh& mesh) {
+    if (!is_closed(mesh)) {
+        return false;
+    }
+    // Six times each component's volume, indexed by its root vertex and taken about it.
+    const std::vector<std::uint32_t> roots = component_roots(mesh);
+    std::vector<double> six_volume(roots.size(), 0.0);
+    for (Face f : mesh.faces()) {
+        const Vertex v0 = mesh.from_vertex(mesh.halfedge(f));
+        const std::uint32_t root = roots[v0.idx()];
+        const Vec3 p0 = mesh.position(v0) - mesh.position(Vertex(root));
+        six_volume[root] += dot(p0, face_area_vector(mesh, f));
+    }
+    for (Vertex v : mesh.vertices()) {
+        if (roots[v.idx()] == v.idx() && !mesh.is_isolated(v) && !(six_volume[v.idx()] > 0)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 void compute_face_normals(const Mesh& mesh, std::vector<Vec3>& out) {

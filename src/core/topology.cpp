@@ -20,9 +20,15 @@ std::size_t count_boundary_loops(const Mesh& mesh) {
     return loops;
 }
 
-namespace {
+bool is_closed(const Mesh& mesh) {
+    for (Halfedge h : mesh.halfedges()) {
+        if (mesh.is_boundary(h)) {
+            return false;
+        }
+    }
+    return true;
+}
 
-// Component label per vertex index (deleted vertices keep their own label).
 std::vector<std::uint32_t> component_roots(const Mesh& mesh) {
     std::vector<std::uint32_t> parent(mesh.vertices_size());
     std::iota(parent.begin(), parent.end(), 0u);
@@ -45,8 +51,6 @@ std::vector<std::uint32_t> component_roots(const Mesh& mesh) {
     }
     return parent;
 }
-
-}  // namespace
 
 std::size_t count_components(const Mesh& mesh) {
     const auto roots = component_roots(mesh);

@@ -107,18 +107,6 @@ BezierPatch flat_patch(const Vec3& corner, const Vec3& e1, const Vec3& e2) {
     return p;
 }
 
-double signed_volume(const Mesh& mesh) {
-    double six_v = 0.0;
-    for (Face f : mesh.faces()) {
-        std::vector<Vec3> p;
-        for (Vertex v : mesh.vertices(f)) {
-            p.push_back(mesh.position(v));
-        }
-        six_v += dot(p[0], cross(p[1], p[2]));
-    }
-    return six_v / 6.0;
-}
-
 // Pairwise distances are all above the weld distance: no duplicate vertices survive.
 ::testing::AssertionResult no_duplicates(const Mesh& mesh, double tol) {
     const auto& p = mesh.position_vector();

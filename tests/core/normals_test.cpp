@@ -229,5 +229,59 @@ TEST(Normals, FarFromOriginKeepsPrecision) {
     EXPECT_EQ(face_normal(mesh, Face(0)), Vec3(0, 0, 1));
 }
 
+TEST(Normals, SignedVolumeIsPositiveOutwardAndNegativeInsideOut) {
+    // The asymmetric cube spans [-1, 1]^3.
+    EXPECT_DOUBLE_EQ(signed_volume(shapes::cube()), 8.0);
+    PolygonSoup inside_out = to_polygon_soup(shapes::cube());
+    for (std::uint32_t f = 0; f < inside_out.n_faces(); ++f) {
+        std::reverse(inside_out.indices.begin() + inside_out.face_offsets[f],
+                     inside_out.indices.begin() + inside_out.face_offsets[f + 1]);
+    }
+    EXPECT_DOUBLE_EQ(signed_volume(build_mesh(inside_out)), -8.0);
+    EXPECT_EQ(signed_volume(Mesh()), 0.0);
+}
+
+TEST(Normals, ClosedAndOutwardNeedsEveryPartOutward) {
+    EXPECT_TRUE(is_closed_and_outward(shapes::cube()));
+    EXPECT_TRUE(is_closed_and_outward(shapes::torus(12, 8)));
+    EXPECT_FALSE(is_closed_and_outward(shapes::grid(3, 2)));  // open
+    EXPECT_TRUE(is_closed_and_outward(Mesh()));
+
+    // Two cubes side by side; then the same with the small one inside out. Its volume is
+    // smaller than the big one's, so the whole mesh's signed volume stays positive: only the
+    // per-part test sees it.
+    PolygonSoup soup = to_polygon_soup(shapes::cube());
+    const PolygonSoup small = to_polygon_soup(shapes::cube());
+    const auto base = static_cast<std::uint32_t>(soup.positions.size());
+    for (const Vec3& p : small.positions) {
+        soup.positions.push_back(0.25 * p + Vec3(5, 0, 0));
+    }
+    PolygonSoup flipped = soup;
+    for (std::uint32_t f = 0; f < small.n_faces(); ++f) {
+        std::vector<std::uint32_t> face(small.indices.begin() + small.face_offsets[f],
+                                        small.indices.begin() + small.face_offsets[f + 1]);
+        for (std::uint32_t& i : face) {
+            i += base;
+        }
+        soup.add_face_range(face);
+        std::reverse(face.begin(), face.end());
+        flipped.add_face_range(face);
+    }
+    EXPECT_TRUE(is_closed_and_outward(build_mesh(soup)));
+    const Mesh with_inside_out = build_mesh(flipped);
+    EXPECT_GT(signed_volume(with_inside_out), 0.0);
+    EXPECT_FALSE(is_closed_and_outward(with_inside_out));
+}
+
+TEST(Normals, SignedVolumeFarFromOriginKeepsPrecision) {
+    // Taken about a vertex of the mesh, not the origin: a unit cube 1e9 away still has
+    // volume 1 to many digits (about the origin, the terms of size 1e18 would cancel).
+    Mesh mesh = shapes::cube();
+    for (Vertex v : mesh.vertices()) {
+        mesh.position(v) = 0.5 * mesh.position(v) + Vec3(1e9, -2e9, 3e9);
+    }
+    EXPECT_NEAR(signed_volume(mesh), 1.0, 1e-6);
+}
+
 }  // namespace
 }  // namespace meshedit

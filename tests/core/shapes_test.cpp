@@ -18,21 +18,6 @@
 namespace meshedit {
 namespace {
 
-// Signed volume enclosed by the faces (fan-triangulated), positive for outward orientation.
-double signed_volume(const Mesh& mesh) {
-    double six_v = 0.0;
-    for (Face f : mesh.faces()) {
-        std::vector<Vec3> p;
-        for (Vertex v : mesh.vertices(f)) {
-            p.push_back(mesh.position(v));
-        }
-        for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-            six_v += dot(p[0], cross(p[i], p[i + 1]));
-        }
-    }
-    return six_v / 6.0;
-}
-
 Vec3 face_centroid(const Mesh& mesh, Face f) {
     Vec3 c;
     double n = 0.0;

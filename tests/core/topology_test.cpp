@@ -1,6 +1,7 @@
 // Global counts: Euler characteristic, boundary loops, components, genus.
 #include <gtest/gtest.h>
 
+#include "meshedit/core/build.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/topology.h"
 #include "support/fixtures.h"
@@ -51,6 +52,19 @@ TEST(Topology, BowtieAfterRepairHasTwoComponents) {
     EXPECT_EQ(count_components(mesh), 2u);
     EXPECT_EQ(count_boundary_loops(mesh), 2u);
     EXPECT_EQ(compute_stats(mesh).genus, 0);
+}
+
+TEST(Topology, ClosedMeansNoBoundaryHalfedge) {
+    EXPECT_TRUE(is_closed(shapes::cube()));
+    EXPECT_TRUE(is_closed(shapes::torus(8, 5)));
+    EXPECT_FALSE(is_closed(test::two_triangles()));
+    EXPECT_FALSE(is_closed(shapes::cylinder(6, 2)));
+    EXPECT_TRUE(is_closed(Mesh()));
+    // A cube without its last face has a hole.
+    PolygonSoup open_box = to_polygon_soup(shapes::cube());
+    open_box.indices.resize(open_box.face_offsets[open_box.n_faces() - 1]);
+    open_box.face_offsets.pop_back();
+    EXPECT_FALSE(is_closed(build_mesh(open_box)));
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Face and vertex normals.
+/// Face and vertex normals, and the signed volume they enclose.
 
 #include <vector>
 
@@ -28,6 +28,17 @@ void compute_face_normals(const Mesh& mesh, std::vector<Vec3>& out);
 void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out);
 /// The same with at most `max_threads` threads (0: no limit beyond the hardware's).
 void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out, unsigned max_threads);
+
+/// Signed volume enclosed by the faces (each polygon fanned from its first corner): positive
+/// when a closed mesh's faces point outwards, negative when it is inside out. Meaningful for
+/// closed meshes only; taken about the first live vertex, so far-off meshes keep precision.
+double signed_volume(const Mesh& mesh);
+
+/// True when the mesh is closed (no boundary halfedge) and every connected component encloses
+/// a positive signed volume, i.e. every part's faces point outwards. Then, seen from outside
+/// every part, only front faces can be visible (unless a surface intersects itself), which
+/// lets a renderer cull back faces. One inside-out part makes it false.
+bool is_closed_and_outward(const Mesh& mesh);
 
 /// Convenience forms returning a new vector.
 std::vector<Vec3> face_normals(const Mesh& mesh);

@@ -1,8 +1,11 @@
 #pragma once
 /// \file
 /// Global counts: boundary loops, connected components, Euler characteristic, genus.
+/// Closedness.
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "meshedit/core/mesh.h"
 
@@ -20,7 +23,13 @@ struct MeshStats {
 };
 
 std::size_t count_boundary_loops(const Mesh& mesh);
+/// True if no live halfedge is a boundary halfedge (every edge has two faces). An empty mesh
+/// is closed; a mesh with isolated vertices and no faces too.
+bool is_closed(const Mesh& mesh);
 std::size_t count_components(const Mesh& mesh);
+/// Per vertex index, the smallest vertex index of its connected component: equal labels mean
+/// one component. Deleted vertices label themselves.
+std::vector<std::uint32_t> component_roots(const Mesh& mesh);
 long euler_characteristic(const Mesh& mesh);
 MeshStats compute_stats(const Mesh& mesh);
 
