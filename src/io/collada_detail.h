@@ -5,6 +5,7 @@
 
 #include <pugixml.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -24,6 +25,9 @@ public:
     /// Reads, decodes (UTF-8 with or without BOM, UTF-16 LE/BE) and parses `path`.
     /// \throws IoError for a missing, empty, binary or malformed file.
     explicit Document(const std::string& path);
+    // pugixml's strings point into text_.
+    Document(const Document&) = delete;
+    Document& operator=(const Document&) = delete;
 
     const pugi::xml_node root() const { return doc_.document_element(); }
     const std::string& file() const { return file_; }
@@ -42,7 +46,9 @@ private:
     std::size_t line_of(std::ptrdiff_t offset) const;
 
     std::string file_;
-    std::string text_;  // UTF-8, BOM removed; pugixml offsets index into it
+    std::string text_;                   // UTF-8, BOM removed; pugixml offsets index into it
+    bool in_place_ = false;              // pugixml parsed (and changed) text_ in place
+    std::vector<std::size_t> newlines_;  // offsets of text_'s newlines, when in_place_
     pugi::xml_document doc_;
     std::unordered_map<std::string_view, pugi::xml_node> ids_;
 };
@@ -55,6 +61,20 @@ std::vector<std::uint32_t> parse_indices(const Document& doc, pugi::xml_node nod
 /// A non-negative integer attribute, `fallback` when absent. \throws IoError if malformed.
 std::uint64_t count_attribute(const Document& doc, pugi::xml_node node, const char* name,
                               std::uint64_t fallback);
+
+/// A hint to Linux to back a big buffer that is about to be written for the first time with
+/// transparent huge pages: one page fault per 2 MB instead of per 4 KB. Page faults are a
+/// large part of loading a big file. Does nothing for small buffers or elsewhere.
+void advise_huge_pages(const void* data, std::size_t bytes);
+
+/// Makes room for `extra` more elements, growing geometrically so that repeated calls stay
+/// linear.
+template <class T>
+void reserve_more(std::vector<T>& v, std::size_t extra) {
+    if (v.capacity() - v.size() < extra) {
+        v.reserve(std::max(v.size() + extra, 2 * v.capacity()));
+    }
+}
 
 /// One `<geometry>` as its file holds it (local coordinates, local position indices).
 struct GeometryData {

@@ -98,7 +98,10 @@ std::vector<Vec3> read_vec3_source(const Document& doc, pugi::xml_node source, c
                              " from offset " + str(a.offset) + ", past the end of its " +
                              "<float_array> (" + str(size) + " numbers)");
     }
-    std::vector<Vec3> tuples(a.count);
+    std::vector<Vec3> tuples;
+    tuples.reserve(a.count);
+    advise_huge_pages(tuples.data(), a.count * sizeof(Vec3));
+    tuples.resize(a.count);
     for (std::uint64_t i = 0; i < a.count; ++i) {
         const std::uint64_t base = a.offset + i * a.stride;
         tuples[i] = {values[base + a.components[0]], values[base + a.components[1]],
@@ -156,8 +159,10 @@ private:
     void read_strips(pugi::xml_node primitive, const Inputs& inputs, bool fan);
     std::vector<std::uint32_t> read_p(pugi::xml_node primitive, pugi::xml_node p,
                                       std::uint64_t count);
-    void add_polygons(pugi::xml_node p, const std::vector<std::uint32_t>& indices,
-                      const Inputs& inputs, const std::vector<std::uint32_t>& sizes);
+    // `sizes` holds the corner count of each of `n_polygons` polygons; null means triangles.
+    void add_polygons(pugi::xml_node p, std::vector<std::uint32_t>&& indices, const Inputs& inputs,
+                      std::size_t n_polygons, const std::uint32_t* sizes);
+    void track_normals();
     void read_creases(pugi::xml_node mesh);
     const std::vector<Vec3>& vec3_source(pugi::xml_node source, const char* what);
 
@@ -200,11 +205,11 @@ GeometryData GeometryReader::read() {
     }
     const pugi::xml_node position_source =
         doc_.resolve(position_input.attribute("source").value(), position_input);
-    g_.positions = vec3_source(position_source, "positions");
+    // Not through the cache: the positions are moved into the result, never copied. A file
+    // that also uses this source for normals parses it twice.
+    g_.positions = read_vec3_source(doc_, position_source, "positions");
     check_finite_positions(doc_, position_source, g_.positions);
 
-    normal_seen_.assign(g_.positions.size(), 0);
-    corner_normals_.assign(g_.positions.size(), Vec3{});
     if (pugi::xml_node n = vertices_.find_child_by_attribute("input", "semantic", "NORMAL")) {
         const auto& normals =
             vec3_source(doc_.resolve(n.attribute("source").value(), n), "normals");
@@ -247,6 +252,7 @@ GeometryData GeometryReader::read() {
         normals_ok_ = vertex_normals_;
     }
     if (normals_ok_ && !g_.positions.empty()) {
+        track_normals();  // no corner had a normal input: the normals stay zero
         for (const Vec3& n : corner_normals_) {
             normals_ok_ = normals_ok_ && is_finite(n);
         }
@@ -316,7 +322,7 @@ void GeometryReader::read_triangles(pugi::xml_node primitive, const Inputs& inpu
         doc_.fail(primitive, "missing count attribute");
     }
     const std::uint64_t count = count_attribute(doc_, primitive, "count", 0);
-    const std::vector<std::uint32_t> indices = read_p(primitive, p, count);
+    std::vector<std::uint32_t> indices = read_p(primitive, p, count);
     const std::uint64_t per_triangle = 3 * inputs.stride;
     if (indices.size() / per_triangle != count || indices.size() % per_triangle != 0) {
         doc_.fail(p, "holds " + str(indices.size()) + " indices, but count=\"" + str(count) +
@@ -325,7 +331,7 @@ void GeometryReader::read_triangles(pugi::xml_node primitive, const Inputs& inpu
                          (count <= indices.size() ? str(count * per_triangle)
                                                   : "more than the element holds"));
     }
-    add_polygons(p, indices, inputs, std::vector<std::uint32_t>(count, 3));
+    add_polygons(p, std::move(indices), inputs, count, nullptr);
 }
 
 void GeometryReader::read_polylist(pugi::xml_node primitive, const Inputs& inputs) {
@@ -345,13 +351,13 @@ void GeometryReader::read_polylist(pugi::xml_node primitive, const Inputs& input
     for (std::uint32_t n : vcount) {
         corners += n;
     }
-    const std::vector<std::uint32_t> indices = read_p(primitive, p, corners);
+    std::vector<std::uint32_t> indices = read_p(primitive, p, corners);
     if (indices.size() / inputs.stride != corners || indices.size() % inputs.stride != 0) {
         doc_.fail(p, "holds " + str(indices.size()) + " indices, but <vcount> lists " +
                          str(corners) + " corners with " + str(inputs.stride) +
                          " index(es) each (" + str(corners * inputs.stride) + ")");
     }
-    add_polygons(p, indices, inputs, vcount);
+    add_polygons(p, std::move(indices), inputs, vcount.size(), vcount.data());
 }
 
 void GeometryReader::read_polygons(pugi::xml_node primitive, const Inputs& inputs) {
@@ -360,13 +366,13 @@ void GeometryReader::read_polygons(pugi::xml_node primitive, const Inputs& input
     }
     std::uint64_t n_polygons = 0;
     for (pugi::xml_node p : primitive.children("p")) {
-        const std::vector<std::uint32_t> indices = parse_indices(doc_, p);
+        std::vector<std::uint32_t> indices = parse_indices(doc_, p);
         if (indices.size() % inputs.stride != 0) {
             doc_.fail(p, "holds " + str(indices.size()) + " indices, not a multiple of the " +
                              str(inputs.stride) + " indices per corner");
         }
         const auto corners = static_cast<std::uint32_t>(indices.size() / inputs.stride);
-        add_polygons(p, indices, inputs, {corners});
+        add_polygons(p, std::move(indices), inputs, 1, &corners);
         ++n_polygons;
     }
     if (primitive.attribute("count") &&
@@ -411,35 +417,61 @@ void GeometryReader::read_strips(pugi::xml_node primitive, const Inputs& inputs,
             }
             ++n_triangles;
         }
-        add_polygons(p, corners, inputs, std::vector<std::uint32_t>(n_triangles, 3));
+        add_polygons(p, std::move(corners), inputs, n_triangles, nullptr);
     }
 }
 
-void GeometryReader::add_polygons(pugi::xml_node p, const std::vector<std::uint32_t>& indices,
-                                  const Inputs& inputs, const std::vector<std::uint32_t>& sizes) {
-    const Input* normal_input = inputs.normal();
+// The per-position normal agreement buffers, allocated only once some corner has a normal.
+void GeometryReader::track_normals() {
+    if (normal_seen_.empty() && !g_.positions.empty()) {
+        normal_seen_.assign(g_.positions.size(), 0);
+        if (!vertex_normals_) {
+            corner_normals_.assign(g_.positions.size(), Vec3{});
+        }
+    }
+}
+
+void GeometryReader::add_polygons(pugi::xml_node p, std::vector<std::uint32_t>&& indices,
+                                  const Inputs& inputs, std::size_t n_polygons,
+                                  const std::uint32_t* sizes) {
+    const Input* normal_input = vertex_normals_ ? nullptr : inputs.normal();
+    if (normal_input) {
+        track_normals();
+    } else if (!vertex_normals_ && !indices.empty()) {  // some corner has no normal
+        normals_ok_ = false;
+    }
+    // The callers checked that `indices` holds exactly one tuple per corner. The first block
+    // packs its position indices into its own array (tuple t is read before slot t <= t *
+    // stride is written), which then becomes the soup's: no second array of that size.
+    const std::uint64_t stride = inputs.stride;
+    const std::size_t n_tuples = indices.size() / stride;
+    const bool in_place = g_.indices.empty();
+    const std::size_t base = g_.indices.size();
+    if (!in_place) {
+        g_.indices.resize(base + n_tuples);
+    }
+    std::uint32_t* out = in_place ? indices.data() : g_.indices.data() + base;
+    reserve_more(g_.face_offsets, n_polygons);
     std::uint64_t tuple = 0;
-    for (std::uint32_t n : sizes) {
+    for (std::size_t f = 0; f < n_polygons; ++f) {
+        const std::uint32_t n = sizes ? sizes[f] : 3;
         for (std::uint32_t k = 0; k < n; ++k, ++tuple) {
-            const std::uint64_t base = tuple * inputs.stride;
+            const std::uint32_t* corner = indices.data() + tuple * stride;
             for (const Input& input : inputs.all) {
-                const std::uint32_t index = indices[base + input.offset];
+                const std::uint32_t index = corner[input.offset];
                 if (index >= input.limit) {
                     doc_.fail(p, std::string(input.semantic) + " index " + str(index) +
                                      " out of range (" + str(input.limit) +
                                      (input.semantic == "VERTEX" ? " positions)" : " entries)"));
                 }
             }
-            const std::uint32_t position = indices[base + inputs.vertex_offset];
-            g_.indices.push_back(position);
-            if (vertex_normals_) {
-                continue;
-            }
+            const std::uint32_t position = corner[inputs.vertex_offset];
+            const std::uint32_t normal_index = normal_input ? corner[normal_input->offset] : 0;
+            out[tuple] = position;
             if (!normal_input) {
-                normals_ok_ = false;
                 continue;
             }
-            const Vec3& normal = (*normal_input->vec)[indices[base + normal_input->offset]];
+            const Vec3& normal = (*normal_input->vec)[normal_index];
             // Exact comparison: shared normals repeat the same text, so they parse equal.
             if (normal_seen_[position] == 0) {
                 normal_seen_[position] = 1;
@@ -448,7 +480,11 @@ void GeometryReader::add_polygons(pugi::xml_node p, const std::vector<std::uint3
                 normals_ok_ = false;
             }
         }
-        g_.face_offsets.push_back(static_cast<std::uint32_t>(g_.indices.size()));
+        g_.face_offsets.push_back(static_cast<std::uint32_t>(base + tuple));
+    }
+    if (in_place) {
+        indices.resize(n_tuples);
+        g_.indices = std::move(indices);
     }
 }
 

@@ -3,31 +3,60 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <memory>
+#include <system_error>
+#include <thread>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "collada_detail.h"
 
 namespace meshedit::collada {
 namespace {
 
+// One read into a buffer sized from the file (istreambuf_iterator copies byte by byte);
+// a file that reports no size (a pipe, /proc) is read in growing steps instead.
 std::string read_bytes(const std::string& file) {
     std::error_code ec;
     if (std::filesystem::is_directory(file, ec)) {
         throw IoError(file, "", "is a directory, not a file");
     }
-    std::ifstream in(file, std::ios::binary);
+    struct Close {
+        void operator()(std::FILE* f) const { std::fclose(f); }
+    };
+    const std::unique_ptr<std::FILE, Close> in(std::fopen(file.c_str(), "rb"));
     if (!in) {
         throw IoError(file, "", std::string("cannot open file: ") + std::strerror(errno));
     }
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) {
+    // One spare byte, so that a file read whole meets its end without growing the buffer.
+    const auto size = std::filesystem::file_size(file, ec);
+    std::string bytes;
+    bytes.reserve(ec ? 0 : static_cast<std::size_t>(size) + 1);
+    advise_huge_pages(bytes.data(), bytes.capacity());
+    bytes.resize(bytes.capacity());
+    std::size_t used = 0;
+    for (;;) {
+        if (used == bytes.size()) {
+            bytes.resize(std::max<std::size_t>(2 * bytes.size(), 1 << 16));
+        }
+        const std::size_t got = std::fread(bytes.data() + used, 1, bytes.size() - used, in.get());
+        used += got;
+        if (got == 0) {
+            break;
+        }
+    }
+    if (std::ferror(in.get())) {
         throw IoError(file, "", "read error");
     }
+    bytes.resize(used);
     return bytes;
 }
 
@@ -104,8 +133,39 @@ std::string decode(const std::string& file, std::string bytes) {
     return bytes;
 }
 
+// XML whitespace as one compare and one bit test (number lists are scanned byte by byte).
 bool is_space(char c) {
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+    constexpr std::uint64_t kSpaces =
+        (1ull << ' ') | (1ull << '\t') | (1ull << '\n') | (1ull << '\r');
+    const auto u = static_cast<unsigned char>(c);
+    return u <= ' ' && ((kSpaces >> u) & 1u) != 0;
+}
+
+bool is_control(unsigned char u) {
+    return u < 0x20 && u != ' ' && u != '\t' && u != '\n' && u != '\r';
+}
+
+// The offset of the first control character other than whitespace, or npos. Blocks without
+// an early exit let the compiler vectorise the test; only a bad block is searched bytewise.
+std::size_t first_control_byte(std::string_view text) {
+    constexpr std::size_t kBlock = 64;
+    std::size_t i = 0;
+    for (; i + kBlock <= text.size(); i += kBlock) {
+        unsigned char any = 0;  // bitwise, not ||, so that the loop vectorises
+        for (std::size_t k = 0; k < kBlock; ++k) {
+            const auto u = static_cast<unsigned char>(text[i + k]);
+            any |= static_cast<unsigned char>((u < 0x20) & (u != '\t') & (u != '\n') & (u != '\r'));
+        }
+        if (any != 0) {
+            break;
+        }
+    }
+    for (; i < text.size(); ++i) {
+        if (is_control(static_cast<unsigned char>(text[i]))) {
+            return i;
+        }
+    }
+    return std::string_view::npos;
 }
 
 std::string lowercase_first(std::string s) {
@@ -133,27 +193,199 @@ std::string element_label(pugi::xml_node node) {
     return label + ">";
 }
 
-// Calls `token(text, index)` for each whitespace-separated token of `text`.
-template <class F>
-void for_each_token(const char* text, F&& token) {
-    std::size_t index = 0;
-    const char* p = text;
-    while (*p != '\0') {
-        while (is_space(*p)) {
+enum class TokenError : std::uint8_t { none, bad, out_of_range };
+
+// A stretch of a number list that one thread parses, stopping at its first bad token.
+template <class T>
+struct Piece {
+    const char* begin = nullptr;
+    const char* end = nullptr;
+    std::vector<T> values;
+    TokenError error = TokenError::none;
+    std::string_view token;  // the bad token
+};
+
+// `scan(p, end, value)` parses the token starting at p (not whitespace) and moves p past
+// what it read, which is the whole token unless it reports an error.
+template <class T, class Scan>
+void parse_piece(Piece<T>& piece, const Scan& scan) {
+    const char* p = piece.begin;
+    const char* const end = piece.end;
+    for (;;) {
+        while (p != end && is_space(*p)) {
             ++p;
         }
-        if (*p == '\0') {
-            break;
+        if (p == end) {
+            return;
         }
-        const char* begin = p;
-        while (*p != '\0' && !is_space(*p)) {
-            ++p;
+        const char* token = p;
+        T value{};
+        const TokenError error = scan(p, end, value);
+        if (error != TokenError::none) {
+            while (p != end && !is_space(*p)) {
+                ++p;
+            }
+            piece.error = error;
+            piece.token = std::string_view(token, static_cast<std::size_t>(p - token));
+            return;
         }
-        token(std::string_view(begin, static_cast<std::size_t>(p - begin)), index++);
+        piece.values.push_back(value);
     }
 }
 
+// Big arrays (a million-triangle mesh has tens of MB of numbers) are cut at whitespace into
+// one piece per core and parsed in parallel; the pieces are joined in order, so the values and
+// the first bad token reported do not depend on the number of threads.
+constexpr std::size_t kParallelBytes = std::size_t{1} << 20;
+
+// `problem(index, token, error)` words the error for the first bad token.
+template <class T, class Scan, class Problem>
+std::vector<T> parse_list(const Document& doc, pugi::xml_node node, std::size_t bytes_per_value,
+                          const Scan& scan, const Problem& problem) {
+    const char* text = node.child_value();
+    const std::size_t n = std::strlen(text);
+    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t n_pieces = n < kParallelBytes ? 1 : std::min<std::size_t>(hardware, 8);
+    std::vector<Piece<T>> pieces(n_pieces);
+    const char* cut = text;
+    for (std::size_t k = 0; k < n_pieces; ++k) {
+        pieces[k].begin = cut;
+        cut = k + 1 == n_pieces ? text + n : std::max(cut, text + n * (k + 1) / n_pieces);
+        while (*cut != '\0' && !is_space(*cut)) {
+            ++cut;
+        }
+        pieces[k].end = cut;
+        // The first piece reserves for all, so that the others append without reallocating.
+        const std::size_t span = k == 0 ? n : static_cast<std::size_t>(cut - pieces[k].begin);
+        pieces[k].values.reserve(span / bytes_per_value + 1);
+        advise_huge_pages(pieces[k].values.data(), pieces[k].values.capacity() * sizeof(T));
+    }
+    std::vector<std::exception_ptr> errors(n_pieces);  // bad_alloc must not end a thread
+    const auto run = [&](std::size_t k) {
+        try {
+            parse_piece(pieces[k], scan);
+        } catch (...) {
+            errors[k] = std::current_exception();
+        }
+    };
+    {
+        std::vector<std::jthread> workers;
+        workers.reserve(n_pieces);
+        for (std::size_t k = 1; k < n_pieces; ++k) {
+            try {
+                workers.emplace_back(run, k);
+            } catch (const std::system_error&) {
+                run(k);  // no thread to be had: parse it here
+            }
+        }
+        run(0);
+    }  // the workers join here
+    for (const std::exception_ptr& error : errors) {
+        if (error) {
+            std::rethrow_exception(error);
+        }
+    }
+    std::vector<T> values = std::move(pieces[0].values);
+    for (std::size_t k = 0; k < n_pieces; ++k) {
+        if (k > 0) {
+            values.insert(values.end(), pieces[k].values.begin(), pieces[k].values.end());
+        }
+        if (pieces[k].error != TokenError::none) {
+            doc.fail(node, problem(values.size(), pieces[k].token, pieces[k].error));
+        }
+    }
+    return values;
+}
+
+// Exact fast path for plain decimals such as "-1.3999684": with at most 15 digits and at
+// most 22 after the point, the digits and the power of ten are exact doubles, so one
+// division rounds correctly and gives the same bits as from_chars. Returns false, with p
+// unchanged, for anything else.
+bool scan_plain_decimal(const char*& p, const char* end, double& out) {
+    static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    const char* q = p;
+    const bool negative = q != end && *q == '-';
+    q += negative ? 1 : 0;
+    std::uint64_t mantissa = 0;
+    const char* digits = q;
+    for (; q != end && static_cast<unsigned>(*q - '0') <= 9; ++q) {
+        mantissa = 10 * mantissa + static_cast<unsigned>(*q - '0');
+    }
+    const auto n_int = q - digits;
+    std::ptrdiff_t n_frac = 0;
+    if (q != end && *q == '.') {
+        const char* frac = ++q;
+        for (; q != end && static_cast<unsigned>(*q - '0') <= 9; ++q) {
+            mantissa = 10 * mantissa + static_cast<unsigned>(*q - '0');
+        }
+        n_frac = q - frac;
+        if (n_frac == 0) {
+            return false;
+        }
+    }
+    // mantissa may have wrapped for long digit runs; those fail the digit count anyway.
+    if (n_int == 0 || n_int + n_frac > 15 || (q != end && !is_space(*q))) {
+        return false;
+    }
+    const double value = static_cast<double>(mantissa) / kPow10[n_frac];
+    out = negative ? -value : value;
+    p = q;
+    return true;
+}
+
+TokenError scan_double(const char*& p, const char* end, double& value) {
+    if (scan_plain_decimal(p, end, value)) {
+        return TokenError::none;
+    }
+    const char* begin = p;
+    while (p != end && !is_space(*p)) {
+        ++p;
+    }
+    // from_chars rejects the leading '+' that xs:double allows.
+    if (p - begin > 1 && *begin == '+') {
+        ++begin;
+    }
+    const auto [stop, ec] = std::from_chars(begin, p, value);
+    if (ec == std::errc::result_out_of_range) {
+        return TokenError::out_of_range;
+    }
+    return ec != std::errc() || stop != p ? TokenError::bad : TokenError::none;
+}
+
+TokenError scan_index(const char*& p, const char* end, std::uint32_t& value) {
+    constexpr std::uint64_t kMax = 0xFFFFFFFEull;
+    std::uint64_t v = 0;
+    const char* begin = p;
+    for (; p != end && static_cast<unsigned>(*p - '0') <= 9; ++p) {
+        if (v <= kMax) {  // beyond it the value is too large anyway; do not overflow
+            v = 10 * v + static_cast<unsigned>(*p - '0');
+        }
+    }
+    if (p == begin || v > kMax || (p != end && !is_space(*p))) {
+        return TokenError::bad;
+    }
+    value = static_cast<std::uint32_t>(v);
+    return TokenError::none;
+}
+
 }  // namespace
+
+void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+    if (bytes < 2 * kHuge) {
+        return;
+    }
+    // Only the whole 2 MB pages inside the buffer; the hint may be refused, which is fine.
+    const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
+    const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kHuge - 1);
+    if (begin < end) {
+        ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+    }
+#endif
+}
 
 Document::Document(const std::string& path) : file_(path) {
     text_ = decode(file_, read_bytes(file_));
@@ -161,27 +393,46 @@ Document::Document(const std::string& path) : file_(path) {
         throw IoError(file_, "", "empty file");
     }
     // XML text never holds control characters; finding one means a binary file.
-    const auto bad = std::find_if(text_.begin(), text_.end(), [](char c) {
-        const auto u = static_cast<unsigned char>(c);
-        return u < 0x20 && !is_space(c);
-    });
-    if (bad != text_.end()) {
+    const std::size_t offset = first_control_byte(text_);
+    if (offset != std::string::npos) {
         char byte[8];
-        std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(*bad));
-        const auto offset = bad - text_.begin();
-        throw IoError(file_, "line " + std::to_string(line_of(offset)),
+        std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text_[offset]));
+        throw IoError(file_, "line " + std::to_string(line_of(static_cast<std::ptrdiff_t>(offset))),
                       std::string("binary data (byte ") + byte + " at offset " +
                           std::to_string(offset) + "), not a COLLADA text file");
     }
 
+    // Where the text ends, before an in-place parse may overwrite the last bytes.
+    std::size_t end = text_.size();
+    while (end > 0 && is_space(text_[end - 1])) {
+        --end;
+    }
+    // pugixml parses in place rather than from a second copy of a file that is mostly number
+    // text; it overwrites some bytes (newlines among them), so the line numbers of error
+    // messages come from newline offsets recorded first. A file with very many lines would
+    // make that table bigger than the copy it saves: it is parsed from a copy instead.
+    constexpr std::size_t kMinBytesPerLine = 8;
+    in_place_ = true;
+    for (std::size_t i = text_.find('\n'); i != std::string::npos; i = text_.find('\n', i + 1)) {
+        if (newlines_.size() >= text_.size() / kMinBytesPerLine) {
+            in_place_ = false;
+            newlines_ = {};
+            break;
+        }
+        newlines_.push_back(i);
+    }
+    if (in_place_) {
+        // load_buffer's copy ends in a NUL that pugixml parses as the last character; the
+        // same NUL here keeps the errors at the end of a truncated file the same.
+        text_.push_back('\0');
+    }
     const pugi::xml_parse_result result =
-        doc_.load_buffer(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
+        in_place_ ? doc_.load_buffer_inplace(text_.data(), text_.size(), pugi::parse_default,
+                                             pugi::encoding_utf8)
+                  : doc_.load_buffer(text_.data(), text_.size(), pugi::parse_default,
+                                     pugi::encoding_utf8);
     if (!result) {
         const std::string line = "line " + std::to_string(line_of(result.offset));
-        std::size_t end = text_.size();
-        while (end > 0 && is_space(text_[end - 1])) {
-            --end;
-        }
         if (result.status == pugi::status_no_document_element) {
             throw IoError(file_, "", "not an XML file (no root element)");
         }
@@ -249,6 +500,11 @@ pugi::xml_node Document::resolve(std::string_view url, pugi::xml_node at) const 
 std::size_t Document::line_of(std::ptrdiff_t offset) const {
     const auto end = static_cast<std::size_t>(
         std::clamp<std::ptrdiff_t>(offset, 0, static_cast<std::ptrdiff_t>(text_.size())));
+    if (in_place_) {
+        return 1 +
+               static_cast<std::size_t>(std::lower_bound(newlines_.begin(), newlines_.end(), end) -
+                                        newlines_.begin());
+    }
     return 1 + static_cast<std::size_t>(std::count(text_.begin(), text_.begin() + end, '\n'));
 }
 
@@ -285,44 +541,23 @@ void Document::fail(pugi::xml_node node, const std::string& problem) const {
 }
 
 std::vector<double> parse_doubles(const Document& doc, pugi::xml_node node) {
-    const char* text = node.child_value();
-    std::vector<double> values;
-    values.reserve(std::strlen(text) / 8 + 1);
-    for_each_token(text, [&](std::string_view token, std::size_t index) {
-        std::string_view digits = token;
-        // from_chars rejects the leading '+' that xs:double allows.
-        if (digits.size() > 1 && digits.front() == '+') {
-            digits.remove_prefix(1);
-        }
-        double value = 0.0;
-        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-        if (ec == std::errc::result_out_of_range) {
-            doc.fail(node, "number " + std::to_string(index) + " " + quoted_token(token) +
-                               " is out of range");
-        }
-        if (ec != std::errc() || end != digits.data() + digits.size()) {
-            doc.fail(node, "number " + std::to_string(index) + " " + quoted_token(token) +
-                               " is not a number");
-        }
-        values.push_back(value);
-    });
-    return values;
+    return parse_list<double>(
+        doc, node, 8,
+        [](const char*& p, const char* end, double& v) { return scan_double(p, end, v); },
+        [](std::size_t index, std::string_view token, TokenError error) {
+            return "number " + std::to_string(index) + " " + quoted_token(token) +
+                   (error == TokenError::out_of_range ? " is out of range" : " is not a number");
+        });
 }
 
 std::vector<std::uint32_t> parse_indices(const Document& doc, pugi::xml_node node) {
-    const char* text = node.child_value();
-    std::vector<std::uint32_t> values;
-    values.reserve(std::strlen(text) / 4 + 1);
-    for_each_token(text, [&](std::string_view token, std::size_t index) {
-        std::uint64_t value = 0;
-        const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-        if (ec != std::errc() || end != token.data() + token.size() || value > 0xFFFFFFFEull) {
-            doc.fail(node, "value " + std::to_string(index) + " " + quoted_token(token) +
-                               " is not an index (a non-negative integer below 2^32 - 1)");
-        }
-        values.push_back(static_cast<std::uint32_t>(value));
-    });
-    return values;
+    return parse_list<std::uint32_t>(
+        doc, node, 4,
+        [](const char*& p, const char* end, std::uint32_t& v) { return scan_index(p, end, v); },
+        [](std::size_t index, std::string_view token, TokenError) {
+            return "value " + std::to_string(index) + " " + quoted_token(token) +
+                   " is not an index (a non-negative integer below 2^32 - 1)";
+        });
 }
 
 std::uint64_t count_attribute(const Document& doc, pugi::xml_node node, const char* name,

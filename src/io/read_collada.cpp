@@ -131,7 +131,7 @@ private:
     void visit(pugi::xml_node node, const Mat4& parent, std::size_t depth);
     void visit_children(pugi::xml_node node, const Mat4& transform, std::size_t depth);
     void instance_controller(pugi::xml_node at, const Mat4& transform);
-    void append(const Instance& instance, const collada::GeometryData& g);
+    void append(const Instance& instance, collada::GeometryData& g, bool last_use);
 
     const Document& doc_;
     MeshSoup out_;
@@ -301,7 +301,8 @@ void SceneReader::instance_controller(pugi::xml_node at, const Mat4& transform) 
     out_.notices.push_back("ignored " + doc_.where(at) + ": no base <geometry> found");
 }
 
-void SceneReader::append(const Instance& instance, const collada::GeometryData& g) {
+// `last_use`: no later instance needs `g`, so its arrays may be moved out.
+void SceneReader::append(const Instance& instance, collada::GeometryData& g, bool last_use) {
     const std::size_t base = out_.soup.positions.size();
     if (base + g.positions.size() >= std::numeric_limits<std::uint32_t>::max() ||
         out_.soup.indices.size() + g.indices.size() > kMaxCorners) {
@@ -309,14 +310,28 @@ void SceneReader::append(const Instance& instance, const collada::GeometryData& 
     }
     const Mat4& t = instance.transform;
     const bool identity = t.is_identity();
+    normals_ok_ = normals_ok_ && !g.normals.empty();
+    // The usual single untransformed instance takes the geometry's arrays instead of copying
+    // them (its positions were checked finite when read).
+    if (last_use && identity && base == 0 && out_.soup.face_offsets.size() == 1) {
+        out_.soup.positions = std::move(g.positions);
+        out_.soup.indices = std::move(g.indices);
+        out_.soup.face_offsets = std::move(g.face_offsets);
+        if (normals_ok_) {
+            out_.normals = std::move(g.normals);
+        }
+        out_.creases = g.creases;
+        return;
+    }
+    collada::reserve_more(out_.soup.positions, g.positions.size());
     for (const Vec3& p : g.positions) {
         out_.soup.positions.push_back(identity ? p : t.point(p));
         if (!is_finite(out_.soup.positions.back())) {
             doc_.fail(instance.at, "a transformed position is not finite");
         }
     }
-    normals_ok_ = normals_ok_ && !g.normals.empty();
     if (normals_ok_) {
+        collada::reserve_more(out_.normals, g.normals.size());
         for (const Vec3& n : g.normals) {
             out_.normals.push_back(identity ? n : t.normal(n));
         }
@@ -324,6 +339,8 @@ void SceneReader::append(const Instance& instance, const collada::GeometryData& 
     // A mirroring transform turns faces inside out; reversing the corners keeps them outward.
     const bool mirror = t.det3() < 0.0;
     const auto offset = static_cast<std::uint32_t>(base);
+    collada::reserve_more(out_.soup.indices, g.indices.size());
+    collada::reserve_more(out_.soup.face_offsets, g.face_offsets.size() - 1);
     for (std::size_t f = 0; f + 1 < g.face_offsets.size(); ++f) {
         const std::uint32_t begin = g.face_offsets[f];
         const std::uint32_t end = g.face_offsets[f + 1];
@@ -369,6 +386,10 @@ MeshSoup SceneReader::read() {
                                " <skew> transform(s)");
     }
 
+    std::unordered_map<const void*, std::size_t> uses;
+    for (const Instance& instance : instances_) {
+        ++uses[instance.geometry.internal_object()];
+    }
     std::unordered_map<const void*, collada::GeometryData> geometries;
     for (const Instance& instance : instances_) {
         auto it = geometries.find(instance.geometry.internal_object());
@@ -381,7 +402,7 @@ MeshSoup SceneReader::read() {
                 out_.notices.push_back(notice);
             }
         }
-        append(instance, it->second);
+        append(instance, it->second, --uses[instance.geometry.internal_object()] == 0);
     }
     if (!normals_ok_) {
         out_.normals.clear();
