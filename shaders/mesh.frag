@@ -1,6 +1,16 @@
 #version 330 core
 // Shading modes 0-9 (include/meshedit/render/shading.h is the table) and the wireframe.
 // Lights are fixed in view space, so every camera angle is lit the same way.
+//
+// MeshRenderer compiles one variant per mode and wireframe switch (MESHEDIT_MODE,
+// MESHEDIT_WIREFRAME): the compiler then drops every other branch, which on a software
+// rasteriser (llvmpipe) is most of the per-fragment cost.
+#ifndef MESHEDIT_MODE
+#define MESHEDIT_MODE 1
+#endif
+#ifndef MESHEDIT_WIREFRAME
+#define MESHEDIT_WIREFRAME 0
+#endif
 
 in vec3 v_position_view;
 in vec3 v_normal_view;
@@ -9,9 +19,7 @@ in vec3 v_flat_normal_view;
 in vec3 v_barycentric;
 flat in int v_edge_mask;
 
-uniform int u_mode;
 uniform vec3 u_base_color;
-uniform bool u_wireframe;
 uniform float u_wire_width;   // pixels
 uniform vec4 u_wire_color;
 uniform vec2 u_depth_range;   // view-space distance of the nearest and farthest scene point
@@ -75,20 +83,20 @@ void main() {
     }
 
     vec3 color;
-    if (u_mode == 0) {
+    if (MESHEDIT_MODE == 0) {
         color = 0.5 + 0.5 * normalize(v_normal_world);
-    } else if (u_mode == 2) {
+    } else if (MESHEDIT_MODE == 2) {
         vec3 fn = normalize(v_flat_normal_view) * (gl_FrontFacing ? 1.0 : -1.0);
         color = vec3(0.62) * (0.72 + 0.28 * max(dot(fn, kKeyDir), 0.0)) * side;
-    } else if (u_mode == 3) {
+    } else if (MESHEDIT_MODE == 3) {
         color = studio(n, v, u_base_color) * side;
-    } else if (u_mode == 4) {
+    } else if (MESHEDIT_MODE == 4) {
         color = matcap(n) * side;
-    } else if (u_mode == 5) {
+    } else if (MESHEDIT_MODE == 5) {
         float t = clamp((-v_position_view.z - u_depth_range.x) /
                             max(u_depth_range.y - u_depth_range.x, 1e-6), 0.0, 1.0);
         color = vec3(mix(0.92, 0.18, t));
-    } else if (u_mode == 6) {
+    } else if (MESHEDIT_MODE == 6) {
         float up = 0.5 + 0.5 * normalize(v_normal_world).y * (gl_FrontFacing ? 1.0 : -1.0);
         vec3 light = mix(vec3(0.42, 0.36, 0.30), vec3(1.0, 0.98, 0.95), up);
         color = u_base_color * light * side;
@@ -97,7 +105,8 @@ void main() {
         color = blinn_phong(n, v, u_base_color) * side;
     }
 
-    if (u_wireframe) {
+#if MESHEDIT_WIREFRAME
+    {
         // Distance in pixels to each real side (a side's barycentric is 0 on it).
         vec3 d = v_barycentric / max(fwidth(v_barycentric), vec3(1e-7));
         float dist = 1e9;
@@ -112,5 +121,6 @@ void main() {
         coverage *= clamp((height_px - 2.0) / 4.0, 0.0, 1.0);
         color = mix(color, u_wire_color.rgb, coverage * u_wire_color.a);
     }
+#endif
     frag_color = vec4(color, 1.0);
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -25,16 +26,23 @@ glm::mat4 Camera::view() const {
     return glm::lookAt(eye(), target, glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
+// Near and far hug the scene's bounding sphere: depth precision where it matters.
+float Camera::far_plane() const {
+    return orthographic ? distance + 2.0f * scene_radius : distance + 1.5f * scene_radius;
+}
+
+float Camera::near_plane() const {
+    return orthographic ? 0.01f * distance
+                        : std::max(distance - 1.5f * scene_radius, far_plane() * 1e-3f);
+}
+
 glm::mat4 Camera::projection(float aspect) const {
     if (orthographic) {
         const float h = 0.5f * ortho_height;
         const float w = h * aspect;
-        return glm::ortho(-w, w, -h, h, 0.01f * distance, distance + 2.0f * scene_radius);
+        return glm::ortho(-w, w, -h, h, near_plane(), far_plane());
     }
-    // Near and far hug the scene's bounding sphere: depth precision where it matters.
-    const float far_plane = distance + 1.5f * scene_radius;
-    const float near_plane = std::max(distance - 1.5f * scene_radius, far_plane * 1e-3f);
-    return glm::perspective(glm::radians(fov_y_deg), aspect, near_plane, far_plane);
+    return glm::perspective(glm::radians(fov_y_deg), aspect, near_plane(), far_plane());
 }
 
 void Camera::frame_mesh(const Mesh& mesh, float aspect, std::span<const Vec3> extra) {
@@ -102,6 +110,24 @@ void Camera::frame_2d(glm::vec2 min, glm::vec2 max, float aspect, float margin) 
     ortho_height = std::max(size.y, size.x / aspect) * (1.0f + 2.0f * margin);
     distance = 1.0f;
     scene_radius = 0.5f * glm::length(size) + 1.0f;
+}
+
+bool back_faces_hidden(const Camera& camera, bool closed_and_outward, const BoundingBox& bounds) {
+    if (!closed_and_outward || camera.orthographic || bounds.is_empty()) {
+        return false;
+    }
+    // View depth is linear, so over the box it is smallest at a corner. A box wholly beyond
+    // the near plane (1 % margin for float rounding) cannot be cut open by it.
+    const glm::mat4 view = camera.view();
+    float nearest = std::numeric_limits<float>::max();
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 corner(static_cast<float>((i & 1) != 0 ? bounds.max.x : bounds.min.x),
+                               static_cast<float>((i & 2) != 0 ? bounds.max.y : bounds.min.y),
+                               static_cast<float>((i & 4) != 0 ? bounds.max.z : bounds.min.z),
+                               1.0f);
+        nearest = std::min(nearest, -(view * corner).z);
+    }
+    return nearest > 1.01f * camera.near_plane();
 }
 
 }  // namespace meshedit

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -58,7 +59,6 @@ void MeshRenderer::ensure_gl_objects() {
     if (vao_ != 0) {
         return;
     }
-    shader_ = ShaderProgram("mesh.vert", "mesh.frag");
     pick_shader_ = ShaderProgram("pick.vert", "pick.frag");
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &vbo_);
@@ -135,6 +135,11 @@ void MeshRenderer::fill_geometry(const Mesh& mesh) {
     compute_vertex_normals(mesh, vertex_normals_);
     compute_face_normals(mesh, face_normals_);
     vertices_.resize(3 * triangle_count_);
+    bounds_ = {};
+    for (Vertex v : mesh.vertices()) {
+        bounds_.add(mesh.position(v));
+    }
+    closed_and_outward_ = is_closed_and_outward(mesh);
     for (std::size_t t = 0; t < triangle_count_; ++t) {
         const std::uint32_t flat = pack_normal(face_normals_[triangle_faces_[t]]);
         // Mask bit k: the side opposite corner k is a real edge. Side c1->c2 is opposite
@@ -171,29 +176,57 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);  // open meshes show their back side (shaded two-sided)
-    shader_.use();
-    set_camera(shader_, camera, aspect);
-    const int mode = std::clamp(options.shading, 0, 9);
-    shader_.set_int("u_mode", mode);
-    shader_.set_int("u_smooth", options.smooth ? 1 : 0);
-    shader_.set_vec3("u_base_color", options.base_color.data());
-    shader_.set_int("u_wireframe", options.wireframe ? 1 : 0);
-    shader_.set_float("u_wire_width", options.wire_width_px);
-    shader_.set_vec4("u_wire_color", options.wire_color.data());
-    shader_.set_float("u_ambient", options.phong.ambient);
-    shader_.set_float("u_diffuse", options.phong.diffuse);
-    shader_.set_float("u_specular", options.phong.specular);
-    shader_.set_float("u_shininess", options.phong.shininess);
-    shader_.set_vec3("u_light_dir", options.phong.light_dir.data());
-    shader_.set_vec3("u_light_color", options.phong.light_color.data());
+    set_culling(camera);  // open meshes show their back side (shaded two-sided)
+    const ShaderProgram& shader = shaded_program(options.shading, options.wireframe);
+    shader.use();
+    set_camera(shader, camera, aspect);
+    shader.set_int("u_smooth", options.smooth ? 1 : 0);
+    shader.set_vec3("u_base_color", options.base_color.data());
+    shader.set_float("u_wire_width", options.wire_width_px);
+    shader.set_vec4("u_wire_color", options.wire_color.data());
+    shader.set_float("u_ambient", options.phong.ambient);
+    shader.set_float("u_diffuse", options.phong.diffuse);
+    shader.set_float("u_specular", options.phong.specular);
+    shader.set_float("u_shininess", options.phong.shininess);
+    shader.set_vec3("u_light_dir", options.phong.light_dir.data());
+    shader.set_vec3("u_light_color", options.phong.light_color.data());
     // Depth mode: the scene sphere's near and far view distances.
     const float d = glm::length(camera.eye() - camera.target);
-    shader_.set_vec2("u_depth_range", std::max(d - camera.scene_radius, 0.0f),
-                     d + camera.scene_radius);
+    shader.set_vec2("u_depth_range", std::max(d - camera.scene_radius, 0.0f),
+                    d + camera.scene_radius);
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
     glBindVertexArray(0);
+    glDisable(GL_CULL_FACE);
+}
+
+const ShaderProgram& MeshRenderer::shaded_program(int mode, bool wireframe) {
+    mode = std::clamp(mode, 0, static_cast<int>(kShadingModes.size()) - 1);
+    if (mode >= 7) {
+        mode = 1;  // 7-9 alias Phong (shading.h)
+    }
+    ShaderProgram& program = shaded_programs_[static_cast<std::size_t>(2 * mode + wireframe)];
+    if (!program.is_valid()) {
+        const std::string defines = "#define MESHEDIT_MODE " + std::to_string(mode) +
+                                    "\n#define MESHEDIT_WIREFRAME " + (wireframe ? "1" : "0") +
+                                    "\n";
+        program = ShaderProgram("mesh.vert", "mesh.frag", defines);
+    }
+    return program;
+}
+
+bool MeshRenderer::culls_back_faces(const Camera& camera) const {
+    return back_faces_hidden(camera, closed_and_outward_, bounds_);
+}
+
+void MeshRenderer::set_culling(const Camera& camera) const {
+    if (culls_back_faces(camera)) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(GL_CCW);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
 }
 
 void MeshRenderer::draw_bare(const Camera& camera, float aspect) {
@@ -224,7 +257,7 @@ void MeshRenderer::draw_ids(const Camera& camera, float aspect, float vertex_rad
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    set_culling(camera);
     pick_shader_.use();
     set_camera(pick_shader_, camera, aspect);
     pick_shader_.set_float("u_vertex_radius", vertex_radius_px);
@@ -237,6 +270,7 @@ void MeshRenderer::draw_ids(const Camera& camera, float aspect, float vertex_rad
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
     glBindVertexArray(0);
     glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glDisable(GL_CULL_FACE);
 }
 
 ElementRef MeshRenderer::decode_id(const std::uint8_t* rgba) {

@@ -69,8 +69,15 @@ std::string trimmed(std::string s) {
     return out;
 }
 
-GLuint compile(GLenum type, const std::filesystem::path& path) {
-    const std::string source = read_text(path);
+GLuint compile(GLenum type, const std::filesystem::path& path, std::string_view defines) {
+    std::string source = read_text(path);
+    if (!defines.empty()) {
+        // GLSL wants #version first; the defines follow it, then #line keeps the compiler's
+        // line numbers those of the file.
+        const std::size_t eol = source.find('\n');
+        source.insert(eol == std::string::npos ? source.size() : eol + 1,
+                      std::string(defines) + "#line 2\n");
+    }
     const GLuint shader = glCreateShader(type);
     const char* text = source.c_str();
     glShaderSource(shader, 1, &text, nullptr);
@@ -119,14 +126,15 @@ void check_gl(std::string_view what) {
     }
 }
 
-ShaderProgram::ShaderProgram(std::string_view vert_name, std::string_view frag_name) {
+ShaderProgram::ShaderProgram(std::string_view vert_name, std::string_view frag_name,
+                             std::string_view defines) {
     const std::filesystem::path dir = shader_directory();
     const std::filesystem::path vert_path = dir / vert_name;
     const std::filesystem::path frag_path = dir / frag_name;
-    const GLuint vert = compile(GL_VERTEX_SHADER, vert_path);
+    const GLuint vert = compile(GL_VERTEX_SHADER, vert_path, defines);
     GLuint frag = 0;
     try {
-        frag = compile(GL_FRAGMENT_SHADER, frag_path);
+        frag = compile(GL_FRAGMENT_SHADER, frag_path, defines);
     } catch (...) {
         glDeleteShader(vert);
         throw;

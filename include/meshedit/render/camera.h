@@ -44,6 +44,17 @@ public:
     glm::mat4 view() const;
     /// \param aspect width / height of the viewport.
     glm::mat4 projection(float aspect) const;
+    /// View-space distance of the near clipping plane (perspective and orthographic).
+    float near_plane() const;
+    float far_plane() const;
 };
+
+/// True when no back face of a surface can be seen from `camera` (perspective): every part of the
+/// surface is closed with its faces pointing outwards
+/// (`closed_and_outward`, see is_closed_and_outward() in core/normals.h) and its bounding box
+/// `bounds` lies wholly beyond the near plane, which so cannot cut it open. Only a
+/// self-intersecting surface breaks this. MeshRenderer culls back faces then, which halves the
+/// triangles a software rasteriser shades. Orthographic views answer false.
+bool back_faces_hidden(const Camera& camera, bool closed_and_outward, const BoundingBox& bounds);
 
 }  // namespace meshedit

@@ -10,6 +10,7 @@
 /// barycentrics for a wireframe that is crisp at any zoom and hides fan diagonals. A
 /// 1M-triangle mesh is 72 MB of vertex data.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -78,11 +79,18 @@ public:
 
     std::size_t triangle_count() const { return triangle_count_; }
 
+    /// Whether draw() and the ID pass skip back faces for this camera: back_faces_hidden()
+    /// (camera.h) for the uploaded mesh. The bare draw never culls.
+    bool culls_back_faces(const Camera& camera) const;
+
 private:
     void ensure_gl_objects();
     void fill_geometry(const Mesh& mesh);
+    /// The mesh program for a shading mode and wireframe switch, compiled on first use.
+    const ShaderProgram& shaded_program(int mode, bool wireframe);
+    void set_culling(const Camera& camera) const;
 
-    ShaderProgram shader_;
+    std::array<ShaderProgram, 2 * kShadingModes.size()> shaded_programs_;  ///< [2 * mode + wire]
     ShaderProgram pick_shader_;
     ShaderProgram bare_shader_;  ///< loaded on the first draw_bare()
     unsigned vao_ = 0;
@@ -92,6 +100,9 @@ private:
     std::size_t vbo_capacity_ = 0;   ///< bytes allocated in vbo_
     std::size_t pick_capacity_ = 0;  ///< bytes allocated in pick_tbo_buffer_
     std::size_t triangle_count_ = 0;
+    bool closed_and_outward_ = false;  ///< is_closed_and_outward(), set by upload and
+                                       ///< update_geometry
+    BoundingBox bounds_;               ///< of the live vertices (same)
 
     // CPU staging, kept between uploads for their capacity.
     std::vector<MeshGpuVertex> vertices_;

@@ -33,8 +33,11 @@ class ShaderProgram {
 public:
     ShaderProgram() = default;
     /// Loads `<shader dir>/<vert_name>` and `<shader dir>/<frag_name>`, compiles and links.
+    /// `defines` (lines such as "#define MESHEDIT_MODE 1\n") go right after each file's
+    /// `#version` line: one source, specialised variants.
     /// \throws GlError naming the file with the compiler or linker log.
-    ShaderProgram(std::string_view vert_name, std::string_view frag_name);
+    ShaderProgram(std::string_view vert_name, std::string_view frag_name,
+                  std::string_view defines = {});
     ShaderProgram(ShaderProgram&& other) noexcept;
     ShaderProgram& operator=(ShaderProgram&& other) noexcept;
     ShaderProgram(const ShaderProgram&) = delete;

@@ -16,7 +16,7 @@ struct ShadingMode {
     std::string_view description;
 };
 
-/// Modes 0–9. The number is also the `u_mode` value the mesh fragment shader switches on.
+/// Modes 0–9. The number is also MESHEDIT_MODE, the variant of the mesh fragment shader.
 inline constexpr std::array<ShadingMode, 10> kShadingModes{{
     {0, "normals", "world-space normal as colour (0.5 + 0.5 n)"},
     {1, "phong", "Blinn-Phong: key light and highlight, cool fill (smooth or flat)"},
