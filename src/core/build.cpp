@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "meshedit/core/memory.h"
 #include "parallel.h"
 
 namespace meshedit {
@@ -39,9 +40,9 @@ struct SoupHalfedges {
     const std::uint32_t* first = nullptr;
     std::uint32_t n_halfedges = 0;
     std::uint32_t n_faces = 0;
-    std::vector<std::uint32_t> next;
-    std::vector<std::uint32_t> kept_corner;  // storage when faces were dropped
-    std::vector<std::uint32_t> kept_first;
+    memory::Array<std::uint32_t> next;
+    memory::Array<std::uint32_t> kept_corner;  // storage when faces were dropped
+    memory::Array<std::uint32_t> kept_first;
 
     // No prev array: inside a face it is h - 1; a face's first halfedge walks its face once.
     std::uint32_t prev(std::uint32_t h) const {
@@ -138,9 +139,9 @@ constexpr std::size_t kParallelHalfedges = std::size_t{1} << 18;
 constexpr std::size_t kVerticesPerChunk = std::size_t{1} << 14;
 
 // `n_pairs` counts the pairs made; `bucket` is scratch.
-std::vector<std::uint32_t> pair_halfedges(const SoupHalfedges& fh, std::size_t n_vertices,
-                                          std::vector<TwoWords>& bucket, std::uint32_t& n_pairs,
-                                          BuildReport& report) {
+memory::Array<std::uint32_t> pair_halfedges(const SoupHalfedges& fh, std::size_t n_vertices,
+                                            memory::Array<TwoWords>& bucket, std::uint32_t& n_pairs,
+                                            BuildReport& report) {
     const std::uint32_t nh = fh.n_halfedges;
     const std::uint32_t* corner = fh.corner;
     const std::uint32_t* next = fh.next.data();
@@ -152,19 +153,19 @@ std::vector<std::uint32_t> pair_halfedges(const SoupHalfedges& fh, std::size_t n
     // {other endpoint, h}, so that scanning a bucket reads one small contiguous range instead
     // of chasing corner[next[h]] for every candidate; `other` becomes kNone once handled.
     const std::size_t part = (std::size_t{nh} + threads - 1) / threads;
-    std::vector<std::vector<std::uint32_t>> fill(threads);
+    std::vector<memory::Array<std::uint32_t>> fill(threads);
     parallel::for_chunks(nh, part, threads, [&](std::size_t begin, std::size_t end) {
-        std::vector<std::uint32_t>& count = fill[begin / part];
+        memory::Array<std::uint32_t>& count = fill[begin / part];
         count.assign(n_vertices, 0);
         for (std::size_t h = begin; h < end; ++h) {
             ++count[std::min(corner[h], corner[next[h]])];
         }
     });
-    std::vector<std::uint32_t> start(n_vertices + 1);
+    memory::Array<std::uint32_t> start(n_vertices + 1);
     std::uint32_t sum = 0;
     for (std::size_t a = 0; a < n_vertices; ++a) {
         start[a] = sum;
-        for (std::vector<std::uint32_t>& count : fill) {
+        for (memory::Array<std::uint32_t>& count : fill) {
             const std::uint32_t n = count.empty() ? 0 : count[a];
             if (!count.empty()) {
                 count[a] = sum;  // from counts to this part's first slot in bucket a
@@ -175,7 +176,7 @@ std::vector<std::uint32_t> pair_halfedges(const SoupHalfedges& fh, std::size_t n
     start[n_vertices] = sum;
     bucket.resize(nh);
     parallel::for_chunks(nh, part, threads, [&](std::size_t begin, std::size_t end) {
-        std::vector<std::uint32_t>& slot = fill[begin / part];
+        memory::Array<std::uint32_t>& slot = fill[begin / part];
         for (std::size_t h = begin; h < end; ++h) {
             const std::uint32_t u = corner[h];
             const std::uint32_t v = corner[next[h]];
@@ -186,7 +187,7 @@ std::vector<std::uint32_t> pair_halfedges(const SoupHalfedges& fh, std::size_t n
 
     // Buckets are independent: chunks of vertices scan theirs on any thread, and their
     // reports are joined in vertex order.
-    std::vector<std::uint32_t> mate(nh, kNone);
+    memory::Array<std::uint32_t> mate(nh, kNone);
     const std::size_t n_chunks = (n_vertices + kVerticesPerChunk - 1) / kVerticesPerChunk;
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> cut(n_chunks);
     std::vector<std::uint32_t> pairs(n_chunks, 0);
@@ -243,13 +244,13 @@ std::vector<std::uint32_t> pair_halfedges(const SoupHalfedges& fh, std::size_t n
 // the vertex. A corner has at most one link out and one in, so a fan is a path or a cycle and
 // one walk each way labels it. Fans are numbered in order of their smallest corner.
 // Writes slots[h].first; the slots start as kNone.
-void label_fans(const SoupHalfedges& fh, const std::vector<std::uint32_t>& mate,
-                const std::vector<Vec3>& positions, std::vector<TwoWords>& slots,
+void label_fans(const SoupHalfedges& fh, const memory::Array<std::uint32_t>& mate,
+                const std::vector<Vec3>& positions, memory::Array<TwoWords>& slots,
                 std::vector<Vec3>& extra_positions, BuildReport& report) {
     const std::uint32_t nh = fh.n_halfedges;
     const std::size_t nv_in = positions.size();
     auto fan_vertex = [&](std::uint32_t h) -> std::uint32_t& { return slots[h].first; };
-    std::vector<std::uint8_t> used(nv_in, 0);
+    memory::Array<std::uint8_t> used(nv_in, 0);
     for (std::uint32_t h = 0; h < nh; ++h) {
         if (fan_vertex(h) != kNone) {
             continue;
@@ -298,8 +299,8 @@ Mesh build_mesh(const PolygonSoup& soup, BuildReport* report_out) {
     SoupHalfedges fh;
     collect_faces(soup, fh, report);
     std::uint32_t n_pairs = 0;
-    std::vector<TwoWords> slots;
-    const std::vector<std::uint32_t> mate = pair_halfedges(fh, nv_in, slots, n_pairs, report);
+    memory::Array<TwoWords> slots;
+    const memory::Array<std::uint32_t> mate = pair_halfedges(fh, nv_in, slots, n_pairs, report);
     const std::uint32_t nh = fh.n_halfedges;
     const std::uint32_t nf = fh.n_faces;
 
@@ -345,7 +346,7 @@ Mesh build_mesh(const PolygonSoup& soup, BuildReport* report_out) {
     constexpr std::size_t kFacesPerChunk = std::size_t{1} << 14;
     const unsigned threads = parallel::thread_count(nh, kParallelHalfedges);
     std::vector<std::vector<std::uint32_t>> unpaired((nf + kFacesPerChunk - 1) / kFacesPerChunk);
-    std::vector<Halfedge> out_boundary(mesh.vertices_size());
+    memory::Array<Halfedge> out_boundary(mesh.vertices_size());
     parallel::for_chunks(nf, kFacesPerChunk, threads, [&](std::size_t first, std::size_t last) {
         std::vector<std::uint32_t>& chunk_unpaired = unpaired[first / kFacesPerChunk];
         for (std::size_t f = first; f < last; ++f) {
@@ -389,7 +390,7 @@ Mesh build_mesh(const PolygonSoup& soup, BuildReport* report_out) {
 
 PolygonSoup to_polygon_soup(const Mesh& mesh) {
     PolygonSoup soup;
-    soup.positions = mesh.position_vector();
+    soup.positions.assign(mesh.position_vector().begin(), mesh.position_vector().end());
     soup.indices.reserve(3 * mesh.n_faces());
     soup.face_offsets.reserve(mesh.n_faces() + 1);
     for (Face f : mesh.faces()) {

@@ -154,7 +154,7 @@ void Mesh::shrink_to_fit() {
 }
 
 void Mesh::count_deleted() {
-    auto count = [](const std::vector<std::uint8_t>& flags) {
+    auto count = [](const memory::Array<std::uint8_t>& flags) {
         std::size_t n = 0;
         for (std::uint8_t f : flags) {
             n += f != 0;
@@ -247,7 +247,7 @@ namespace {
 
 // Builds the list of surviving indices and the old-to-new map for one element kind.
 template <class H>
-std::vector<std::uint32_t> surviving(const std::vector<std::uint8_t>& deleted,
+std::vector<std::uint32_t> surviving(const memory::Array<std::uint8_t>& deleted,
                                      std::vector<H>& old_to_new) {
     std::vector<std::uint32_t> kept;
     kept.reserve(deleted.size());

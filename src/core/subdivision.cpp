@@ -49,6 +49,7 @@
 #include <vector>
 
 #include "loop_rules.h"
+#include "meshedit/core/memory.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
 #include "parallel.h"
@@ -82,14 +83,14 @@ void chunked(std::size_t n, unsigned threads, Progress& progress, double lo, dou
 
 // Moves the contents out of a property array, leaving it empty (and unallocated).
 template <class T>
-std::vector<T> take(std::vector<T>& v) {
-    std::vector<T> out;
+memory::Array<T> take(memory::Array<T>& v) {
+    memory::Array<T> out;
     out.swap(v);
     return out;
 }
 
 template <class H, class T>
-std::vector<T>& array(Mesh& mesh, const char* name) {
+memory::Array<T>& array(Mesh& mesh, const char* name) {
     return mesh.get_property<H, T>(name).vector();
 }
 
@@ -99,13 +100,13 @@ constexpr std::uint32_t u32(std::size_t i) {
 
 // The old mesh's connectivity, moved out of the mesh before the new arrays are allocated.
 struct OldMesh {
-    std::vector<Halfedge> next;
-    std::vector<Halfedge> prev;
-    std::vector<Vertex> to;
-    std::vector<Face> face;
-    std::vector<Halfedge> face_halfedge;
-    std::vector<Halfedge> vertex_halfedge;
-    std::vector<std::uint8_t> crease;  // empty when the mesh has no crease flags
+    memory::Array<Halfedge> next;
+    memory::Array<Halfedge> prev;
+    memory::Array<Vertex> to;
+    memory::Array<Face> face;
+    memory::Array<Halfedge> face_halfedge;
+    memory::Array<Halfedge> vertex_halfedge;
+    memory::Array<std::uint8_t> crease;  // empty when the mesh has no crease flags
 
     bool is_sharp(std::size_t e) const {
         const bool boundary = !face[2 * e].is_valid() || !face[2 * e + 1].is_valid();
@@ -130,22 +131,22 @@ struct NewArrays {
           face_deleted(array<Face, std::uint8_t>(mesh, "f:deleted")),
           crease(crease_flags(mesh)) {}
 
-    static std::vector<std::uint8_t>* crease_flags(Mesh& mesh) {
+    static memory::Array<std::uint8_t>* crease_flags(Mesh& mesh) {
         EdgeProperty<std::uint8_t> flags = loop_rules::crease_property(mesh);
         return flags ? &flags.vector() : nullptr;
     }
 
-    std::vector<Vec3> position;  // [0, V) moved old vertices, [V, V + E) edge points
-    std::vector<Halfedge>& next;
-    std::vector<Halfedge>& prev;
-    std::vector<Vertex>& to;
-    std::vector<Face>& face;
-    std::vector<Halfedge>& face_halfedge;
-    std::vector<Halfedge>& vertex_halfedge;
-    std::vector<std::uint8_t>& vertex_deleted;
-    std::vector<std::uint8_t>& edge_deleted;
-    std::vector<std::uint8_t>& face_deleted;
-    std::vector<std::uint8_t>* crease;  // null without crease flags
+    memory::Array<Vec3> position;  // [0, V) moved old vertices, [V, V + E) edge points
+    memory::Array<Halfedge>& next;
+    memory::Array<Halfedge>& prev;
+    memory::Array<Vertex>& to;
+    memory::Array<Face>& face;
+    memory::Array<Halfedge>& face_halfedge;
+    memory::Array<Halfedge>& vertex_halfedge;
+    memory::Array<std::uint8_t>& vertex_deleted;
+    memory::Array<std::uint8_t>& edge_deleted;
+    memory::Array<std::uint8_t>& face_deleted;
+    memory::Array<std::uint8_t>* crease;  // null without crease flags
 };
 
 void size_arrays(NewArrays& out, const OldMesh& old, std::size_t nv, unsigned threads) {
@@ -177,7 +178,7 @@ void size_arrays(NewArrays& out, const OldMesh& old, std::size_t nv, unsigned th
 // vertices, each gathering its neighbour sum, valence and sharp edges from its old one-ring
 // (clockwise, h -> next(twin(h))). Both write every element once, so both run in chunks on
 // several threads.
-void loop_positions(std::vector<Vec3>& out, const OldMesh& old, const std::vector<Vec3>& p,
+void loop_positions(memory::Array<Vec3>& out, const OldMesh& old, const memory::Array<Vec3>& p,
                     LoopWeights weights, unsigned threads, Progress& progress) {
     const std::size_t nv = p.size();
     const std::size_t ne = old.to.size() / 2;
@@ -241,10 +242,10 @@ void loop_connectivity(NewArrays& out, const OldMesh& old, std::size_t nv, unsig
     const std::size_t nh = old.to.size();
     const std::size_t ne = nh / 2;
     const std::size_t nf = old.face_halfedge.size();
-    std::vector<Halfedge>& next = out.next;
-    std::vector<Halfedge>& prev = out.prev;
-    std::vector<Vertex>& to = out.to;
-    std::vector<Face>& face = out.face;
+    memory::Array<Halfedge>& next = out.next;
+    memory::Array<Halfedge>& prev = out.prev;
+    memory::Array<Vertex>& to = out.to;
+    memory::Array<Face>& face = out.face;
 
     // Position (0, 1, 2) of interior old halfedge h in its face, counted from halfedge(f).
     auto corner = [&](std::size_t h) -> std::uint32_t {
@@ -326,7 +327,7 @@ void loop_connectivity(NewArrays& out, const OldMesh& old, std::size_t nv, unsig
 
     // Vertex anchors, keeping the boundary-anchor rule: an old vertex's first(h) is on the
     // boundary iff h was; m_e leaves along second() of e's boundary halfedge, if any.
-    std::vector<Halfedge>& vertex_halfedge = out.vertex_halfedge;
+    memory::Array<Halfedge>& vertex_halfedge = out.vertex_halfedge;
     chunked(nv + ne, threads, progress, 0.9, 0.95, [&](std::size_t begin, std::size_t end) {
         for (std::size_t v = begin; v < end; ++v) {
             if (v < nv) {

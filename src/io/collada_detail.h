@@ -5,7 +5,6 @@
 
 #include <pugixml.hpp>
 
-#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -61,20 +60,6 @@ std::vector<std::uint32_t> parse_indices(const Document& doc, pugi::xml_node nod
 /// A non-negative integer attribute, `fallback` when absent. \throws IoError if malformed.
 std::uint64_t count_attribute(const Document& doc, pugi::xml_node node, const char* name,
                               std::uint64_t fallback);
-
-/// A hint to Linux to back a big buffer that is about to be written for the first time with
-/// transparent huge pages: one page fault per 2 MB instead of per 4 KB. Page faults are a
-/// large part of loading a big file. Does nothing for small buffers or elsewhere.
-void advise_huge_pages(const void* data, std::size_t bytes);
-
-/// Makes room for `extra` more elements, growing geometrically so that repeated calls stay
-/// linear.
-template <class T>
-void reserve_more(std::vector<T>& v, std::size_t extra) {
-    if (v.capacity() - v.size() < extra) {
-        v.reserve(std::max(v.size() + extra, 2 * v.capacity()));
-    }
-}
 
 /// One `<geometry>` as its file holds it (local coordinates, local position indices).
 struct GeometryData {

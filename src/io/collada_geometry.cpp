@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "collada_detail.h"
+#include "meshedit/core/memory.h"
 
 namespace meshedit::collada {
 namespace {
@@ -100,7 +101,7 @@ std::vector<Vec3> read_vec3_source(const Document& doc, pugi::xml_node source, c
     }
     std::vector<Vec3> tuples;
     tuples.reserve(a.count);
-    advise_huge_pages(tuples.data(), a.count * sizeof(Vec3));
+    memory::advise_huge_pages(tuples.data(), a.count * sizeof(Vec3));
     tuples.resize(a.count);
     for (std::uint64_t i = 0; i < a.count; ++i) {
         const std::uint64_t base = a.offset + i * a.stride;
@@ -451,7 +452,7 @@ void GeometryReader::add_polygons(pugi::xml_node p, std::vector<std::uint32_t>&&
         g_.indices.resize(base + n_tuples);
     }
     std::uint32_t* out = in_place ? indices.data() : g_.indices.data() + base;
-    reserve_more(g_.face_offsets, n_polygons);
+    memory::reserve_more(g_.face_offsets, n_polygons);
     std::uint64_t tuple = 0;
     for (std::size_t f = 0; f < n_polygons; ++f) {
         const std::uint32_t n = sizes ? sizes[f] : 3;

@@ -13,11 +13,8 @@
 #include <system_error>
 #include <thread>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include "collada_detail.h"
+#include "meshedit/core/memory.h"
 
 namespace meshedit::collada {
 namespace {
@@ -40,7 +37,7 @@ std::string read_bytes(const std::string& file) {
     const auto size = std::filesystem::file_size(file, ec);
     std::string bytes;
     bytes.reserve(ec ? 0 : static_cast<std::size_t>(size) + 1);
-    advise_huge_pages(bytes.data(), bytes.capacity());
+    memory::advise_huge_pages(bytes.data(), bytes.capacity());
     bytes.resize(bytes.capacity());
     std::size_t used = 0;
     for (;;) {
@@ -258,7 +255,7 @@ std::vector<T> parse_list(const Document& doc, pugi::xml_node node, std::size_t 
         // The first piece reserves for all, so that the others append without reallocating.
         const std::size_t span = k == 0 ? n : static_cast<std::size_t>(cut - pieces[k].begin);
         pieces[k].values.reserve(span / bytes_per_value + 1);
-        advise_huge_pages(pieces[k].values.data(), pieces[k].values.capacity() * sizeof(T));
+        memory::advise_huge_pages(pieces[k].values.data(), pieces[k].values.capacity() * sizeof(T));
     }
     std::vector<std::exception_ptr> errors(n_pieces);  // bad_alloc must not end a thread
     const auto run = [&](std::size_t k) {
@@ -371,21 +368,6 @@ TokenError scan_index(const char*& p, const char* end, std::uint32_t& value) {
 }
 
 }  // namespace
-
-void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
-    if (bytes < 2 * kHuge) {
-        return;
-    }
-    // Only the whole 2 MB pages inside the buffer; the hint may be refused, which is fine.
-    const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
-    const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kHuge - 1);
-    if (begin < end) {
-        ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-    }
-#endif
-}
 
 Document::Document(const std::string& path) : file_(path) {
     text_ = decode(file_, read_bytes(file_));

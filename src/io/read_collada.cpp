@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include "collada_detail.h"
+#include "meshedit/core/memory.h"
 #include "meshedit/io/collada.h"
 
 namespace meshedit {
@@ -323,7 +324,7 @@ void SceneReader::append(const Instance& instance, collada::GeometryData& g, boo
         out_.creases = g.creases;
         return;
     }
-    collada::reserve_more(out_.soup.positions, g.positions.size());
+    memory::reserve_more(out_.soup.positions, g.positions.size());
     for (const Vec3& p : g.positions) {
         out_.soup.positions.push_back(identity ? p : t.point(p));
         if (!is_finite(out_.soup.positions.back())) {
@@ -331,7 +332,7 @@ void SceneReader::append(const Instance& instance, collada::GeometryData& g, boo
         }
     }
     if (normals_ok_) {
-        collada::reserve_more(out_.normals, g.normals.size());
+        memory::reserve_more(out_.normals, g.normals.size());
         for (const Vec3& n : g.normals) {
             out_.normals.push_back(identity ? n : t.normal(n));
         }
@@ -339,8 +340,8 @@ void SceneReader::append(const Instance& instance, collada::GeometryData& g, boo
     // A mirroring transform turns faces inside out; reversing the corners keeps them outward.
     const bool mirror = t.det3() < 0.0;
     const auto offset = static_cast<std::uint32_t>(base);
-    collada::reserve_more(out_.soup.indices, g.indices.size());
-    collada::reserve_more(out_.soup.face_offsets, g.face_offsets.size() - 1);
+    memory::reserve_more(out_.soup.indices, g.indices.size());
+    memory::reserve_more(out_.soup.face_offsets, g.face_offsets.size() - 1);
     for (std::size_t f = 0; f + 1 < g.face_offsets.size(); ++f) {
         const std::uint32_t begin = g.face_offsets[f];
         const std::uint32_t end = g.face_offsets[f + 1];

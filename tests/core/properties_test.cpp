@@ -52,8 +52,8 @@ TEST(Properties, PushBackNAppendsDefaultsToEveryArray) {
     c.push_back_n(3);
     c.push_back_n(0);
     EXPECT_EQ(c.size(), 3u);
-    EXPECT_EQ(label->vector(), (std::vector<int>{-1, -1, -1}));
-    EXPECT_EQ(point->vector(), std::vector<Vec3>(3));
+    EXPECT_EQ(label->vector(), (memory::Array<int>{-1, -1, -1}));
+    EXPECT_EQ(point->vector(), memory::Array<Vec3>(3));
 }
 
 // add_elements() gives the same arrays as the one-at-a-time calls in the documented order

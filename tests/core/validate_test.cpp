@@ -11,7 +11,7 @@ namespace {
 
 // Raw access to a connectivity array, to break it on purpose.
 template <class H, class T>
-std::vector<T>& raw(Mesh& mesh, const char* name) {
+memory::Array<T>& raw(Mesh& mesh, const char* name) {
     return mesh.get_property<H, T>(name).vector();
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <span>
 
 #include "io/formats_test_util.h"
 #include "meshedit/core/local_ops.h"
@@ -18,7 +19,7 @@ using test::data_file;
 using test::io_error_of;
 
 /// Positions equal to `tol` (glTF stores floats), index for index.
-::testing::AssertionResult same_positions(const std::vector<Vec3>& a, const std::vector<Vec3>& b,
+::testing::AssertionResult same_positions(std::span<const Vec3> a, std::span<const Vec3> b,
                                           double tol) {
     if (a.size() != b.size()) {
         return ::testing::AssertionFailure() << a.size() << " vs " << b.size() << " positions";

@@ -190,8 +190,8 @@ public:
     const Vec3& position(Vertex v) const { return vpoint_[v]; }
     Vec3& position(Vertex v) { return vpoint_[v]; }
     VertexProperty<Vec3> positions() { return vpoint_; }
-    const std::vector<Vec3>& position_vector() const { return vpoint_.vector(); }
-    std::vector<Vec3>& position_vector() { return vpoint_.vector(); }
+    const memory::Array<Vec3>& position_vector() const { return vpoint_.vector(); }
+    memory::Array<Vec3>& position_vector() { return vpoint_.vector(); }
     BoundingBox bounds() const;
 
     // ----------------------------------------------------------------- ranges
@@ -314,7 +314,7 @@ public:
 
     T& operator[](H h) { return prop_[h]; }
     const T& operator[](H h) const { return prop_[h]; }
-    std::vector<T>& vector() { return prop_.vector(); }
+    memory::Array<T>& vector() { return prop_.vector(); }
     Property<H, T>& get() { return prop_; }
 
 private:

@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "meshedit/core/memory.h"
+
 namespace meshedit {
 
 /// Type-erased interface of one property array.
@@ -53,11 +55,11 @@ class PropertyArray final : public BasePropertyArray {
 public:
     PropertyArray(std::string name, T default_value)
         : BasePropertyArray(std::move(name)), default_(std::move(default_value)) {}
-
     void reserve(std::size_t n) override { data_.reserve(n); }
     void resize(std::size_t n) override { data_.resize(n, default_); }
     void push_back() override { data_.push_back(default_); }
     void push_back_n(std::size_t k) override {
+        memory::reserve_more(data_, k);
         for (std::size_t i = 0; i < k; ++i) {
             data_.push_back(default_);
         }
@@ -79,12 +81,12 @@ public:
 
     T& operator[](std::size_t i) { return data_[i]; }
     const T& operator[](std::size_t i) const { return data_[i]; }
-    std::vector<T>& vector() { return data_; }
-    const std::vector<T>& vector() const { return data_; }
+    memory::Array<T>& vector() { return data_; }
+    const memory::Array<T>& vector() const { return data_; }
     const T& default_value() const { return default_; }
 
 private:
-    std::vector<T> data_;
+    memory::Array<T> data_;  // big arrays in huge pages (memory.h)
     T default_;
 };
 
@@ -99,8 +101,8 @@ public:
     explicit operator bool() const { return array_ != nullptr; }
     T& operator[](H h) { return (*array_)[h.idx()]; }
     const T& operator[](H h) const { return (*array_)[h.idx()]; }
-    std::vector<T>& vector() { return array_->vector(); }
-    const std::vector<T>& vector() const { return array_->vector(); }
+    memory::Array<T>& vector() { return array_->vector(); }
+    const memory::Array<T>& vector() const { return array_->vector(); }
     const std::string& name() const { return array_->name(); }
     PropertyArray<T>* array() const { return array_; }
 

@@ -1,0 +1,98 @@
+// Big-buffer mapping and huge-page hints (memory.h). The only core file that calls the
+// operating system directly: mmap/madvise have no standard-library counterpart. Elsewhere,
+// and under AddressSanitizer (which guards operator new's buffers, not mmap's), big buffers
+// come from aligned operator new, without the hint.
+
+#include "meshedit/core/memory.h"
+
+#include <atomic>
+#include <cstdint>
+
+#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
+#define MESHEDIT_MAP_BIG 1
+#include <sys/mman.h>
+#else
+#define MESHEDIT_MAP_BIG 0
+#endif
+
+namespace meshedit::memory {
+namespace {
+
+constexpr std::size_t kHuge = std::size_t{2} << 20;
+constexpr std::size_t kPage = std::size_t{4} << 10;
+
+std::atomic<bool> g_enabled{true};
+
+std::size_t round_up(std::size_t bytes, std::size_t unit) {
+    return (bytes + unit - 1) / unit * unit;
+}
+
+}  // namespace
+
+bool huge_pages_enabled() {
+    return g_enabled.load(std::memory_order_relaxed);
+}
+
+void set_huge_pages_enabled(bool enabled) {
+    g_enabled.store(enabled, std::memory_order_relaxed);
+}
+
+#if MESHEDIT_MAP_BIG
+
+void* map_big(std::size_t bytes) {
+    const std::size_t length = round_up(bytes, kPage);
+    // Map 2 MiB more than needed, then unmap the ends so that the buffer starts on a 2 MiB
+    // boundary (the kernel places a mapping on any 4 KiB boundary).
+    void* raw =
+        ::mmap(nullptr, length + kHuge, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (raw == MAP_FAILED) {
+        throw std::bad_alloc();
+    }
+    const auto start = reinterpret_cast<std::uintptr_t>(raw);
+    const std::uintptr_t aligned = round_up(start, kHuge);
+    if (aligned > start) {
+        ::munmap(raw, aligned - start);
+    }
+    const std::uintptr_t end = start + length + kHuge;
+    if (end > aligned + length) {
+        ::munmap(reinterpret_cast<void*>(aligned + length), end - (aligned + length));
+    }
+    void* data = reinterpret_cast<void*>(aligned);
+    // Only whole huge pages: the tail stays in small pages, so no memory is wasted on it.
+    const std::size_t whole = bytes / kHuge * kHuge;
+    if (whole > 0 && huge_pages_enabled()) {
+        ::madvise(data, whole, MADV_HUGEPAGE);
+    }
+    return data;
+}
+
+void unmap_big(void* data, std::size_t bytes) noexcept {
+    ::munmap(data, round_up(bytes, kPage));
+}
+
+void advise_huge_pages(const void* data, std::size_t bytes) {
+    if (data == nullptr || !huge_pages_enabled()) {
+        return;
+    }
+    const auto begin = round_up(reinterpret_cast<std::uintptr_t>(data), kHuge);
+    const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) / kHuge * kHuge;
+    if (begin + kHuge < end) {
+        ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+    }
+}
+
+#else
+
+void* map_big(std::size_t bytes) {
+    return ::operator new (bytes, std::align_val_t{kHuge});
+}
+
+void unmap_big(void* data, std::size_t /*bytes*/) noexcept {
+    ::operator delete (data, std::align_val_t{kHuge});
+}
+
+void advise_huge_pages(const void* /*data*/, std::size_t /*bytes*/) {}
+
+#endif
+
+}  // namespace meshedit::memory

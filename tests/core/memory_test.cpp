@@ -1,0 +1,69 @@
+// Storage of big arrays (memory.h): big buffers start on a 2 MiB boundary, small ones come
+// from operator new, and arrays behave as std::vector whichever path their buffer took.
+#include "meshedit/core/memory.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <numeric>
+
+#include "meshedit/core/shapes.h"
+#include "meshedit/core/subdivision.h"
+#include "support/mesh_compare.h"
+
+namespace meshedit {
+namespace {
+
+constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+
+TEST(Memory, BigBuffersStartOnAHugePageBoundary) {
+    memory::Allocator<double> allocator;
+    for (const std::size_t n :
+         {memory::kBigBytes / 8, memory::kBigBytes / 8 + 1, std::size_t{3} << 20}) {
+        double* p = allocator.allocate(n);
+        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % kHuge, 0u) << n;
+        p[0] = 1.0;
+        p[n - 1] = 2.0;  // the whole range is writable
+        EXPECT_EQ(p[0] + p[n - 1], 3.0);
+        allocator.deallocate(p, n);
+    }
+}
+
+TEST(Memory, SmallBuffersKeepTheirTypesAlignment) {
+    memory::Allocator<Vec3> allocator;
+    Vec3* p = allocator.allocate(3);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % alignof(Vec3), 0u);
+    allocator.deallocate(p, 3);
+}
+
+TEST(Memory, ArraysGrowCopyAndShrinkAcrossTheThreshold) {
+    // Growing by push_back crosses from operator new to mapped buffers; contents survive.
+    memory::Array<std::uint32_t> a;
+    const std::size_t n = 3 * memory::kBigBytes / sizeof(std::uint32_t);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        a.push_back(i);
+    }
+    memory::Array<std::uint32_t> expected(n);
+    std::iota(expected.begin(), expected.end(), 0u);
+    EXPECT_EQ(a, expected);
+    const memory::Array<std::uint32_t> copy = a;
+    EXPECT_EQ(copy, expected);
+    a.resize(10);
+    a.shrink_to_fit();
+    EXPECT_EQ(a, memory::Array<std::uint32_t>(expected.begin(), expected.begin() + 10));
+}
+
+TEST(Memory, MeshesAreTheSameWithAndWithoutHugePages) {
+    // The hint changes where memory comes from, never what is in it.
+    ASSERT_TRUE(memory::huge_pages_enabled());
+    Mesh with = shapes::torus(200, 120);  // arrays of several MB
+    loop_subdivide(with);
+    memory::set_huge_pages_enabled(false);
+    Mesh without = shapes::torus(200, 120);
+    loop_subdivide(without);
+    memory::set_huge_pages_enabled(true);
+    EXPECT_TRUE(test::identical(with, without));
+}
+
+}  // namespace
+}  // namespace meshedit
