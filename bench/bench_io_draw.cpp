@@ -11,8 +11,10 @@
 // 1,000,000 triangles) as a COLLADA <triangles> file (~34 MB) and as a <polylist> with one
 // normal per face (NORMAL at offset 1, so every corner has two indices). The draw job renders
 // the same torus at 1280x800 in one OSMesa context: N frames through MeshRenderer::draw
-// (smooth Blinn-Phong) and N through MeshRenderer::draw_bare (transform-only shader, same
-// vertex buffer), glFinish after each, and prints a RESULT line for each of the two.
+// (smooth Blinn-Phong; back faces culled, as the torus is closed and outward) and N through
+// MeshRenderer::draw_bare (transform-only shader, same vertex buffer, back faces drawn), and,
+// for reference, N bare draws with back faces culled too; glFinish after each frame, and a
+// RESULT line for each of the three.
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -296,11 +298,19 @@ void bench_draw(const std::string& job, const std::string& impl, int runs, int w
         renderer.draw_bare(camera, aspect);
         context.finish();
     };
+    // For reference: the bare draw with back faces culled as draw() culls them here.
+    const bool culls = renderer.culls_back_faces(camera);
+    auto bare_culled = [&] {
+        background.draw(kBackgroundTop, kBackgroundBottom);
+        renderer.draw_bare(camera, aspect, culls);
+        context.finish();
+    };
     // One warm-up frame each (shader compilation, first-touch of the buffers), then the
     // timed frames interleaved so drift in machine load hits both alike.
     shaded();
     bare();
-    std::vector<double> shaded_ms, bare_ms;
+    bare_culled();
+    std::vector<double> shaded_ms, bare_ms, bare_culled_ms;
     for (int i = 0; i < runs; ++i) {
         auto start = std::chrono::steady_clock::now();
         shaded();
@@ -308,6 +318,9 @@ void bench_draw(const std::string& job, const std::string& impl, int runs, int w
         start = std::chrono::steady_clock::now();
         bare();
         bare_ms.push_back(ms_since(start));
+        start = std::chrono::steady_clock::now();
+        bare_culled();
+        bare_culled_ms.push_back(ms_since(start));
     }
     if (glGetError() != GL_NO_ERROR) {
         throw std::runtime_error("GL error while drawing");
@@ -322,8 +335,11 @@ void bench_draw(const std::string& job, const std::string& impl, int runs, int w
         extra["peak_rss_mb"] = bench::peak_rss_mb();
         return extra;
     };
-    bench::print_result(job, "meshedit", shaded_ms, with({{"upload_ms", upload_ms}}));
+    bench::print_result(job, "meshedit", shaded_ms,
+                        with({{"upload_ms", upload_ms}, {"culls_back_faces", culls ? 1.0 : 0.0}}));
     bench::print_result(job, "bare", bare_ms, with({}));
+    bench::print_result(job, "bare_culled", bare_culled_ms,
+                        with({{"culls_back_faces", culls ? 1.0 : 0.0}}));
 }
 
 struct Args {
@@ -394,6 +410,7 @@ Args parse(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    meshedit::bench::take_common_flags(argc, argv);
     try {
         const Args a = parse(argc, argv);
         if (a.list) {

@@ -444,6 +444,7 @@ int usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    meshedit::bench::take_common_flags(argc, argv);
     std::string job_name;
     std::string impl;
     int runs = 5;

@@ -331,6 +331,7 @@ int usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    meshedit::bench::take_common_flags(argc, argv);
     std::string job;
     std::string impl;
     int runs = 5;

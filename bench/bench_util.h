@@ -3,19 +3,40 @@
 /// Shared by every benchmark program: repeated timing, peak RSS, and the RESULT line that
 /// bench/run_bench.py collects (see bench/README.md).
 
+#include <malloc.h>
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "meshedit/core/memory.h"
+
 namespace meshedit::bench {
 
+/// Removes `--no-huge-pages` from the arguments and, if it was there, turns MeshEdit's
+/// huge-page hints off (core/memory.h): measures what they are worth. Call first in main().
+inline void take_common_flags(int& argc, char** argv) {
+    int out = 1;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--no-huge-pages") == 0) {
+            memory::set_huge_pages_enabled(false);
+        } else {
+            argv[out++] = argv[i];
+        }
+    }
+    argc = out;
+}
+
 /// Milliseconds of each of `runs` calls of `body`; `setup` runs before each call, untimed.
+/// Every run starts cold, as in a fresh process: after the setup, malloc_trim(0) hands the
+/// memory that the allocator kept from earlier runs back to the system, so that no
+/// implementation's later runs write into pages an earlier run already faulted in.
 inline std::vector<double> time_runs(int runs, const std::function<void()>& setup,
                                      const std::function<void()>& body) {
     std::vector<double> ms;
@@ -23,6 +44,7 @@ inline std::vector<double> time_runs(int runs, const std::function<void()>& setu
         if (setup) {
             setup();
         }
+        malloc_trim(0);
         const auto t0 = std::chrono::steady_clock::now();
         body();
         const auto t1 = std::chrono::steady_clock::now();

@@ -229,7 +229,7 @@ void MeshRenderer::set_culling(const Camera& camera) const {
     }
 }
 
-void MeshRenderer::draw_bare(const Camera& camera, float aspect) {
+void MeshRenderer::draw_bare(const Camera& camera, float aspect, bool cull_back_faces) {
     if (triangle_count_ == 0) {
         return;
     }
@@ -239,12 +239,19 @@ void MeshRenderer::draw_bare(const Camera& camera, float aspect) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    if (cull_back_faces) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(GL_CCW);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
     bare_shader_.use();
     set_camera(bare_shader_, camera, aspect);
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
     glBindVertexArray(0);
+    glDisable(GL_CULL_FACE);
 }
 
 void MeshRenderer::draw_ids(const Camera& camera, float aspect, float vertex_radius_px,

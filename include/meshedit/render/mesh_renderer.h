@@ -74,8 +74,9 @@ public:
                     float vertex_radius_px = 6.0f, float edge_radius_px = 4.0f);
 
     /// The same triangles with a transform-only shader and a constant colour: the baseline
-    /// that `meshedit-render --benchmark` compares draw() against.
-    void draw_bare(const Camera& camera, float aspect);
+    /// that the draw benchmark compares draw() against. Back faces are drawn unless
+    /// `cull_back_faces` (draw() culls them when culls_back_faces() says so).
+    void draw_bare(const Camera& camera, float aspect, bool cull_back_faces = false);
 
     std::size_t triangle_count() const { return triangle_count_; }
 
