@@ -133,6 +133,25 @@ public:
     void set_vertex(Halfedge h, Vertex v) { hvertex_[h] = v; }
     void set_face(Halfedge h, Face f) { hface_[h] = f; }
 
+    /// Cache hints for a local op that is about to read or write an element's connectivity
+    /// (a halfedge's next, prev, vertex and face; a vertex's anchor and, with
+    /// `with_position`, its position; a face's anchor). On a large mesh each of those is a
+    /// cache miss; asked for together, as soon as the handles are known, the misses overlap
+    /// instead of queueing behind one another. No effect on the mesh.
+    void prefetch(Halfedge h) const {
+        prefetch_for_write(&hnext_[h]);
+        prefetch_for_write(&hprev_[h]);
+        prefetch_for_write(&hvertex_[h]);
+        prefetch_for_write(&hface_[h]);
+    }
+    void prefetch(Vertex v, bool with_position = false) const {
+        prefetch_for_write(&vhalfedge_[v]);
+        if (with_position) {
+            prefetch_for_write(&vpoint_[v]);
+        }
+    }
+    void prefetch(Face f) const { prefetch_for_write(&fhalfedge_[f]); }
+
     // ----------------------------------------------------------------- queries
 
     bool is_boundary(Halfedge h) const { return !face(h).is_valid(); }
@@ -285,6 +304,12 @@ private:
     PropertyContainer fprops_;
 
     // Cached views of the connectivity properties (rebound after copy or move).
+    static void prefetch_for_write([[maybe_unused]] const void* p) {
+#if defined(__GNUC__)
+        __builtin_prefetch(p, 1);
+#endif
+    }
+
     VertexProperty<Vec3> vpoint_;
     VertexProperty<Halfedge> vhalfedge_;
     VertexProperty<std::uint8_t> vdeleted_;
