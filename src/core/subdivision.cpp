@@ -26,14 +26,16 @@
 //                                          m_i -> m_i+1 around the centre face 4f+3
 //
 // Passes: one over the old edges (edge points), one over the old vertices (vertex points from
-// the old one-ring), one over the old halfedges (new halfedges 2h and 2h+1), one over the old
-// faces (the inner halfedges and the faces), one over the new vertices (anchors). Every new
-// element is written once, by index, into arrays sized to their exact final size beforehand;
-// no allocation happens per element, and no hashing: every new index is a formula of old
-// indices. Each pass writes every element from one chunk of its range only, so on meshes of
-// 100,000 faces or more the chunks run on std::thread::hardware_concurrency() threads, with
-// the same result on any number of threads. Sizing the arrays (the first touch of fresh
-// memory, page faults: the largest single cost) runs one array per thread.
+// the old one-ring); then one new connectivity array at a time (to, face, next with the face
+// anchors, prev, vertex anchors), each from a pass over the old halfedges and one over the old
+// faces. Every new element is written once, by index, into an array sized to its exact final
+// size; no allocation happens per element, and no hashing: every new index is a formula of
+// old indices. Each old array is freed as soon as no later pass reads it, so the peak memory
+// is about the result's own (69 bytes per new face) instead of result + old mesh (86). Each
+// pass writes every element from one chunk of its range only, so on meshes of 100,000 faces
+// or more the chunks run on std::thread::hardware_concurrency() threads, with the same result
+// on any number of threads. Big arrays live in huge pages (memory.h): their first touch, page
+// faults, was the largest single cost.
 //
 // Why it equals loop_subdivide_classic(): splitting edge e there appends vertex V + e (edges
 // are split in index order), and after the flips each old triangle (c0, c1, c2) is replaced
@@ -43,7 +45,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <functional>
 #include <iterator>
 #include <stdexcept>
 #include <vector>
@@ -99,9 +100,9 @@ constexpr std::uint32_t u32(std::size_t i) {
 }
 
 // The old mesh's connectivity, moved out of the mesh before the new arrays are allocated.
+// Each array is freed as soon as no later pass reads it (see loop_subdivide).
 struct OldMesh {
     memory::Array<Halfedge> next;
-    memory::Array<Halfedge> prev;
     memory::Array<Vertex> to;
     memory::Array<Face> face;
     memory::Array<Halfedge> face_halfedge;
@@ -114,64 +115,10 @@ struct OldMesh {
     }
 };
 
-// The arrays of the refined mesh, sized before any pass writes them by index. The sizing
-// (first touch of fresh memory, i.e. page faults: the largest single cost) is spread over
-// the threads, one array per task; the deletion flags (and crease flags) are sized here too,
-// so that the final Mesh::resize only sizes user properties.
-struct NewArrays {
-    explicit NewArrays(Mesh& mesh)
-        : next(array<Halfedge, Halfedge>(mesh, "h:next")),
-          prev(array<Halfedge, Halfedge>(mesh, "h:prev")),
-          to(array<Halfedge, Vertex>(mesh, "h:vertex")),
-          face(array<Halfedge, Face>(mesh, "h:face")),
-          face_halfedge(array<Face, Halfedge>(mesh, "f:halfedge")),
-          vertex_halfedge(array<Vertex, Halfedge>(mesh, "v:halfedge")),
-          vertex_deleted(array<Vertex, std::uint8_t>(mesh, "v:deleted")),
-          edge_deleted(array<Edge, std::uint8_t>(mesh, "e:deleted")),
-          face_deleted(array<Face, std::uint8_t>(mesh, "f:deleted")),
-          crease(crease_flags(mesh)) {}
-
-    static memory::Array<std::uint8_t>* crease_flags(Mesh& mesh) {
-        EdgeProperty<std::uint8_t> flags = loop_rules::crease_property(mesh);
-        return flags ? &flags.vector() : nullptr;
-    }
-
-    memory::Array<Vec3> position;  // [0, V) moved old vertices, [V, V + E) edge points
-    memory::Array<Halfedge>& next;
-    memory::Array<Halfedge>& prev;
-    memory::Array<Vertex>& to;
-    memory::Array<Face>& face;
-    memory::Array<Halfedge>& face_halfedge;
-    memory::Array<Halfedge>& vertex_halfedge;
-    memory::Array<std::uint8_t>& vertex_deleted;
-    memory::Array<std::uint8_t>& edge_deleted;
-    memory::Array<std::uint8_t>& face_deleted;
-    memory::Array<std::uint8_t>* crease;  // null without crease flags
-};
-
-void size_arrays(NewArrays& out, const OldMesh& old, std::size_t nv, unsigned threads) {
-    const std::size_t ne = old.to.size() / 2;
-    const std::size_t nf = old.face_halfedge.size();
-    const std::size_t new_ne = 2 * ne + 3 * nf;
-    const std::function<void()> tasks[] = {
-        [&] { out.next.resize(2 * new_ne); },
-        [&] { out.prev.resize(2 * new_ne); },
-        [&] { out.to.resize(2 * new_ne); },
-        [&] { out.face.resize(2 * new_ne); },
-        [&] { out.position.resize(nv + ne); },
-        [&] { out.face_halfedge.resize(4 * nf); },
-        [&] { out.vertex_halfedge.resize(nv + ne); },
-        [&] { out.vertex_deleted.resize(nv + ne, 0); },
-        [&] { out.edge_deleted.resize(new_ne, 0); },
-        [&] { out.face_deleted.resize(4 * nf, 0); },
-        [&] {
-            if (out.crease != nullptr) {
-                out.crease->resize(new_ne, 0);
-            }
-        },
-    };
-    parallel::for_chunks(std::size(tasks), 1, threads,
-                         [&](std::size_t task, std::size_t) { tasks[task](); });
+// Frees an array's storage now (clear() keeps it).
+template <class T>
+void release(memory::Array<T>& v) {
+    memory::Array<T>().swap(v);
 }
 
 // New positions. Edge points: one pass over the edges. Vertex points: one pass over the
@@ -233,114 +180,201 @@ void loop_positions(memory::Array<Vec3>& out, const OldMesh& old, const memory::
     });
 }
 
-// Writes the connectivity of the refined mesh into the sized arrays, every element once.
-// Halfedges [0, 4E) come from one pass over the old halfedges h: 2h = first(h) and
-// 2h+1 = second(twin(h)). Halfedges [4E, 4E + 6F) and all faces come from one pass over the
-// old faces. The vertex anchors come from one pass over the new vertices.
-void loop_connectivity(NewArrays& out, const OldMesh& old, std::size_t nv, unsigned threads,
-                       Progress& progress) {
-    const std::size_t nh = old.to.size();
-    const std::size_t ne = nh / 2;
-    const std::size_t nf = old.face_halfedge.size();
-    memory::Array<Halfedge>& next = out.next;
-    memory::Array<Halfedge>& prev = out.prev;
-    memory::Array<Vertex>& to = out.to;
-    memory::Array<Face>& face = out.face;
+// The connectivity of the refined mesh, one array at a time, so that each old array is freed
+// before the next new one is allocated and the peak memory stays near the result's own size
+// (the old mesh is a quarter of it). Each pass writes every element of its array once, by
+// index, in chunks on `threads` threads. Halfedges [0, 4E) come from the old halfedges h:
+// 2h = first(h) and 2h+1 = second(twin(h)); halfedges [4E, 4E + 6F) and all faces from the
+// old faces.
+class LoopConnectivity {
+public:
+    LoopConnectivity(Mesh& mesh, OldMesh& old, std::size_t nv, unsigned threads, Progress& progress)
+        : mesh_(mesh),
+          old_(old),
+          nv_(nv),
+          nh_(old.to.size()),
+          ne_(nh_ / 2),
+          nf_(old.face_halfedge.size()),
+          threads_(threads),
+          progress_(progress) {}
 
-    // Position (0, 1, 2) of interior old halfedge h in its face, counted from halfedge(f).
-    auto corner = [&](std::size_t h) -> std::uint32_t {
-        const Halfedge h0 = old.face_halfedge[old.face[h].idx()];
-        return h0.idx() == h ? 0 : (old.next[h0.idx()].idx() == h ? 1 : 2);
-    };
+    void run() {
+        write_to();
+        release(old_.to);
+        write_face();
+        release(old_.face);  // from here on the new face[2h] tells f and the corner of old h
+        write_next_and_face_anchors();
+        release(old_.next);
+        release(old_.face_halfedge);
+        write_prev();
+        write_vertex_anchors();
+        release(old_.vertex_halfedge);
+    }
+
+private:
+    template <class H, class T>
+    memory::Array<T>& sized(const char* name, std::size_t n) {
+        memory::Array<T>& a = array<H, T>(mesh_, name);
+        a.resize(n);
+        return a;
+    }
+    std::size_t new_nh() const { return 2 * (2 * ne_ + 3 * nf_); }
+
     // Halfedge 2I_i of old face f (the inner edge cutting off corner i, corner side).
-    auto inner = [&](std::size_t f, std::uint32_t i) {
-        return Halfedge(u32(2 * (2 * ne + 3 * f + i)));
-    };
+    Halfedge inner(std::size_t f, std::uint32_t i) const {
+        return Halfedge(u32(2 * (2 * ne_ + 3 * f + i)));
+    }
     // first(h) = 2h, second(h) = 2·twin(h) + 1.
-    auto first = [](std::size_t h) { return Halfedge(u32(2 * h)); };
-    auto second = [](std::size_t h) { return Halfedge(u32(2 * (h ^ 1) + 1)); };
-
-    chunked(nh, threads, progress, 0.4, 0.7, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t h = begin; h < end; ++h) {
-            const std::size_t t = h ^ 1;
-            // 2h = first(h), from(h) -> m. Interior h = h_j of face f: side b of corner
-            // i = j - 1, between second(h_i) and 2I_i. Boundary: between second(prev(h)) and
-            // second(h). Either way prev is second(prev(h)).
-            const Face f = old.face[h];
-            prev[2 * h] = second(old.prev[h].idx());
-            if (f.is_valid()) {
-                const std::uint32_t i = (corner(h) + 2) % 3;
-                next[2 * h] = inner(f.idx(), i);
-                face[2 * h] = Face(4 * f.idx() + i);
-            } else {
-                next[2 * h] = second(h);
-                face[2 * h] = Face();
+    static Halfedge first(std::size_t h) { return Halfedge(u32(2 * h)); }
+    static Halfedge second(std::size_t h) { return Halfedge(u32(2 * (h ^ 1) + 1)); }
+    // The halfedges h0 = halfedge(f), h1, h2 of old face f.
+    void face_halfedges(std::size_t f, std::uint32_t hs[3]) const {
+        hs[0] = old_.face_halfedge[f].idx();
+        hs[1] = old_.next[hs[0]].idx();
+        hs[2] = old_.next[hs[1]].idx();
+    }
+    // Position (0, 1, 2) of interior old halfedge h in its face, counted from halfedge(f).
+    std::uint32_t corner(std::size_t h) const {
+        const Halfedge h0 = old_.face_halfedge[old_.face[h].idx()];
+        return h0.idx() == h ? 0 : (old_.next[h0.idx()].idx() == h ? 1 : 2);
+    }
+    // Runs `per_halfedge(h)` over the old halfedges, then `per_face(f)` over the old faces.
+    template <class PerHalfedge, class PerFace>
+    void passes(double lo, double hi, const PerHalfedge& per_halfedge, const PerFace& per_face) {
+        const double mid = lo + (hi - lo) * static_cast<double>(nh_) /
+                                    static_cast<double>(std::max<std::size_t>(nh_ + nf_, 1));
+        chunked(nh_, threads_, progress_, lo, mid, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t h = begin; h < end; ++h) {
+                per_halfedge(h);
             }
-            to[2 * h] = Vertex(u32(nv + h / 2));
-
-            // 2h+1 = second(t), m -> to(t). Interior t = h_k of face g: side a of corner k,
-            // between 2I_k and first(h_k+1). Boundary: between first(t) and
-            // first(next(t)). Either way next is first(next(t)).
-            const Face g = old.face[t];
-            next[2 * h + 1] = first(old.next[t].idx());
-            if (g.is_valid()) {
-                const std::uint32_t k = corner(t);
-                prev[2 * h + 1] = inner(g.idx(), k);
-                face[2 * h + 1] = Face(4 * g.idx() + k);
-            } else {
-                prev[2 * h + 1] = first(t);
-                face[2 * h + 1] = Face();
+        });
+        chunked(nf_, threads_, progress_, mid, hi, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t f = begin; f < end; ++f) {
+                per_face(f);
             }
-            to[2 * h + 1] = old.to[t];
-        }
-    });
+        });
+    }
 
-    chunked(nf, threads, progress, 0.7, 0.9, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t f = begin; f < end; ++f) {
-            std::uint32_t hs[3];
-            hs[0] = old.face_halfedge[f].idx();
-            hs[1] = old.next[hs[0]].idx();
-            hs[2] = old.next[hs[1]].idx();
-            for (std::uint32_t i = 0; i < 3; ++i) {
-                const std::uint32_t j = i == 2 ? 0 : i + 1;  // i + 1 and i - 1, mod 3
-                const std::uint32_t l = i == 0 ? 2 : i - 1;
-                // 2I_i: m_j -> m_i in corner face 4f+i, between first(h_j) and second(h_i).
-                const std::size_t a = inner(f, i).idx();
-                next[a] = second(hs[i]);
-                prev[a] = first(hs[j]);
-                to[a] = Vertex(u32(nv + hs[i] / 2));
-                face[a] = Face(u32(4 * f + i));
-                // 2I_i + 1: m_i -> m_j around the centre face 4f+3.
-                next[a + 1] = Halfedge(inner(f, j).idx() + 1);
-                prev[a + 1] = Halfedge(inner(f, l).idx() + 1);
-                to[a + 1] = Vertex(u32(nv + hs[j] / 2));
-                face[a + 1] = Face(u32(4 * f + 3));
+    // 2h = first(h) ends at m_h; 2h+1 = second(twin(h)) at to(twin(h)). The inner halfedge
+    // 2I_i runs m_j -> m_i (j = i + 1), its twin back.
+    void write_to() {
+        auto& to = sized<Halfedge, Vertex>("h:vertex", new_nh());
+        passes(
+            0.4, 0.5,
+            [&](std::size_t h) {
+                to[2 * h] = Vertex(u32(nv_ + h / 2));
+                to[2 * h + 1] = old_.to[h ^ 1];
+            },
+            [&](std::size_t f) {
+                std::uint32_t hs[3];
+                face_halfedges(f, hs);
+                for (std::uint32_t i = 0; i < 3; ++i) {
+                    const std::uint32_t j = i == 2 ? 0 : i + 1;
+                    const std::size_t a = inner(f, i).idx();
+                    to[a] = Vertex(u32(nv_ + hs[i] / 2));
+                    to[a + 1] = Vertex(u32(nv_ + hs[j] / 2));
+                }
+            });
+    }
+
+    // Interior h = h_j of face f: 2h is side b of corner i = j - 1 (face 4f+i), 2h+1 =
+    // second(twin) side a of corner k of the twin's face g (face 4g+k). Boundary halves stay
+    // boundary. Inner halfedges: 2I_i in corner face 4f+i, 2I_i + 1 in the centre 4f+3.
+    void write_face() {
+        auto& face = sized<Halfedge, Face>("h:face", new_nh());
+        passes(
+            0.5, 0.6,
+            [&](std::size_t h) {
+                const Face f = old_.face[h];
+                face[2 * h] = f.is_valid() ? Face(4 * f.idx() + (corner(h) + 2) % 3) : Face();
+                const std::size_t t = h ^ 1;
+                const Face g = old_.face[t];
+                face[2 * h + 1] = g.is_valid() ? Face(4 * g.idx() + corner(t)) : Face();
+            },
+            [&](std::size_t f) {
+                for (std::uint32_t i = 0; i < 3; ++i) {
+                    const std::size_t a = inner(f, i).idx();
+                    face[a] = Face(u32(4 * f + i));
+                    face[a + 1] = Face(u32(4 * f + 3));
+                }
+            });
+    }
+
+    // 2h = first(h): next is 2I_i in corner face 4f+i (read back from the new face array),
+    // or second(h) on the boundary. 2h+1 = second(t): next is first(next(t)) either way.
+    // Inner: 2I_i -> second(h_i) (corner face), 2I_i + 1 -> 2I_j + 1 (centre). Faces 4f+i are
+    // anchored at first(h_i+1), the centre at 2I_0 + 1.
+    void write_next_and_face_anchors() {
+        auto& next = sized<Halfedge, Halfedge>("h:next", new_nh());
+        auto& anchors = sized<Face, Halfedge>("f:halfedge", 4 * nf_);
+        const memory::Array<Face>& face = array<Halfedge, Face>(mesh_, "h:face");
+        passes(
+            0.6, 0.75,
+            [&](std::size_t h) {
+                const Face corner_face = face[2 * h];
+                next[2 * h] = corner_face.is_valid()
+                                  ? inner(corner_face.idx() / 4, corner_face.idx() % 4)
+                                  : second(h);
+                next[2 * h + 1] = first(old_.next[h ^ 1].idx());
+            },
+            [&](std::size_t f) {
+                std::uint32_t hs[3];
+                face_halfedges(f, hs);
+                for (std::uint32_t i = 0; i < 3; ++i) {
+                    const std::uint32_t j = i == 2 ? 0 : i + 1;
+                    const std::size_t a = inner(f, i).idx();
+                    next[a] = second(hs[i]);
+                    next[a + 1] = Halfedge(inner(f, j).idx() + 1);
+                }
+                Halfedge* face_anchors = &anchors[4 * f];
+                face_anchors[0] = first(hs[1]);
+                face_anchors[1] = first(hs[2]);
+                face_anchors[2] = first(hs[0]);
+                face_anchors[3] = Halfedge(inner(f, 0).idx() + 1);
+            });
+    }
+
+    // prev is the inverse of next: every halfedge is the next of exactly one, so chunks of
+    // halfedges write disjoint entries.
+    void write_prev() {
+        auto& prev = sized<Halfedge, Halfedge>("h:prev", new_nh());
+        const memory::Array<Halfedge>& next = array<Halfedge, Halfedge>(mesh_, "h:next");
+        chunked(new_nh(), threads_, progress_, 0.75, 0.9, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t x = begin; x < end; ++x) {
+                prev[next[x].idx()] = Halfedge(u32(x));
             }
-            // Faces 4f+i are anchored at first(h_i+1), the centre at 2I_0 + 1.
-            Halfedge* anchors = &out.face_halfedge[4 * f];
-            anchors[0] = first(hs[1]);
-            anchors[1] = first(hs[2]);
-            anchors[2] = first(hs[0]);
-            anchors[3] = Halfedge(inner(f, 0).idx() + 1);
-        }
-    });
+        });
+    }
 
     // Vertex anchors, keeping the boundary-anchor rule: an old vertex's first(h) is on the
-    // boundary iff h was; m_e leaves along second() of e's boundary halfedge, if any.
-    memory::Array<Halfedge>& vertex_halfedge = out.vertex_halfedge;
-    chunked(nv + ne, threads, progress, 0.9, 0.95, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t v = begin; v < end; ++v) {
-            if (v < nv) {
-                const Halfedge h = old.vertex_halfedge[v];
-                vertex_halfedge[v] = h.is_valid() ? first(h.idx()) : Halfedge();
-            } else {
-                const std::size_t e = v - nv;
-                const bool h1_boundary = !old.face[2 * e + 1].is_valid();
-                vertex_halfedge[v] = second(h1_boundary ? 2 * e + 1 : 2 * e);
+    // boundary iff h was; m_e leaves along second() of e's boundary halfedge, if any. Old h
+    // was a boundary halfedge iff the new 2h has no face.
+    void write_vertex_anchors() {
+        auto& anchor = sized<Vertex, Halfedge>("v:halfedge", nv_ + ne_);
+        const memory::Array<Face>& face = array<Halfedge, Face>(mesh_, "h:face");
+        chunked(nv_ + ne_, threads_, progress_, 0.9, 0.95, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t v = begin; v < end; ++v) {
+                if (v < nv_) {
+                    const Halfedge h = old_.vertex_halfedge[v];
+                    anchor[v] = h.is_valid() ? first(h.idx()) : Halfedge();
+                } else {
+                    const std::size_t e = v - nv_;
+                    const bool h1_boundary = !face[2 * (2 * e + 1)].is_valid();
+                    anchor[v] = second(h1_boundary ? 2 * e + 1 : 2 * e);
+                }
             }
-        }
-    });
-}
+        });
+    }
+
+    Mesh& mesh_;
+    OldMesh& old_;
+    std::size_t nv_;
+    std::size_t nh_;
+    std::size_t ne_;
+    std::size_t nf_;
+    unsigned threads_;
+    Progress& progress_;
+};
 
 }  // namespace
 
@@ -360,10 +394,11 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
     }
 
     try {
-        // Move the old connectivity out of the mesh (the arrays are left empty).
+        // Move the old connectivity out of the mesh (the arrays are left empty). prev is not
+        // needed: the new prev is the inverse of the new next.
         OldMesh old;
         old.next = take(array<Halfedge, Halfedge>(mesh, "h:next"));
-        old.prev = take(array<Halfedge, Halfedge>(mesh, "h:prev"));
+        release(array<Halfedge, Halfedge>(mesh, "h:prev"));
         old.to = take(array<Halfedge, Vertex>(mesh, "h:vertex"));
         old.face = take(array<Halfedge, Face>(mesh, "h:face"));
         old.face_halfedge = take(array<Face, Halfedge>(mesh, "f:halfedge"));
@@ -374,26 +409,32 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
         }
 
         // Shrinking the edge, halfedge and face arrays to 0 resets every user property on
-        // them to its default (their old values would describe the wrong elements).
+        // them to its default (their old values would describe the wrong elements), and
+        // frees their storage.
         mesh.resize(nv, 0, 0);
+        release(array<Edge, std::uint8_t>(mesh, "e:deleted"));
+        release(array<Face, std::uint8_t>(mesh, "f:deleted"));
         const unsigned threads = parallel::thread_count(nf, kParallelFaces, options.max_threads);
-        NewArrays out(mesh);
-        out.vertex_halfedge.clear();  // refilled whole; nothing to keep
-        size_arrays(out, old, nv, threads);
         progress(0.1);
 
-        loop_positions(out.position, old, mesh.position_vector(), options.weights, threads,
-                       progress);
-        mesh.position_vector().swap(out.position);  // the old positions are freed below
-        loop_connectivity(out, old, nv, threads, progress);
+        // Positions first: the old ones are freed before any connectivity is allocated.
+        {
+            memory::Array<Vec3> position(new_nv);
+            loop_positions(position, old, mesh.position_vector(), options.weights, threads,
+                           progress);
+            mesh.position_vector().swap(position);
+        }
+        LoopConnectivity(mesh, old, nv, threads, progress).run();
 
         // Both children of a crease edge stay creases; inner edges are not creases.
-        if (out.crease != nullptr) {
+        if (crease) {
+            memory::Array<std::uint8_t>& flags = crease.vector();
+            flags.assign(new_ne, 0);
             for (std::size_t g = 0; g < 2 * ne; ++g) {
-                (*out.crease)[g] = old.crease[g / 2];
+                flags[g] = old.crease[g / 2];
             }
         }
-        // Sizes what is left (user properties) to the new counts.
+        // Sizes what is left (deletion flags, user properties) to the new counts.
         mesh.resize(new_nv, new_ne, new_nf);
     } catch (...) {
         mesh.clear();  // never leave half-built connectivity behind
