@@ -83,9 +83,9 @@ void chunked(std::size_t n, unsigned threads, Progress& progress, double lo, dou
 }
 
 // Moves the contents out of a property array, leaving it empty (and unallocated).
-template <class T>
-memory::Array<T> take(memory::Array<T>& v) {
-    memory::Array<T> out;
+template <class A>
+A take(A& v) {
+    A out;
     out.swap(v);
     return out;
 }
@@ -116,9 +116,9 @@ struct OldMesh {
 };
 
 // Frees an array's storage now (clear() keeps it).
-template <class T>
-void release(memory::Array<T>& v) {
-    memory::Array<T>().swap(v);
+template <class A>
+void release(A& v) {
+    A().swap(v);
 }
 
 // New positions. Edge points: one pass over the edges. Vertex points: one pass over the
@@ -215,7 +215,7 @@ private:
     template <class H, class T>
     memory::Array<T>& sized(const char* name, std::size_t n) {
         memory::Array<T>& a = array<H, T>(mesh_, name);
-        a.resize(n);
+        a.resize_for_overwrite(n);  // every element is written by the pass that follows
         return a;
     }
     std::size_t new_nh() const { return 2 * (2 * ne_ + 3 * nf_); }
@@ -419,7 +419,8 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
 
         // Positions first: the old ones are freed before any connectivity is allocated.
         {
-            memory::Array<Vec3> position(new_nv);
+            memory::Array<Vec3> position;
+            position.resize_for_overwrite(new_nv);  // loop_positions writes every point
             loop_positions(position, old, mesh.position_vector(), options.weights, threads,
                            progress);
             mesh.position_vector().swap(position);

@@ -1,6 +1,7 @@
 // Storage of big arrays (memory.h): big buffers start on a 2 MiB boundary, small ones come
 // from operator new, and arrays behave as std::vector whichever path their buffer took.
 #include "meshedit/core/memory.h"
+#include "meshedit/core/pod_array.h"
 
 #include <gtest/gtest.h>
 
@@ -51,6 +52,49 @@ TEST(Memory, ArraysGrowCopyAndShrinkAcrossTheThreshold) {
     a.resize(10);
     a.shrink_to_fit();
     EXPECT_EQ(a, memory::Array<std::uint32_t>(expected.begin(), expected.begin() + 10));
+}
+
+TEST(PodArray, BehavesAsAVector) {
+    memory::PodArray<int> a{1, 2, 3};
+    a.resize(5);  // value-initialised, as std::vector
+    EXPECT_EQ(a, (memory::PodArray<int>{1, 2, 3, 0, 0}));
+    a.resize(2);
+    a.resize(4, 7);
+    EXPECT_EQ(a, (memory::PodArray<int>{1, 2, 7, 7}));
+    a.push_back(a[0]);  // an element of itself, across a reallocation
+    a.append(3, a.back());
+    EXPECT_EQ(a, (memory::PodArray<int>{1, 2, 7, 7, 1, 1, 1, 1}));
+    const std::vector<int> more{5, 6};
+    a.insert(a.end(), more.begin(), more.end());
+    EXPECT_EQ(a.size(), 10u);
+    EXPECT_EQ(a.back(), 6);
+    memory::PodArray<int> copy = a;
+    memory::PodArray<int> moved = std::move(copy);
+    EXPECT_EQ(moved, a);
+    EXPECT_TRUE(copy.empty());  // NOLINT(bugprone-use-after-move): moved-from is empty
+    moved.assign(3, 9);
+    EXPECT_EQ(moved, (memory::PodArray<int>{9, 9, 9}));
+    moved.clear();
+    moved.shrink_to_fit();
+    EXPECT_EQ(moved.capacity(), 0u);
+    EXPECT_EQ(moved.data(), nullptr);
+}
+
+TEST(PodArray, GrowsByDoublingAndResizesForOverwriteWithoutTouchingOldElements) {
+    memory::PodArray<std::uint32_t> a;
+    std::size_t reallocations = 0;
+    const std::uint32_t* data = a.data();
+    for (std::uint32_t i = 0; i < 100'000; ++i) {
+        a.append(1, i);
+        reallocations += a.data() != data;
+        data = a.data();
+    }
+    EXPECT_LE(reallocations, 20u);  // log2(100,000) + 1
+    a.resize_for_overwrite(200'000);
+    EXPECT_EQ(a.size(), 200'000u);
+    for (std::uint32_t i = 0; i < 100'000; ++i) {
+        ASSERT_EQ(a[i], i);
+    }
 }
 
 TEST(Memory, MeshesAreTheSameWithAndWithoutHugePages) {

@@ -10,7 +10,7 @@
 /// `Allocator<T>` therefore maps buffers of kBigBytes or more directly, 2 MiB-aligned, and
 /// asks for huge pages on every whole 2 MiB page of the buffer (the tail keeps small pages, so
 /// no memory is wasted); freeing unmaps them at once. Smaller buffers come from operator new.
-/// `Array<T>` is the std::vector that mesh properties are stored in.
+/// pod_array.h builds the arrays that mesh properties are stored in on it.
 
 #include <algorithm>
 #include <cstddef>
@@ -79,10 +79,6 @@ public:
         return true;
     }
 };
-
-/// The vector that mesh property arrays (and big scratch arrays) are stored in.
-template <class T>
-using Array = std::vector<T, Allocator<T>>;
 
 /// Room for `extra` more elements, doubling the capacity when it grows (as push_back does), so
 /// that repeated calls stay amortised O(1) per element.

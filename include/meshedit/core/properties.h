@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "meshedit/core/memory.h"
+#include "meshedit/core/pod_array.h"
 
 namespace meshedit {
 
@@ -58,12 +58,7 @@ public:
     void reserve(std::size_t n) override { data_.reserve(n); }
     void resize(std::size_t n) override { data_.resize(n, default_); }
     void push_back() override { data_.push_back(default_); }
-    void push_back_n(std::size_t k) override {
-        memory::reserve_more(data_, k);
-        for (std::size_t i = 0; i < k; ++i) {
-            data_.push_back(default_);
-        }
-    }
+    void push_back_n(std::size_t k) override { memory::append(data_, k, default_); }
     void shrink_to_fit() override { data_.shrink_to_fit(); }
     void compact(const std::vector<std::uint32_t>& kept) override {
         for (std::size_t i = 0; i < kept.size(); ++i) {
