@@ -138,11 +138,21 @@ public:
     /// `with_position`, its position; a face's anchor). On a large mesh each of those is a
     /// cache miss; asked for together, as soon as the handles are known, the misses overlap
     /// instead of queueing behind one another. No effect on the mesh.
-    void prefetch(Halfedge h) const {
-        prefetch_for_write(&hnext_[h]);
-        prefetch_for_write(&hprev_[h]);
-        prefetch_for_write(&hvertex_[h]);
-        prefetch_for_write(&hface_[h]);
+    /// Which of a halfedge's links prefetch() asks for (or-ed together).
+    enum Links : unsigned { kNext = 1, kPrev = 2, kVertex = 4, kFace = 8, kAllLinks = 15 };
+    void prefetch(Halfedge h, unsigned links = kAllLinks) const {
+        if ((links & kNext) != 0) {
+            prefetch_for_write(&hnext_[h]);
+        }
+        if ((links & kPrev) != 0) {
+            prefetch_for_write(&hprev_[h]);
+        }
+        if ((links & kVertex) != 0) {
+            prefetch_for_write(&hvertex_[h]);
+        }
+        if ((links & kFace) != 0) {
+            prefetch_for_write(&hface_[h]);
+        }
     }
     void prefetch(Vertex v, bool with_position = false) const {
         prefetch_for_write(&vhalfedge_[v]);
