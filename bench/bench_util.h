@@ -19,16 +19,27 @@
 
 namespace meshedit::bench {
 
-/// Removes `--no-huge-pages` from the arguments and, if it was there, turns MeshEdit's
-/// huge-page hints off (core/memory.h): measures what they are worth. Call first in main().
+/// MeshEdit with its huge-page hint off, reported under this name (a reference, not an anchor).
+inline constexpr const char* kNoHugePagesImpl = "meshedit_no_huge_pages";
+
+/// Turns MeshEdit's huge-page hint off (core/memory.h) for `--no-huge-pages` (removed from
+/// the arguments) and for `--impl meshedit_no_huge_pages` (which then runs as `meshedit`), to
+/// measure what the hint is worth. Call first in main().
 inline void take_common_flags(int& argc, char** argv) {
+    static char meshedit_impl[] = "meshedit";
     int out = 1;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--no-huge-pages") == 0) {
             memory::set_huge_pages_enabled(false);
-        } else {
-            argv[out++] = argv[i];
+            continue;
         }
+        if (std::strcmp(argv[i], kNoHugePagesImpl) == 0 && i > 1 &&
+            std::strcmp(argv[i - 1], "--impl") == 0) {
+            memory::set_huge_pages_enabled(false);
+            argv[out++] = meshedit_impl;
+            continue;
+        }
+        argv[out++] = argv[i];
     }
     argc = out;
 }
@@ -73,10 +84,12 @@ inline double peak_rss_mb() {
 inline void print_result(const std::string& job, const std::string& impl,
                          const std::vector<double>& ms,
                          const std::map<std::string, double>& extra = {}) {
+    const bool no_huge_pages = impl == "meshedit" && !memory::huge_pages_enabled();
     std::printf(
         "RESULT {\"job\": \"%s\", \"impl\": \"%s\", \"runs\": %zu, \"min_ms\": %.3f, "
         "\"median_ms\": %.3f",
-        job.c_str(), impl.c_str(), ms.size(), min_of(ms), median_of(ms));
+        job.c_str(), no_huge_pages ? kNoHugePagesImpl : impl.c_str(), ms.size(), min_of(ms),
+        median_of(ms));
     for (const auto& [key, value] : extra) {
         std::printf(", \"%s\": %.6g", key.c_str(), value);
     }
