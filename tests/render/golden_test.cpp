@@ -102,6 +102,9 @@ const std::vector<GoldenCase>& golden_cases() {
         // Bezier patches tessellated, with and without their control nets.
         {"teapot_bez", "bez/teapot.bez", {"--smooth"}},
         {"teapot_bez_net", "bez/teapot.bez", {"--smooth", "--net"}},
+        // Back faces are culled only when every part is closed and outward: the inside-out
+        // cube on the right must still be drawn (shaded two-sided).
+        {"cubes_one_inside_out", "tests/golden/data/cubes_one_inside_out.obj", {"--flat"}},
         // The wireframe overlay toggled on a smooth surface.
         {"torus_wireframe_off", "dae/torus.dae", {"--smooth"}},
         {"torus_wireframe_on", "dae/torus.dae", {"--smooth", "--wireframe"}},
