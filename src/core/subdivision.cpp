@@ -233,6 +233,13 @@ private:
         hs[1] = old_.next[hs[0]].idx();
         hs[2] = old_.next[hs[1]].idx();
     }
+    // body(i, j, a) for each corner i of old face f, with j = i + 1 (mod 3) and a = 2I_i.
+    template <class Body>
+    void for_each_corner(std::size_t f, const Body& body) const {
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            body(i, i == 2 ? 0 : i + 1, std::size_t{inner(f, i).idx()});
+        }
+    }
     // Position (0, 1, 2) of interior old halfedge h in its face, counted from halfedge(f).
     std::uint32_t corner(std::size_t h) const {
         const Halfedge h0 = old_.face_halfedge[old_.face[h].idx()];
@@ -268,12 +275,10 @@ private:
             [&](std::size_t f) {
                 std::uint32_t hs[3];
                 face_halfedges(f, hs);
-                for (std::uint32_t i = 0; i < 3; ++i) {
-                    const std::uint32_t j = i == 2 ? 0 : i + 1;
-                    const std::size_t a = inner(f, i).idx();
+                for_each_corner(f, [&](std::uint32_t i, std::uint32_t j, std::size_t a) {
                     to[a] = Vertex(u32(nv_ + hs[i] / 2));
                     to[a + 1] = Vertex(u32(nv_ + hs[j] / 2));
-                }
+                });
             });
     }
 
@@ -292,11 +297,10 @@ private:
                 face[2 * h + 1] = g.is_valid() ? Face(4 * g.idx() + corner(t)) : Face();
             },
             [&](std::size_t f) {
-                for (std::uint32_t i = 0; i < 3; ++i) {
-                    const std::size_t a = inner(f, i).idx();
+                for_each_corner(f, [&](std::uint32_t i, std::uint32_t, std::size_t a) {
                     face[a] = Face(u32(4 * f + i));
                     face[a + 1] = Face(u32(4 * f + 3));
-                }
+                });
             });
     }
 
@@ -320,12 +324,10 @@ private:
             [&](std::size_t f) {
                 std::uint32_t hs[3];
                 face_halfedges(f, hs);
-                for (std::uint32_t i = 0; i < 3; ++i) {
-                    const std::uint32_t j = i == 2 ? 0 : i + 1;
-                    const std::size_t a = inner(f, i).idx();
+                for_each_corner(f, [&](std::uint32_t i, std::uint32_t j, std::size_t a) {
                     next[a] = second(hs[i]);
                     next[a + 1] = Halfedge(inner(f, j).idx() + 1);
-                }
+                });
                 Halfedge* face_anchors = &anchors[4 * f];
                 face_anchors[0] = first(hs[1]);
                 face_anchors[1] = first(hs[2]);
