@@ -108,59 +108,82 @@ struct FaceArrays {
     const Vec3* position;
 };
 
-// The sums of one chunk of faces: its own vertices [lo, hi) in `sums`, the rest in `others`.
-struct ChunkSums {
+// A live face's corners and area vector. For triangles, the common case, the same cross
+// product face_area_vector() forms, without walking the face twice.
+struct FaceCorners {
+    Vertex v[3];
+    Vec3 area;
+    bool triangle;
+};
+
+FaceCorners face_corners(const Mesh& mesh, const FaceArrays& m, std::size_t i) {
+    const Halfedge h0 = m.face_halfedge[i];
+    const Halfedge h1 = m.next[h0.idx()];
+    const Halfedge h2 = m.next[h1.idx()];
+    FaceCorners c{{m.to[h2.idx()], m.to[h0.idx()], m.to[h1.idx()]}, {}, m.next[h2.idx()] == h0};
+    if (c.triangle) {
+        const Vec3& p0 = m.position[c.v[0].idx()];
+        c.area = cross(m.position[c.v[1].idx()] - p0, m.position[c.v[2].idx()] - p0);
+    } else {
+        c.area = face_area_vector(mesh, Face(static_cast<std::uint32_t>(i)));
+    }
+    return c;
+}
+
+// One chunk's share of the sums: the vertices [lo, hi) are its own, to write at will.
+struct OwnedRange {
     Vec3* sums;
     std::size_t lo;
     std::size_t hi;
-    std::vector<Contribution>* others;
 
     bool owns(Vertex v) const { return v.idx() >= lo && v.idx() < hi; }
-    void add(Vertex v, const Vec3& a) const {
-        if (owns(v)) {
-            sums[v.idx()] += a;
+    // Adds `c` to the corners this range owns (owned == true) or to the others; returns
+    // whether any corner was of the other kind.
+    bool add(const Mesh& mesh, std::size_t i, const FaceCorners& c, bool owned) const {
+        bool skipped = false;
+        auto visit = [&](Vertex v) {
+            if (owns(v) == owned) {
+                sums[v.idx()] += c.area;
+            } else {
+                skipped = true;
+            }
+        };
+        if (c.triangle) {
+            visit(c.v[0]);
+            visit(c.v[1]);
+            visit(c.v[2]);
         } else {
-            others->push_back({v, a});
+            for (Vertex v : mesh.vertices(Face(static_cast<std::uint32_t>(i)))) {
+                visit(v);
+            }
         }
+        return skipped;
     }
 };
 
-// A polygon, or a triangle with a corner another chunk owns: the uncommon cases, kept out of
-// the loop below.
-void add_face(const Mesh& mesh, Face f, const Vec3& area, const ChunkSums& out) {
-    for (Vertex v : mesh.vertices(f)) {
-        out.add(v, area);
-    }
-}
-
-// Adds the area vectors of the live faces [begin, end) to their corners.
+// Adds the area vectors of the live faces [begin, end) to the corners `out` owns, and lists
+// the faces with a corner it does not own in `unfinished`.
 void scatter_faces(const Mesh& mesh, const FaceArrays& m, std::size_t begin, std::size_t end,
-                   const ChunkSums& out) {
+                   const OwnedRange& out, std::vector<std::uint32_t>& unfinished) {
     for (std::size_t i = begin; i < end; ++i) {
         if (m.face_deleted[i] != 0) {
             continue;
         }
-        const Face f(static_cast<std::uint32_t>(i));
         const Halfedge h0 = m.face_halfedge[i];
         const Halfedge h1 = m.next[h0.idx()];
         const Halfedge h2 = m.next[h1.idx()];
-        if (m.next[h2.idx()] != h0) {
-            add_face(mesh, f, face_area_vector(mesh, f), out);
-            continue;
-        }
-        // Triangles, the common case: the same cross product face_area_vector() forms,
-        // without walking the face twice.
         const Vertex v0 = m.to[h2.idx()];
         const Vertex v1 = m.to[h0.idx()];
         const Vertex v2 = m.to[h1.idx()];
-        const Vec3& p0 = m.position[v0.idx()];
-        const Vec3 a = cross(m.position[v1.idx()] - p0, m.position[v2.idx()] - p0);
-        if (out.owns(v0) && out.owns(v1) && out.owns(v2)) {
+        if (m.next[h2.idx()] == h0 && out.owns(v0) && out.owns(v1) && out.owns(v2)) {
+            // The common case, kept free of calls: the cross product face_corners() forms.
+            const Vec3& p0 = m.position[v0.idx()];
+            const Vec3 a = cross(m.position[v1.idx()] - p0, m.position[v2.idx()] - p0);
             out.sums[v0.idx()] += a;
             out.sums[v1.idx()] += a;
             out.sums[v2.idx()] += a;
-        } else {
-            add_face(mesh, f, a, out);
+        } else if (out.add(mesh, i, face_corners(mesh, m, i), true)) {
+            unfinished.push_back(static_cast<std::uint32_t>(i));
         }
     }
 }
@@ -169,9 +192,10 @@ void scatter_faces(const Mesh& mesh, const FaceArrays& m, std::size_t begin, std
 
 // Faces are cut into chunks of kChunk; the chunk of faces [b, e) owns the vertices
 // [b·V/F, e·V/F). Each chunk (on any thread) zeroes its own vertices and adds its faces' area
-// vectors to them in face order; a corner owned by another chunk goes to the chunk's list
-// instead. Then the lists are added in chunk order, and the sums normalised. On a mesh whose
-// vertex order follows its face order (builders, subdivision) the lists are short. Every sum
+// vectors to them in face order; a face with a corner owned by another chunk goes on the
+// chunk's list of unfinished faces. Then, chunk by chunk in order, the listed faces are added
+// to the corners their chunk skipped, and the sums normalised. On a mesh whose vertex order
+// follows its face order (builders, subdivision) the lists are short. Every sum
 // is formed in an order fixed by the mesh alone, so the bits do not depend on the number of
 // threads; with a single chunk (up to 65,536 faces) the order is plain face order.
 void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out, unsigned max_threads) {
@@ -188,18 +212,25 @@ void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out, unsigned m
         const std::size_t x = std::min(c * kChunk, nf);
         return nv / nf * x + nv % nf * x / nf;
     };
-    std::vector<std::vector<Contribution>> foreign(n_chunks);
+    // Faces a chunk left unfinished: 4 bytes each, where a list of (vertex, area vector)
+    // pairs took 32 per corner and, allocated afresh per call, most of the time on a 6.4M-face
+    // mesh in page faults. Their area vectors are formed again below, the same bits.
+    std::vector<std::vector<std::uint32_t>> unfinished(n_chunks);
     const unsigned threads = parallel::thread_count(mesh.n_faces(), kParallelFaces, max_threads);
     const FaceArrays arrays(mesh);
+    auto range = [&](std::size_t c) {
+        return OwnedRange{out.data(), first_owned(c), first_owned(c + 1)};
+    };
     parallel::for_chunks(nf, kChunk, threads, [&](std::size_t begin, std::size_t end) {
         const std::size_t c = begin / kChunk;
-        const ChunkSums sums{out.data(), first_owned(c), first_owned(c + 1), &foreign[c]};
-        std::fill(sums.sums + sums.lo, sums.sums + sums.hi, Vec3{});
-        scatter_faces(mesh, arrays, begin, end, sums);
+        const OwnedRange own = range(c);
+        std::fill(own.sums + own.lo, own.sums + own.hi, Vec3{});
+        scatter_faces(mesh, arrays, begin, end, own, unfinished[c]);
     });
-    for (const std::vector<Contribution>& list : foreign) {
-        for (const Contribution& x : list) {
-            out[x.vertex.idx()] += x.area;
+    for (std::size_t c = 0; c < n_chunks; ++c) {
+        const OwnedRange own = range(c);
+        for (const std::uint32_t i : unfinished[c]) {
+            own.add(mesh, i, face_corners(mesh, arrays, i), false);
         }
     }
     parallel::for_chunks(nv, kChunk, threads, [&](std::size_t begin, std::size_t end) {
