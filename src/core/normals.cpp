@@ -85,12 +85,6 @@ constexpr std::size_t kParallelFaces = 100'000;
 // Faces per chunk of the scatter, vertices per chunk of the normalisation.
 constexpr std::size_t kChunk = 1 << 16;
 
-// A face's area vector bound for a vertex another chunk owns.
-struct Contribution {
-    Vertex vertex;
-    Vec3 area;
-};
-
 // The arrays the scatter reads, as plain pointers: the compiler keeps them in registers
 // through the loop, where every Mesh accessor would reload its array after each call.
 struct FaceArrays {
