@@ -17,11 +17,15 @@
 #include <map>
 #include <sstream>
 
+#include "gltf_guard.h"
 #include "io_detail.h"
 #include "meshedit/core/normals.h"
 
 namespace meshedit {
 namespace {
+
+/// External buffer files larger than this are refused (tinygltf reads them whole).
+constexpr std::size_t kMaxBufferFileBytes = std::size_t{1} << 32;
 
 /// Column-major 4×4 matrix, as glTF stores them.
 using Mat4 = std::array<double, 16>;
@@ -118,10 +122,7 @@ public:
                         static_cast<std::size_t>(model_.defaultScene) < scenes.size()
                     ? static_cast<std::size_t>(model_.defaultScene)
                     : 0;
-            on_path_.assign(model_.nodes.size(), false);
-            for (const int n : scenes[s].nodes) {
-                visit_node(n, kIdentity);
-            }
+            visit_scene(scenes[s]);
         } else {
             // A file with no scene shows nothing by the letter of the spec; loading its meshes
             // as they are is more useful, and said.
@@ -144,26 +145,40 @@ public:
     }
 
 private:
-    void visit_node(int index, const Mat4& parent) {
-        if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size()) {
-            throw IoError(
-                file_, "",
-                "a scene refers to node " + std::to_string(index) + ", which does not exist");
+    // Depth-first, children in order (the order decides vertex numbers), with an explicit
+    // stack: a chain of 20,000 nodes must not overflow the call stack. The spec requires the
+    // node graph to be a set of trees, so a node reached twice (two parents, a cycle, a root
+    // listed twice) is refused; that also bounds the walk to one visit per node, where a
+    // graph listing the same child twice at every level would otherwise expand to 2^depth.
+    void visit_scene(const tinygltf::Scene& scene) {
+        std::vector<bool> reached(model_.nodes.size(), false);
+        std::vector<std::pair<int, Mat4>> stack;
+        for (auto root = scene.nodes.rbegin(); root != scene.nodes.rend(); ++root) {
+            stack.emplace_back(*root, kIdentity);
         }
-        // The node graph must be a tree; a cycle would recurse forever.
-        if (on_path_[index]) {
-            throw IoError(file_, "node " + std::to_string(index), "the node is its own ancestor");
+        while (!stack.empty()) {
+            const auto [index, parent] = stack.back();
+            stack.pop_back();
+            if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size()) {
+                throw IoError(file_, "",
+                              "a scene or node refers to node " + std::to_string(index) +
+                                  ", which does not exist");
+            }
+            if (reached[static_cast<std::size_t>(index)]) {
+                throw IoError(file_, "node " + std::to_string(index),
+                              "the node is reached twice from the scene (two parents or a "
+                              "cycle); glTF node graphs must be trees");
+            }
+            reached[static_cast<std::size_t>(index)] = true;
+            const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+            const Mat4 world = multiply(parent, local_matrix(node));
+            if (node.mesh >= 0) {
+                add_mesh(node.mesh, world);
+            }
+            for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
+                stack.emplace_back(*child, world);
+            }
         }
-        on_path_[index] = true;
-        const tinygltf::Node& node = model_.nodes[index];
-        const Mat4 world = multiply(parent, local_matrix(node));
-        if (node.mesh >= 0) {
-            add_mesh(node.mesh, world);
-        }
-        for (const int child : node.children) {
-            visit_node(child, world);
-        }
-        on_path_[index] = false;
     }
 
     void add_mesh(int mesh_index, const Mat4& world) {
@@ -386,7 +401,6 @@ private:
     const tinygltf::Model& model_;
     std::string file_;
     MeshSoup out_;
-    std::vector<bool> on_path_;
     bool all_have_normals_ = true;
     std::size_t skipped_primitives_ = 0;
 };
@@ -438,13 +452,16 @@ MeshSoup read_gltf(const std::filesystem::path& path) {
     if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
         throw IoError(file, "", "file too large for the glTF loader (over 4 GiB)");
     }
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skip_image, nullptr);
-    tinygltf::Model model;
-    std::string err, warn;
-    const std::string base_dir = path.parent_path().string();
     // The content decides, not the extension: a binary glTF always starts with "glTF".
     const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+    gltf_guard::check_json_depth(bytes, binary, file);
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skip_image, nullptr);
+    const std::string base_dir = path.parent_path().string();
+    gltf_guard::ConfinedFiles files(base_dir, kMaxBufferFileBytes);
+    loader.SetFsCallbacks(files.callbacks());
+    tinygltf::Model model;
+    std::string err, warn;
     bool ok = false;
     try {
         ok = binary ? loader.LoadBinaryFromMemory(
@@ -454,6 +471,9 @@ MeshSoup read_gltf(const std::filesystem::path& path) {
                                                  static_cast<unsigned int>(bytes.size()), base_dir);
     } catch (const std::exception& e) {
         throw IoError(file, "", std::string("cannot parse: ") + e.what());
+    }
+    if (!files.refusal().empty()) {
+        throw IoError(file, "", files.refusal());
     }
     if (!ok) {
         throw IoError(file, "", err.empty() ? "cannot parse" : one_line(err));
