@@ -209,6 +209,9 @@ void apply_ops(Mesh& mesh, const std::vector<Op>& ops, const ApplyOptions& optio
             }
             case Op::Kind::Loop: {
                 for (int level = 0; level < op.levels; ++level) {
+                    if (const OpStatus ok = is_loop_ok(mesh); !ok) {
+                        refuse(op, ok.reason());
+                    }
                     // Handles are 32-bit: a level that would overflow the halfedge indices
                     // (2E' = 2(2E + 3F)) is refused rather than silently wrapping around.
                     const double next_halfedges = 2.0 * (2.0 * static_cast<double>(mesh.n_edges()) +

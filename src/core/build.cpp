@@ -6,7 +6,8 @@
 //      endpoint; an edge used by more than two faces, or twice in one direction, is cut:
 //      all its halfedges stay unpaired and become boundary;
 //   3. group the corners around each vertex into fans (walks over corners linked through
-//      paired edges); every fan after the first gets a copy of the vertex;
+//      paired edges); every fan after the first gets a copy of the vertex; the two sides of a
+//      cut edge that still join the same two vertices are glued (no doubled edges);
 //   4. assign edges in order of first appearance, add boundary twins, link boundary loops.
 #include "meshedit/core/build.h"
 
@@ -290,6 +291,43 @@ void label_fans(const SoupHalfedges& fh, const memory::Array<std::uint32_t>& mat
         static_cast<std::size_t>(std::count(used.begin(), used.end(), std::uint8_t{0}));
 }
 
+// A cut edge whose sides still end at the same two fan vertices after label_fans() would
+// become two edges joining the same two vertices: a slit, a boundary loop of two edges that
+// no face-list file can describe. (The smallest case: faces (0,1,2), (0,2,1), (0,1,3); edge
+// 0-1 is cut, the third face gets copies of 0 and 1, and the first two still share both.)
+// Such sides are glued back into one edge. Within one fan a corner is linked out only through
+// a paired halfedge, so the fan at either end has exactly one unpaired side leaving and one
+// arriving: at most one u->v and one v->u side share their fan vertices, and gluing them
+// closes both fans into cycles without changing any fan label. \return the pairs made.
+std::uint32_t glue_slits(const SoupHalfedges& fh, memory::Array<std::uint32_t>& mate,
+                         const memory::Array<TwoWords>& slots) {
+    struct Side {
+        std::uint32_t lo, hi, h;  // fan vertices (smaller first) and the halfedge
+    };
+    std::vector<Side> sides;
+    for (std::uint32_t h = 0; h < fh.n_halfedges; ++h) {
+        if (mate[h] == kNone) {
+            const std::uint32_t from = slots[fh.prev(h)].first;
+            const std::uint32_t to = slots[h].first;
+            sides.push_back({std::min(from, to), std::max(from, to), h});
+        }
+    }
+    std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
+        return a.lo != b.lo ? a.lo < b.lo : a.hi != b.hi ? a.hi < b.hi : a.h < b.h;
+    });
+    std::uint32_t glued = 0;
+    for (std::size_t i = 0; i + 1 < sides.size(); ++i) {
+        if (sides[i].lo == sides[i + 1].lo && sides[i].hi == sides[i + 1].hi &&
+            slots[sides[i].h].first != slots[sides[i + 1].h].first) {  // opposite directions
+            mate[sides[i].h] = sides[i + 1].h;
+            mate[sides[i + 1].h] = sides[i].h;
+            ++glued;
+            ++i;
+        }
+    }
+    return glued;
+}
+
 }  // namespace
 
 Mesh build_mesh(const PolygonSoup& soup, BuildReport* report_out) {
@@ -300,7 +338,7 @@ Mesh build_mesh(const PolygonSoup& soup, BuildReport* report_out) {
     collect_faces(soup, fh, report);
     std::uint32_t n_pairs = 0;
     memory::Array<TwoWords> slots;
-    const memory::Array<std::uint32_t> mate = pair_halfedges(fh, nv_in, slots, n_pairs, report);
+    memory::Array<std::uint32_t> mate = pair_halfedges(fh, nv_in, slots, n_pairs, report);
     const std::uint32_t nh = fh.n_halfedges;
     const std::uint32_t nf = fh.n_faces;
 
@@ -308,6 +346,9 @@ Mesh build_mesh(const PolygonSoup& soup, BuildReport* report_out) {
     // From here on slots[h] = {fan vertex, mesh halfedge} of face halfedge h.
     std::fill(slots.begin(), slots.end(), TwoWords{kNone, kNone});
     label_fans(fh, mate, soup.positions, slots, extra_positions, report);
+    if (!report.nonmanifold_edges.empty()) {
+        n_pairs += glue_slits(fh, mate, slots);
+    }
     auto fan_vertex = [&](std::uint32_t h) { return slots[h].first; };
     auto mesh_halfedge = [&](std::uint32_t h) -> std::uint32_t& { return slots[h].second; };
 

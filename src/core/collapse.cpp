@@ -58,8 +58,14 @@ OpStatus is_collapse_ok(const Mesh& mesh, Edge e) {
     if (a == d) {  // both faces are the same three vertices: a two-triangle pillow
         return OpStatus::refused("cannot collapse: the mesh would degenerate");
     }
-    // Vertex part of the link condition: common neighbours are exactly a and d.
+    // Vertex part of the link condition: common neighbours are exactly a and d. A second
+    // edge v0-v1 would become a self-loop (valid meshes have none; this keeps the op safe on
+    // a mesh built by hand that has one).
+    std::size_t edges_to_v0 = 0;
     for (const Vertex w : mesh.vertices(v1)) {
+        if (w == v0 && ++edges_to_v0 > 1) {
+            return OpStatus::refused("cannot collapse: another edge joins the same two vertices");
+        }
         if (w != v0 && w != a && w != d && mesh.find_halfedge(v0, w).is_valid()) {
             return OpStatus::refused("cannot collapse: the link condition fails");
         }

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <functional>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/math.h"
@@ -100,7 +102,11 @@ inline Vec3 sharp_edge_point(const Vec3& a, const Vec3& b) {
 /// Brings the mesh into the shape both paths expect: garbage collected (dense indices, so
 /// the new vertex on edge e is V + e) and all faces triangles.
 /// \return the report with the number of triangulated faces.
+/// \throws std::invalid_argument if is_loop_ok() refuses, before anything changes.
 inline LoopReport prepare(Mesh& mesh) {
+    if (const OpStatus ok = is_loop_ok(mesh); !ok) {
+        throw std::invalid_argument(std::string(ok.reason()));
+    }
     LoopReport report;
     if (mesh.has_garbage()) {
         mesh.garbage_collection();

@@ -380,6 +380,20 @@ private:
 
 }  // namespace
 
+OpStatus is_loop_ok(const Mesh& mesh) {
+    // Without doubled edges, two triangles that share two edges share all three corners.
+    for (const Face f : mesh.faces()) {
+        const Halfedge h = mesh.halfedge(f);
+        const Face g = mesh.face(Mesh::twin(h));
+        if (mesh.is_triangle(f) && g.is_valid() && g == mesh.face(Mesh::twin(mesh.next(h)))) {
+            return OpStatus::refused(
+                "cannot subdivide: two triangles on the same three corners (a closed pillow) "
+                "would be joined by doubled edges");
+        }
+    }
+    return OpStatus::ok();
+}
+
 LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
     LoopReport report = loop_rules::prepare(mesh);
     Progress progress(options.progress);

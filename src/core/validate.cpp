@@ -2,6 +2,7 @@
 // first failure reported is the root cause (references before orbits, orbits before anchors).
 #include "meshedit/core/validate.h"
 
+#include <algorithm>
 #include <sstream>
 #include <vector>
 
@@ -46,6 +47,7 @@ public:
     void check_halfedge_orbits();
     void check_faces();
     void check_vertices();
+    void check_simple();
 
 private:
     static std::uint32_t id(auto h) { return h.idx(); }
@@ -225,6 +227,41 @@ void Checker::check_vertices() {
     }
 }
 
+// What a face list can say: no face visits a vertex twice, and no two edges join the same
+// two vertices. A mesh that breaks either cannot be written to a file and read back as the
+// same mesh (a reader glues halfedges by their end vertices), and no operation creates one.
+// Both walks mark vertices with the index of the face or vertex being walked (+1).
+void Checker::check_simple() {
+    std::vector<std::uint32_t> mark(m_.vertices_size(), 0);
+    for (Face f : m_.faces()) {
+        for (Vertex w : m_.vertices(f)) {
+            if (mark[w.idx()] == f.idx() + 1) {
+                fail("face-corner", ElementKind::Face, f.idx(), "visits vertex ", w.idx(),
+                     " twice");
+                return;
+            }
+            mark[w.idx()] = f.idx() + 1;
+        }
+    }
+    std::fill(mark.begin(), mark.end(), 0);
+    std::vector<std::uint32_t> edge_to(m_.vertices_size(), 0);
+    for (Vertex v : m_.vertices()) {
+        if (m_.is_isolated(v)) {
+            continue;
+        }
+        for (Halfedge h : m_.halfedges(v)) {
+            const Vertex w = m_.to_vertex(h);
+            if (mark[w.idx()] == v.idx() + 1) {
+                fail("multi-edge", ElementKind::Edge, Mesh::edge(h).idx(), "joins vertices ",
+                     v.idx(), " and ", w.idx(), ", as edge ", edge_to[w.idx()], " does");
+                return;
+            }
+            mark[w.idx()] = v.idx() + 1;
+            edge_to[w.idx()] = Mesh::edge(h).idx();
+        }
+    }
+}
+
 }  // namespace
 
 std::optional<ValidationError> validate(const Mesh& mesh) {
@@ -241,6 +278,9 @@ std::optional<ValidationError> validate(const Mesh& mesh) {
     }
     if (!c.failed()) {
         c.check_vertices();
+    }
+    if (!c.failed()) {
+        c.check_simple();
     }
     return c.result();
 }

@@ -85,6 +85,9 @@ Outcome Editor::run_mesh_op(Command command) {
         LoopReport report;
         try {
             report = loop_subdivide(mesh);
+        } catch (const std::invalid_argument& e) {
+            doc_ = std::move(before);
+            return refused(e.what());
         } catch (const std::length_error& e) {
             doc_ = std::move(before);
             return refused(std::string("cannot subdivide: ") + e.what());

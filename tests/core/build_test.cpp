@@ -131,6 +131,26 @@ TEST(BuildMesh, InconsistentOrientationIsCut) {
     EXPECT_EQ(mesh.n_edges(), 6u);
 }
 
+// Faces (0,1,2), (0,2,1), (0,1,3): edge 0-1 has three faces and is cut; the third face gets
+// copies of 1 and 0 (4 and 5, in the order its corners are met). The first two still share 0 and 1, and their two sides of
+// 0-1 are glued back: a closed pillow and a separate triangle, and no doubled edge (a slit
+// of two boundary edges 0-1 once made collapse() leave a self-loop).
+TEST(BuildMesh, CutEdgeWhoseSidesStillJoinTheSameVerticesIsGlued) {
+    BuildReport report;
+    const Mesh mesh = build_mesh(test::pillow_and_ear_soup(), &report);
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(report.nonmanifold_edges,
+              (std::vector<std::pair<std::uint32_t, std::uint32_t>>{{0, 1}}));
+    EXPECT_EQ(report.split_vertices, (std::vector<std::uint32_t>{0, 1}));
+    EXPECT_EQ(mesh.n_vertices(), 6u);
+    EXPECT_EQ(mesh.n_edges(), 6u);
+    EXPECT_EQ(count_boundary_loops(mesh), 1u);
+    EXPECT_EQ(count_components(mesh), 2u);
+    EXPECT_EQ(test::canonical_faces(mesh),
+              (std::vector<std::vector<std::uint32_t>>{{0, 1, 2}, {0, 2, 1}, {3, 5, 4}}));
+    EXPECT_TRUE(test::identical(build_mesh(to_polygon_soup(mesh)), mesh));
+}
+
 TEST(BuildMesh, DuplicateFaceBecomesSeparateComponent) {
     BuildReport report;
     const Mesh mesh = build_mesh(
@@ -211,6 +231,12 @@ TEST(BuildMesh, RandomNonManifoldSoupsAlwaysValidate) {
         ASSERT_VALID(mesh) << "trial " << trial;
         ASSERT_EQ(mesh.n_faces() + report.dropped_faces.size(), soup.n_faces());
         ASSERT_EQ(mesh.n_vertices(), soup.positions.size() + report.added_vertices);
+        // The repaired mesh is a face list's own mesh: written out as one and read back, it
+        // is the same mesh and needs no repair (what every file round trip relies on).
+        BuildReport again;
+        ASSERT_TRUE(test::identical(build_mesh(to_polygon_soup(mesh), &again), mesh))
+            << "trial " << trial;
+        ASSERT_FALSE(again.repaired()) << "trial " << trial << ": " << again.summary();
     }
 }
 

@@ -226,6 +226,29 @@ TEST(Collapse, RefusesPillow) {
     }
 }
 
+// The smallest input that made collapse() leave a self-loop (issue: OBJ faces `1 2 3`,
+// `1 3 2`, `1 2 4`). The builder now makes it a closed pillow (0,1,2), (0,2,1) and a separate
+// triangle on copies of 0 and 1 (vertices 4 and 5), with no doubled edge; every collapse
+// is refused and leaves the mesh as it was.
+TEST(Collapse, RefusesEveryEdgeOfThePillowAndEar) {
+    Mesh mesh = build_mesh(test::pillow_and_ear_soup());
+    ASSERT_VALID(mesh);
+    ASSERT_EQ(mesh.n_edges(), 6u);
+    for (Edge e : mesh.edges()) {
+        expect_refused(mesh, e, "cannot collapse: the mesh would degenerate");
+    }
+}
+
+// A slit linked by hand (two edges 0-1): collapsing either would turn the other into a
+// self-loop. Refused by name; the faces' shared edges are refused as a pillow.
+TEST(Collapse, RefusesAnEdgeDoubledByAnother) {
+    Mesh mesh = test::slit_pillow();
+    expect_refused(mesh, Edge(0), "cannot collapse: another edge joins the same two vertices");
+    expect_refused(mesh, Edge(3), "cannot collapse: another edge joins the same two vertices");
+    expect_refused(mesh, Edge(1), "cannot collapse: the mesh would degenerate");
+    expect_refused(mesh, Edge(2), "cannot collapse: the mesh would degenerate");
+}
+
 TEST(Collapse, RefusesDeletedEdge) {
     Mesh mesh = shapes::grid(2, 2);
     const Edge e = mesh.find_edge(Vertex(1), Vertex(4));

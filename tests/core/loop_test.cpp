@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <utility>
@@ -402,6 +403,37 @@ TEST(LoopPreconditions, GarbageFromACollapseIsCollectedFirstByBothPaths) {
     // 41 vertices, 117 edges, 78 faces after collection.
     EXPECT_EQ(fast.vertices_size(), 41u + 117u);
     EXPECT_EQ(fast.faces_size(), 4u * 78u);
+}
+
+// A closed two-triangle pillow would subdivide into a mesh with doubled edges (each edge
+// point pair joined inside both faces), which no file can hold. Both paths refuse it before
+// anything changes.
+TEST(LoopPreconditions, PillowIsRefusedUnchanged) {
+    for (const char* name : {"pillow", "pillow and ear", "two pillows at a vertex"}) {
+        for (const auto& shape : test::pillow_family()) {
+            if (shape.name != name) {
+                continue;
+            }
+            SCOPED_TRACE(shape.name);
+            EXPECT_EQ(is_loop_ok(shape.mesh).reason(),
+                      "cannot subdivide: two triangles on the same three corners (a closed "
+                      "pillow) would be joined by doubled edges");
+            for (bool classic : {false, true}) {
+                Mesh mesh = shape.mesh;
+                EXPECT_THROW(classic ? loop_subdivide_classic(mesh) : loop_subdivide(mesh),
+                             std::invalid_argument);
+                EXPECT_TRUE(test::identical(mesh, shape.mesh));
+            }
+        }
+    }
+    // The rest of the family subdivides into valid meshes.
+    for (const auto& shape : test::pillow_family()) {
+        if (is_loop_ok(shape.mesh)) {
+            Mesh mesh = shape.mesh;
+            loop_subdivide(mesh);
+            EXPECT_VALID(mesh) << shape.name;
+        }
+    }
 }
 
 TEST(LoopPreconditions, EmptyMeshStaysEmpty) {

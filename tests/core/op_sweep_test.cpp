@@ -89,6 +89,7 @@ enum Op { kFlip, kSplit, kCollapse };
 
 // Random ops on one mesh. The mix leans towards splits while the mesh is smaller than it
 // started and towards collapses while it is larger; leaving [F/4, 4F] restarts from the shape.
+// validate() runs after every op (O(n): on big meshes the op count is kept small).
 void sweep(const test::NamedMesh& shape, unsigned seed, long n_ops, Tally& tally) {
     SCOPED_TRACE(shape.name + ", seed " + std::to_string(seed));
     std::mt19937 rng(seed);
@@ -187,6 +188,9 @@ TEST(OpSweep, PredicatesMatchReference) {
     corpus.push_back({"quad grid", test::mesh_from_faces(
                                        {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}},
                                        {{0, 1, 2, 3}, {0, 3, 4}})});
+    for (const auto& shape : test::pillow_family()) {
+        corpus.push_back(shape);
+    }
     for (const auto& shape : corpus) {
         SCOPED_TRACE(shape.name);
         std::mt19937 rng(17);
@@ -237,6 +241,61 @@ TEST(OpSweep, RandomOpsOnCorpus) {
     RecordProperty("flips", std::to_string(tally.applied[kFlip]));
     RecordProperty("splits", std::to_string(tally.applied[kSplit]));
     RecordProperty("collapses", std::to_string(tally.applied[kCollapse]));
+}
+
+// The meshes at the edge of what the operations accept (pillows, a valence-2 interior
+// vertex, faces sharing two edges, lone triangles): every op either works and leaves a valid
+// mesh or is refused and changes nothing. Most ops are refused here; no ratio is asked.
+TEST(OpSweep, RandomOpsOnPillowFamily) {
+    Tally tally;
+    for (const auto& shape : test::pillow_family()) {
+        for (unsigned seed : {3u, 4u, 5u}) {
+            sweep(shape, seed, 2000, tally);
+            if (HasFatalFailure()) {
+                return;
+            }
+        }
+    }
+    EXPECT_GT(tally.applied[kSplit], 0);
+    EXPECT_GT(tally.refused[kFlip] + tally.refused[kCollapse], 0);
+}
+
+// A doubled edge linked by hand (build_mesh never makes one): no op may turn it into a
+// self-loop or any other broken link; whatever the op does, the only invariant still broken
+// afterwards may be the doubled edge itself.
+TEST(OpSweep, OpsNeverCorruptAMeshWithADoubledEdge) {
+    const Mesh slit = test::slit_pillow();
+    for (std::uint32_t i = 0; i < slit.edges_size(); ++i) {
+        for (int op = 0; op < 3; ++op) {
+            Mesh mesh = slit;
+            const Edge e(i);
+            const bool done = op == kFlip    ? flip(mesh, e).ok()
+                              : op == kSplit ? split(mesh, e).ok()
+                                             : collapse(mesh, e).ok();
+            const auto error = validate(mesh);
+            if (!done) {
+                EXPECT_TRUE(test::identical(mesh, slit)) << "op " << op << " on edge " << i;
+            }
+            if (error) {
+                EXPECT_EQ(error->invariant, "multi-edge")
+                    << "op " << op << " on edge " << i << ": " << error->message;
+            }
+        }
+    }
+}
+
+// Meshes of 5,000 to 40,000 faces: long valence chains, big boundaries, many GCs.
+TEST(OpSweep, RandomOpsOnBigMeshes) {
+    Tally tally;
+    for (const auto& shape : test::big_corpus()) {
+        sweep(shape, 11u, 1500, tally);
+        if (HasFatalFailure()) {
+            return;
+        }
+    }
+    for (int op = 0; op < 3; ++op) {
+        EXPECT_GT(tally.applied[op], tally.ops / 20) << "op " << op;
+    }
 }
 
 }  // namespace

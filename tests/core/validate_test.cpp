@@ -108,5 +108,54 @@ TEST(Validate, EdgeWithoutFaces) {
     expect_failure(mesh, "edge-has-face", ElementKind::Edge, Mesh::edge(h).idx());
 }
 
+// Two edges joining vertices 0 and 1 (a slit linked by hand): every link is consistent, but
+// no face list can describe it.
+TEST(Validate, DoubledEdge) {
+    const Mesh mesh = test::slit_pillow();
+    expect_failure(mesh, "multi-edge", ElementKind::Edge, 0);
+    EXPECT_EQ(validate(mesh)->message, "edge 0: joins vertices 0 and 1, as edge 3 does");
+}
+
+// One hexagon (0,1,2,0,3,4) visiting vertex 0 twice (two triangles' outlines joined at 0),
+// with two boundary triangles around it, linked by hand so that every other invariant holds.
+//
+//     2       4          face: 0->1->2->0->3->4->0
+//     | \   / |          boundary loops: 1->0->2->1 and 3->0->4->3
+//     |  0    |
+//     | /   \ |
+//     1       3
+TEST(Validate, FaceVisitingAVertexTwice) {
+    Mesh mesh;
+    const Vertex v[5] = {mesh.add_vertex({0, 0, 0}), mesh.add_vertex({-1, -1, 0}),
+                         mesh.add_vertex({-1, 1, 0}), mesh.add_vertex({1, -1, 0}),
+                         mesh.add_vertex({1, 1, 0})};
+    const int corners[6] = {0, 1, 2, 0, 3, 4};
+    Halfedge h[6];
+    for (int i = 0; i < 6; ++i) {
+        h[i] = mesh.new_edge(v[corners[i]], v[corners[(i + 1) % 6]]);
+    }
+    const Face f = mesh.new_face();
+    for (int i = 0; i < 6; ++i) {
+        mesh.set_next(h[i], h[(i + 1) % 6]);
+        mesh.set_face(h[i], f);
+        mesh.set_face(Mesh::twin(h[i]), Face());
+    }
+    mesh.set_halfedge(f, h[0]);
+    // Boundary: 1->0 (twin h0), 0->2 (twin h2), 2->1 (twin h1); 3->0, 0->4, 4->3.
+    mesh.set_next(Mesh::twin(h[0]), Mesh::twin(h[2]));
+    mesh.set_next(Mesh::twin(h[2]), Mesh::twin(h[1]));
+    mesh.set_next(Mesh::twin(h[1]), Mesh::twin(h[0]));
+    mesh.set_next(Mesh::twin(h[3]), Mesh::twin(h[5]));
+    mesh.set_next(Mesh::twin(h[5]), Mesh::twin(h[4]));
+    mesh.set_next(Mesh::twin(h[4]), Mesh::twin(h[3]));
+    mesh.set_halfedge(v[0], Mesh::twin(h[2]));
+    mesh.set_halfedge(v[1], Mesh::twin(h[0]));
+    mesh.set_halfedge(v[2], Mesh::twin(h[1]));
+    mesh.set_halfedge(v[3], Mesh::twin(h[3]));
+    mesh.set_halfedge(v[4], Mesh::twin(h[4]));
+    expect_failure(mesh, "face-corner", ElementKind::Face, 0);
+    EXPECT_EQ(validate(mesh)->message, "face 0: visits vertex 0 twice");
+}
+
 }  // namespace
 }  // namespace meshedit

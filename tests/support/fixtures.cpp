@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "meshedit/core/shapes.h"
 
@@ -41,6 +42,80 @@ Mesh one_ring(int n) {
 PolygonSoup bowtie_soup() {
     return soup_from_faces({{0, 0, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}},
                            {{0, 1, 2}, {0, 3, 4}});
+}
+
+PolygonSoup pillow_and_ear_soup() {
+    return soup_from_faces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                           {{0, 1, 2}, {0, 2, 1}, {0, 1, 3}});
+}
+
+// Halfedges: edge 0 = 0->1 (face A), 1 = 1->2 (A), 2 = 2->0 (A), 3 = 1->0 (face B); B's 0->2
+// and 2->1 are the twins of edges 2 and 1. The twins of edges 0 and 3 form the slit.
+//
+//          2
+//        /   \        A = (0,1,2) above the slit, B = (0,2,1) below it
+//       0 === 1       the slit: boundary loop 1->0 (twin of edge 0), 0->1 (twin of edge 3)
+Mesh slit_pillow() {
+    Mesh mesh;
+    const Vertex v0 = mesh.add_vertex({0, 0, 0});
+    const Vertex v1 = mesh.add_vertex({1, 0, 0});
+    const Vertex v2 = mesh.add_vertex({0.5, 1, 0});
+    const Halfedge a01 = mesh.new_edge(v0, v1);
+    const Halfedge a12 = mesh.new_edge(v1, v2);
+    const Halfedge a20 = mesh.new_edge(v2, v0);
+    const Halfedge b10 = mesh.new_edge(v1, v0);
+    const Face fa = mesh.new_face();
+    const Face fb = mesh.new_face();
+    const Halfedge b02 = Mesh::twin(a20), b21 = Mesh::twin(a12);
+    for (const auto& [h, n, f] : {std::tuple{a01, a12, fa},
+                                  {a12, a20, fa},
+                                  {a20, a01, fa},
+                                  {b02, b21, fb},
+                                  {b21, b10, fb},
+                                  {b10, b02, fb}}) {
+        mesh.set_next(h, n);
+        mesh.set_face(h, f);
+    }
+    mesh.set_next(Mesh::twin(a01), Mesh::twin(b10));
+    mesh.set_next(Mesh::twin(b10), Mesh::twin(a01));
+    mesh.set_face(Mesh::twin(a01), Face());
+    mesh.set_face(Mesh::twin(b10), Face());
+    mesh.set_halfedge(fa, a01);
+    mesh.set_halfedge(fb, b02);
+    mesh.set_halfedge(v0, Mesh::twin(b10));  // 0 -> 1 on the slit
+    mesh.set_halfedge(v1, Mesh::twin(a01));  // 1 -> 0 on the slit
+    mesh.set_halfedge(v2, a20);
+    return mesh;
+}
+
+std::vector<NamedMesh> pillow_family() {
+    std::vector<NamedMesh> out;
+    const std::vector<Vec3> tri{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    out.push_back({"pillow", mesh_from_faces(tri, {{0, 1, 2}, {0, 2, 1}})});
+    out.push_back({"pillow and ear", build_mesh(pillow_and_ear_soup())});
+    out.push_back({"two pillows at a vertex",
+                   mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}},
+                                   {{0, 1, 2}, {0, 2, 1}, {0, 3, 4}, {0, 4, 3}})});
+    out.push_back({"quad and triangle on two edges",
+                   mesh_from_faces({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0.5, 1.5, 0}},
+                                   {{0, 1, 2, 3}, {0, 3, 2}})});
+    out.push_back(
+        {"bipyramid",
+         mesh_from_faces({{1, 0, 0}, {-0.5, 0.87, 0}, {-0.5, -0.87, 0}, {0, 0, 1}, {0, 0, -1}},
+                         {{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {1, 0, 4}, {2, 1, 4}, {0, 2, 4}})});
+    out.push_back({"triangle", mesh_from_faces(tri, {{0, 1, 2}})});
+    out.push_back({"boundary valence 2",
+                   mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}},
+                                   {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}})});
+    return out;
+}
+
+std::vector<NamedMesh> big_corpus() {
+    std::vector<NamedMesh> out;
+    out.push_back({"torus 40k", shapes::torus(200, 100)});
+    out.push_back({"icosphere 5k", shapes::icosphere(4)});
+    out.push_back({"grid 20k", shapes::grid(100, 100)});
+    return out;
 }
 
 std::vector<NamedMesh> sweep_corpus() {

@@ -37,6 +37,16 @@ Mesh one_ring(int n);
 ///     faces (0,1,2) and (0,3,4).
 PolygonSoup bowtie_soup();
 
+/// The smallest input that made collapse() corrupt a mesh (as OBJ: 4 vertices, faces
+/// `1 2 3`, `1 3 2`, `1 2 4`): edge 0-1 has three faces. Built, it is a closed two-triangle
+/// pillow (0,1,2), (0,2,1) plus a separate triangle on copies of 0 and 1.
+PolygonSoup pillow_and_ear_soup();
+
+/// Three vertices and two faces (0,1,2), (0,2,1) whose sides 0-1 are two different edges: a
+/// slit, i.e. a boundary loop of two edges, linked by hand (build_mesh() never makes one).
+/// validate() rejects it ("multi-edge"); the local operations must still not corrupt it.
+Mesh slit_pillow();
+
 /// A named mesh of the sweep corpus.
 struct NamedMesh {
     std::string name;
@@ -46,5 +56,15 @@ struct NamedMesh {
 /// Meshes for invariant sweeps: tetrahedron, cube, icosahedron, torus(8,6), grid(5,4),
 /// disk(7), cylinder(6,3), icosphere(1).
 std::vector<NamedMesh> sweep_corpus();
+
+/// Valid meshes at the edge of what the operations accept: a closed two-triangle pillow, the
+/// repaired pillow_and_ear_soup(), two pillows sharing a vertex (repaired bow tie), a quad and
+/// a triangle sharing two edges (an interior vertex of valence 2), a triangular bipyramid,
+/// a single triangle and a fan around a boundary vertex of valence 2.
+std::vector<NamedMesh> pillow_family();
+
+/// Bigger meshes for the sweep (thousands to tens of thousands of faces): a 40,000-face
+/// torus, an icosphere of 5,120 faces and a 20,000-face open grid.
+std::vector<NamedMesh> big_corpus();
 
 }  // namespace meshedit::test

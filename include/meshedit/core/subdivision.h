@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 
+#include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh.h"
 
 namespace meshedit {
@@ -36,6 +37,11 @@ struct LoopReport {
     std::size_t triangulated_faces = 0;
 };
 
+/// \return ok unless Loop must refuse `mesh`: two triangles on the same three corners (a
+/// closed two-triangle pillow) would come out joined by doubled edges, which a valid mesh
+/// may not have (docs/halfedge.md, `multi-edge`). O(F).
+OpStatus is_loop_ok(const Mesh& mesh);
+
 /// One level of Loop subdivision: every triangle becomes four.
 ///
 /// Non-triangle faces are triangulated first (counted in the report) and garbage is
@@ -52,6 +58,7 @@ struct LoopReport {
 /// default. Halfedge, edge and face properties other than kCreaseProperty are reset to their
 /// defaults (the elements they described no longer exist).
 /// The edge and face layout of the result is documented in src/core/subdivision.cpp.
+/// \throws std::invalid_argument with the reason if is_loop_ok() refuses (nothing changed).
 /// \throws std::length_error if the result would not fit 32-bit indices (checked before
 ///         anything but the triangulation and collection above changes). If building the
 ///         result throws (std::bad_alloc), the mesh is left empty but valid.
