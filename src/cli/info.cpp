@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cli.h"
-#include "meshedit/core/subdivision.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/topology.h"
 #include "meshedit/io/io.h"
 

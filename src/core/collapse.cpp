@@ -36,7 +36,7 @@ void replace(Mesh& mesh, Halfedge old, Halfedge h) {
 OpStatus is_collapse_ok(const Mesh& mesh, Edge e) {
     MESHEDIT_ASSERT(mesh.is_valid(e));
     if (mesh.is_deleted(e)) {
-        return OpStatus::refused("edge is deleted");
+        return OpStatus::refused("cannot collapse: the edge is deleted");
     }
     const Halfedge h0 = from_survivor(mesh, e);
     const Halfedge t0 = Mesh::twin(h0);

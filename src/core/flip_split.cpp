@@ -5,8 +5,9 @@
 
 #include <cstdint>
 
+#include "mesh_arrays.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
-#include "meshedit/core/subdivision.h"
 
 namespace meshedit {
 
@@ -51,7 +52,7 @@ bool edge_is_deleted(const Mesh& mesh, Edge e) {
 }
 
 // What a flip or split of live edge e = (h0, t0) reads and writes around it, asked for
-// before the predicate walks anything so that the misses overlap (Mesh::prefetch). Only the
+// before the predicate walks anything so that the misses overlap (MeshArrays::prefetch). Only the
 // links the op touches: every line asked for takes one of the few miss slots a core has.
 // h1 = next(h0), h2 = prev(h0), t1 = next(t0), t2 = prev(t0); b = to(t0), c = to(h0).
 struct EdgeFrameLinks {
@@ -59,13 +60,14 @@ struct EdgeFrameLinks {
     bool positions;  // of b and c
 };
 // flip: reads a, d and the ring at a (from h2 and twin(h1)); relinks all four.
-constexpr EdgeFrameLinks kFlipLinks{Mesh::kAllLinks, Mesh::kNext | Mesh::kPrev | Mesh::kVertex,
-                                    Mesh::kAllLinks, Mesh::kNext | Mesh::kPrev, false};
+constexpr EdgeFrameLinks kFlipLinks{
+    MeshArrays::kAllLinks, MeshArrays::kNext | MeshArrays::kPrev | MeshArrays::kVertex,
+    MeshArrays::kAllLinks, MeshArrays::kNext | MeshArrays::kPrev, false};
 // split: reads next(h1), a, next(t1), d; writes next(h1), next/prev/face(h2),
 // next/prev/face(t1), prev(t2); the midpoint needs b and c.
-constexpr EdgeFrameLinks kSplitLinks{Mesh::kNext | Mesh::kVertex,
-                                     Mesh::kNext | Mesh::kPrev | Mesh::kFace, Mesh::kAllLinks,
-                                     Mesh::kPrev, true};
+constexpr EdgeFrameLinks kSplitLinks{MeshArrays::kNext | MeshArrays::kVertex,
+                                     MeshArrays::kNext | MeshArrays::kPrev | MeshArrays::kFace,
+                                     MeshArrays::kAllLinks, MeshArrays::kPrev, true};
 
 void prefetch_edge_frame(const Mesh& mesh, Edge e, const EdgeFrameLinks& links) {
     if (edge_is_deleted(mesh, e)) {
@@ -73,17 +75,17 @@ void prefetch_edge_frame(const Mesh& mesh, Edge e, const EdgeFrameLinks& links) 
     }
     const Halfedge h0 = Mesh::halfedge(e, 0);
     const Halfedge t0 = Mesh::halfedge(e, 1);
-    mesh.prefetch(mesh.next(h0), links.h1);
-    mesh.prefetch(mesh.prev(h0), links.h2);
-    mesh.prefetch(mesh.next(t0), links.t1);
-    mesh.prefetch(mesh.prev(t0), links.t2);
-    mesh.prefetch(mesh.to_vertex(h0), links.positions);
-    mesh.prefetch(mesh.to_vertex(t0), links.positions);
+    MeshArrays::prefetch(mesh, mesh.next(h0), links.h1);
+    MeshArrays::prefetch(mesh, mesh.prev(h0), links.h2);
+    MeshArrays::prefetch(mesh, mesh.next(t0), links.t1);
+    MeshArrays::prefetch(mesh, mesh.prev(t0), links.t2);
+    MeshArrays::prefetch(mesh, mesh.to_vertex(h0), links.positions);
+    MeshArrays::prefetch(mesh, mesh.to_vertex(t0), links.positions);
     if (mesh.face(h0).is_valid()) {
-        mesh.prefetch(mesh.face(h0));
+        MeshArrays::prefetch(mesh, mesh.face(h0));
     }
     if (mesh.face(t0).is_valid()) {
-        mesh.prefetch(mesh.face(t0));
+        MeshArrays::prefetch(mesh, mesh.face(t0));
     }
 }
 
@@ -92,10 +94,10 @@ void prefetch_edge_frame(const Mesh& mesh, Edge e, const EdgeFrameLinks& links) 
 OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
     MESHEDIT_ASSERT(mesh.is_valid(e));
     if (edge_is_deleted(mesh, e)) {
-        return OpStatus::refused("edge is deleted");
+        return OpStatus::refused("cannot flip: the edge is deleted");
     }
     if (mesh.is_boundary(e)) {
-        return OpStatus::refused("cannot flip a boundary edge");
+        return OpStatus::refused("cannot flip: boundary edge");
     }
     const Halfedge h0 = Mesh::halfedge(e, 0);
     const Halfedge t0 = Mesh::halfedge(e, 1);
@@ -172,7 +174,7 @@ OpResult<Edge> flip(Mesh& mesh, Edge e) {
 OpStatus is_split_ok(const Mesh& mesh, Edge e) {
     MESHEDIT_ASSERT(mesh.is_valid(e));
     if (edge_is_deleted(mesh, e)) {
-        return OpStatus::refused("edge is deleted");
+        return OpStatus::refused("cannot split: the edge is deleted");
     }
     const Face f0 = mesh.face(e, 0);
     const Face f1 = mesh.face(e, 1);
@@ -236,7 +238,7 @@ OpResult<Vertex> split(Mesh& mesh, Edge e) {
     const auto first_v = static_cast<std::uint32_t>(mesh.vertices_size());
     const auto first_e = static_cast<std::uint32_t>(mesh.edges_size());
     const auto first_f = static_cast<std::uint32_t>(mesh.faces_size());
-    mesh.add_elements(1, top ? 3 : 2, top ? 2 : 1);
+    mesh.new_elements(1, top ? 3 : 2, top ? 2 : 1);
     const Vertex m(first_v);
     const Halfedge s0 = Mesh::halfedge(Edge(first_e), 0);
     const Halfedge s1 = Mesh::twin(s0);

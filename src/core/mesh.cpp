@@ -97,7 +97,7 @@ std::size_t Mesh::bytes() const {
     return vprops_.bytes() + hprops_.bytes() + eprops_.bytes() + fprops_.bytes();
 }
 
-Vertex Mesh::add_vertex(const Vec3& p) {
+Vertex Mesh::new_vertex(const Vec3& p) {
     vprops_.push_back();
     const Vertex v(static_cast<std::uint32_t>(vprops_.size() - 1));
     vpoint_[v] = p;
@@ -120,7 +120,7 @@ Face Mesh::new_face() {
     return Face(static_cast<std::uint32_t>(fprops_.size() - 1));
 }
 
-void Mesh::add_elements(std::size_t nv, std::size_t ne, std::size_t nf) {
+void Mesh::new_elements(std::size_t nv, std::size_t ne, std::size_t nf) {
     vprops_.push_back_n(nv);
     eprops_.push_back_n(ne);
     hprops_.push_back_n(2 * ne);

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "mesh_arrays.h"
 #include "meshedit/core/topology.h"
 #include "parallel.h"
 
@@ -89,10 +90,10 @@ constexpr std::size_t kChunk = 1 << 16;
 // through the loop, where every Mesh accessor would reload its array after each call.
 struct FaceArrays {
     explicit FaceArrays(const Mesh& mesh)
-        : next(mesh.get_property<Halfedge, Halfedge>("h:next").vector().data()),
-          to(mesh.get_property<Halfedge, Vertex>("h:vertex").vector().data()),
-          face_halfedge(mesh.get_property<Face, Halfedge>("f:halfedge").vector().data()),
-          face_deleted(mesh.get_property<Face, std::uint8_t>("f:deleted").vector().data()),
+        : next(MeshArrays::next(mesh).data()),
+          to(MeshArrays::to_vertex(mesh).data()),
+          face_halfedge(MeshArrays::face_halfedge(mesh).data()),
+          face_deleted(MeshArrays::face_deleted(mesh).data()),
           position(mesh.position_vector().data()) {}
 
     const Halfedge* next;

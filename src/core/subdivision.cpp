@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "loop_rules.h"
+#include "mesh_arrays.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
@@ -88,11 +89,6 @@ A take(A& v) {
     A out;
     out.swap(v);
     return out;
-}
-
-template <class H, class T>
-memory::Array<T>& array(Mesh& mesh, const char* name) {
-    return mesh.get_property<H, T>(name).vector();
 }
 
 constexpr std::uint32_t u32(std::size_t i) {
@@ -212,10 +208,10 @@ public:
     }
 
 private:
-    template <class H, class T>
-    memory::Array<T>& sized(const char* name, std::size_t n) {
-        memory::Array<T>& a = array<H, T>(mesh_, name);
-        a.resize_for_overwrite(n);  // every element is written by the pass that follows
+    // `a`, resized to `n` elements that the pass that follows writes, every one of them.
+    template <class A>
+    static A& sized(A& a, std::size_t n) {
+        a.resize_for_overwrite(n);
         return a;
     }
     std::size_t new_nh() const { return 2 * (2 * ne_ + 3 * nf_); }
@@ -265,7 +261,7 @@ private:
     // 2h = first(h) ends at m_h; 2h+1 = second(twin(h)) at to(twin(h)). The inner halfedge
     // 2I_i runs m_j -> m_i (j = i + 1), its twin back.
     void write_to() {
-        auto& to = sized<Halfedge, Vertex>("h:vertex", new_nh());
+        auto& to = sized(MeshArrays::to_vertex(mesh_), new_nh());
         passes(
             0.4, 0.5,
             [&](std::size_t h) {
@@ -286,7 +282,7 @@ private:
     // second(twin) side a of corner k of the twin's face g (face 4g+k). Boundary halves stay
     // boundary. Inner halfedges: 2I_i in corner face 4f+i, 2I_i + 1 in the centre 4f+3.
     void write_face() {
-        auto& face = sized<Halfedge, Face>("h:face", new_nh());
+        auto& face = sized(MeshArrays::face(mesh_), new_nh());
         passes(
             0.5, 0.6,
             [&](std::size_t h) {
@@ -309,9 +305,9 @@ private:
     // Inner: 2I_i -> second(h_i) (corner face), 2I_i + 1 -> 2I_j + 1 (centre). Faces 4f+i are
     // anchored at first(h_i+1), the centre at 2I_0 + 1.
     void write_next_and_face_anchors() {
-        auto& next = sized<Halfedge, Halfedge>("h:next", new_nh());
-        auto& anchors = sized<Face, Halfedge>("f:halfedge", 4 * nf_);
-        const memory::Array<Face>& face = array<Halfedge, Face>(mesh_, "h:face");
+        auto& next = sized(MeshArrays::next(mesh_), new_nh());
+        auto& anchors = sized(MeshArrays::face_halfedge(mesh_), 4 * nf_);
+        const memory::Array<Face>& face = MeshArrays::face(mesh_);
         passes(
             0.6, 0.75,
             [&](std::size_t h) {
@@ -339,8 +335,8 @@ private:
     // prev is the inverse of next: every halfedge is the next of exactly one, so chunks of
     // halfedges write disjoint entries.
     void write_prev() {
-        auto& prev = sized<Halfedge, Halfedge>("h:prev", new_nh());
-        const memory::Array<Halfedge>& next = array<Halfedge, Halfedge>(mesh_, "h:next");
+        auto& prev = sized(MeshArrays::prev(mesh_), new_nh());
+        const memory::Array<Halfedge>& next = MeshArrays::next(mesh_);
         chunked(new_nh(), threads_, progress_, 0.75, 0.9, [&](std::size_t begin, std::size_t end) {
             for (std::size_t x = begin; x < end; ++x) {
                 prev[next[x].idx()] = Halfedge(u32(x));
@@ -352,8 +348,8 @@ private:
     // boundary iff h was; m_e leaves along second() of e's boundary halfedge, if any. Old h
     // was a boundary halfedge iff the new 2h has no face.
     void write_vertex_anchors() {
-        auto& anchor = sized<Vertex, Halfedge>("v:halfedge", nv_ + ne_);
-        const memory::Array<Face>& face = array<Halfedge, Face>(mesh_, "h:face");
+        auto& anchor = sized(MeshArrays::vertex_halfedge(mesh_), nv_ + ne_);
+        const memory::Array<Face>& face = MeshArrays::face(mesh_);
         chunked(nv_ + ne_, threads_, progress_, 0.9, 0.95, [&](std::size_t begin, std::size_t end) {
             for (std::size_t v = begin; v < end; ++v) {
                 if (v < nv_) {
@@ -413,12 +409,12 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
         // Move the old connectivity out of the mesh (the arrays are left empty). prev is not
         // needed: the new prev is the inverse of the new next.
         OldMesh old;
-        old.next = take(array<Halfedge, Halfedge>(mesh, "h:next"));
-        release(array<Halfedge, Halfedge>(mesh, "h:prev"));
-        old.to = take(array<Halfedge, Vertex>(mesh, "h:vertex"));
-        old.face = take(array<Halfedge, Face>(mesh, "h:face"));
-        old.face_halfedge = take(array<Face, Halfedge>(mesh, "f:halfedge"));
-        old.vertex_halfedge = take(array<Vertex, Halfedge>(mesh, "v:halfedge"));
+        old.next = take(MeshArrays::next(mesh));
+        release(MeshArrays::prev(mesh));
+        old.to = take(MeshArrays::to_vertex(mesh));
+        old.face = take(MeshArrays::face(mesh));
+        old.face_halfedge = take(MeshArrays::face_halfedge(mesh));
+        old.vertex_halfedge = take(MeshArrays::vertex_halfedge(mesh));
         EdgeProperty<std::uint8_t> crease = loop_rules::crease_property(mesh);
         if (crease) {
             old.crease = take(crease.vector());
@@ -428,8 +424,8 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
         // them to its default (their old values would describe the wrong elements), and
         // frees their storage.
         mesh.resize(nv, 0, 0);
-        release(array<Edge, std::uint8_t>(mesh, "e:deleted"));
-        release(array<Face, std::uint8_t>(mesh, "f:deleted"));
+        release(MeshArrays::edge_deleted(mesh));
+        release(MeshArrays::face_deleted(mesh));
         const unsigned threads = parallel::thread_count(nf, kParallelFaces, options.max_threads);
         progress(0.1);
 

@@ -53,7 +53,7 @@ std::vector<std::uint8_t> existing_chords(const Mesh& mesh, const Plan& plan) {
 OpStatus make_plan(const Mesh& mesh, Face f, Plan& plan) {
     MESHEDIT_ASSERT(mesh.is_valid(f));
     if (mesh.is_deleted(f)) {
-        return OpStatus::refused("face is deleted");
+        return OpStatus::refused("cannot triangulate: the face is deleted");
     }
     for (const Halfedge h : mesh.halfedges(f)) {
         plan.sides.push_back(h);

@@ -295,21 +295,6 @@ ElementRef parse_selection(const Mesh& mesh, const std::string& spec) {
     return kind == 'e' ? ElementRef::edge(Mesh::edge(h)) : ElementRef::halfedge(h);
 }
 
-std::string describe(const ElementRef& e) {
-    switch (e.kind) {
-        case ElementRef::Kind::Vertex:
-            return "vertex " + std::to_string(e.index);
-        case ElementRef::Kind::Edge:
-            return "edge " + std::to_string(e.index);
-        case ElementRef::Kind::Halfedge:
-            return "halfedge " + std::to_string(e.index);
-        case ElementRef::Kind::Face:
-            return "face " + std::to_string(e.index);
-        default:
-            return "none";
-    }
-}
-
 std::string extension_of(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     for (char& c : ext) {
@@ -459,7 +444,7 @@ int run(const Options& options) {
         pick_target.bind();
         const ElementRef hit =
             mesh_renderer.pick(camera, w, h, options.pick->first, options.pick->second);
-        std::printf("%s\n", describe(hit).c_str());
+        std::printf("%s\n", to_string(hit).c_str());
     }
     return 0;
 }

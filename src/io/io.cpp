@@ -18,7 +18,7 @@
 #include <system_error>
 
 #include "io_detail.h"
-#include "meshedit/core/subdivision.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/io/collada.h"
 #include "meshedit/io/gltf.h"
 #include "meshedit/io/obj.h"

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <string>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/normals.h"
-#include "meshedit/core/subdivision.h"
 #include "meshedit/io/collada.h"
 
 namespace meshedit {

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/normals.h"
-#include "meshedit/core/subdivision.h"
 
 namespace meshedit {
 
@@ -50,18 +50,6 @@ float net_point_size(const OverlayStyle& s) {
 /// a file carried a stray z.
 Vec3 flat(const Vec3& p) {
     return {p.x, p.y, 0.0};
-}
-
-// Handle checks: the viewer passes indices that may be stale after an edit (a deleted or
-// collected element), so every lookup goes through these instead of asserting.
-bool is_live(const Mesh& m, Vertex v) {
-    return m.is_valid(v) && !m.is_deleted(v);
-}
-bool is_live(const Mesh& m, Edge e) {
-    return m.is_valid(e) && !m.is_deleted(e);
-}
-bool is_live(const Mesh& m, Face f) {
-    return m.is_valid(f) && !m.is_deleted(f) && m.is_valid(m.halfedge(f));
 }
 
 Vec3 face_centroid(const Mesh& m, Face f) {
@@ -164,38 +152,30 @@ void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch
 
 void add_element_highlight(const Mesh& mesh, ElementRef element, const Color& color,
                            const OverlayStyle& style, OverlayBatch& out) {
+    // The viewer may pass a stale reference (an element deleted or collected by an edit).
+    if (!is_live(mesh, element)) {
+        return;
+    }
     switch (element.kind) {
         case ElementRef::Kind::None:
             return;
         case ElementRef::Kind::Vertex: {
             const Vertex v(element.index);
-            if (is_live(mesh, v)) {
-                out.points.push_back({mesh.position(v), color, style.vertex_size_px});
-            }
+            out.points.push_back({mesh.position(v), color, style.vertex_size_px});
             return;
         }
         case ElementRef::Kind::Edge: {
             const Edge e(element.index);
-            if (is_live(mesh, e)) {
-                out.lines.push_back({mesh.position(mesh.vertex(e, 0)),
-                                     mesh.position(mesh.vertex(e, 1)), color, style.edge_width_px});
-            }
+            out.lines.push_back({mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)),
+                                 color, style.edge_width_px});
             return;
         }
-        case ElementRef::Kind::Halfedge: {
-            const Halfedge h(element.index);
-            if (mesh.is_valid(h) && !mesh.is_deleted(h)) {
-                add_halfedge_arrow(mesh, h, color, style, out);
-            }
+        case ElementRef::Kind::Halfedge:
+            add_halfedge_arrow(mesh, Halfedge(element.index), color, style, out);
             return;
-        }
-        case ElementRef::Kind::Face: {
-            const Face f(element.index);
-            if (is_live(mesh, f)) {
-                add_face_tint(mesh, f, color, style, out);
-            }
+        case ElementRef::Kind::Face:
+            add_face_tint(mesh, Face(element.index), color, style, out);
             return;
-        }
     }
 }
 

@@ -1,13 +1,12 @@
-// Selection helpers: remapping through garbage collection, liveness, the one-line
-// description and the info panel's rows.
+// The info panel's rows for the selected element (ElementRef's own helpers are in core).
 
 #include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/normals.h"
-#include "meshedit/core/subdivision.h"
 #include "meshedit/viewer/editor.h"
 
 namespace meshedit::viewer {
@@ -72,49 +71,9 @@ std::string yes_no(bool b) {
     return b ? "yes" : "no";
 }
 
-const char* kind_name(Kind kind) {
-    switch (kind) {
-        case Kind::Vertex:
-            return "vertex";
-        case Kind::Edge:
-            return "edge";
-        case Kind::Halfedge:
-            return "halfedge";
-        case Kind::Face:
-            return "face";
-        case Kind::None:
-            break;
-    }
-    return "nothing";
-}
-
-std::size_t kind_size(const Mesh& mesh, Kind kind) {
-    switch (kind) {
-        case Kind::Vertex:
-            return mesh.vertices_size();
-        case Kind::Edge:
-            return mesh.edges_size();
-        case Kind::Halfedge:
-            return mesh.halfedges_size();
-        case Kind::Face:
-            return mesh.faces_size();
-        case Kind::None:
-            break;
-    }
-    return 0;
-}
-
 bool is_crease(const Mesh& mesh, Edge e) {
     const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
     return crease && crease[e] != 0;
-}
-
-template <class H>
-ElementRef remap_one(const std::vector<H>& map, std::uint32_t index, Kind kind) {
-    if (index >= map.size() || !map[index].is_valid()) {
-        return {};
-    }
-    return {kind, map[index].idx()};
 }
 
 Rows vertex_info(const Mesh& mesh, Vertex v) {
@@ -187,62 +146,6 @@ Rows face_info(const Mesh& mesh, Face f) {
 
 }  // namespace
 
-ElementRef remap(const ElementRef& element, const GarbageCollectionMap& map) {
-    switch (element.kind) {
-        case Kind::Vertex:
-            return remap_one(map.vertices, element.index, Kind::Vertex);
-        case Kind::Edge:
-            return remap_one(map.edges, element.index, Kind::Edge);
-        case Kind::Halfedge:
-            return remap_one(map.halfedges, element.index, Kind::Halfedge);
-        case Kind::Face:
-            return remap_one(map.faces, element.index, Kind::Face);
-        case Kind::None:
-            break;
-    }
-    return {};
-}
-
-bool is_live(const Mesh& mesh, const ElementRef& element) {
-    if (element.kind == Kind::None || element.index >= kind_size(mesh, element.kind)) {
-        return false;
-    }
-    switch (element.kind) {
-        case Kind::Vertex:
-            return !mesh.is_deleted(Vertex(element.index));
-        case Kind::Edge:
-            return !mesh.is_deleted(Edge(element.index));
-        case Kind::Halfedge:
-            return !mesh.is_deleted(Halfedge(element.index));
-        case Kind::Face:
-            return !mesh.is_deleted(Face(element.index));
-        case Kind::None:
-            break;
-    }
-    return false;
-}
-
-std::string describe(const Mesh& mesh, const ElementRef& element) {
-    if (element.kind == Kind::None) {
-        return "nothing selected";
-    }
-    std::string out = std::string(kind_name(element.kind)) + " " + std::to_string(element.index);
-    if (element.index >= kind_size(mesh, element.kind)) {
-        return out + " (not in the mesh)";
-    }
-    if (!is_live(mesh, element)) {
-        return out + " (deleted)";
-    }
-    if (element.kind == Kind::Edge || element.kind == Kind::Halfedge) {
-        const Halfedge h = element.kind == Kind::Edge ? Mesh::halfedge(Edge(element.index), 0)
-                                                      : Halfedge(element.index);
-        const char* joint = element.kind == Kind::Edge ? "–" : "→";
-        out += " (" + std::to_string(mesh.from_vertex(h).idx()) + joint +
-               std::to_string(mesh.to_vertex(h).idx()) + ")";
-    }
-    return out;
-}
-
 std::vector<std::pair<std::string, std::string>> element_info(const Mesh& mesh,
                                                               const ElementRef& element) {
     if (element.kind == Kind::None) {
@@ -250,9 +153,9 @@ std::vector<std::pair<std::string, std::string>> element_info(const Mesh& mesh,
     }
     Rows rows{{"type", kind_name(element.kind)}, {"index", std::to_string(element.index)}};
     if (!is_live(mesh, element)) {
-        rows.emplace_back("state", element.index >= kind_size(mesh, element.kind)
-                                       ? "not in the mesh"
-                                       : "deleted");
+        rows.emplace_back("state", describe(mesh, element).ends_with("(deleted)")
+                                       ? "deleted"
+                                       : "not in the mesh");
         return rows;
     }
     Rows more;

@@ -253,7 +253,7 @@ TEST(Collapse, RefusesDeletedEdge) {
     Mesh mesh = shapes::grid(2, 2);
     const Edge e = mesh.find_edge(Vertex(1), Vertex(4));
     ASSERT_TRUE(collapse(mesh, e));
-    expect_refused(mesh, e, "edge is deleted");
+    expect_refused(mesh, e, "cannot collapse: the edge is deleted");
 }
 
 }  // namespace

@@ -167,7 +167,7 @@ void expect_refused(Mesh& mesh, Edge e, std::string_view reason) {
 // grid(2,2): the bottom edge 0-1 has only the face (0,1,4).
 TEST(Flip, RefusesBoundaryEdge) {
     Mesh mesh = shapes::grid(2, 2);
-    expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(1)), "cannot flip a boundary edge");
+    expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(1)), "cannot flip: boundary edge");
 }
 
 // A quad (0,1,2,3) next to the triangle (0,3,4) across edge 0-3:
@@ -215,7 +215,7 @@ TEST(Flip, RefusesDeletedEdge) {
     Mesh mesh = shapes::grid(2, 2);
     const Edge e = mesh.find_edge(Vertex(1), Vertex(4));
     ASSERT_TRUE(collapse(mesh, e));
-    expect_refused(mesh, e, "edge is deleted");
+    expect_refused(mesh, e, "cannot flip: the edge is deleted");
 }
 
 }  // namespace

@@ -41,8 +41,8 @@ TEST(Handles, TwinsAreImplicitPairs) {
 
 TEST(Handles, NewEdgeSetsBothEndpoints) {
     Mesh mesh;
-    const Vertex a = mesh.add_vertex({0, 0, 0});
-    const Vertex b = mesh.add_vertex({1, 0, 0});
+    const Vertex a = mesh.new_vertex({0, 0, 0});
+    const Vertex b = mesh.new_vertex({1, 0, 0});
     const Halfedge h = mesh.new_edge(a, b);
     EXPECT_EQ(h, Halfedge(0));
     EXPECT_EQ(mesh.to_vertex(h), b);

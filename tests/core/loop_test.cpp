@@ -383,7 +383,7 @@ TEST(LoopPreconditions, PolygonsAreTriangulatedFirstAndReported) {
 
 TEST(LoopPreconditions, GarbageIsCollectedFirst) {
     Mesh mesh = shapes::cube();
-    const Vertex extra = mesh.add_vertex({9, 9, 9});
+    const Vertex extra = mesh.new_vertex({9, 9, 9});
     mesh.mark_deleted(extra);
     ASSERT_TRUE(mesh.has_garbage());
     ASSERT_VALID(mesh);

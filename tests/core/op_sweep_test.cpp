@@ -126,10 +126,10 @@ void sweep(const test::NamedMesh& shape, unsigned seed, long n_ops, Tally& tally
 // start from the edge's own halfedges) must refuse exactly the same edges for the same reasons.
 std::string_view reference_flip_refusal(const Mesh& mesh, Edge e) {
     if (mesh.is_deleted(e)) {
-        return "edge is deleted";
+        return "cannot flip: the edge is deleted";
     }
     if (mesh.is_boundary(e)) {
-        return "cannot flip a boundary edge";
+        return "cannot flip: boundary edge";
     }
     const Halfedge h0 = Mesh::halfedge(e, 0);
     const Halfedge t0 = Mesh::halfedge(e, 1);
@@ -146,7 +146,7 @@ std::string_view reference_flip_refusal(const Mesh& mesh, Edge e) {
 
 std::string_view reference_split_refusal(const Mesh& mesh, Edge e) {
     if (mesh.is_deleted(e)) {
-        return "edge is deleted";
+        return "cannot split: the edge is deleted";
     }
     const Face f0 = mesh.face(e, 0);
     const Face f1 = mesh.face(e, 1);

@@ -39,8 +39,8 @@ TEST(Properties, WrongTypeIsNullAndDuplicateNameThrows) {
 TEST(Properties, GrowWithElements) {
     Mesh mesh;
     auto label = mesh.add_property<Vertex, int>("v:label", -1);
-    mesh.add_vertex({0, 0, 0});
-    mesh.add_vertex({1, 0, 0});
+    mesh.new_vertex({0, 0, 0});
+    mesh.new_vertex({1, 0, 0});
     ASSERT_EQ(label.vector().size(), 2u);
     EXPECT_EQ(label[Vertex(1)], -1);
 }
@@ -56,15 +56,15 @@ TEST(Properties, PushBackNAppendsDefaultsToEveryArray) {
     EXPECT_EQ(point->vector(), memory::Array<Vec3>(3));
 }
 
-// add_elements() gives the same arrays as the one-at-a-time calls in the documented order
+// new_elements() gives the same arrays as the one-at-a-time calls in the documented order
 // (vertices, then edges, then faces), user properties included.
 TEST(Properties, AddElementsEqualsOneAtATime) {
     Mesh bulk = test::two_triangles();
     bulk.add_property<Edge, std::uint8_t>("e:crease", 0);
     bulk.add_property<Halfedge, int>("h:label", 7);
     Mesh single = bulk;
-    bulk.add_elements(1, 3, 2);
-    single.add_vertex({});
+    bulk.new_elements(1, 3, 2);
+    single.new_vertex({});
     for (int i = 0; i < 3; ++i) {
         single.new_edge(Vertex(), Vertex());
     }
@@ -112,7 +112,7 @@ TEST(Properties, CopyIsDeepAndMoveKeepsViews) {
     EXPECT_EQ(moved.n_faces(), 2u);
     EXPECT_EQ(moved.position(Vertex(2)), (Vec3{1, 1, 0}));
     EXPECT_EQ(mesh.n_vertices(), 0u);  // NOLINT: the moved-from mesh is a valid empty mesh
-    mesh.add_vertex({1, 2, 3});
+    mesh.new_vertex({1, 2, 3});
     EXPECT_EQ(mesh.n_vertices(), 1u);
 }
 

@@ -7,9 +7,9 @@
 #include <cstdint>
 
 #include "core/op_test_util.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
-#include "meshedit/core/subdivision.h"
 
 namespace meshedit {
 namespace {
@@ -243,7 +243,7 @@ TEST(Split, RefusesDeletedEdge) {
     Mesh mesh = shapes::grid(2, 2);
     const Edge e = mesh.find_edge(Vertex(1), Vertex(4));
     ASSERT_TRUE(collapse(mesh, e));
-    expect_refused(mesh, e, "edge is deleted");
+    expect_refused(mesh, e, "cannot split: the edge is deleted");
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ TEST(Topology, CylinderHasTwoBoundaryLoops) {
 
 TEST(Topology, IsolatedVerticesAreComponentsButNotGenus) {
     Mesh mesh = test::two_triangles();
-    mesh.add_vertex({7, 7, 7});
+    mesh.new_vertex({7, 7, 7});
     const MeshStats s = compute_stats(mesh);
     EXPECT_EQ(s.components, 2u);
     EXPECT_EQ(s.euler_characteristic, 2);

@@ -183,7 +183,7 @@ TEST(Triangulate, RefusesDeletedFace) {
     }
     ASSERT_TRUE(dead.is_valid());
     const Mesh before = mesh;
-    EXPECT_EQ(triangulate(mesh, dead).reason(), "face is deleted");
+    EXPECT_EQ(triangulate(mesh, dead).reason(), "cannot triangulate: the face is deleted");
     EXPECT_TRUE(test::identical(mesh, before));
 }
 

@@ -98,8 +98,8 @@ TEST(Validate, TombstoneCountMismatchIsCaught) {
 
 TEST(Validate, EdgeWithoutFaces) {
     Mesh mesh = test::two_triangles();
-    const Vertex a = mesh.add_vertex({5, 5, 0});
-    const Vertex b = mesh.add_vertex({6, 5, 0});
+    const Vertex a = mesh.new_vertex({5, 5, 0});
+    const Vertex b = mesh.new_vertex({6, 5, 0});
     const Halfedge h = mesh.new_edge(a, b);
     mesh.set_next(h, Mesh::twin(h));
     mesh.set_next(Mesh::twin(h), h);
@@ -126,9 +126,9 @@ TEST(Validate, DoubledEdge) {
 //     1       3
 TEST(Validate, FaceVisitingAVertexTwice) {
     Mesh mesh;
-    const Vertex v[5] = {mesh.add_vertex({0, 0, 0}), mesh.add_vertex({-1, -1, 0}),
-                         mesh.add_vertex({-1, 1, 0}), mesh.add_vertex({1, -1, 0}),
-                         mesh.add_vertex({1, 1, 0})};
+    const Vertex v[5] = {mesh.new_vertex({0, 0, 0}), mesh.new_vertex({-1, -1, 0}),
+                         mesh.new_vertex({-1, 1, 0}), mesh.new_vertex({1, -1, 0}),
+                         mesh.new_vertex({1, 1, 0})};
     const int corners[6] = {0, 1, 2, 0, 3, 4};
     Halfedge h[6];
     for (int i = 0; i < 6; ++i) {

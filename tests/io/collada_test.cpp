@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
-#include "meshedit/core/subdivision.h"
 #include "meshedit/io/collada.h"
 #include "support/mesh_compare.h"
 

@@ -14,8 +14,8 @@
 
 #include "meshedit/bezier/bezier_curve.h"
 #include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/shapes.h"
-#include "meshedit/core/subdivision.h"
 #include "support/fixtures.h"
 
 namespace meshedit {

@@ -57,9 +57,9 @@ PolygonSoup pillow_and_ear_soup() {
 //       0 === 1       the slit: boundary loop 1->0 (twin of edge 0), 0->1 (twin of edge 3)
 Mesh slit_pillow() {
     Mesh mesh;
-    const Vertex v0 = mesh.add_vertex({0, 0, 0});
-    const Vertex v1 = mesh.add_vertex({1, 0, 0});
-    const Vertex v2 = mesh.add_vertex({0.5, 1, 0});
+    const Vertex v0 = mesh.new_vertex({0, 0, 0});
+    const Vertex v1 = mesh.new_vertex({1, 0, 0});
+    const Vertex v2 = mesh.new_vertex({0.5, 1, 0});
     const Halfedge a01 = mesh.new_edge(v0, v1);
     const Halfedge a12 = mesh.new_edge(v1, v2);
     const Halfedge a20 = mesh.new_edge(v2, v0);

@@ -118,7 +118,7 @@ TEST(Editor, RefusedFlipLeavesEverythingUntouched) {
     ed.select(ElementRef::edge(boundary));
     const Outcome out = ed.press(key_of('F'), 0);
     EXPECT_TRUE(out.refused);
-    EXPECT_EQ(out.message, "cannot flip a boundary edge");
+    EXPECT_EQ(out.message, "cannot flip: boundary edge");
     EXPECT_EQ(out.changes, unsigned{kNothing});
     EXPECT_TRUE(test::identical(ed.mesh(), grid));
     EXPECT_EQ(ed.history().undo_steps(), 0u);
@@ -407,7 +407,7 @@ TEST(Editor, NavigationRefusals) {
 
     // An isolated vertex has no halfedge, edge or face.
     Mesh lonely = grid;
-    const Vertex v = lonely.add_vertex({5, 5, 5});
+    const Vertex v = lonely.new_vertex({5, 5, 5});
     Editor ed2 = editor_with(lonely);
     ed2.select(ElementRef::vertex(v));
     EXPECT_TRUE(ed2.press(key_of('H'), 0).refused);

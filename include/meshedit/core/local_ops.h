@@ -12,8 +12,9 @@
 
 namespace meshedit {
 
-/// Whether an operation is allowed; when not, a short reason for a status line
-/// ("cannot flip a boundary edge"). The reason is a string literal: no allocation.
+/// Whether an operation is allowed; when not, the reason for a status line, always in the
+/// form "cannot <verb>: <why>" ("cannot flip: boundary edge"), so that every caller (the
+/// editor, `--ops`, tests) shows it as it is. The reason is a string literal: no allocation.
 class OpStatus {
 public:
     static constexpr OpStatus ok() { return OpStatus(); }

@@ -20,8 +20,6 @@
 
 namespace meshedit {
 
-template <class H, class T>
-using PropertyOf = Property<H, T>;
 template <class T>
 using VertexProperty = Property<Vertex, T>;
 template <class T>
@@ -79,8 +77,8 @@ public:
 
     // ----------------------------------------------------------------- element creation
 
-    /// Adds an isolated vertex at `p`.
-    Vertex add_vertex(const Vec3& p);
+    /// Adds an isolated vertex at `p`. (Every call that creates elements starts with `new_`.)
+    Vertex new_vertex(const Vec3& p);
     /// Adds an edge whose halfedge `2k` runs `from -> to` and `2k+1` runs `to -> from`; their
     /// next/prev/face are unset. \return halfedge `2k`.
     Halfedge new_edge(Vertex from, Vertex to);
@@ -88,9 +86,9 @@ public:
     Face new_face();
     /// Appends `nv` vertices, `ne` edges (`2 ne` halfedges) and `nf` faces with every property
     /// at its default (positions zero, connectivity unset), one call per property array. The
-    /// new indices start at the previous `*_size()`, in the order add_vertex(), new_edge()
+    /// new indices start at the previous `*_size()`, in the order new_vertex(), new_edge()
     /// and new_face() would have given them. For local ops that create several elements.
-    void add_elements(std::size_t nv, std::size_t ne, std::size_t nf);
+    void new_elements(std::size_t nv, std::size_t ne, std::size_t nf);
 
     /// Reserves room for that many elements in every array (no effect on sizes).
     void reserve(std::size_t n_vertices, std::size_t n_edges, std::size_t n_faces);
@@ -132,35 +130,6 @@ public:
     }
     void set_vertex(Halfedge h, Vertex v) { hvertex_[h] = v; }
     void set_face(Halfedge h, Face f) { hface_[h] = f; }
-
-    /// Cache hints for a local op that is about to read or write an element's connectivity
-    /// (a halfedge's next, prev, vertex and face; a vertex's anchor and, with
-    /// `with_position`, its position; a face's anchor). On a large mesh each of those is a
-    /// cache miss; asked for together, as soon as the handles are known, the misses overlap
-    /// instead of queueing behind one another. No effect on the mesh.
-    /// Which of a halfedge's links prefetch() asks for (or-ed together).
-    enum Links : unsigned { kNext = 1, kPrev = 2, kVertex = 4, kFace = 8, kAllLinks = 15 };
-    void prefetch(Halfedge h, unsigned links = kAllLinks) const {
-        if ((links & kNext) != 0) {
-            prefetch_for_write(&hnext_[h]);
-        }
-        if ((links & kPrev) != 0) {
-            prefetch_for_write(&hprev_[h]);
-        }
-        if ((links & kVertex) != 0) {
-            prefetch_for_write(&hvertex_[h]);
-        }
-        if ((links & kFace) != 0) {
-            prefetch_for_write(&hface_[h]);
-        }
-    }
-    void prefetch(Vertex v, bool with_position = false) const {
-        prefetch_for_write(&vhalfedge_[v]);
-        if (with_position) {
-            prefetch_for_write(&vpoint_[v]);
-        }
-    }
-    void prefetch(Face f) const { prefetch_for_write(&fhalfedge_[f]); }
 
     // ----------------------------------------------------------------- queries
 
@@ -313,13 +282,9 @@ private:
     PropertyContainer eprops_;
     PropertyContainer fprops_;
 
-    // Cached views of the connectivity properties (rebound after copy or move).
-    static void prefetch_for_write([[maybe_unused]] const void* p) {
-#if defined(__GNUC__)
-        __builtin_prefetch(p, 1);
-#endif
-    }
-
+    // Cached views of the connectivity properties (rebound after copy or move). Core
+    // algorithms reach the arrays through MeshArrays (src/core/mesh_arrays.h), never by name.
+    friend struct MeshArrays;
     VertexProperty<Vec3> vpoint_;
     VertexProperty<Halfedge> vhalfedge_;
     VertexProperty<std::uint8_t> vdeleted_;

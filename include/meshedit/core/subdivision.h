@@ -5,13 +5,11 @@
 #include <cstddef>
 #include <functional>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh.h"
 
 namespace meshedit {
-
-/// Name of the edge property (`std::uint8_t`, non-zero = sharp) that marks crease edges.
-inline constexpr const char* kCreaseProperty = "e:crease";
 
 /// Weight `u` for an interior vertex of valence n: `p' = (1 - n·u)·p + u·Σ neighbours`.
 enum class LoopWeights {

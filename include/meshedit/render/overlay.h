@@ -14,6 +14,7 @@
 
 #include "meshedit/bezier/bezier_curve.h"
 #include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
 
 namespace meshedit {
@@ -49,19 +50,6 @@ struct OverlayBatch {
     }
     bool empty() const { return points.empty() && lines.empty() && triangles.empty(); }
     void append(const OverlayBatch& other);
-};
-
-/// What is selected or hovered: at most one element.
-struct ElementRef {
-    enum class Kind { None, Vertex, Edge, Halfedge, Face };
-    Kind kind = Kind::None;
-    std::uint32_t index = kInvalidIndex;
-
-    static ElementRef vertex(Vertex v) { return {Kind::Vertex, v.idx()}; }
-    static ElementRef edge(Edge e) { return {Kind::Edge, e.idx()}; }
-    static ElementRef halfedge(Halfedge h) { return {Kind::Halfedge, h.idx()}; }
-    static ElementRef face(Face f) { return {Kind::Face, f.idx()}; }
-    bool is_none() const { return kind == Kind::None; }
 };
 
 /// The overlay palette (one place, so viewer, headless renders and docs agree).

@@ -164,17 +164,7 @@ private:
     std::unordered_set<std::uint64_t> pristine_revisions_;
 };
 
-// --------------------------------------------------------------------- selection helpers
-
-/// The selection after garbage collection: the element's new index, or none if it was
-/// deleted.
-ElementRef remap(const ElementRef& element, const GarbageCollectionMap& map);
-
-/// True if `element` names a live element of `mesh`.
-bool is_live(const Mesh& mesh, const ElementRef& element);
-
-/// A one-line description for the status line and info panel ("edge 5 (2–7)").
-std::string describe(const Mesh& mesh, const ElementRef& element);
+// --------------------------------------------------------------------- info panel rows
 
 /// The info panel's rows for an element of a mesh: kind and index, position, degree,
 /// boundary and crease flags, neighbours' indices, and for a halfedge its next, twin, vertex
