@@ -25,7 +25,7 @@
 #include "meshedit/core/topology.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/io/io.h"
-#include "ops.h"
+#include "meshedit/ops/ops.h"
 
 namespace fs = std::filesystem;
 using namespace meshedit;
@@ -145,7 +145,7 @@ void save_references(const Mesh& mesh, const fs::path& folder,
     save(mesh, input);
     for (const Reference& r : references) {
         Mesh edited = read_mesh(input).mesh;
-        cli::apply_ops(edited, cli::parse_ops(r.op));
+        ops::apply_steps(edited, ops::parse(r.op));
         save(edited, folder / (std::string(r.name) + ".dae"));
     }
 }

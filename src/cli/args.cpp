@@ -7,7 +7,6 @@
 #include <cstdio>
 
 #include "cli.h"
-#include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/io/io.h"
 
 namespace meshedit::cli {
@@ -119,13 +118,6 @@ int parse_int(const std::string& text, const std::string& option, int min, int m
     return x;
 }
 
-std::string extension_of(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 std::string format_number(double x) {
     if (x == 0.0) {
         return "0";  // also for -0, which would only confuse readers
@@ -139,37 +131,14 @@ void print_notice(const std::string& text) {
     std::fprintf(stderr, "meshedit: note: %s\n", text.c_str());
 }
 
-InputMesh load_input(const std::filesystem::path& path, int density) {
-    InputMesh input;
-    const std::string ext = extension_of(path);
-    try {
-        if (ext == ".bzc") {
-            throw IoError(path.string(), "",
-                          "a .bzc file is a curve, not a surface (use meshedit eval or info)");
-        }
-        if (ext == ".bez") {
-            const std::vector<BezierPatch> patches = read_bez(path);
-            TessellationOptions options;
-            options.density = density;
-            input.mesh = tessellate(patches, options);
-            input.patches = patches.size();
-            return input;
-        }
-        LoadedMesh loaded = read_mesh(path);
-        input.mesh = std::move(loaded.mesh);
-        input.repairs = std::move(loaded.repairs);
-        input.notices = std::move(loaded.notices);
-        input.unit_meter = loaded.unit_meter;
-        return input;
-    } catch (const IoError&) {
-        throw;
-    } catch (const std::bad_alloc&) {
-        throw;
-    } catch (const std::exception& e) {
-        // Whatever went wrong inside a reader, the user needs the file named; an exit with
-        // an anonymous exception text would be useless in a pipeline.
-        throw IoError(path.string(), "", e.what());
+LoadedDocument load_surface(const std::filesystem::path& path, int density) {
+    if (file_extension(path) == ".bzc") {
+        throw IoError(path.string(), "",
+                      "a .bzc file is a curve, not a surface (use meshedit eval or info)");
     }
+    ReadOptions options;
+    options.density = density;
+    return read_document(path, options);
 }
 
 }  // namespace meshedit::cli

@@ -14,8 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "meshedit/core/build.h"
-#include "meshedit/core/mesh.h"
+#include "meshedit/io/document.h"
 
 namespace meshedit::cli {
 
@@ -66,24 +65,13 @@ void expect_positionals(const std::string& command, const Args& args, std::size_
 double parse_double(const std::string& text, const std::string& option);
 int parse_int(const std::string& text, const std::string& option, int min, int max);
 
-/// Lower-case extension with the dot (".dae").
-std::string extension_of(const std::filesystem::path& path);
-
 /// Shortest round-trip text for a double ("0.1", "-1", "1e-300").
 std::string format_number(double x);
 
-/// A mesh from any input the mesh commands accept, with what the user should hear.
-struct InputMesh {
-    Mesh mesh;
-    BuildReport repairs;
-    std::vector<std::string> notices;
-    double unit_meter = 1.0;
-    std::size_t patches = 0;  ///< > 0 when the mesh was tessellated from a .bez
-};
-
-/// Reads a mesh file (.dae, .gltf, .glb, .obj) with read_mesh(), or tessellates a .bez at
-/// `density`. \throws IoError naming the file (a .bzc is refused: it is not a surface).
-InputMesh load_input(const std::filesystem::path& path, int density);
+/// A mesh from any input the mesh commands accept: read_document() on a mesh file, or a .bez
+/// tessellated at `density`. \throws IoError naming the file (a .bzc is refused: it is not a
+/// surface).
+LoadedDocument load_surface(const std::filesystem::path& path, int density);
 
 /// Subcommands; each returns the exit status (errors are thrown).
 int run_info(const std::vector<std::string>& argv);

@@ -8,13 +8,13 @@
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/io/io.h"
-#include "ops.h"
+#include "meshedit/ops/ops.h"
 #include "progress.h"
 
 namespace meshedit::cli {
 namespace {
 
-void print_load_messages(const InputMesh& input) {
+void print_load_messages(const LoadedDocument& input) {
     for (const std::string& notice : input.notices) {
         print_notice(notice);
     }
@@ -23,7 +23,7 @@ void print_load_messages(const InputMesh& input) {
 // Refuses an output we cannot write before doing any work, so a typo in the output name
 // does not cost a long subdivision first.
 void check_mesh_output(const std::filesystem::path& out) {
-    if (!is_mesh_extension(extension_of(out))) {
+    if (!is_mesh_extension(file_extension(out))) {
         throw IoError(out.string(), "",
                       "unknown extension '" + out.extension().string() +
                           "' (meshedit writes .dae, .gltf, .glb and .obj)");
@@ -36,8 +36,8 @@ int density_option(const Args& args) {
                : TessellationOptions{}.density;
 }
 
-ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
-    ApplyOptions options;
+ops::ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
+    ops::ApplyOptions options;
     options.weights = weights;
     options.progress = [&bar](double f) { bar.update(f); };
     options.notice = [](const std::string& text) { print_notice(text); };
@@ -46,8 +46,8 @@ ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
 
 // An OpError means the list was fine but the mesh said no; name the input too so the line
 // stands on its own in a log.
-[[noreturn]] void rethrow_with_file(const OpError& e, const std::filesystem::path& in) {
-    throw OpError(in.string() + ": " + e.what(), e.refused());
+[[noreturn]] void rethrow_with_file(const ops::OpError& e, const std::filesystem::path& in) {
+    throw ops::OpError(in.string() + ": " + e.what(), e.refused());
 }
 
 }  // namespace
@@ -63,45 +63,46 @@ int run_convert(const std::vector<std::string>& argv) {
             "(.dae .gltf .glb .obj). A .bzc curve converts only to .bzc. OUT is written to a\n"
             "temporary file and renamed, so a failed run never leaves a partial OUT.\n"
             "\n"
-            "  --ops LIST   comma list of: flip:A-B split:A-B collapse:A-B crease:A-B\n"
-            "               loop loop:K triangulate   (an edge is named by the indices of\n"
-            "               its two vertices, as numbered in the file)\n"
+            "  --ops LIST   comma list of these steps, run in order (an edge is named by the\n"
+            "               indices of its two vertices, as numbered in the file):\n"
+            "%s"
             "\n"
             "Examples:\n"
             "  meshedit convert dae/cube.dae cube.obj\n"
             "  meshedit convert dae/cube.dae out.dae --ops flip:0-6,split:0-1,loop:2\n"
             "\n"
             "Exit status: 0 ok, 1 an op was refused, 2 bad usage, bad input, a named edge\n"
-            "that does not exist, or an unwritable output.\n");
+            "that does not exist, or an unwritable output.\n",
+            ops::help_lines().c_str());
         return 0;
     }
     expect_positionals("convert", args, 2, "IN and OUT");
     const std::filesystem::path in = args.positional[0];
     const std::filesystem::path out = args.positional[1];
-    std::vector<Op> ops;
+    std::vector<ops::Step> steps;
     if (const std::string* list = args.value("--ops")) {
         try {
-            ops = parse_ops(*list);
-        } catch (const OpSyntaxError& e) {
+            steps = ops::parse(*list);
+        } catch (const ops::SyntaxError& e) {
             throw UsageError(std::string("convert: ") + e.what());
         }
     }
 
-    if (extension_of(in) == ".bzc" && extension_of(out) == ".bzc") {
-        if (!ops.empty()) {
+    if (file_extension(in) == ".bzc" && file_extension(out) == ".bzc") {
+        if (!steps.empty()) {
             throw UsageError("convert: --ops applies to meshes, not to a .bzc curve");
         }
         write_bzc(read_bzc(in), out);
         return 0;
     }
     check_mesh_output(out);
-    InputMesh input = load_input(in, density_option(args));
+    LoadedDocument input = load_surface(in, density_option(args));
     print_load_messages(input);
     {
         ProgressBar bar("convert");
         try {
-            apply_ops(input.mesh, ops, apply_options(bar, LoopWeights::Warren));
-        } catch (const OpError& e) {
+            ops::apply_steps(input.mesh, steps, apply_options(bar, LoopWeights::Warren));
+        } catch (const ops::OpError& e) {
             rethrow_with_file(e, in);
         }
     }
@@ -148,17 +149,14 @@ int run_subdivide(const std::vector<std::string>& argv) {
     const std::filesystem::path in = args.positional[0];
     const std::filesystem::path out = args.positional[1];
     check_mesh_output(out);
-    InputMesh input = load_input(in, density_option(args));
+    LoadedDocument input = load_surface(in, density_option(args));
     print_load_messages(input);
     if (levels > 0) {
-        Op op;
-        op.kind = Op::Kind::Loop;
-        op.levels = levels;
-        op.text = "loop:" + std::to_string(levels);
+        const ops::Step loop = ops::parse_step("loop:" + std::to_string(levels));
         ProgressBar bar("subdivide");
         try {
-            apply_ops(input.mesh, {op}, apply_options(bar, weights));
-        } catch (const OpError& e) {
+            ops::apply_steps(input.mesh, {loop}, apply_options(bar, weights));
+        } catch (const ops::OpError& e) {
             rethrow_with_file(e, in);
         }
     }
@@ -183,14 +181,14 @@ int run_check(const std::vector<std::string>& argv) {
     }
     expect_positionals("check", args, 1, "FILE");
     const std::filesystem::path path = args.positional[0];
-    if (extension_of(path) == ".bzc") {
+    if (file_extension(path) == ".bzc") {
         // A curve has no invariants beyond what read_bzc() checks (N ≥ 2, finite points).
         const BezierCurve curve = read_bzc(path);
         std::printf("%s: OK (Bezier curve, %zu points, degree %d)\n", path.string().c_str(),
                     curve.control_points.size(), curve.degree());
         return 0;
     }
-    const InputMesh input = load_input(path, density_option(args));
+    const LoadedDocument input = load_surface(path, density_option(args));
     print_load_messages(input);
     if (input.repairs.repaired()) {
         // One note line however many kinds of repair the summary lists.

@@ -108,7 +108,7 @@ int run_eval(const std::vector<std::string>& argv) {
     }
     expect_positionals("eval", args, 1, "FILE");
     const std::filesystem::path path = args.positional[0];
-    const std::string ext = extension_of(path);
+    const std::string ext = file_extension(path);
     if (ext == ".bzc") {
         return eval_curve(path, args);
     }

@@ -167,25 +167,25 @@ int run_info(const std::vector<std::string>& argv) {
     const int density = args.value("--density") != nullptr
                             ? parse_int(*args.value("--density"), "--density", 1, 256)
                             : TessellationOptions{}.density;
-    if (extension_of(path) == ".bzc") {
+    if (file_extension(path) == ".bzc") {
         return info_curve(path, json);
     }
 
-    const InputMesh input = load_input(path, density);
+    const LoadedDocument input = load_surface(path, density);
     const Mesh& mesh = input.mesh;
     const MeshStats stats = compute_stats(mesh);
     const bool manifold = !input.repairs.repaired();
     const std::size_t creases = count_creases(mesh);
     const std::vector<std::string> repairs = lines_of(input.repairs.summary());
     const BoundingBox box = mesh.bounds();
-    const bool bez = input.patches > 0;
+    const bool bez = input.kind == DocumentKind::Surface;
 
     if (json) {
         Json j;
         j["file"] = path.string();
         j["kind"] = bez ? "bezier-patches" : "mesh";
         if (bez) {
-            j["patches"] = input.patches;
+            j["patches"] = input.patches.size();
             j["density"] = density;
         }
         j["vertices"] = stats.vertices;
@@ -219,7 +219,7 @@ int run_info(const std::vector<std::string>& argv) {
 
     print_row("file", path.string());
     if (bez) {
-        print_row("kind", "Bezier patches, " + std::to_string(input.patches) +
+        print_row("kind", "Bezier patches, " + std::to_string(input.patches.size()) +
                               " tessellated at density " + std::to_string(density) + " and welded");
     }
     print_row("vertices", std::to_string(stats.vertices));

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "cli.h"
-#include "meshedit/io/io_error.h"
-#include "ops.h"
+#include "meshedit/files/io_error.h"
+#include "meshedit/ops/ops.h"
 
 namespace {
 
@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
     } catch (const meshedit::IoError& e) {
         print_error(e.what());
         return 2;
-    } catch (const OpError& e) {
+    } catch (const meshedit::ops::OpError& e) {
         print_error(e.what());
         return e.refused() ? 1 : 2;
     } catch (const Failure& e) {

@@ -51,6 +51,7 @@
 
 #include "loop_rules.h"
 #include "mesh_arrays.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
@@ -388,6 +389,45 @@ OpStatus is_loop_ok(const Mesh& mesh) {
         }
     }
     return OpStatus::ok();
+}
+
+LoopPlan plan_loop(const Mesh& mesh, int levels) {
+    LoopPlan plan;
+    if (const OpStatus ok = is_loop_ok(mesh); !ok) {
+        plan.refusal = ok.reason();
+        return plan;
+    }
+    // Triangulating a k-gon first makes k - 2 triangles and k - 3 new edges.
+    double v = static_cast<double>(mesh.n_vertices());
+    double e = static_cast<double>(mesh.n_edges());
+    double f = 0.0;
+    for (const Face g : mesh.faces()) {
+        const double k = static_cast<double>(mesh.valence(g));
+        f += k - 2.0;
+        e += k - 3.0;
+    }
+    // Bytes per face as this mesh stores them (user properties included), at least the 69
+    // bytes of a Loop result's own arrays.
+    const double per_face = std::max(69.0, f > 0.0 ? static_cast<double>(mesh.bytes()) / f : 0.0);
+    for (int level = 1; level <= levels; ++level) {
+        v += e;
+        e = 2.0 * e + 3.0 * f;
+        f *= 4.0;
+        plan.vertices = v, plan.edges = e, plan.faces = f;
+        plan.bytes = 4.0 * per_face * f;
+        const std::string what = "cannot subdivide: level " + std::to_string(level) + " (" +
+                                 std::to_string(static_cast<unsigned long long>(f)) + " faces) ";
+        if (2.0 * e >= static_cast<double>(kInvalidIndex) ||
+            v >= static_cast<double>(kInvalidIndex)) {
+            plan.refusal = what + "would exceed the 2^32 - 1 elements 32-bit handles can number";
+            return plan;
+        }
+        if (const auto over = over_budget(plan.bytes)) {
+            plan.refusal = what + *over;
+            return plan;
+        }
+    }
+    return plan;
 }
 
 LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {

@@ -16,7 +16,9 @@
 #include <vector>
 
 #include "meshedit/bezier/bezier_patch.h"
-#include "meshedit/io/io.h"
+#include "meshedit/files/io_error.h"
+#include "meshedit/io/document.h"
+#include "meshedit/ops/ops.h"
 #include "meshedit/render/camera.h"
 #include "meshedit/render/mesh_renderer.h"
 #include "meshedit/render/overlay.h"
@@ -24,7 +26,6 @@
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/shader_program.h"
 #include "meshedit/render/shading.h"
-#include "ops.h"
 #include "osmesa_context.h"
 
 namespace {
@@ -295,14 +296,6 @@ ElementRef parse_selection(const Mesh& mesh, const std::string& spec) {
     return kind == 'e' ? ElementRef::edge(Mesh::edge(h)) : ElementRef::halfedge(h);
 }
 
-std::string extension_of(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    for (char& c : ext) {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return ext;
-}
-
 int run(const Options& options) {
     Clock::time_point phase = Clock::now();
     auto lap = [&](const char* name) {
@@ -311,39 +304,27 @@ int run(const Options& options) {
         }
         phase = Clock::now();
     };
-    const std::string ext = extension_of(options.input);
-    const bool is_curve = ext == ".bzc";
-    const bool is_surface = ext == ".bez";
-    if (!is_curve && !is_surface && !is_mesh_extension(ext)) {
-        throw UsageError(options.input.string() +
-                         ": unknown file type (want .dae .gltf .glb .obj .bez .bzc)");
-    }
-
     // Everything that can fail on bad input happens before the GL context exists.
-    Mesh mesh;
-    BezierCurve curve;
-    std::vector<BezierPatch> patches;
+    ReadOptions read;
+    read.density = options.density;
+    LoadedDocument doc = read_document(options.input, read);
+    const bool is_curve = doc.kind == DocumentKind::Curve;
+    const bool is_surface = doc.kind == DocumentKind::Surface;
+    Mesh& mesh = doc.mesh;
+    const BezierCurve& curve = doc.curve;
+    const std::vector<BezierPatch>& patches = doc.patches;
     OverlayBatch overlay;
     const OverlayStyle style;
     if (is_curve) {
-        curve = read_bzc(options.input);
         if (!options.select.empty() || !options.ops.empty()) {
             throw UsageError("--select and --ops need a mesh or .bez file, not a curve");
         }
         add_unit_square(style, overlay);
         add_bezier_curve(curve, options.t, options.level, options.curve, style, overlay);
     } else {
-        if (is_surface) {
-            patches = read_bez(options.input);
-            TessellationOptions tessellation;
-            tessellation.density = options.density;
-            mesh = tessellate(patches, tessellation);
-        } else {
-            mesh = read_mesh(options.input).mesh;
-        }
         lap("load");
         if (!options.ops.empty()) {
-            cli::apply_ops(mesh, cli::parse_ops(options.ops));
+            ops::apply_steps(mesh, ops::parse(options.ops));
             lap("ops");
         }
         if (options.features.value_or(!is_surface)) {
@@ -471,10 +452,10 @@ int main(int argc, char** argv) {
     } catch (const IoError& e) {
         print_error(e.what());
         return 2;
-    } catch (const cli::OpSyntaxError& e) {
+    } catch (const ops::SyntaxError& e) {
         print_error(e.what());
         return 2;
-    } catch (const cli::OpError& e) {
+    } catch (const ops::OpError& e) {
         print_error(e.what());
         return e.refused() ? 1 : 2;
     } catch (const GlError& e) {

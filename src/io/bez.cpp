@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "io_detail.h"
+#include "io_util.h"
 #include "meshedit/io/io.h"
 
 namespace meshedit {
@@ -164,8 +164,8 @@ std::string plural(std::uint64_t n, const char* singular, const char* plural_for
 }  // namespace
 
 std::vector<BezierPatch> read_bez(const std::filesystem::path& path) {
-    const std::string file = io_detail::display_name(path);
-    const std::string text = io_detail::read_file(path);
+    const std::string file = display_name(path);
+    const std::string text = read_file(path);
     Scanner scanner(text);
     std::string_view token;
     if (!scanner.next(token)) {
@@ -209,8 +209,8 @@ std::vector<BezierPatch> read_bez(const std::filesystem::path& path) {
 }
 
 BezierCurve read_bzc(const std::filesystem::path& path) {
-    const std::string file = io_detail::display_name(path);
-    const std::string text = io_detail::read_file(path);
+    const std::string file = display_name(path);
+    const std::string text = read_file(path);
     Scanner scanner(text);
     std::string_view token;
     if (!scanner.next(token)) {
@@ -248,7 +248,7 @@ BezierCurve read_bzc(const std::filesystem::path& path) {
 }
 
 void write_bzc(const BezierCurve& curve, const std::filesystem::path& path) {
-    const std::string file = io_detail::display_name(path);
+    const std::string file = display_name(path);
     const std::size_t n = curve.control_points.size();
     if (n < 2) {
         throw IoError(file, "",
@@ -263,10 +263,9 @@ void write_bzc(const BezierCurve& curve, const std::filesystem::path& path) {
         }
         // Shortest round-trip form: read_bzc gives back the same doubles. z is not stored
         // (curves live in the z = 0 plane).
-        text += io_detail::format_double(p.x) + " " + io_detail::format_double(p.y) + "\n";
+        text += io_util::format_double(p.x) + " " + io_util::format_double(p.y) + "\n";
     }
-    write_atomically(path,
-                     [&](const std::filesystem::path& tmp) { io_detail::write_file(tmp, text); });
+    write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, text); });
 }
 
 }  // namespace meshedit

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "meshedit/core/math.h"
-#include "meshedit/io/io_error.h"
+#include "meshedit/files/io_error.h"
 
 namespace meshedit::collada {
 

@@ -15,47 +15,10 @@
 
 #include "collada_detail.h"
 #include "meshedit/core/memory.h"
+#include "meshedit/files/files.h"
 
 namespace meshedit::collada {
 namespace {
-
-// One read into a buffer sized from the file (istreambuf_iterator copies byte by byte);
-// a file that reports no size (a pipe, /proc) is read in growing steps instead.
-std::string read_bytes(const std::string& file) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec)) {
-        throw IoError(file, "", "is a directory, not a file");
-    }
-    struct Close {
-        void operator()(std::FILE* f) const { std::fclose(f); }
-    };
-    const std::unique_ptr<std::FILE, Close> in(std::fopen(file.c_str(), "rb"));
-    if (!in) {
-        throw IoError(file, "", std::string("cannot open file: ") + std::strerror(errno));
-    }
-    // One spare byte, so that a file read whole meets its end without growing the buffer.
-    const auto size = std::filesystem::file_size(file, ec);
-    std::string bytes;
-    bytes.reserve(ec ? 0 : static_cast<std::size_t>(size) + 1);
-    memory::advise_huge_pages(bytes.data(), bytes.capacity());
-    bytes.resize(bytes.capacity());
-    std::size_t used = 0;
-    for (;;) {
-        if (used == bytes.size()) {
-            bytes.resize(std::max<std::size_t>(2 * bytes.size(), 1 << 16));
-        }
-        const std::size_t got = std::fread(bytes.data() + used, 1, bytes.size() - used, in.get());
-        used += got;
-        if (got == 0) {
-            break;
-        }
-    }
-    if (std::ferror(in.get())) {
-        throw IoError(file, "", "read error");
-    }
-    bytes.resize(used);
-    return bytes;
-}
 
 void append_utf8(std::string& out, std::uint32_t cp) {
     if (cp < 0x80) {
@@ -370,7 +333,7 @@ TokenError scan_index(const char*& p, const char* end, std::uint32_t& value) {
 }  // namespace
 
 Document::Document(const std::string& path) : file_(path) {
-    text_ = decode(file_, read_bytes(file_));
+    text_ = decode(file_, read_file(file_));
     if (std::all_of(text_.begin(), text_.end(), is_space)) {
         throw IoError(file_, "", "empty file");
     }

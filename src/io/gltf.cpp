@@ -18,7 +18,7 @@
 #include <sstream>
 
 #include "gltf_guard.h"
-#include "io_detail.h"
+#include "io_util.h"
 #include "meshedit/core/normals.h"
 
 namespace meshedit {
@@ -447,8 +447,8 @@ int add_view(tinygltf::Model& model, std::size_t offset, std::size_t length, int
 }  // namespace
 
 MeshSoup read_gltf(const std::filesystem::path& path) {
-    const std::string file = io_detail::display_name(path);
-    const std::string bytes = io_detail::read_file(path);
+    const std::string file = display_name(path);
+    const std::string bytes = read_file(path);
     if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
         throw IoError(file, "", "file too large for the glTF loader (over 4 GiB)");
     }
@@ -486,9 +486,9 @@ MeshSoup read_gltf(const std::filesystem::path& path) {
 }
 
 void write_gltf(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
-    const std::string file = io_detail::display_name(path);
+    const std::string file = display_name(path);
     std::optional<Mesh> storage;
-    const Mesh& dense = io_detail::compacted(mesh, storage);
+    const Mesh& dense = io_util::compacted(mesh, storage);
     const PolygonSoup soup = to_polygon_soup(dense);
 
     std::vector<std::uint32_t> triangles;
@@ -587,15 +587,14 @@ void write_gltf(const Mesh& mesh, const std::filesystem::path& path, const IoFla
 
     // Serialise in memory (buffer embedded as base64 for .gltf, as the BIN chunk for .glb),
     // then write through write_file, which checks every step.
-    const bool binary = io_detail::lower_extension(path) == ".glb";
+    const bool binary = file_extension(path) == ".glb";
     std::ostringstream stream;
     tinygltf::TinyGLTF writer;
     if (!writer.WriteGltfSceneToStream(&model, stream, !binary, binary) || !stream) {
         throw IoError(file, "", "cannot serialise the glTF model");
     }
     const std::string bytes = std::move(stream).str();
-    write_atomically(path,
-                     [&](const std::filesystem::path& tmp) { io_detail::write_file(tmp, bytes); });
+    write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, bytes); });
 }
 
 }  // namespace meshedit

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <system_error>
 
-#include "meshedit/io/io_error.h"
+#include "meshedit/files/io_error.h"
 
 namespace fs = std::filesystem;
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "io_detail.h"
+#include "io_util.h"
 #include "meshedit/core/normals.h"
 
 namespace meshedit {
@@ -123,10 +123,10 @@ std::string trimmed(std::string s) {
 }  // namespace
 
 MeshSoup read_obj(const std::filesystem::path& path) {
-    const std::string file = io_detail::display_name(path);
+    const std::string file = display_name(path);
     // Read the text ourselves: one error path for missing files, and the text is needed for
     // line numbers anyway. Materials are not used; parsing from a string skips `mtllib`.
-    const std::string text = io_detail::read_file(path);
+    const std::string text = read_file(path);
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = false;
@@ -227,7 +227,7 @@ MeshSoup read_obj(const std::filesystem::path& path) {
 
 void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
     std::optional<Mesh> storage;
-    const Mesh& dense = io_detail::compacted(mesh, storage);
+    const Mesh& dense = io_util::compacted(mesh, storage);
     const PolygonSoup soup = to_polygon_soup(dense);
     std::vector<Vec3> normals;
     if (flags.write_normals) {
@@ -243,7 +243,7 @@ void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
         text += key;
         for (int i = 0; i < 3; ++i) {
             text += ' ';
-            text += io_detail::format_double(p[i]);
+            text += io_util::format_double(p[i]);
         }
         text += '\n';
     };
@@ -266,8 +266,7 @@ void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
         }
         text += '\n';
     }
-    write_atomically(path,
-                     [&](const std::filesystem::path& tmp) { io_detail::write_file(tmp, text); });
+    write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, text); });
 }
 
 }  // namespace meshedit

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "gl.h"
-#include "meshedit/io/io.h"
+#include "meshedit/files/files.h"
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/shader_program.h"
 

@@ -15,7 +15,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "meshedit/io/io_error.h"
+#include "meshedit/files/io_error.h"
 #include "meshedit/render/image.h"
 #include "meshedit/render/overlay.h"
 

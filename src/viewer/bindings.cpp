@@ -5,6 +5,8 @@
 
 #include <array>
 
+#include "meshedit/ops/ops.h"
+
 namespace meshedit::viewer {
 
 namespace {
@@ -19,13 +21,14 @@ constexpr std::string_view kShadingHelp =
 constexpr std::string_view kTHelp = "decrease / increase t by 0.01";
 
 // clang-format off
-constexpr std::array kBindings{
-    // Local operations and Loop (mesh and surface modes).
-    Binding{key_of('F'), kNoMods, kMeshModes, {Command::Flip}, "F", "flip the selected edge"},
-    Binding{key_of('S'), kNoMods, kMeshModes, {Command::Split}, "S", "split the selected edge"},
-    Binding{key_of('C'), kNoMods, kMeshModes, {Command::Collapse}, "C", "collapse the selected edge"},
-    Binding{key_of('L'), kNoMods, kMeshModes, {Command::Loop}, "L / U", "Loop-subdivide the mesh"},
-    Binding{key_of('U'), kNoMods, kMeshModes, {Command::Loop}, "L / U", "Loop-subdivide the mesh"},
+constexpr std::array kTable{
+    // Edits of the mesh: verbs of the edit language (mesh and surface modes); the help is
+    // the verb's own (src/ops/verbs.cpp).
+    Binding{key_of('F'), kNoMods, kMeshModes, edit("flip"), "F", {}},
+    Binding{key_of('S'), kNoMods, kMeshModes, edit("split"), "S", {}},
+    Binding{key_of('C'), kNoMods, kMeshModes, edit("collapse"), "C", {}},
+    Binding{key_of('L'), kNoMods, kMeshModes, edit("loop"), "L / U", {}},
+    Binding{key_of('U'), kNoMods, kMeshModes, edit("loop"), "L / U", {}},
     // Navigation.
     Binding{key_of('N'), kNoMods, kMeshModes, {Command::Next}, "N", "selected halfedge → next"},
     Binding{key_of('T'), kNoMods, kMeshModes, {Command::Twin}, "T", "selected halfedge → twin"},
@@ -33,7 +36,7 @@ constexpr std::array kBindings{
     Binding{key_of('V'), kNoMods, kMeshModes, {Command::ToVertex}, "V", "from the selection go to its vertex"},
     Binding{key_of('E'), kNoMods, kMeshModes, {Command::ToEdge}, "E", "from the selection go to its edge"},
     Binding{key_of('G'), kNoMods, kMeshModes, {Command::ToFace}, "G", "from the selection go to its face"},
-    Binding{key_of('K'), kNoMods, kMeshModes, {Command::ToggleCrease}, "K", "toggle crease on the selected edge"},
+    Binding{key_of('K'), kNoMods, kMeshModes, edit("crease"), "K", {}},
     // Display.
     Binding{key_of('Q'), kNoMods, kMeshModes, {Command::ToggleSmooth}, "Q", "toggle smooth (area-weighted vertex normals) / flat shading"},
     Binding{key_of('W'), kNoMods, kMeshModes, {Command::ToggleWireframe}, "W", "toggle wireframe overlay"},
@@ -122,16 +125,30 @@ std::string escape_cell(std::string_view text) {
     return out;
 }
 
+// The table with every Edit row's help taken from its verb.
+std::vector<Binding> with_verb_help() {
+    std::vector<Binding> out(kTable.begin(), kTable.end());
+    for (Binding& b : out) {
+        if (b.action.command == Command::Edit) {
+            const ops::Verb* verb = ops::find_verb(b.action.verb);
+            MESHEDIT_ASSERT(verb != nullptr);
+            b.help = verb->key_help;
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 std::span<const Binding> bindings() {
-    return kBindings;
+    static const std::vector<Binding> table = with_verb_help();
+    return table;
 }
 
 std::optional<Action> lookup(Key key, unsigned mods, Mode mode) {
     const unsigned wanted = mods & (kShift | kCtrl | kAlt);
     const unsigned bit = mode_bit(mode);
-    for (const Binding& b : kBindings) {
+    for (const Binding& b : bindings()) {
         if (b.key == key && b.mods == wanted && (b.modes & bit) != 0) {
             return b.action;
         }
@@ -152,7 +169,7 @@ std::vector<HelpRow> help_rows() {
         unsigned modes;
     };
     std::vector<Merged> merged;
-    for (const Binding& b : kBindings) {
+    for (const Binding& b : bindings()) {
         bool found = false;
         for (Merged& m : merged) {
             if (m.label == b.label && m.help == b.help) {

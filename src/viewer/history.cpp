@@ -6,6 +6,18 @@
 
 namespace meshedit::viewer {
 
+const char* mode_description(Mode mode) {
+    switch (mode) {
+        case Mode::Mesh:
+            return "mesh";
+        case Mode::Surface:
+            return "Bezier surface (welded tessellation)";
+        case Mode::Curve:
+            return "Bezier curve";
+    }
+    return "";
+}
+
 std::size_t Document::bytes() const {
     std::size_t n = sizeof(Document) + mesh.bytes();
     n += patches.capacity() * sizeof(BezierPatch);

@@ -17,18 +17,6 @@ constexpr ImGuiWindowFlags kOverlayFlags =
     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
     ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
 
-const char* mode_name(Mode mode) {
-    switch (mode) {
-        case Mode::Mesh:
-            return "mesh";
-        case Mode::Surface:
-            return "Bezier surface (welded tessellation)";
-        case Mode::Curve:
-            return "Bezier curve";
-    }
-    return "";
-}
-
 void rows_table(const char* id, const std::vector<std::pair<std::string, std::string>>& rows) {
     if (ImGui::BeginTable(id, 2, ImGuiTableFlags_SizingFixedFit)) {
         for (const auto& [name, value] : rows) {
@@ -87,7 +75,7 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
         return;
     }
     const Document& doc = editor.document();
-    ImGui::TextDisabled("%s", mode_name(doc.mode));
+    ImGui::TextDisabled("%s", mode_description(doc.mode));
     if (doc.mode == Mode::Curve) {
         ImGui::Text("control points %zu, degree %d", doc.curve.control_points.size(),
                     doc.curve.degree());

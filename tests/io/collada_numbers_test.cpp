@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "formats_test_util.h"
+#include "meshedit/files/io_error.h"
 #include "meshedit/io/collada.h"
-#include "meshedit/io/io_error.h"
 
 namespace meshedit {
 namespace {

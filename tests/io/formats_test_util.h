@@ -14,7 +14,7 @@
 #include <system_error>
 #include <vector>
 
-#include "meshedit/io/io_error.h"
+#include "meshedit/files/io_error.h"
 
 namespace meshedit::test {
 

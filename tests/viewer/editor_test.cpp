@@ -106,7 +106,7 @@ TEST(Editor, FlipEqualsDirectFlip) {
     // faces (not its halfedge layout, which flip does not promise).
     Editor ed2 = editor_with(cube);
     ed2.select(ElementRef::halfedge(Mesh::halfedge(e, 1)));
-    EXPECT_FALSE(ed2.run({Command::Flip}).refused);
+    EXPECT_FALSE(ed2.run(edit("flip")).refused);
     EXPECT_TRUE(test::identical(ed2.mesh(), expected));
 }
 

@@ -43,28 +43,21 @@ bool same_ref(const ElementRef& a, const ElementRef& b) {
 }
 
 /// The direct core operation on a copy, as the editor must have done it.
-Mesh apply_directly(const Mesh& before, Command command, Edge e) {
+Mesh apply_directly(const Mesh& before, std::string_view verb, Edge e) {
     Mesh m = before;
-    switch (command) {
-        case Command::Flip:
-            EXPECT_TRUE(flip(m, e));
-            break;
-        case Command::Split:
-            EXPECT_TRUE(split(m, e));
-            break;
-        case Command::Collapse:
-            EXPECT_TRUE(collapse(m, e));
-            break;
-        case Command::ToggleCrease: {
-            auto crease = m.property<Edge, std::uint8_t>(kCreaseProperty, 0);
-            crease[e] = crease[e] != 0 ? 0 : 1;
-            break;
-        }
-        case Command::Loop:
-            loop_subdivide(m);
-            break;
-        default:
-            ADD_FAILURE() << "not an edit";
+    if (verb == "flip") {
+        EXPECT_TRUE(flip(m, e));
+    } else if (verb == "split") {
+        EXPECT_TRUE(split(m, e));
+    } else if (verb == "collapse") {
+        EXPECT_TRUE(collapse(m, e));
+    } else if (verb == "crease") {
+        auto crease = m.property<Edge, std::uint8_t>(kCreaseProperty, 0);
+        crease[e] = crease[e] != 0 ? 0 : 1;
+    } else if (verb == "loop") {
+        loop_subdivide(m);
+    } else {
+        ADD_FAILURE() << "not an edit: " << verb;
     }
     if (m.has_garbage()) {
         m.garbage_collection();
@@ -154,10 +147,10 @@ private:
         ++edits_;
     }
 
-    void mesh_op(Command command) {
+    void mesh_op(std::string_view verb) {
         const Document before = ed_.document();
         const ElementRef s = before.selection;
-        const Outcome out = ed_.run({command});
+        const Outcome out = ed_.run(edit(verb));
         if (out.refused) {
             ++refusals_;
             ASSERT_FALSE(out.message.empty());
@@ -166,14 +159,14 @@ private:
         }
         ASSERT_NE(ed_.document().revision, before.revision);
         Edge e;
-        if (command != Command::Loop) {
+        if (verb != "loop") {
             ASSERT_TRUE(s.kind == Kind::Edge || s.kind == Kind::Halfedge);
             e = s.kind == Kind::Edge ? Edge(s.index) : Mesh::edge(Halfedge(s.index));
         }
-        ASSERT_TRUE(test::identical(ed_.mesh(), apply_directly(before.mesh, command, e)))
-            << "command " << static_cast<int>(command) << " at step " << step_;
+        ASSERT_TRUE(test::identical(ed_.mesh(), apply_directly(before.mesh, verb, e)))
+            << verb << " at step " << step_;
         record_edit(before);
-        loops_ += command == Command::Loop;
+        loops_ += verb == "loop";
     }
 
     void drag() {
@@ -241,14 +234,13 @@ private:
         const int roll = uniform(0, 99);
         if (roll < 40) {
             random_select();
-            const Command ops[] = {Command::Flip, Command::Split, Command::Collapse,
-                                   Command::ToggleCrease};
+            const std::string_view ops[] = {"flip", "split", "collapse", "crease"};
             // Collapse a little more often than split, so the mesh does not only grow.
             const int pick = uniform(0, 9);
             mesh_op(ops[pick < 3 ? 0 : pick < 5 ? 1 : pick < 9 ? 2 : 3]);
         } else if (roll < 44) {
             if (ed_.mesh().n_faces() < 200) {
-                mesh_op(Command::Loop);
+                mesh_op("loop");
             }
         } else if (roll < 52) {
             drag();

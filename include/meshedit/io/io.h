@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Reading and writing meshes and Bezier data, dispatched by file extension. Each format has
-/// its own read_X/write_X pair (collada.h, gltf.h, obj.h, bez.h); this is the front door.
+/// its own read_X/write_X pair (collada.h, gltf.h, obj.h; the Bezier formats below); this is
+/// the front door. document.h reads any file the programs open (mesh, patches or curve).
 ///
 /// Readers produce a MeshSoup (an indexed polygon soup plus what the file said about it);
 /// only build_mesh() turns it into a halfedge mesh. Writers always write a temporary file in
@@ -19,7 +20,7 @@
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/mesh.h"
-#include "meshedit/io/io_error.h"
+#include "meshedit/files/files.h"
 
 namespace meshedit {
 
@@ -65,12 +66,6 @@ LoadedMesh read_mesh(const std::filesystem::path& path);
 /// Writes `mesh` in the format of `path`'s extension (garbage-collected copy if needed),
 /// atomically. \throws IoError.
 void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags = {});
-
-/// Runs `write(tmp)` on a temporary path in `target`'s folder, then renames it over
-/// `target`; on any failure the temporary file is removed and `target` is untouched.
-/// \throws IoError naming `target` if the folder is not writable or the rename fails.
-void write_atomically(const std::filesystem::path& target,
-                      const std::function<void(const std::filesystem::path& tmp)>& write);
 
 /// Bezier patches of a .bez file (SPEC §2). \throws IoError.
 std::vector<BezierPatch> read_bez(const std::filesystem::path& path);

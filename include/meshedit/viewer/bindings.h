@@ -10,13 +10,10 @@
 #include <string_view>
 #include <vector>
 
+#include "meshedit/viewer/document.h"
 #include "meshedit/viewer/keys.h"
 
 namespace meshedit::viewer {
-
-/// What the document shows: a mesh file, Bezier patches (.bez, edited as their welded
-/// tessellation) or a Bezier curve (.bzc).
-enum class Mode { Mesh, Surface, Curve };
 
 /// A set of modes a binding is active in.
 enum ModeMask : unsigned {
@@ -33,12 +30,9 @@ constexpr ModeMask mode_bit(Mode mode) {
 
 /// Everything a key can ask for.
 enum class Command {
-    // Local operations on the selected edge, and whole-mesh operations.
-    Flip,
-    Split,
-    Collapse,
-    Loop,
-    ToggleCrease,
+    /// An edit of the mesh: the verb of the edit language (meshedit/ops/ops.h) named by
+    /// Action::verb, applied to the selection (edge verbs) or the whole mesh.
+    Edit,
     // Moving the selection through the connectivity.
     Next,
     Twin,
@@ -76,12 +70,18 @@ enum class Command {
     ToggleNets,
 };
 
-/// A command with its argument (only Shading uses one).
+/// A command with its argument: Shading's mode number, or Edit's verb.
 struct Action {
     Command command;
     int argument = 0;
+    std::string_view verb = {};
     friend bool operator==(const Action&, const Action&) = default;
 };
+
+/// The action that runs the edit-language verb `verb` ("flip").
+constexpr Action edit(std::string_view verb) {
+    return {Command::Edit, 0, verb};
+}
 
 struct Binding {
     Key key;
@@ -94,7 +94,7 @@ struct Binding {
     std::string_view help;
 };
 
-/// Every key binding, in help order.
+/// Every key binding, in help order. An Edit binding's help is its verb's key_help.
 std::span<const Binding> bindings();
 
 /// The action bound to `key` with exactly `mods` (Shift/Ctrl/Alt; other bits ignored) in

@@ -6,13 +6,15 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include "meshedit/core/mesh.h"
-#include "meshedit/render/overlay.h"
 #include "meshedit/render/shading.h"
 #include "meshedit/viewer/bindings.h"
 #include "meshedit/viewer/history.h"
@@ -44,6 +46,11 @@ struct Outcome {
     bool refused = false;
 };
 
+/// A refused command: nothing changed, and `message` says why.
+inline Outcome refused(std::string message) {
+    return {kNothing, std::move(message), true};
+}
+
 /// The viewer's render defaults: the renderer's, with the wireframe on.
 inline RenderOptions with_wireframe() {
     RenderOptions options;
@@ -62,11 +69,22 @@ struct ViewState {
     int level = -1;          ///< Curve mode: levels shown (−1 = all, with B(t))
 };
 
+/// The viewer's logic: one class, its members spread over files by responsibility.
+///
+///   editor.cpp            run() and press(): dispatch through the key table; display
+///                         toggles; undo, redo, quitting; and edit(), the funnel every change
+///                         of the document goes through
+///   editor_files.cpp      open, save, save as, the window title
+///   editor_mesh.cpp       mesh edits: the verbs of the edit language (meshedit/ops/ops.h)
+///                         on the selection or the whole mesh; garbage collection
+///   editor_curve.cpp      curve and surface commands
+///   editor_selection.cpp  selection, moving it through the connectivity, drags
+///   element_info.cpp      the info panel's rows
 class Editor {
 public:
     explicit Editor(HistoryLimits limits = {});
 
-    // ------------------------------------------------------------------------ files
+    // ------------------------------------------------------------- files (editor_files.cpp)
 
     /// Opens `path` (.dae .gltf .glb .obj → Mesh, .bez → Surface, .bzc → Curve). On failure
     /// throws IoError and leaves the current document untouched. Clears history and
@@ -82,14 +100,24 @@ public:
     /// Saves to `path` and makes it the document's path (Ctrl+Shift+S after the window has
     /// asked for a path). Mesh/Surface write a mesh format; Curve writes .bzc.
     Outcome save_as(const std::filesystem::path& path);
+    /// "name.dae — V 8 E 18 F 12 *" for the window title.
+    std::string title() const;
 
-    // ---------------------------------------------------------------------- commands
+    // ------------------------------------------------------------------ commands (editor.cpp)
 
     /// Runs one key action (the window looks it up in bindings()).
     Outcome run(Action action);
     /// Looks `key`+`mods` up in the binding table for the current mode and runs it; an
     /// unbound key returns an empty Outcome.
     Outcome press(Key key, unsigned mods);
+
+    // ---------------------------------------------------------- mesh edits (editor_mesh.cpp)
+
+    /// Runs the edit-language verb `verb` ("flip") on the selected edge (edge verbs; a
+    /// selected halfedge stands for its edge, as in CS184) or on the whole mesh.
+    Outcome edit_mesh(std::string_view verb);
+
+    // ------------------------------------------------ selection, drags (editor_selection.cpp)
 
     /// Selection and hover from picking (ElementRef of the mesh, or in Curve mode a Vertex
     /// ref whose index is a control point). Invalid or deleted elements select nothing.
@@ -103,6 +131,8 @@ public:
     Outcome drag_to(const Vec3& position);
     void end_drag();
     bool dragging() const { return dragging_; }
+
+    // ------------------------------------------------------------- curve (editor_curve.cpp)
 
     /// Curve mode: t in [0, 1], clamped (the scroll wheel and [ ]).
     Outcome set_t(double t);
@@ -121,30 +151,42 @@ public:
     /// Unsaved changes: the content differs from what was last opened or saved (undoing
     /// back to the saved state makes it clean again).
     bool dirty() const { return doc_.revision != saved_revision_; }
-    /// "name.dae — V 8 E 18 F 12 *" for the window title.
-    std::string title() const;
     /// Quitting with unsaved changes is refused once with a warning; this says whether the
     /// next Quit/Escape-quit will go through.
     bool quit_armed() const { return quit_armed_; }
 
 private:
-    /// Records the current document in the history and gives it a new revision; call
-    /// before mutating doc_.
-    void begin_edit();
+    /// What an edit did, as the function edit() runs reports it.
+    struct Edited {
+        unsigned changes = kNothing;  ///< Change bits
+        std::string message;          ///< the status line
+        /// The new selection; empty keeps the current one (remapped through garbage
+        /// collection).
+        std::optional<ElementRef> select;
+    };
+
+    /// The edit funnel (editor.cpp), the one way the document changes, as Scotty3D's
+    /// Model::update_mesh: `check` says why the edit cannot run (empty: it can) without
+    /// touching anything; then the document is snapshotted, `apply` changes it, and on an
+    /// exception (no memory, a file that cannot be read) the snapshot is put back and the
+    /// edit refused with the reason; otherwise the snapshot becomes one undo step, deleted
+    /// elements are collected (the selection remapped), and the result is selected and
+    /// described.
+    Outcome edit(const std::function<std::string()>& check,
+                 const std::function<Edited(Document&)>& apply);
+    /// Records the document as an undo step and gives it a new revision; call before
+    /// mutating doc_ (edit() and the first move of a drag).
+    void snapshot();
     /// Garbage-collects the mesh, remapping the selection, when it has deleted elements.
     void compact();
 
-    Outcome run_mesh_op(Command command);
     Outcome run_navigation(Command command);
     Outcome run_curve(Action action);
     Outcome run_surface(Command command);
+    Outcome run_display(Action action);
     Outcome undo();
     Outcome redo();
-    Outcome quit(bool from_escape);
-    Outcome run_display(Action action);
-    /// Records `before` (a copy of doc_ taken before the mutation) in the history and gives
-    /// doc_ a new revision; for edits that may throw half-way (Loop).
-    void commit_edit(Document before);
+    Outcome quit();
     /// Writes the document to `path` (save and save as).
     Outcome write_to(const std::filesystem::path& path);
 

@@ -15,27 +15,9 @@
 #include <optional>
 #include <vector>
 
-#include "meshedit/bezier/bezier_curve.h"
-#include "meshedit/bezier/bezier_patch.h"
-#include "meshedit/core/mesh.h"
-#include "meshedit/render/overlay.h"
-#include "meshedit/viewer/bindings.h"
+#include "meshedit/viewer/document.h"
 
 namespace meshedit::viewer {
-
-/// The editable state: what undo restores and save writes.
-struct Document {
-    Mode mode = Mode::Mesh;
-    Mesh mesh;                         ///< Mesh and Surface modes
-    std::vector<BezierPatch> patches;  ///< Surface mode
-    int density = 8;                   ///< Surface mode: quads per patch side
-    BezierCurve curve;                 ///< Curve mode
-    ElementRef selection;              ///< Curve mode: Vertex = control point index
-    std::uint64_t revision = 0;        ///< identifies the content; new on every edit
-
-    /// Bytes this document holds (for the history budget).
-    std::size_t bytes() const;
-};
 
 struct HistoryLimits {
     std::size_t max_bytes = std::size_t{512} << 20;

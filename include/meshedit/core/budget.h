@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// The memory budget: how much memory one operation may plan to use. Every step that
+/// multiplies a size by a factor the input chooses (Loop levels, patch tessellation density,
+/// COLLADA instancing, de Casteljau levels of a long curve) estimates its peak in bytes first
+/// and refuses with over_budget()'s sentence instead of letting the machine swap or the
+/// out-of-memory killer end the process later.
+///
+/// The budget is half of the machine's physical memory (others may be using the rest), or
+/// what the environment variable MESHEDIT_MEMORY_BUDGET says ("8G", "512M", "2000000000"),
+/// or what set_memory_budget() was given (the `--memory-budget` option of the programs).
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace meshedit {
+
+/// Physical memory of this machine in bytes (0 if unknown).
+std::size_t physical_memory();
+
+/// The budget in bytes (see the file comment); at least 64 MiB.
+std::size_t memory_budget();
+/// Sets the budget for this process; 0 goes back to the default.
+void set_memory_budget(std::size_t bytes);
+/// "8G", "512M", "64K", "1.5G" or plain bytes → bytes; nullopt if not such a size.
+std::optional<std::size_t> parse_byte_size(const std::string& text);
+
+/// "7.9 GB".
+std::string format_bytes(double bytes);
+
+/// nullopt if `bytes` fits in the budget; else a sentence for the refusal: "would need about
+/// 7.9 GB of memory, over the budget of 4.0 GB (MESHEDIT_MEMORY_BUDGET or --memory-budget
+/// sets it)".
+std::optional<std::string> over_budget(double bytes);
+
+}  // namespace meshedit

@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// Files as bytes, the layer below every format and below the renderer's PNG writer: names
+/// and extensions, reading a whole file with one wording for each error, and the atomic
+/// write every writer goes through. Errors are IoErrors naming the file (io_error.h).
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <string_view>
+
+#include "meshedit/files/io_error.h"
+
+namespace meshedit {
+
+/// The extension of `path`, lower-cased, with its dot (".dae"); empty if none.
+std::string file_extension(const std::filesystem::path& path);
+
+/// The name errors use for `path` (as the caller spelled it).
+std::string display_name(const std::filesystem::path& path);
+
+/// Files larger than this are refused by read_file() (a mesh that big would not fit the
+/// memory budget anyway).
+inline constexpr std::size_t kMaxFileBytes = std::size_t{16} << 30;
+
+/// The whole file as bytes, read once into a buffer sized from the file (big buffers in huge
+/// pages, see core/memory.h); `/proc`-style files that report no size are read in growing
+/// steps. \throws IoError naming `path`: "no such file", "is a folder, not a file", "is not a
+/// regular file" (a FIFO, a device, a socket: reading one could block or never end), "is N
+/// bytes, more than the limit of M", "cannot open: <reason>", "read error".
+std::string read_file(const std::filesystem::path& path, std::size_t max_bytes = kMaxFileBytes);
+
+/// Writes `bytes` to `path` (created or truncated) and checks every step, so a full disk
+/// surfaces as an exception rather than a short file. \throws std::runtime_error.
+void write_file(const std::filesystem::path& path, std::string_view bytes);
+
+/// Runs `write(tmp)` on a temporary path in `target`'s folder, then renames it over
+/// `target`; on any failure the temporary file is removed and `target` is untouched.
+/// \throws IoError naming `target` if the folder is not writable or the rename fails.
+void write_atomically(const std::filesystem::path& target,
+                      const std::function<void(const std::filesystem::path& tmp)>& write);
+
+}  // namespace meshedit

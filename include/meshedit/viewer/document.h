@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// The editor's document: what undo restores and save writes.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "meshedit/bezier/bezier_curve.h"
+#include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/element_ref.h"
+#include "meshedit/core/mesh.h"
+#include "meshedit/io/document.h"
+
+namespace meshedit::viewer {
+
+/// What the document shows, the kind of file it came from: a mesh file, Bezier patches (.bez,
+/// edited as their welded tessellation) or a Bezier curve (.bzc). Its short name is
+/// kind_name(mode).
+using Mode = DocumentKind;
+
+/// "mesh", "Bezier surface (welded tessellation)", "Bezier curve" (the info panel's heading).
+const char* mode_description(Mode mode);
+
+/// The editable state.
+struct Document {
+    Mode mode = Mode::Mesh;
+    Mesh mesh;                         ///< Mesh and Surface modes
+    std::vector<BezierPatch> patches;  ///< Surface mode
+    int density = 8;                   ///< Surface mode: quads per patch side
+    BezierCurve curve;                 ///< Curve mode
+    ElementRef selection;              ///< Curve mode: Vertex = control point index
+    std::uint64_t revision = 0;        ///< identifies the content; new on every edit
+
+    /// Bytes this document holds (for the history budget).
+    std::size_t bytes() const;
+};
+
+}  // namespace meshedit::viewer

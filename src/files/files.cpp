@@ -1,0 +1,109 @@
+// File names and whole-file reads and writes (files.h). The atomic write is in
+// atomic_write.cpp.
+
+#include "meshedit/files/files.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <system_error>
+
+#include "meshedit/core/memory.h"
+
+namespace fs = std::filesystem;
+
+namespace meshedit {
+
+std::string file_extension(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+std::string display_name(const fs::path& path) {
+    return path.string();
+}
+
+std::string read_file(const fs::path& path, std::size_t max_bytes) {
+    const std::string name = display_name(path);
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (!fs::exists(status)) {
+        throw IoError(name, "", "no such file");
+    }
+    if (fs::is_directory(status)) {
+        throw IoError(name, "", "is a folder, not a file");
+    }
+    if (!fs::is_regular_file(status)) {
+        throw IoError(name, "", "is not a regular file (a FIFO, a device or a socket)");
+    }
+    // O_NONBLOCK: should the path have become a FIFO since the check, open() must not wait
+    // for a writer.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        throw IoError(name, "", std::string("cannot open: ") + std::strerror(errno));
+    }
+    struct Close {
+        int fd;
+        ~Close() { ::close(fd); }
+    } closer{fd};
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        throw IoError(name, "", "is not a regular file (a FIFO, a device or a socket)");
+    }
+    const auto size = static_cast<std::size_t>(st.st_size);
+    if (size > max_bytes) {
+        throw IoError(name, "",
+                      "is " + std::to_string(size) + " bytes, more than the limit of " +
+                          std::to_string(max_bytes));
+    }
+    // One spare byte, so that a file read whole meets its end without growing the buffer.
+    std::string bytes;
+    bytes.reserve(size + 1);
+    memory::advise_huge_pages(bytes.data(), bytes.capacity());
+    bytes.resize(bytes.capacity());
+    std::size_t used = 0;
+    for (;;) {
+        if (used == bytes.size()) {
+            if (used > max_bytes) {
+                throw IoError(name, "",
+                              "is more than " + std::to_string(max_bytes) + " bytes, the limit");
+            }
+            bytes.resize(std::max<std::size_t>(2 * bytes.size(), 1 << 16));
+        }
+        const ssize_t got = ::read(fd, bytes.data() + used, bytes.size() - used);
+        if (got < 0) {
+            if (errno == EINTR) {
+                continue;
+            }
+            throw IoError(name, "", std::string("read error: ") + std::strerror(errno));
+        }
+        if (got == 0) {
+            break;
+        }
+        used += static_cast<std::size_t>(got);
+    }
+    bytes.resize(used);
+    return bytes;
+}
+
+void write_file(const fs::path& path, std::string_view bytes) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out) {
+        throw std::runtime_error(std::string("cannot open for writing: ") + std::strerror(errno));
+    }
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+        throw std::runtime_error("write failed (disk full?)");
+    }
+}
+
+}  // namespace meshedit

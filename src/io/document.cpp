@@ -1,0 +1,70 @@
+// read_document(): the one dispatch from a file to a mesh, patch set or curve.
+
+#include "meshedit/io/document.h"
+
+#include <new>
+
+#include "meshedit/io/io.h"
+
+namespace meshedit {
+
+const char* kind_name(DocumentKind kind) {
+    switch (kind) {
+        case DocumentKind::Mesh:
+            return "mesh";
+        case DocumentKind::Surface:
+            return "surface";
+        case DocumentKind::Curve:
+            return "curve";
+    }
+    return "";
+}
+
+bool is_document_extension(const std::string& extension) {
+    return is_mesh_extension(extension) || extension == ".bez" || extension == ".bzc";
+}
+
+const char* document_extensions() {
+    return ".dae, .gltf, .glb, .obj, .bez or .bzc";
+}
+
+LoadedDocument read_document(const std::filesystem::path& path, const ReadOptions& options) {
+    const std::string ext = file_extension(path);
+    if (!is_document_extension(ext)) {
+        throw IoError(
+            display_name(path), "",
+            (ext.empty() ? std::string("no file extension") : "unknown extension '" + ext + "'") +
+                "; expected " + document_extensions());
+    }
+    LoadedDocument doc;
+    try {
+        if (ext == ".bzc") {
+            doc.kind = DocumentKind::Curve;
+            doc.curve = read_bzc(path);
+        } else if (ext == ".bez") {
+            doc.kind = DocumentKind::Surface;
+            doc.patches = read_bez(path);
+            doc.density = options.density;
+            TessellationOptions tessellation;
+            tessellation.density = options.density;
+            doc.mesh = tessellate(doc.patches, tessellation);
+        } else {
+            LoadedMesh loaded = read_mesh(path);
+            doc.kind = DocumentKind::Mesh;
+            doc.mesh = std::move(loaded.mesh);
+            doc.repairs = std::move(loaded.repairs);
+            doc.notices = std::move(loaded.notices);
+            doc.unit_meter = loaded.unit_meter;
+        }
+    } catch (const IoError&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception& e) {
+        // Whatever went wrong inside a reader, the user needs the file named.
+        throw IoError(display_name(path), "", e.what());
+    }
+    return doc;
+}
+
+}  // namespace meshedit

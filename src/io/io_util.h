@@ -1,0 +1,21 @@
+#pragma once
+/// \file
+/// Helpers the format writers share (private to meshedit_io). File access itself is in
+/// meshedit/files/files.h.
+
+#include <optional>
+#include <string>
+
+#include "meshedit/core/mesh.h"
+#include "meshedit/files/files.h"
+
+namespace meshedit::io_util {
+
+/// Shortest decimal text that reads back as exactly `value` (std::to_chars).
+std::string format_double(double value);
+
+/// `mesh` itself when it has dense indices, else a garbage-collected copy kept in `storage`.
+/// Writers need dense indices because files number vertices 0…n−1.
+const Mesh& compacted(const Mesh& mesh, std::optional<Mesh>& storage);
+
+}  // namespace meshedit::io_util

@@ -1,0 +1,161 @@
+// The editor's curve and surface commands: de Casteljau levels and t, control points added
+// and removed, tessellation density and control nets.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "meshedit/viewer/editor.h"
+
+namespace meshedit::viewer {
+
+namespace {
+
+/// Surface tessellation densities the +/- keys step through.
+constexpr std::array<int, 12> kDensities{1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64};
+
+/// The control point a curve command acts on: the selected one, else the last.
+std::size_t acted_on(const ElementRef& s, std::size_t n) {
+    return (s.kind == ElementRef::Kind::Vertex && s.index < n) ? std::size_t{s.index} : n - 1;
+}
+
+}  // namespace
+
+Outcome Editor::run_curve(Action action) {
+    const std::size_t n = doc_.curve.control_points.size();
+    const int last_level = static_cast<int>(n) - 1;
+    const int level = view_.level < 0 ? last_level : std::min(view_.level, last_level);
+    const auto level_message = [&] {
+        return "de Casteljau level " + std::to_string(view_.level) + " of " +
+               std::to_string(last_level);
+    };
+    const auto no_refusal = [] { return std::string(); };
+
+    switch (action.command) {
+        case Command::LevelDown:
+            if (level >= last_level) {
+                return refused("already at the last level (B(t))");
+            }
+            view_.level = level + 1;
+            return {kDisplay, level_message()};
+        case Command::LevelUp:
+            if (level <= 0) {
+                return refused("already at the control polygon");
+            }
+            view_.level = level - 1;
+            return {kDisplay, level_message()};
+        case Command::ToggleCurve:
+            view_.show_curve = !view_.show_curve;
+            return {kDisplay, view_.show_curve ? "curve shown" : "curve hidden"};
+        case Command::DecreaseT:
+        case Command::IncreaseT: {
+            const double step = action.command == Command::IncreaseT ? 0.01 : -0.01;
+            // Rounded to 1e-9 so a hundred steps land exactly on 0 and 1.
+            return set_t(std::round((view_.t + step) * 1e9) / 1e9);
+        }
+        case Command::AddPoint: {
+            // Midway to the next point, or past the last one by half the last segment.
+            const bool at_bottom = level >= last_level;
+            Outcome outcome = edit(no_refusal, [&](Document& doc) {
+                std::vector<Vec3>& points = doc.curve.control_points;
+                if (points.empty()) {
+                    points.push_back(Vec3{});
+                    return Edited{kCurve | kSelection | kDisplay,
+                                  "added control point 0 (1 points)",
+                                  ElementRef::vertex(Vertex(0))};
+                }
+                const std::size_t i = acted_on(doc.selection, n);
+                const Vec3 p = i + 1 < n ? 0.5 * (points[i] + points[i + 1])
+                               : n >= 2  ? points[i] + 0.5 * (points[i] - points[i - 1])
+                                         : points[i] + Vec3{0.5, 0.0, 0.0};
+                points.insert(points.begin() + static_cast<std::ptrdiff_t>(i + 1), p);
+                return Edited{kCurve | kSelection | kDisplay,
+                              "added control point " + std::to_string(i + 1) + " (" +
+                                  std::to_string(points.size()) + " points)",
+                              ElementRef::vertex(Vertex(static_cast<std::uint32_t>(i + 1)))};
+            });
+            if (n > 0 && at_bottom && view_.level >= 0) {
+                view_.level = last_level + 1;  // keep showing B(t)
+            }
+            return outcome;
+        }
+        case Command::RemovePoint: {
+            const auto check = [&] {
+                return n <= 2 ? std::string("a curve needs at least 2 control points")
+                              : std::string();
+            };
+            Outcome outcome = edit(check, [&](Document& doc) {
+                const std::size_t i = acted_on(doc.selection, n);
+                doc.curve.control_points.erase(doc.curve.control_points.begin() +
+                                               static_cast<std::ptrdiff_t>(i));
+                return Edited{kCurve | kSelection | kDisplay,
+                              "removed control point " + std::to_string(i) + " (" +
+                                  std::to_string(n - 1) + " points)",
+                              ElementRef{}};
+            });
+            if (!outcome.refused) {
+                view_.level = std::min(view_.level, last_level - 1);
+            }
+            return outcome;
+        }
+        default:
+            break;
+    }
+    return {};
+}
+
+Outcome Editor::set_t(double t) {
+    if (doc_.mode != Mode::Curve) {
+        return refused("t belongs to curves");
+    }
+    if (!std::isfinite(t)) {
+        return refused("t must be a number");
+    }
+    view_.t = std::clamp(t, 0.0, 1.0);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "t = %.2f", view_.t);
+    return {kDisplay, buf};
+}
+
+Outcome Editor::run_surface(Command command) {
+    if (command == Command::ToggleNets) {
+        view_.show_nets = !view_.show_nets;
+        return {kDisplay, view_.show_nets ? "control nets shown" : "control nets hidden"};
+    }
+    int density = 0;
+    if (command == Command::DensityUp) {
+        const auto it = std::upper_bound(kDensities.begin(), kDensities.end(), doc_.density);
+        if (it == kDensities.end()) {
+            return refused("density is already at the maximum (" +
+                           std::to_string(kDensities.back()) + ")");
+        }
+        density = *it;
+    } else {
+        const auto it = std::lower_bound(kDensities.begin(), kDensities.end(), doc_.density);
+        if (it == kDensities.begin()) {
+            return refused("density is already at the minimum (" +
+                           std::to_string(kDensities.front()) + ")");
+        }
+        density = *(it - 1);
+    }
+    const bool had_edits = pristine_revisions_.count(doc_.revision) == 0;
+    Outcome outcome = edit([] { return std::string(); },
+                           [&](Document& doc) {
+                               TessellationOptions options;
+                               options.density = density;
+                               doc.mesh = tessellate(doc.patches, options);
+                               doc.density = density;
+                               return Edited{kTopology | kSelection,
+                                             "density " + std::to_string(density) + ": " +
+                                                 std::to_string(doc.mesh.n_faces()) + " faces" +
+                                                 (had_edits ? " (mesh edits replaced)" : ""),
+                                             ElementRef{}};
+                           });
+    if (!outcome.refused) {
+        pristine_revisions_.insert(doc_.revision);
+    }
+    return outcome;
+}
+
+}  // namespace meshedit::viewer

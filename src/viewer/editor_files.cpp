@@ -1,0 +1,153 @@
+// The editor's files: open, save, save as, and the window title.
+
+#include <utility>
+
+#include "meshedit/io/document.h"
+#include "meshedit/io/io.h"
+#include "meshedit/viewer/editor.h"
+
+namespace meshedit::viewer {
+
+namespace {
+
+std::string file_name(const std::filesystem::path& path) {
+    return path.empty() ? std::string("untitled") : path.filename().string();
+}
+
+std::string counts(const Mesh& mesh) {
+    return "V " + std::to_string(mesh.n_vertices()) + " E " + std::to_string(mesh.n_edges()) +
+           " F " + std::to_string(mesh.n_faces());
+}
+
+/// Multi-line summaries as one status line.
+std::string one_line(std::string text) {
+    while (!text.empty() && text.back() == '\n') {
+        text.pop_back();
+    }
+    for (std::size_t i = text.find('\n'); i != std::string::npos; i = text.find('\n', i)) {
+        text.replace(i, 1, "; ");
+    }
+    return text;
+}
+
+}  // namespace
+
+Outcome Editor::open(const std::filesystem::path& path) {
+    // Everything is read into a local document first: an IoError leaves the editor as it was.
+    LoadedDocument loaded = read_document(path);
+    Document doc;
+    doc.mode = loaded.kind;
+    doc.mesh = std::move(loaded.mesh);
+    doc.patches = std::move(loaded.patches);
+    doc.density = loaded.density;
+    doc.curve = std::move(loaded.curve);
+    std::string details = doc.mode == Mode::Curve
+                              ? std::to_string(doc.curve.control_points.size()) + " control points"
+                          : doc.mode == Mode::Surface
+                              ? std::to_string(doc.patches.size()) + " patches, " + counts(doc.mesh)
+                              : counts(doc.mesh);
+    if (loaded.repairs.repaired()) {
+        details += "; repaired: " + one_line(loaded.repairs.summary());
+    }
+    for (const std::string& notice : loaded.notices) {
+        details += "; " + notice;
+    }
+    const Mode mode = doc.mode;
+    set_document(std::move(doc), path);
+    if (mode == Mode::Surface) {
+        pristine_revisions_.insert(doc_.revision);
+    }
+    return {kDocument | kTopology | kGeometry | kSelection | kDisplay | kCurve | kResetCamera,
+            "opened " + file_name(path) + ": " + details};
+}
+
+void Editor::set_document(Document document, std::filesystem::path path) {
+    doc_ = std::move(document);
+    doc_.revision = next_revision_++;
+    doc_.selection = {};
+    saved_revision_ = doc_.revision;
+    history_.clear();
+    pristine_revisions_.clear();
+    hover_ = {};
+    path_ = std::move(path);
+    view_.level = 0;
+    view_.t = 0.5;
+    dragging_ = false;
+    drag_moved_ = false;
+    quit_armed_ = false;
+}
+
+Outcome Editor::save() {
+    if (path_.empty()) {
+        return refused("no file name: use Ctrl+Shift+S");
+    }
+    const std::string ext = file_extension(path_);
+    if (doc_.mode == Mode::Curve && ext != ".bzc") {
+        return refused("a curve is saved as .bzc: use Ctrl+Shift+S");
+    }
+    if (doc_.mode == Mode::Surface && ext == ".bez") {
+        return refused(
+            "a .bez file holds patches, not the edited mesh: save as .dae, .obj or .gltf "
+            "(Ctrl+Shift+S)");
+    }
+    if (doc_.mode != Mode::Curve && !is_mesh_extension(ext)) {
+        return refused("cannot save a mesh as '" + ext +
+                       "': use Ctrl+Shift+S with .dae, .gltf, .glb or .obj");
+    }
+    return write_to(path_);
+}
+
+Outcome Editor::save_as(const std::filesystem::path& path) {
+    const std::string ext = file_extension(path);
+    if (doc_.mode == Mode::Curve && ext != ".bzc") {
+        return refused("a curve is saved as .bzc, not '" + ext + "'");
+    }
+    if (doc_.mode != Mode::Curve && !is_mesh_extension(ext)) {
+        return refused("a mesh is saved as .dae, .gltf, .glb or .obj, not '" + ext + "'");
+    }
+    Outcome outcome = write_to(path);
+    if (!outcome.refused) {
+        path_ = path;
+    }
+    return outcome;
+}
+
+Outcome Editor::write_to(const std::filesystem::path& path) {
+    Outcome outcome;
+    try {
+        if (doc_.mode == Mode::Curve) {
+            write_bzc(doc_.curve, path);
+        } else {
+            // Collect first, so the file numbers elements as the info panel showed them.
+            if (doc_.mesh.has_garbage()) {
+                compact();
+                outcome.changes |= kTopology | kSelection;
+            }
+            write_mesh(doc_.mesh, path);  // atomic: temporary file + rename
+        }
+    } catch (const IoError& e) {
+        outcome.message = e.what();
+        outcome.refused = true;
+        return outcome;
+    }
+    saved_revision_ = doc_.revision;
+    quit_armed_ = false;
+    outcome.changes |= kDisplay;  // the title loses its '*'
+    outcome.message = "saved " + file_name(path);
+    return outcome;
+}
+
+std::string Editor::title() const {
+    std::string out = file_name(path_) + " — ";
+    if (doc_.mode == Mode::Curve) {
+        out += "curve, " + std::to_string(doc_.curve.control_points.size()) + " points";
+    } else {
+        out += counts(doc_.mesh);
+    }
+    if (dirty()) {
+        out += " *";
+    }
+    return out;
+}
+
+}  // namespace meshedit::viewer
