@@ -2,6 +2,7 @@
 // mesh, maybe change it, and write or judge it.
 
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "cli.h"
@@ -30,12 +31,6 @@ void check_mesh_output(const std::filesystem::path& out) {
     }
 }
 
-int density_option(const Args& args) {
-    return args.value("--density") != nullptr
-               ? parse_int(*args.value("--density"), "--density", 1, 256)
-               : TessellationOptions{}.density;
-}
-
 ops::ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
     ops::ApplyOptions options;
     options.weights = weights;
@@ -52,164 +47,173 @@ ops::ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
 
 }  // namespace
 
-int run_convert(const std::vector<std::string>& argv) {
-    const Args args = parse_args("convert", argv, {{"--ops", true}, {"--density", true}});
-    if (args.help) {
-        std::printf(
-            "usage: meshedit convert IN OUT [--ops LIST] [--density N]\n"
-            "\n"
-            "Reads IN (.dae .gltf .glb .obj, or .bez tessellated at --density N, default 8),\n"
-            "applies the --ops edits in order and writes OUT in the format of its extension\n"
-            "(.dae .gltf .glb .obj). A .bzc curve converts only to .bzc. OUT is written to a\n"
-            "temporary file and renamed, so a failed run never leaves a partial OUT.\n"
-            "\n"
-            "  --ops LIST   comma list of these steps, run in order (an edge is named by the\n"
-            "               indices of its two vertices, as numbered in the file):\n"
-            "%s"
-            "\n"
-            "Examples:\n"
-            "  meshedit convert dae/cube.dae cube.obj\n"
-            "  meshedit convert dae/cube.dae out.dae --ops flip:0-6,split:0-1,loop:2\n"
-            "\n"
-            "Exit status: 0 ok, 1 an op was refused, 2 bad usage, bad input, a named edge\n"
-            "that does not exist, or an unwritable output.\n",
-            ops::help_lines().c_str());
-        return 0;
-    }
-    expect_positionals("convert", args, 2, "IN and OUT");
-    const std::filesystem::path in = args.positional[0];
-    const std::filesystem::path out = args.positional[1];
-    std::vector<ops::Step> steps;
-    if (const std::string* list = args.value("--ops")) {
-        try {
-            steps = ops::parse(*list);
-        } catch (const ops::SyntaxError& e) {
-            throw UsageError(std::string("convert: ") + e.what());
-        }
-    }
-
-    if (file_extension(in) == ".bzc" && file_extension(out) == ".bzc") {
-        if (!steps.empty()) {
-            throw UsageError("convert: --ops applies to meshes, not to a .bzc curve");
-        }
-        write_bzc(read_bzc(in), out);
-        return 0;
-    }
-    check_mesh_output(out);
-    LoadedDocument input = load_surface(in, density_option(args));
-    print_load_messages(input);
-    {
-        ProgressBar bar("convert");
-        try {
-            ops::apply_steps(input.mesh, steps, apply_options(bar, LoopWeights::Warren));
-        } catch (const ops::OpError& e) {
-            rethrow_with_file(e, in);
-        }
-    }
-    write_mesh(input.mesh, out);
-    return 0;
+Command add_convert(CLI::App& meshedit) {
+    struct Settings {
+        std::filesystem::path in, out;
+        std::string ops;
+        CLI::Option* ops_option = nullptr;
+        int density = 8;
+    };
+    auto s = std::make_shared<Settings>();
+    CLI::App* app = meshedit.add_subcommand(
+        "convert", "convert between formats, applying edits such as flip:0-6,loop");
+    app->add_option("IN", s->in, "the input file")->required();
+    app->add_option("OUT", s->out, "the output file")->required();
+    s->ops_option =
+        app->add_option("--ops", s->ops,
+                        "comma list of edits, run in order; an edge is named by its two vertices' "
+                        "indices, as the file numbers them:\n" +
+                            ops::help_lines())
+            ->type_name("LIST");
+    add_density_option(*app, s->density);
+    app->footer(
+        "Reads IN (.dae .gltf .glb .obj, or a .bez tessellated at --density), applies the --ops\n"
+        "edits in order and writes OUT in the format of its extension (.dae .gltf .glb .obj).\n"
+        "A .bzc curve converts only to .bzc. OUT is written to a temporary file and renamed, so\n"
+        "a failed run never leaves a partial OUT.\n"
+        "\n"
+        "Examples:\n"
+        "  meshedit convert dae/cube.dae cube.obj\n"
+        "  meshedit convert dae/cube.dae out.dae --ops flip:0-6,split:0-1,loop:2\n"
+        "\n"
+        "Exit status: 0 ok, 1 an op was refused, 2 bad usage, bad input, a named edge that does\n"
+        "not exist, or an unwritable output.");
+    return {app, [s] {
+                std::vector<ops::Step> steps;
+                if (s->ops_option->count() > 0) {
+                    try {
+                        steps = ops::parse(s->ops);
+                    } catch (const ops::SyntaxError& e) {
+                        throw UsageError(std::string("convert: ") + e.what());
+                    }
+                }
+                if (file_extension(s->in) == ".bzc" && file_extension(s->out) == ".bzc") {
+                    if (!steps.empty()) {
+                        throw UsageError("convert: --ops applies to meshes, not to a .bzc curve");
+                    }
+                    write_bzc(read_bzc(s->in), s->out);
+                    return 0;
+                }
+                check_mesh_output(s->out);
+                LoadedDocument input = load_surface(s->in, s->density);
+                print_load_messages(input);
+                {
+                    ProgressBar bar("convert");
+                    try {
+                        ops::apply_steps(input.mesh, steps,
+                                         apply_options(bar, LoopWeights::Warren));
+                    } catch (const ops::OpError& e) {
+                        rethrow_with_file(e, s->in);
+                    }
+                }
+                write_mesh(input.mesh, s->out);
+                return 0;
+            }};
 }
 
-int run_subdivide(const std::vector<std::string>& argv) {
-    const Args args =
-        parse_args("subdivide", argv, {{"-n", true}, {"--weights", true}, {"--density", true}});
-    if (args.help) {
-        std::printf(
-            "usage: meshedit subdivide IN OUT -n K [--weights warren|loop] [--density N]\n"
-            "\n"
-            "Loop-subdivides IN K times (every triangle becomes four each time) and writes\n"
-            "OUT. Non-triangle faces are triangulated first, with a note. Boundary and crease\n"
-            "edges (\"e:crease\", stored in MeshEdit's COLLADA <extra>) stay sharp.\n"
-            "\n"
-            "  -n K                number of levels, 0 to 12\n"
-            "  --weights warren    u = 3/16 for valence 3, else 3/(8n) (default, as in CS184)\n"
-            "  --weights loop      Loop's original weights\n"
-            "  --density N         tessellation density when IN is a .bez (default 8)\n"
-            "\n"
-            "Example:\n"
-            "  meshedit subdivide dae/cube.dae cube2.dae -n 2\n"
-            "\n"
-            "Exit status: 0 ok, 2 bad usage, bad input or an unwritable output.\n");
-        return 0;
-    }
-    expect_positionals("subdivide", args, 2, "IN and OUT");
-    if (args.value("-n") == nullptr) {
-        throw UsageError("subdivide: missing -n K (see meshedit subdivide --help)");
-    }
-    const int levels = parse_int(*args.value("-n"), "-n", 0, 12);
-    LoopWeights weights = LoopWeights::Warren;
-    if (const std::string* w = args.value("--weights")) {
-        if (*w == "loop") {
-            weights = LoopWeights::Loop;
-        } else if (*w != "warren") {
-            throw UsageError("subdivide: bad value '" + *w +
-                             "' for --weights (expected warren or loop)");
-        }
-    }
-    const std::filesystem::path in = args.positional[0];
-    const std::filesystem::path out = args.positional[1];
-    check_mesh_output(out);
-    LoadedDocument input = load_surface(in, density_option(args));
-    print_load_messages(input);
-    if (levels > 0) {
-        const ops::Step loop = ops::parse_step("loop:" + std::to_string(levels));
-        ProgressBar bar("subdivide");
-        try {
-            ops::apply_steps(input.mesh, {loop}, apply_options(bar, weights));
-        } catch (const ops::OpError& e) {
-            rethrow_with_file(e, in);
-        }
-    }
-    write_mesh(input.mesh, out);
-    return 0;
+Command add_subdivide(CLI::App& meshedit) {
+    struct Settings {
+        std::filesystem::path in, out;
+        int levels = 0;
+        std::string weights = "warren";
+        int density = 8;
+    };
+    auto s = std::make_shared<Settings>();
+    CLI::App* app = meshedit.add_subcommand("subdivide", "Loop subdivision, K levels");
+    app->add_option("IN", s->in, "the input file")->required();
+    app->add_option("OUT", s->out, "the output file")->required();
+    app->add_option("-n", s->levels, "number of levels, 0 to 12 (required)")
+        ->type_name("K")
+        ->required()
+        ->check(CLI::Range(0, 12));
+    app->add_option("--weights", s->weights,
+                    "warren: u = 3/16 for valence 3, else 3/(8n) (the default, as in "
+                    "CS184); loop: Loop's original weights")
+        ->type_name("W")
+        ->check(CLI::IsMember({"warren", "loop"}));
+    add_density_option(*app, s->density);
+    app->footer(
+        "Loop-subdivides IN K times (every triangle becomes four each time) and writes OUT.\n"
+        "Non-triangle faces are triangulated first, with a note. Boundary and crease edges\n"
+        "(\"e:crease\", stored in MeshEdit's COLLADA <extra>) stay sharp.\n"
+        "\n"
+        "Example:\n"
+        "  meshedit subdivide dae/cube.dae cube2.dae -n 2\n"
+        "\n"
+        "Exit status: 0 ok, 1 a level that does not fit, 2 bad usage, bad input or an\n"
+        "unwritable output.");
+    return {app, [s] {
+                const LoopWeights weights =
+                    s->weights == "loop" ? LoopWeights::Loop : LoopWeights::Warren;
+                check_mesh_output(s->out);
+                LoadedDocument input = load_surface(s->in, s->density);
+                print_load_messages(input);
+                if (s->levels > 0) {
+                    const ops::Step loop = ops::parse_step("loop:" + std::to_string(s->levels));
+                    ProgressBar bar("subdivide");
+                    try {
+                        ops::apply_steps(input.mesh, {loop}, apply_options(bar, weights));
+                    } catch (const ops::OpError& e) {
+                        rethrow_with_file(e, s->in);
+                    }
+                }
+                write_mesh(input.mesh, s->out);
+                return 0;
+            }};
 }
 
-int run_check(const std::vector<std::string>& argv) {
-    const Args args = parse_args("check", argv, {{"--density", true}});
-    if (args.help) {
-        std::printf(
-            "usage: meshedit check FILE [--density N]\n"
-            "\n"
-            "Loads FILE (a mesh, a .bez tessellated at --density N, or a .bzc curve) and\n"
-            "checks every halfedge invariant (docs/halfedge.md). Prints\n"
-            "\"FILE: OK\" with the counts, or the first broken invariant and its element.\n"
-            "Repairs the loader made are listed as notes on stderr.\n"
-            "\n"
-            "Exit status: 0 valid, 1 the mesh breaks an invariant, 2 bad usage or a file\n"
-            "that cannot be read.\n");
-        return 0;
-    }
-    expect_positionals("check", args, 1, "FILE");
-    const std::filesystem::path path = args.positional[0];
-    if (file_extension(path) == ".bzc") {
-        // A curve has no invariants beyond what read_bzc() checks (N ≥ 2, finite points).
-        const BezierCurve curve = read_bzc(path);
-        std::printf("%s: OK (Bezier curve, %zu points, degree %d)\n", path.string().c_str(),
-                    curve.control_points.size(), curve.degree());
-        return 0;
-    }
-    const LoadedDocument input = load_surface(path, density_option(args));
-    print_load_messages(input);
-    if (input.repairs.repaired()) {
-        // One note line however many kinds of repair the summary lists.
-        std::string summary = input.repairs.summary();
-        while (!summary.empty() && summary.back() == '\n') {
-            summary.pop_back();
-        }
-        for (std::size_t at = summary.find('\n'); at != std::string::npos;
-             at = summary.find('\n', at)) {
-            summary.replace(at, 1, "; ");
-        }
-        print_notice(path.string() + ": repaired on load: " + summary);
-    }
-    if (const auto error = validate(input.mesh)) {
-        std::printf("%s: INVALID: %s [%s]\n", path.string().c_str(), error->message.c_str(),
-                    error->invariant.c_str());
-        return 1;
-    }
-    std::printf("%s: OK (%zu vertices, %zu edges, %zu faces)\n", path.string().c_str(),
-                input.mesh.n_vertices(), input.mesh.n_edges(), input.mesh.n_faces());
-    return 0;
+Command add_check(CLI::App& meshedit) {
+    struct Settings {
+        std::filesystem::path file;
+        int density = 8;
+    };
+    auto s = std::make_shared<Settings>();
+    CLI::App* app = meshedit.add_subcommand("check", "validate the halfedge invariants");
+    app->add_option("FILE", s->file, "the file to check")->required();
+    add_density_option(*app, s->density);
+    app->footer(
+        "Loads FILE (a mesh, a .bez tessellated at --density, or a .bzc curve) and checks every\n"
+        "halfedge invariant (docs/halfedge.md). Prints \"FILE: OK\" with the counts, or the\n"
+        "first broken invariant and its element. Repairs the loader made are listed as notes\n"
+        "on stderr.\n"
+        "\n"
+        "Exit status: 0 valid, 1 the mesh breaks an invariant, 2 bad usage or a file that\n"
+        "cannot be read.");
+    return {app, [s] {
+                const std::filesystem::path& path = s->file;
+                ReadOptions options;
+                options.density = s->density;
+                const LoadedDocument input = read_document(path, options);
+                if (input.kind == DocumentKind::Curve) {
+                    // A curve has no invariants beyond what read_bzc() checks (N ≥ 2, finite
+                    // points).
+                    std::printf("%s: OK (Bezier curve, %zu points, degree %d)\n",
+                                path.string().c_str(), input.curve.control_points.size(),
+                                input.curve.degree());
+                    return 0;
+                }
+                print_load_messages(input);
+                if (input.repairs.repaired()) {
+                    // One note line however many kinds of repair the summary lists.
+                    std::string summary = input.repairs.summary();
+                    while (!summary.empty() && summary.back() == '\n') {
+                        summary.pop_back();
+                    }
+                    for (std::size_t at = summary.find('\n'); at != std::string::npos;
+                         at = summary.find('\n', at)) {
+                        summary.replace(at, 1, "; ");
+                    }
+                    print_notice(path.string() + ": repaired on load: " + summary);
+                }
+                if (const auto error = validate(input.mesh)) {
+                    std::printf("%s: INVALID: %s [%s]\n", path.string().c_str(),
+                                error->message.c_str(), error->invariant.c_str());
+                    return 1;
+                }
+                std::printf("%s: OK (%zu vertices, %zu edges, %zu faces)\n", path.string().c_str(),
+                            input.mesh.n_vertices(), input.mesh.n_edges(), input.mesh.n_faces());
+                return 0;
+            }};
 }
 
 }  // namespace meshedit::cli

@@ -1,6 +1,7 @@
 // `meshedit info FILE [--json] [--density N]`: counts, topology, bounding box, repairs.
 
 #include <cstdio>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -104,8 +105,7 @@ void print_row(const std::string& key, const std::string& value) {
     std::printf("%-22s %s\n", (key + ":").c_str(), value.c_str());
 }
 
-int info_curve(const std::filesystem::path& path, bool json) {
-    const BezierCurve curve = read_bzc(path);
+int info_curve(const std::filesystem::path& path, const BezierCurve& curve, bool json) {
     BoundingBox box;
     for (const Vec3& p : curve.control_points) {
         box.add(p);
@@ -139,39 +139,14 @@ std::size_t count_creases(const Mesh& mesh) {
     return n;
 }
 
-}  // namespace
-
-int run_info(const std::vector<std::string>& argv) {
-    const Args args = parse_args("info", argv, {{"--json", false}, {"--density", true}});
-    if (args.help) {
-        std::printf(
-            "usage: meshedit info FILE [--json] [--density N]\n"
-            "\n"
-            "Describes a mesh (.dae .gltf .glb .obj), a Bezier patch set (.bez) or a Bezier\n"
-            "curve (.bzc). For a mesh: vertices, edges, faces, boundary loops, connected\n"
-            "components, Euler characteristic, genus, manifold (the loader repaired nothing),\n"
-            "crease edges, bounding box, unit, and what the loader repaired or noticed.\n"
-            "A .bez is tessellated (--density N quads per patch side, default 8) and welded;\n"
-            "each connected part is listed with its counts. A .bzc gives its point count,\n"
-            "degree and bounding box.\n"
-            "\n"
-            "  --json         print one JSON object (fields: docs/cli.md)\n"
-            "  --density N    tessellation density for .bez (1 to 256)\n"
-            "\n"
-            "Exit status: 0 ok, 2 bad usage or unreadable file.\n");
-        return 0;
+// Everything `meshedit info` prints about `path`.
+int info(const std::filesystem::path& path, bool json, int density) {
+    ReadOptions options;
+    options.density = density;
+    const LoadedDocument input = read_document(path, options);
+    if (input.kind == DocumentKind::Curve) {
+        return info_curve(path, input.curve, json);
     }
-    expect_positionals("info", args, 1, "FILE");
-    const std::filesystem::path path = args.positional[0];
-    const bool json = args.has("--json");
-    const int density = args.value("--density") != nullptr
-                            ? parse_int(*args.value("--density"), "--density", 1, 256)
-                            : TessellationOptions{}.density;
-    if (file_extension(path) == ".bzc") {
-        return info_curve(path, json);
-    }
-
-    const LoadedDocument input = load_surface(path, density);
     const Mesh& mesh = input.mesh;
     const MeshStats stats = compute_stats(mesh);
     const bool manifold = !input.repairs.repaired();
@@ -254,6 +229,32 @@ int run_info(const std::vector<std::string>& argv) {
         }
     }
     return 0;
+}
+
+}  // namespace
+
+Command add_info(CLI::App& meshedit) {
+    struct Settings {
+        std::filesystem::path file;
+        bool json = false;
+        int density = 8;
+    };
+    auto s = std::make_shared<Settings>();
+    CLI::App* app =
+        meshedit.add_subcommand("info", "counts, topology, bounding box, repairs of a file");
+    app->add_option("FILE", s->file, "the file to describe")->required();
+    app->add_flag("--json", s->json, "print one JSON object (fields: docs/cli.md)");
+    add_density_option(*app, s->density);
+    app->footer(
+        "Describes a mesh (.dae .gltf .glb .obj), a Bezier patch set (.bez) or a Bezier curve\n"
+        "(.bzc). For a mesh: vertices, edges, faces, boundary loops, connected components,\n"
+        "Euler characteristic, genus, manifold (the loader repaired nothing), crease edges,\n"
+        "bounding box, unit, and what the loader repaired or noticed. A .bez is tessellated\n"
+        "(--density) and welded; each connected part is listed with its counts. A .bzc gives\n"
+        "its point count, degree and bounding box.\n"
+        "\n"
+        "Exit status: 0 ok, 2 bad usage or unreadable file.");
+    return {app, [s] { return info(s->file, s->json, s->density); }};
 }
 
 }  // namespace meshedit::cli

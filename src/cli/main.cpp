@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "command_line.h"
 #include "meshedit/files/io_error.h"
 #include "meshedit/ops/ops.h"
 
@@ -18,23 +20,15 @@ namespace {
 
 using namespace meshedit::cli;
 
-constexpr const char* kUsage =
-    "usage: meshedit <command> [options]\n"
-    "\n"
-    "Commands:\n"
-    "  info FILE [--json]                      counts, topology, bounding box, repairs\n"
-    "  convert IN OUT [--ops LIST]             convert (.dae .gltf .glb .obj; .bez in),\n"
-    "                                          applying edits such as flip:0-6,loop\n"
-    "  subdivide IN OUT -n K [--weights W]     Loop subdivision, W = warren or loop\n"
-    "  check FILE                              validate the halfedge invariants\n"
-    "  eval FILE.bzc --t T [--levels]          evaluate a Bezier curve (de Casteljau)\n"
-    "  eval FILE.bez --uv U,V [--patch I]      evaluate a Bezier patch\n"
+// What the help lists beside the built-in subcommands: the ones other executables answer.
+constexpr const char* kMoreCommands =
+    "Also:\n"
     "  [view] FILE [--size WxH]                the interactive viewer (meshedit-view)\n"
     "  render FILE -o OUT.png [options]        render headless (meshedit-render)\n"
     "\n"
-    "Run 'meshedit <command> --help' for a command's options and examples,\n"
-    "'meshedit --version' for the version.\n"
-    "Exit status: 0 success, 1 failure (refused op, invalid mesh), 2 bad usage or input.\n";
+    "Run 'meshedit COMMAND --help' for a command's options and examples, 'meshedit --version'\n"
+    "for the version.\n"
+    "Exit status: 0 success, 1 failure (refused op, invalid mesh), 2 bad usage or input.";
 
 void print_error(const std::string& message) {
     std::fprintf(stderr, "meshedit: %s\n", message.c_str());
@@ -78,56 +72,72 @@ bool looks_like_file(const std::string& word) {
            std::filesystem::exists(word, ec);
 }
 
-int dispatch(int argc, char** argv) {
-    if (argc < 2) {
-        std::fputs(kUsage, stderr);
+// The subcommands built into this executable, parsed by CLI11 (command_line.h).
+int run_builtin(int argc, char** argv) {
+    CLI::App app(
+        "MeshEdit's command line: describe, convert, edit, subdivide and check meshes, and "
+        "evaluate Bezier curves and patches.",
+        "meshedit");
+    meshedit::command_line::style(app);
+    app.set_version_flag("--version", std::string("meshedit ") + MESHEDIT_VERSION);
+    app.require_subcommand(1, 1);
+    app.footer(kMoreCommands);
+    const Command commands[] = {add_info(app), add_convert(app), add_subdivide(app), add_check(app),
+                                add_eval(app)};
+    for (const Command& c : commands) {
+        c.app->group("Commands");
+    }
+    const std::string command = argc > 1 ? argv[1] : "";
+    if (command.empty()) {
+        std::fputs(meshedit::command_line::help(app).c_str(), stderr);
         return 2;
     }
-    const std::string command = argv[1];
-    const std::vector<std::string> rest(argv + 2, argv + argc);
-    if (command == "-h" || command == "--help") {
-        std::fputs(kUsage, stdout);
-        return 0;
+    const bool known = std::any_of(std::begin(commands), std::end(commands),
+                                   [&](const Command& c) { return c.app->get_name() == command; });
+    if (const int status =
+            meshedit::command_line::parse(app, argc, argv, "meshedit", known ? command : "");
+        status >= 0) {
+        return status;
     }
-    if (command == "--version") {
-        std::printf("meshedit %s\n", MESHEDIT_VERSION);
-        return 0;
-    }
-    if (command == "help") {
-        if (rest.empty()) {
-            std::fputs(kUsage, stdout);
-            return 0;
+    for (const Command& c : commands) {
+        if (c.app->parsed()) {
+            return c.run();
         }
-        return dispatch(3,
-                        std::vector<char*>{argv[0], argv[2], const_cast<char*>("--help")}.data());
     }
-    if (command == "info") {
-        return run_info(rest);
-    }
-    if (command == "convert") {
-        return run_convert(rest);
-    }
-    if (command == "subdivide") {
-        return run_subdivide(rest);
-    }
-    if (command == "check") {
-        return run_check(rest);
-    }
-    if (command == "eval") {
-        return run_eval(rest);
+    return 2;  // require_subcommand makes this unreachable
+}
+
+int dispatch(int argc, char** argv) {
+    const std::string command = argc > 1 ? argv[1] : "";
+    if (command == "help") {
+        // `meshedit help convert` is `meshedit convert --help`.
+        std::vector<char*> args{argv[0]};
+        if (argc > 2) {
+            args.push_back(argv[2]);
+        }
+        args.push_back(const_cast<char*>("--help"));
+        return dispatch(static_cast<int>(args.size()), args.data());
     }
     if (command == "view") {
         return exec_viewer(argc, argv, 2);
     }
-    exec_external(command, argv);
     if (command == "render") {
-        print_error("render is not built yet; use 'meshedit info FILE' for a description");
+        exec_external(command, argv);
+        print_error(
+            "meshedit-render is not installed beside meshedit (it needs libOSMesa at build "
+            "time); use 'meshedit info FILE' for a description");
         return 1;
     }
-    if (command[0] != '-' && looks_like_file(command)) {
-        return exec_viewer(argc, argv, 1);
+    const bool builtin = command == "info" || command == "convert" || command == "subdivide" ||
+                         command == "check" || command == "eval";
+    if (!builtin && !command.empty() && command[0] != '-') {
+        exec_external(command, argv);  // a meshedit-COMMAND beside this executable
+        if (looks_like_file(command)) {
+            return exec_viewer(argc, argv, 1);
+        }
+        throw UsageError("unknown command '" + command + "' (see meshedit --help)");
     }
-    throw UsageError("unknown command '" + command + "' (see meshedit --help)");
+    return run_builtin(argc, argv);
 }
 
 }  // namespace

@@ -141,9 +141,8 @@ App::App(const ViewerOptions& options) {
     ImGui_ImplGlfw_InitForOpenGL(window_, true);  // chains to the callbacks above
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
-    mesh_renderer_ = std::make_unique<MeshRenderer>();
-    overlay_renderer_ = std::make_unique<OverlayRenderer>();
-    background_ = std::make_unique<BackgroundRenderer>();
+    scene_ = std::make_unique<SceneRenderer>();
+    upload_document();  // the empty document, until a file opens
 
     if (!options.file.empty()) {
         open_file(options.file);
@@ -157,9 +156,7 @@ App::~App() {
     // GL objects go while their context is current.
     glfwMakeContextCurrent(window_);
     pick_target_.reset();
-    mesh_renderer_.reset();
-    overlay_renderer_.reset();
-    background_.reset();
+    scene_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
@@ -384,7 +381,7 @@ void App::apply(const Outcome& outcome) {
     if (c & (kTopology | kDocument)) {
         upload_document();
     } else if (c & kGeometry) {
-        mesh_renderer_->update_geometry(editor_.mesh());
+        scene_->mesh().update_geometry(editor_.mesh());
         cursor_moved_ = true;
     }
     if (c & (kTopology | kGeometry | kSelection | kDisplay | kCurve | kDocument)) {
@@ -410,12 +407,7 @@ void App::apply(const Outcome& outcome) {
 }
 
 void App::upload_document() {
-    if (mesh_mode()) {
-        mesh_renderer_->upload(editor_.mesh());
-        has_mesh_on_gpu_ = true;
-    } else {
-        has_mesh_on_gpu_ = false;
-    }
+    scene_->upload(mesh_mode() ? &editor_.mesh() : nullptr);
     editor_.set_hover({});
     cursor_moved_ = true;  // the caller rebuilds the overlay
 }
@@ -430,32 +422,22 @@ void App::rebuild_overlay(bool features_changed) {
         }
     }
     OverlayBatch batch = features_;
+    SceneContent scene;
+    const Document& doc = editor_.document();
     if (mesh_mode()) {
-        const Mesh& mesh = editor_.mesh();
-        if (view.show_nets) {
-            add_control_nets(editor_.document().patches, style, batch);
-        }
-        if (is_live(mesh, editor_.hover()) &&
-            !(editor_.hover().kind == editor_.selection().kind &&
-              editor_.hover().index == editor_.selection().index)) {
-            add_element_highlight(mesh, editor_.hover(), style.hovered, style, batch);
-        }
-        if (is_live(mesh, editor_.selection())) {
-            add_element_highlight(mesh, editor_.selection(), style.selected, style, batch);
-        }
+        scene.mesh = &doc.mesh;
+        scene.patches = doc.patches;
+        scene.show_nets = view.show_nets;
     } else {
-        const BezierCurve& curve = editor_.document().curve;
-        add_unit_square(style, batch);
-        add_bezier_curve(curve, view.t, view.level, view.show_curve, style, batch);
-        const auto mark = [&](const ElementRef& e, const Color& color) {
-            if (e.kind == ElementRef::Kind::Vertex && e.index < curve.control_points.size()) {
-                batch.points.push_back({curve.control_points[e.index], color, 16.0f});
-            }
-        };
-        mark(editor_.hover(), style.hovered);
-        mark(editor_.selection(), style.selected);
+        scene.curve = &doc.curve;
+        scene.t = view.t;
+        scene.level = view.level;
+        scene.show_curve = view.show_curve;
     }
-    overlay_renderer_->upload(batch);
+    scene.selected = editor_.selection();
+    scene.hovered = editor_.hover();
+    add_scene_marks(scene, style, batch);
+    scene_->overlay().upload(batch);
     redraw_frames_ = kSettleFrames;
 }
 
@@ -533,7 +515,7 @@ ElementRef App::pick_at_cursor() {
         }
         return best;
     }
-    if (!has_mesh_on_gpu_) {
+    if (!scene_->has_mesh()) {
         return {};
     }
     if (!pick_target_ || pick_target_->width() != size.x || pick_target_->height() != size.y) {
@@ -542,8 +524,8 @@ ElementRef App::pick_at_cursor() {
     const auto start = std::chrono::steady_clock::now();
     pick_target_->bind();
     const float scale = static_cast<float>(size.y) / std::max(1.0f, ImGui::GetIO().DisplaySize.y);
-    const ElementRef hit = mesh_renderer_->pick(camera_, size.x, size.y, static_cast<int>(p.x),
-                                                static_cast<int>(p.y), 6.0f * scale, 4.0f * scale);
+    const ElementRef hit = scene_->mesh().pick(camera_, size.x, size.y, static_cast<int>(p.x),
+                                               static_cast<int>(p.y), 6.0f * scale, 4.0f * scale);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, size.x, size.y);
     last_pick_ms_ =
@@ -583,17 +565,7 @@ void App::drag_element_to_cursor() {
 // ---------------------------------------------------------------------------- drawing
 
 void App::draw_scene(int width, int height) {
-    const float a = static_cast<float>(width) / static_cast<float>(height);
-    if (mesh_mode()) {
-        background_->draw(kBackgroundTop, kBackgroundBottom);
-        if (has_mesh_on_gpu_) {
-            mesh_renderer_->draw(camera_, a, editor_.view().render);
-        }
-    } else {
-        const float paper[3] = {0.97f, 0.97f, 0.96f};
-        background_->draw(paper, paper);
-    }
-    overlay_renderer_->draw(camera_, width, height);
+    scene_->draw(camera_, width, height, editor_.view().render);
 }
 
 void App::draw_frame() {
@@ -611,7 +583,7 @@ void App::draw_frame() {
     stats.pick_ms = last_pick_ms_;
     stats.width = size.x;
     stats.height = size.y;
-    stats.triangles = has_mesh_on_gpu_ ? mesh_renderer_->triangle_count() : 0;
+    stats.triangles = scene_->has_mesh() ? scene_->mesh().triangle_count() : 0;
     const PanelRequests requests = panels_.draw(editor_, stats, status_, status_error_);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -9,9 +9,8 @@
 #include <glm/glm.hpp>
 
 #include "meshedit/render/camera.h"
-#include "meshedit/render/mesh_renderer.h"
-#include "meshedit/render/overlay_renderer.h"
 #include "meshedit/render/render_target.h"
+#include "meshedit/render/scene.h"
 #include "meshedit/viewer/editor.h"
 #include "panels.h"
 
@@ -85,11 +84,8 @@ private:
     glm::vec3 scene_center_{0.0f};
     float scene_radius_ = 1.0f;
 
-    std::unique_ptr<MeshRenderer> mesh_renderer_;
-    std::unique_ptr<OverlayRenderer> overlay_renderer_;
-    std::unique_ptr<BackgroundRenderer> background_;
+    std::unique_ptr<SceneRenderer> scene_;
     std::unique_ptr<RenderTarget> pick_target_;
-    bool has_mesh_on_gpu_ = false;
     OverlayBatch features_;  ///< boundary and crease edges of the current mesh
 
     Panels panels_;

@@ -8,19 +8,11 @@
 #include <string_view>
 
 #include "app.h"
+#include "command_line.h"
 
 namespace {
 
-constexpr const char* kUsage =
-    "usage: meshedit [view] [FILE] [--size WxH] [--no-vsync]\n"
-    "       (the meshedit-view executable; 'meshedit FILE' and 'meshedit view FILE' run it)\n"
-    "\n"
-    "Opens FILE (.dae .gltf .glb .obj mesh, .bez Bezier patches, .bzc Bezier curve) in the\n"
-    "interactive editor. Press ? or F1 in the window for every key and mouse action.\n"
-    "  --size WxH     window size in screen coordinates (default 1280x800)\n"
-    "  --no-vsync     draw without waiting for the display's refresh\n"
-    "Without a display, use 'meshedit render FILE -o out.png' to render headless.\n";
-
+// "WxH" with both in 64..16384.
 bool parse_size(std::string_view text, int& width, int& height) {
     const std::size_t x = text.find('x');
     if (x == std::string_view::npos) {
@@ -37,30 +29,31 @@ bool parse_size(std::string_view text, int& width, int& height) {
 
 int main(int argc, char** argv) {
     meshedit::viewer::ViewerOptions options;
-    for (int i = 1; i < argc; ++i) {
-        const std::string_view a = argv[i];
-        if (a == "-h" || a == "--help") {
-            std::fputs(kUsage, stdout);
-            return 0;
-        }
-        if (a == "--size" && i + 1 < argc) {
-            if (!parse_size(argv[++i], options.width, options.height)) {
-                std::fprintf(stderr, "meshedit: --size wants WxH (64..16384), got '%s'\n", argv[i]);
-                return 2;
-            }
-        } else if (a == "--no-vsync") {
-            options.vsync = false;
-        } else if (!a.empty() && a[0] == '-') {
-            std::fprintf(stderr, "meshedit: unknown option '%s' (see --help)\n", argv[i]);
-            return 2;
-        } else if (options.file.empty()) {
-            options.file = argv[i];
-        } else {
-            std::fprintf(stderr, "meshedit: the viewer opens one file, got a second: '%s'\n",
-                         argv[i]);
-            return 2;
-        }
+    CLI::App app(
+        "Opens FILE (.dae .gltf .glb .obj mesh, .bez Bezier patches, .bzc Bezier curve) in the "
+        "interactive editor. Press ? or F1 in the window for every key and mouse action.",
+        "meshedit [view]");
+    meshedit::command_line::style(app);
+    std::string file;
+    std::string size;
+    bool no_vsync = false;
+    app.add_option("FILE", file, "the file to open (none: start empty, open with Ctrl+O)");
+    app.add_option("--size", size, "window size in screen coordinates (default 1280x800)")
+        ->type_name("WxH");
+    app.add_flag("--no-vsync", no_vsync, "draw without waiting for the display's refresh");
+    app.footer(
+        "The meshedit-view executable; 'meshedit FILE' and 'meshedit view FILE' run it.\n"
+        "Without a display, use 'meshedit render FILE -o out.png' to render headless.");
+    if (const int status = meshedit::command_line::parse(app, argc, argv, "meshedit");
+        status >= 0) {
+        return status;
     }
+    if (!size.empty() && !parse_size(size, options.width, options.height)) {
+        std::fprintf(stderr, "meshedit: --size wants WxH (64..16384), got '%s'\n", size.c_str());
+        return 2;
+    }
+    options.file = file;
+    options.vsync = !no_vsync;
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland)) {
@@ -71,8 +64,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     try {
-        meshedit::viewer::App app(options);
-        return app.run();
+        meshedit::viewer::App viewer(options);
+        return viewer.run();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "meshedit: %s\n", e.what());
         return 1;

@@ -59,6 +59,7 @@ struct OverlayStyle {
     Color boundary{0.85f, 0.1f, 0.1f, 1.0f};  ///< red
     Color crease{0.1f, 0.55f, 0.1f, 1.0f};    ///< green
     float vertex_size_px = 12.0f;
+    float control_point_px = 16.0f;  ///< a hovered or selected curve control point
     float edge_width_px = 4.0f;
     float feature_width_px = 2.5f;  ///< boundary and crease edges
     float face_tint_alpha = 0.45f;
@@ -99,5 +100,28 @@ void add_unit_square(const OverlayStyle& style, OverlayBatch& out);
 /// control points as small discs.
 void add_control_nets(std::span<const BezierPatch> patches, const OverlayStyle& style,
                       OverlayBatch& out);
+
+/// What a frame shows, apart from the camera and the shading options.
+struct SceneContent {
+    /// A mesh (mesh and surface documents), or nullptr for a curve.
+    const Mesh* mesh = nullptr;
+    /// Surface documents: the patches, whose control nets show when `show_nets`.
+    std::span<const BezierPatch> patches;
+    bool show_nets = false;
+    /// A curve document: the curve at parameter `t`, de Casteljau levels up to `level`
+    /// (−1: all, with B(t)), the whole curve when `show_curve`.
+    const BezierCurve* curve = nullptr;
+    double t = 0.5;
+    int level = -1;
+    bool show_curve = true;
+    /// Mesh elements, or a curve's control points as Vertex refs.
+    ElementRef selected;
+    ElementRef hovered;
+};
+
+/// Everything the overlay shows besides feature edges: control nets, the hovered and the
+/// selected element (a hovered element that is also selected shows as selected), or for a
+/// curve the unit square, the curve with its levels and the marked control points.
+void add_scene_marks(const SceneContent& scene, const OverlayStyle& style, OverlayBatch& out);
 
 }  // namespace meshedit

@@ -1,0 +1,215 @@
+// meshedit-render's command line on CLI11, and the --select syntax.
+
+#include "options.h"
+
+#include <charconv>
+#include <cstdio>
+#include <string_view>
+#include <vector>
+
+#include "command_line.h"
+#include "meshedit/render/shading.h"
+
+namespace meshedit::headless {
+namespace {
+
+template <class T>
+T parse_number(std::string_view text, std::string_view what) {
+    T value{};
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc() || ptr != end || text.empty()) {
+        throw UsageError("bad " + std::string(what) + " '" + std::string(text) + "'");
+    }
+    return value;
+}
+
+std::vector<std::string_view> split(std::string_view text, char separator) {
+    std::vector<std::string_view> parts;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t at = text.find(separator, start);
+        parts.push_back(text.substr(start, at - start));
+        if (at == std::string_view::npos) {
+            return parts;
+        }
+        start = at + 1;
+    }
+}
+
+std::string shading_table() {
+    std::string table;
+    for (const ShadingMode& mode : kShadingModes) {
+        char line[160];
+        std::snprintf(line, sizeof line, "\n  %d %-10s %s", mode.number,
+                      std::string(mode.name).c_str(), std::string(mode.description).c_str());
+        table += line;
+    }
+    return table;
+}
+
+std::uint32_t parse_index(std::string_view text, std::size_t size, const std::string& spec) {
+    const auto index = parse_number<std::uint32_t>(text, "index in --select");
+    if (index >= size) {
+        throw UsageError("--select " + spec + ": index " + std::string(text) + " out of range (" +
+                         std::to_string(size) + ")");
+    }
+    return index;
+}
+
+// The values of the options that take text: checked after parsing, with the words the
+// program has always used.
+struct Raw {
+    std::string size, shading, camera, pick;
+};
+
+void finish(const Raw& raw, Options& o) {
+    if (!raw.size.empty()) {
+        const auto parts = split(raw.size, 'x');
+        if (parts.size() != 2) {
+            throw UsageError("--size wants WxH, got '" + raw.size + "'");
+        }
+        o.width = parse_number<int>(parts[0], "width");
+        o.height = parse_number<int>(parts[1], "height");
+        if (o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192) {
+            throw UsageError("--size out of range (1..8192): '" + raw.size + "'");
+        }
+    }
+    if (!raw.shading.empty()) {
+        const auto mode = find_shading_mode(raw.shading);
+        if (!mode) {
+            throw UsageError("unknown shading mode '" + raw.shading + "' (see --help)");
+        }
+        o.shading = mode->number;
+    }
+    if (!raw.camera.empty()) {
+        const auto parts = split(raw.camera, ',');
+        if (parts.size() != 2 && parts.size() != 3) {
+            throw UsageError("--camera wants AZ,EL[,DIST], got '" + raw.camera + "'");
+        }
+        o.azimuth = parse_number<float>(parts[0], "azimuth");
+        o.elevation = parse_number<float>(parts[1], "elevation");
+        if (parts.size() == 3) {
+            o.distance = parse_number<float>(parts[2], "distance");
+            if (!(*o.distance > 0.0f)) {
+                throw UsageError("--camera distance must be positive");
+            }
+        }
+    }
+    if (!raw.pick.empty()) {
+        const auto parts = split(raw.pick, ',');
+        if (parts.size() != 2) {
+            throw UsageError("--pick wants X,Y");
+        }
+        o.pick = std::pair(parse_number<int>(parts[0], "x"), parse_number<int>(parts[1], "y"));
+    }
+}
+
+}  // namespace
+
+int parse_options(int argc, char** argv, Options& o) {
+    CLI::App app(
+        "Renders FILE headless (OSMesa, OpenGL 3.3 core) to a PNG, with the viewer's renderer "
+        "and shaders. Same command, same bytes.",
+        "meshedit-render");
+    command_line::style(app);
+    Raw raw;
+    app.add_option("FILE", o.input,
+                   "a mesh (.dae .gltf .glb .obj: smooth shaded, boundary and crease edges "
+                   "drawn), Bezier patches (.bez, tessellated) or a Bezier curve (.bzc, in the "
+                   "[0,1]^2 square)")
+        ->required();
+    app.add_option("-o,--output", o.output, "the image to write")->type_name("OUT.png")->required();
+    app.add_option("--size", raw.size, "image size in pixels (default 512x384)")->type_name("WxH");
+    app.add_option("--ops", o.ops, "edits before drawing, e.g. flip:0-6,split:1-2,loop:2")
+        ->type_name("LIST");
+    app.add_option("--shading", raw.shading, "name or number (default phong):" + shading_table())
+        ->type_name("MODE");
+    app.add_flag_callback(
+        "--smooth", [&o] { o.smooth = true; }, "area-weighted vertex normals (the default)");
+    app.add_flag_callback(
+        "--flat", [&o] { o.smooth = false; }, "face normals");
+    app.add_flag("--wireframe", o.wireframe, "draw the edges over the surface");
+    app.add_option("--camera", raw.camera,
+                   "orbit angles in degrees and distance to the bounding-box centre (default "
+                   "30,20 at the distance that frames the box)")
+        ->type_name("AZ,EL[,DIST]");
+    app.add_option("--select", o.select,
+                   "highlight a vertex, the edge A-B, the halfedge A->B, a face")
+        ->option_text("v:I|e:A-B|h:A-B|f:I");
+    app.add_flag_callback(
+        "--features", [&o] { o.features = true; },
+        "boundary (red) and crease (green) edges: on by default for mesh "
+        "files, off for .bez");
+    app.add_flag_callback(
+        "--no-features", [&o] { o.features = false; }, "no boundary or crease edges");
+    app.add_option("--density", o.density, ".bez: quads per patch side, 1 to 256 (default 8)")
+        ->type_name("N")
+        ->check(CLI::Range(1, 256));
+    app.add_flag("--net", o.net, ".bez: draw the control nets");
+    app.add_option("--t", o.t, ".bzc: the de Casteljau parameter (default 0.5)")->type_name("T");
+    app.add_option("--level", o.level, ".bzc: draw levels 0..K only (default all, with B(t))")
+        ->type_name("K");
+    app.add_flag_callback(
+        "--no-curve", [&o] { o.curve = false; }, ".bzc: hide the full curve");
+    app.add_option("--samples", o.samples, "multisampling (default 4; 1 = off)")
+        ->type_name("N")
+        ->check(CLI::Range(1, 64));
+    app.add_option("--pick", raw.pick, "also print the element under pixel (X, Y) (ID pass)")
+        ->type_name("X,Y");
+    app.add_flag("--timings", o.timings, "print the time of each phase on stderr");
+    app.add_option("--benchmark", o.benchmark,
+                   "also draw N times shaded and N times with a trivial shader (glFinish each) "
+                   "and print both medians in ms on stdout")
+        ->type_name("N")
+        ->check(CLI::PositiveNumber);
+    app.footer(
+        "Also run as 'meshedit render FILE -o OUT.png …'.\n"
+        "Exit status: 0 success, 1 GL failure or refused op, 2 bad usage or input.");
+    if (const int status = command_line::parse(app, argc, argv, "meshedit-render"); status >= 0) {
+        return status;
+    }
+    finish(raw, o);
+    return -1;
+}
+
+// "v:I", "e:A-B", "h:A-B", "f:I" → an element of `mesh`.
+ElementRef parse_selection(const Mesh& mesh, const std::string& spec) {
+    if (spec.size() < 3 || spec[1] != ':') {
+        throw UsageError("--select wants v:I, e:A-B, h:A-B or f:I, got '" + spec + "'");
+    }
+    const std::string_view body = std::string_view(spec).substr(2);
+    const char kind = spec[0];
+    if (kind == 'v' || kind == 'f') {
+        if (kind == 'v') {
+            const Vertex v(parse_index(body, mesh.vertices_size(), spec));
+            if (mesh.is_deleted(v)) {
+                throw UsageError("--select " + spec + ": the vertex is deleted");
+            }
+            return ElementRef::vertex(v);
+        }
+        const Face f(parse_index(body, mesh.faces_size(), spec));
+        if (mesh.is_deleted(f)) {
+            throw UsageError("--select " + spec + ": the face is deleted");
+        }
+        return ElementRef::face(f);
+    }
+    if (kind != 'e' && kind != 'h') {
+        throw UsageError("--select wants v:I, e:A-B, h:A-B or f:I, got '" + spec + "'");
+    }
+    const auto ends = split(body, '-');
+    if (ends.size() != 2) {
+        throw UsageError("--select " + spec + ": an edge is A-B (two vertex indices)");
+    }
+    const Vertex a(parse_index(ends[0], mesh.vertices_size(), spec));
+    const Vertex b(parse_index(ends[1], mesh.vertices_size(), spec));
+    const Halfedge h =
+        mesh.is_deleted(a) || mesh.is_deleted(b) ? Halfedge() : mesh.find_halfedge(a, b);
+    if (!h.is_valid()) {
+        throw UsageError("--select " + spec + ": no edge joins vertices " + std::string(ends[0]) +
+                         " and " + std::string(ends[1]));
+    }
+    return kind == 'e' ? ElementRef::edge(Mesh::edge(h)) : ElementRef::halfedge(h);
+}
+
+}  // namespace meshedit::headless

@@ -1,0 +1,52 @@
+#pragma once
+// Private to meshedit-render: its command line (CLI11, in MeshEdit's command-line style) and
+// the --select syntax.
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "meshedit/core/element_ref.h"
+#include "meshedit/core/mesh.h"
+
+namespace meshedit::headless {
+
+/// Bad usage or input found after parsing (exit 2).
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct Options {
+    std::filesystem::path input;
+    std::filesystem::path output;
+    int width = 512;
+    int height = 384;
+    std::string ops;
+    int shading = 1;
+    std::optional<bool> smooth;
+    bool wireframe = false;
+    std::optional<float> azimuth, elevation, distance;
+    std::string select;
+    std::optional<bool> features;
+    int density = 8;
+    bool net = false;
+    double t = 0.5;
+    int level = -1;
+    bool curve = true;
+    int samples = 4;
+    std::optional<std::pair<int, int>> pick;
+    bool timings = false;
+    int benchmark = 0;
+};
+
+/// Parses the command line into `options`. \return -1 to go on, else the exit status after
+/// printing the help (0) or a usage error (2).
+int parse_options(int argc, char** argv, Options& options);
+
+/// "v:I", "e:A-B", "h:A-B", "f:I" → an element of `mesh`. \throws UsageError.
+ElementRef parse_selection(const Mesh& mesh, const std::string& spec);
+
+}  // namespace meshedit::headless
