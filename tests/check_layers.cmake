@@ -1,0 +1,87 @@
+# The layer table: which headers each part of the code may include. Run by ctest
+# (layers_include_only_what_they_may, label core); fails naming every offending file and
+# include. docs/architecture.md draws the same table as a picture.
+#
+# A rule is: a name; a regex matched against the file's path below the repository root (the
+# first rule that matches a file is its layer); the project headers it may include, as a regex
+# on the path after "meshedit/"; and the other headers it may include, as a regex on the text
+# between < and >. Standard headers (no '/' and no '.') are always allowed, and so are private
+# headers beside the file ("name.h", no '/').
+set(std_posix "fcntl\\.h|unistd\\.h|sys/(stat|mman|types)\\.h")
+set(gl "GL/glcorearb\\.h|glm/.*")
+set(rules
+    # name | files | project headers | other headers
+    "core|^(include/meshedit|src)/core/|^core/|^sys/mman\\.h$"
+    "bezier|^(include/meshedit|src)/bezier/|^(core|bezier)/|^$"
+    "files|^(include/meshedit|src)/files/|^(core|files)/|^(${std_posix})$"
+    "io|^(include/meshedit|src)/io/|^(core|bezier|files|io)/|^(${std_posix}|pugixml\\.hpp|tiny_gltf\\.h|tiny_obj_loader\\.h)$"
+    "ops|^(include/meshedit|src)/ops/|^(core|ops)/|^$"
+    "render, GL-free part (overlay geometry, camera)|^(include/meshedit/render/(overlay|camera|shading)\\.h|src/render/(overlay|camera|scene_marks|shading)\\.cpp)$|^(core|bezier)/|render/(overlay|camera|shading)\\.h$|^glm/.*$"
+    "render|^(include/meshedit|src)/render/|^(core|bezier|files|render)/|^(${gl}|OpenImageIO/imageio\\.h|unistd\\.h)$"
+    "viewer logic (no GL, no window)|^(include/meshedit/viewer/|src/viewer/(bindings|history|editor|editor_[a-z]+|element_info)\\.cpp$)|^(core|bezier|files|io|ops|viewer)/|render/(overlay|camera|shading)\\.h$|^$"
+    "viewer window|^src/viewer/|^(core|bezier|files|io|ops|render|viewer)/|^(${gl}|GLFW/glfw3\\.h|imgui\\.h|imgui_stdlib\\.h|backends/imgui_impl_(glfw|opengl3)\\.h)$"
+    "command line style|^src/command_line/|^$|^CLI/CLI\\.hpp$"
+    "cli (meshedit)|^src/cli/|^(core|bezier|files|io|ops)/|^(CLI/CLI\\.hpp|nlohmann/json\\.hpp|unistd\\.h)$"
+    "headless (meshedit-render)|^src/headless/|^(core|bezier|files|io|ops|render)/|^(CLI/CLI\\.hpp|GL/osmesa\\.h)$"
+    "tools|^tools/|^(core|bezier|files|io|ops)/|^$"
+)
+
+set(bad "")
+set(unassigned "")
+file(GLOB_RECURSE sources RELATIVE ${ROOT}
+    ${ROOT}/include/*.h ${ROOT}/src/*.h ${ROOT}/src/*.cpp ${ROOT}/tools/*.cpp)
+foreach(file ${sources})
+    set(layer "")
+    foreach(rule ${rules})
+        string(REPLACE "|^" ";^" parts "${rule}")
+        # parts: name;files;project;other (the regexes start with ^, the name does not)
+        list(GET parts 0 name)
+        list(GET parts 1 files)
+        if(file MATCHES "${files}")
+            set(layer "${name}")
+            list(GET parts 2 project)
+            list(GET parts 3 other)
+            break()
+        endif()
+    endforeach()
+    if(layer STREQUAL "")
+        list(APPEND unassigned "${file}")
+        continue()
+    endif()
+    file(STRINGS ${ROOT}/${file} lines REGEX "^[ \t]*#[ \t]*include")
+    foreach(line ${lines})
+        if(line MATCHES "#[ \t]*include[ \t]*\"([^\"]+)\"")
+            set(header "${CMAKE_MATCH_1}")
+            if(NOT header MATCHES "/")
+                continue()  # a private header beside the file
+            endif()
+            if(header MATCHES "^meshedit/(.*)$")
+                set(inside "${CMAKE_MATCH_1}")
+                if(NOT inside MATCHES "${project}")
+                    list(APPEND bad "${file}: ${line}  (the ${layer} layer may not include meshedit/${inside})")
+                endif()
+            else()
+                list(APPEND bad "${file}: ${line}  (project headers are included as \"meshedit/...\")")
+            endif()
+        elseif(line MATCHES "#[ \t]*include[ \t]*<([^>]+)>")
+            set(header "${CMAKE_MATCH_1}")
+            if(header MATCHES "^[a-z_0-9]+$")
+                continue()  # the standard library
+            endif()
+            if(NOT header MATCHES "${other}")
+                list(APPEND bad "${file}: ${line}  (the ${layer} layer may not include <${header}>)")
+            endif()
+        endif()
+    endforeach()
+endforeach()
+
+if(unassigned)
+    list(JOIN unassigned "\n  " text)
+    message(FATAL_ERROR "files in no layer (add them to tests/check_layers.cmake):\n  ${text}")
+endif()
+if(bad)
+    list(JOIN bad "\n  " text)
+    message(FATAL_ERROR "includes that cross the layer table (tests/check_layers.cmake):\n  ${text}")
+endif()
+list(LENGTH sources n)
+message(STATUS "${n} files include only what their layer may")
