@@ -20,7 +20,7 @@ set(rules
     "render|^(include/meshedit|src)/render/|^(core|bezier|files|render)/|^(${gl}|OpenImageIO/imageio\\.h|unistd\\.h)$"
     "viewer logic (no GL, no window)|^(include/meshedit/viewer/|src/viewer/(bindings|history|editor|editor_[a-z]+|element_info)\\.cpp$)|^(core|bezier|files|io|ops|viewer)/|render/(overlay|camera|shading)\\.h$|^$"
     "viewer window|^src/viewer/|^(core|bezier|files|io|ops|render|viewer)/|^(${gl}|GLFW/glfw3\\.h|imgui\\.h|imgui_stdlib\\.h|backends/imgui_impl_(glfw|opengl3)\\.h)$"
-    "command line style|^src/command_line/|^$|^CLI/CLI\\.hpp$"
+    "command line style|^src/command_line/|^core/|^CLI/CLI\\.hpp$"
     "cli (meshedit)|^src/cli/|^(core|bezier|files|io|ops)/|^(CLI/CLI\\.hpp|nlohmann/json\\.hpp|unistd\\.h)$"
     "headless (meshedit-render)|^src/headless/|^(core|bezier|files|io|ops|render)/|^(CLI/CLI\\.hpp|GL/osmesa\\.h)$"
     "tools|^tools/|^(core|bezier|files|io|ops)/|^$"

@@ -81,11 +81,13 @@ int run_builtin(int argc, char** argv) {
     meshedit::command_line::style(app);
     app.set_version_flag("--version", std::string("meshedit ") + MESHEDIT_VERSION);
     app.require_subcommand(1, 1);
+    meshedit::command_line::add_memory_budget_option(app);
     app.footer(kMoreCommands);
     const Command commands[] = {add_info(app), add_convert(app), add_subdivide(app), add_check(app),
                                 add_eval(app)};
     for (const Command& c : commands) {
         c.app->group("Commands");
+        c.app->fallthrough();  // --memory-budget after the command name works too
     }
     const std::string command = argc > 1 ? argv[1] : "";
     if (command.empty()) {

@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "meshedit/core/budget.h"
+
 #include <cstdio>
 #include <string>
 #include <string_view>
@@ -41,6 +43,25 @@ inline void style(CLI::App& app) {
     formatter->label("SUBCOMMANDS", "COMMAND");
     formatter->column_width(26);
     app.formatter(formatter);
+}
+
+/// `--memory-budget SIZE`: the memory budget of this run (meshedit/core/budget.h).
+inline CLI::Option* add_memory_budget_option(CLI::App& app) {
+    return app
+        .add_option_function<std::string>(
+            "--memory-budget",
+            [](const std::string& text) {
+                set_memory_budget(parse_byte_size(text).value_or(0));
+            },
+            "how much memory a step may plan to use, e.g. 8G or 512M (default: half the "
+            "physical memory, or MESHEDIT_MEMORY_BUDGET)")
+        ->type_name("SIZE")
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                return parse_byte_size(text) ? std::string()
+                                             : "bad size '" + text + "' (expected e.g. 8G, 512M)";
+            },
+            ""));
 }
 
 /// The help of `app` with its full name in the usage line ("usage: meshedit info …").

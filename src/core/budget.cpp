@@ -99,7 +99,7 @@ std::optional<std::string> over_budget(double bytes) {
         return std::nullopt;
     }
     return "would need about " + format_bytes(bytes) + " of memory, over the budget of " +
-           format_bytes(budget) + " (MESHEDIT_MEMORY_BUDGET or --memory-budget sets it)";
+           format_bytes(budget) + " (--memory-budget or MESHEDIT_MEMORY_BUDGET sets it)";
 }
 
 }  // namespace meshedit

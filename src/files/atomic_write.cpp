@@ -56,7 +56,7 @@ void sync_file(const fs::path& path) {
 
 void write_atomically(const fs::path& target,
                       const std::function<void(const fs::path& tmp)>& write) {
-    const std::string name = display_name(target);
+    const std::string name = target.string();
     if (target.filename().empty()) {
         throw IoError(name, "", "not a file name");
     }

@@ -27,12 +27,8 @@ std::string file_extension(const fs::path& path) {
     return ext;
 }
 
-std::string display_name(const fs::path& path) {
-    return path.string();
-}
-
 std::string read_file(const fs::path& path, std::size_t max_bytes) {
-    const std::string name = display_name(path);
+    const std::string name = path.string();
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (!fs::exists(status)) {

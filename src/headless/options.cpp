@@ -158,6 +158,7 @@ int parse_options(int argc, char** argv, Options& o) {
     app.add_option("--pick", raw.pick, "also print the element under pixel (X, Y) (ID pass)")
         ->type_name("X,Y");
     app.add_flag("--timings", o.timings, "print the time of each phase on stderr");
+    command_line::add_memory_budget_option(app);
     app.add_option("--benchmark", o.benchmark,
                    "also draw N times shaded and N times with a trivial shader (glFinish each) "
                    "and print both medians in ms on stdout")

@@ -1,4 +1,4 @@
-// .bez (Bezier patches) and .bzc (Bezier curve) files, SPEC §2.
+// .bez (Bezier patches) and .bzc (Bezier curve) files, docs/spec.md §2.
 //
 // Both are free-form streams of numbers: any whitespace separates them, line breaks carry no
 // meaning, and `#` starts a comment that runs to the end of the line. A .bez file is a patch
@@ -164,7 +164,7 @@ std::string plural(std::uint64_t n, const char* singular, const char* plural_for
 }  // namespace
 
 std::vector<BezierPatch> read_bez(const std::filesystem::path& path) {
-    const std::string file = display_name(path);
+    const std::string file = path.string();
     const std::string text = read_file(path);
     Scanner scanner(text);
     std::string_view token;
@@ -209,7 +209,7 @@ std::vector<BezierPatch> read_bez(const std::filesystem::path& path) {
 }
 
 BezierCurve read_bzc(const std::filesystem::path& path) {
-    const std::string file = display_name(path);
+    const std::string file = path.string();
     const std::string text = read_file(path);
     Scanner scanner(text);
     std::string_view token;
@@ -248,7 +248,7 @@ BezierCurve read_bzc(const std::filesystem::path& path) {
 }
 
 void write_bzc(const BezierCurve& curve, const std::filesystem::path& path) {
-    const std::string file = display_name(path);
+    const std::string file = path.string();
     const std::size_t n = curve.control_points.size();
     if (n < 2) {
         throw IoError(file, "",

@@ -32,7 +32,7 @@ LoadedDocument read_document(const std::filesystem::path& path, const ReadOption
     const std::string ext = file_extension(path);
     if (!is_document_extension(ext)) {
         throw IoError(
-            display_name(path), "",
+            path.string(), "",
             (ext.empty() ? std::string("no file extension") : "unknown extension '" + ext + "'") +
                 "; expected " + document_extensions());
     }
@@ -62,7 +62,7 @@ LoadedDocument read_document(const std::filesystem::path& path, const ReadOption
         throw;
     } catch (const std::exception& e) {
         // Whatever went wrong inside a reader, the user needs the file named.
-        throw IoError(display_name(path), "", e.what());
+        throw IoError(path.string(), "", e.what());
     }
     return doc;
 }

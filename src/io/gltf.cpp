@@ -447,7 +447,7 @@ int add_view(tinygltf::Model& model, std::size_t offset, std::size_t length, int
 }  // namespace
 
 MeshSoup read_gltf(const std::filesystem::path& path) {
-    const std::string file = display_name(path);
+    const std::string file = path.string();
     const std::string bytes = read_file(path);
     if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
         throw IoError(file, "", "file too large for the glTF loader (over 4 GiB)");
@@ -486,7 +486,7 @@ MeshSoup read_gltf(const std::filesystem::path& path) {
 }
 
 void write_gltf(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
-    const std::string file = display_name(path);
+    const std::string file = path.string();
     std::optional<Mesh> storage;
     const Mesh& dense = io_util::compacted(mesh, storage);
     const PolygonSoup soup = to_polygon_soup(dense);

@@ -26,12 +26,12 @@ bool is_mesh_extension(const std::string& extension) {
 MeshSoup read_soup(const fs::path& path) {
     const std::string ext = file_extension(path);
     if (ext == ".bez" || ext == ".bzc") {
-        throw IoError(display_name(path), "",
+        throw IoError(path.string(), "",
                       "a Bezier " + std::string(ext == ".bez" ? "patch" : "curve") +
                           " file, not a mesh (load it as Bezier data)");
     }
     if (!is_mesh_extension(ext)) {
-        throw IoError(display_name(path), "",
+        throw IoError(path.string(), "",
                       ext.empty()
                           ? "no file extension; expected .dae, .gltf, .glb or .obj"
                           : "unknown extension '" + ext + "'; expected .dae, .gltf, .glb or .obj");
@@ -51,7 +51,7 @@ LoadedMesh read_mesh(const fs::path& path) {
     try {
         loaded.mesh = build_mesh(soup.soup, &loaded.repairs);
     } catch (const TopologyError& e) {
-        throw IoError(display_name(path), "", e.what());
+        throw IoError(path.string(), "", e.what());
     }
     loaded.notices = std::move(soup.notices);
     loaded.unit_meter = soup.unit_meter;
@@ -91,7 +91,7 @@ void write_mesh(const Mesh& mesh, const fs::path& path, const IoFlags& flags) {
     } else if (ext == ".obj") {
         write_obj(dense, path, flags);
     } else {
-        throw IoError(display_name(path), "",
+        throw IoError(path.string(), "",
                       ext.empty()
                           ? "no file extension; expected .dae, .gltf, .glb or .obj"
                           : "cannot write '" + ext + "' files; expected .dae, .gltf, .glb or .obj");

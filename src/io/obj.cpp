@@ -123,7 +123,7 @@ std::string trimmed(std::string s) {
 }  // namespace
 
 MeshSoup read_obj(const std::filesystem::path& path) {
-    const std::string file = display_name(path);
+    const std::string file = path.string();
     // Read the text ourselves: one error path for missing files, and the text is needed for
     // line numbers anyway. Materials are not used; parsing from a string skips `mtllib`.
     const std::string text = read_file(path);

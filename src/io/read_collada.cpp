@@ -1,5 +1,5 @@
 // COLLADA reader, part 3: <asset>, the scene's node tree with its transforms, and the
-// concatenation of every instanced geometry into one soup (SPEC §2).
+// concatenation of every instanced geometry into one soup (docs/spec.md §2).
 
 #include <algorithm>
 #include <array>

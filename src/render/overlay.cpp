@@ -46,7 +46,7 @@ float net_point_size(const OverlayStyle& s) {
     return s.vertex_size_px * 0.5f;
 }
 
-/// Curves are 2D (SPEC §4): drop any z so every curve overlay lies in the z = 0 plane even if
+/// Curves are 2D (docs/spec.md §4): drop any z so every curve overlay lies in the z = 0 plane even if
 /// a file carried a stray z.
 Vec3 flat(const Vec3& p) {
     return {p.x, p.y, 0.0};

@@ -1,4 +1,4 @@
-// Edge collapse to the midpoint (SPEC §3). The smaller-index endpoint v0 survives; v1, the
+// Edge collapse to the midpoint (docs/spec.md §3). The smaller-index endpoint v0 survives; v1, the
 // edge and its triangles go. Expected meshes: the input's list with the edge's faces removed,
 // v1 renamed to v0, v0 moved, and v1 erased (indices above it shift down by one).
 

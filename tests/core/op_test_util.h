@@ -101,7 +101,7 @@ inline Indexed indexed(const Mesh& mesh) {
     return out;
 }
 
-/// The two triangles beside an interior edge, named as in SPEC §3: halfedge(e, 0) runs
+/// The two triangles beside an interior edge, named as in docs/spec.md §3: halfedge(e, 0) runs
 /// b -> c inside (a,b,c); its twin runs c -> b inside (c,b,d). Read from the input mesh.
 struct Diamond {
     std::uint32_t a, b, c, d;

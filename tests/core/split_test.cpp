@@ -1,4 +1,4 @@
-// Edge split at the midpoint (SPEC §3): an interior edge's two triangles become four, a
+// Edge split at the midpoint (docs/spec.md §3): an interior edge's two triangles become four, a
 // boundary edge's one triangle becomes two and the boundary gains the new vertex m. The
 // expected meshes append m's position to the input's list and replace the faces by hand.
 

@@ -1,4 +1,4 @@
-// The key table (SPEC §4): every key does what its help says, in the modes it says; no two
+// The key table (docs/spec.md §4): every key does what its help says, in the modes it says; no two
 // bindings compete for a key; every command is reachable; the README's table is generated
 // from the table.
 
@@ -25,7 +25,7 @@ struct Expected {
     Action action;
 };
 
-// Written by hand from SPEC §4 (keys, curve mode, surface mode), not from the table.
+// Written by hand from docs/spec.md §4 (keys, curve mode, surface mode), not from the table.
 const std::vector<Expected>& expected_bindings() {
     static const std::vector<Expected> table = [] {
         std::vector<Expected> t{

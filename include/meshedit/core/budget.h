@@ -30,7 +30,7 @@ std::optional<std::size_t> parse_byte_size(const std::string& text);
 std::string format_bytes(double bytes);
 
 /// nullopt if `bytes` fits in the budget; else a sentence for the refusal: "would need about
-/// 7.9 GB of memory, over the budget of 4.0 GB (MESHEDIT_MEMORY_BUDGET or --memory-budget
+/// 7.9 GB of memory, over the budget of 4.0 GB (--memory-budget or MESHEDIT_MEMORY_BUDGET
 /// sets it)".
 std::optional<std::string> over_budget(double bytes);
 

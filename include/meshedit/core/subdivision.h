@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Loop subdivision with boundary and crease rules (SPEC §3, docs/halfedge.md "Loop rules").
+/// Loop subdivision with boundary and crease rules (docs/spec.md §3, docs/halfedge.md "Loop rules").
 
 #include <cstddef>
 #include <functional>

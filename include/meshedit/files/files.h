@@ -17,9 +17,6 @@ namespace meshedit {
 /// The extension of `path`, lower-cased, with its dot (".dae"); empty if none.
 std::string file_extension(const std::filesystem::path& path);
 
-/// The name errors use for `path` (as the caller spelled it).
-std::string display_name(const std::filesystem::path& path);
-
 /// Files larger than this are refused by read_file() (a mesh that big would not fit the
 /// memory budget anyway).
 inline constexpr std::size_t kMaxFileBytes = std::size_t{16} << 30;

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// COLLADA 1.4.1/1.5 geometry subset (SPEC §2), read with pugixml.
+/// COLLADA 1.4.1/1.5 geometry subset (docs/spec.md §2), read with pugixml.
 
 #include <filesystem>
 

@@ -67,9 +67,9 @@ LoadedMesh read_mesh(const std::filesystem::path& path);
 /// atomically. \throws IoError.
 void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags = {});
 
-/// Bezier patches of a .bez file (SPEC §2). \throws IoError.
+/// Bezier patches of a .bez file (docs/spec.md §2). \throws IoError.
 std::vector<BezierPatch> read_bez(const std::filesystem::path& path);
-/// A Bezier curve of a .bzc file (SPEC §2: N, then N points x y; N ≥ 2). \throws IoError.
+/// A Bezier curve of a .bzc file (docs/spec.md §2: N, then N points x y; N ≥ 2). \throws IoError.
 BezierCurve read_bzc(const std::filesystem::path& path);
 /// Writes a .bzc file atomically. \throws IoError.
 void write_bzc(const BezierCurve& curve, const std::filesystem::path& path);

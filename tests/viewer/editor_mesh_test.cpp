@@ -1,0 +1,263 @@
+// The editor's mesh edits: each key runs its verb on the selection exactly as the core op
+// would, refusals leave the document untouched, the selection follows the result and is
+// remapped through garbage collection.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "meshedit/core/local_ops.h"
+#include "meshedit/core/shapes.h"
+#include "meshedit/core/subdivision.h"
+#include "meshedit/io/io.h"
+#include "support/fixtures.h"
+#include "support/mesh_compare.h"
+#include "viewer/editor_test_util.h"
+
+namespace meshedit::viewer {
+namespace {
+
+// ------------------------------------------------------------------------ mesh operations
+
+TEST(Editor, FlipEqualsDirectFlip) {
+    const Mesh cube = shapes::cube();
+    const Edge e = edge_of(cube, 0, 6);
+    Mesh expected = cube;
+    ASSERT_TRUE(flip(expected, e));
+
+    Editor ed = editor_with(cube);
+    EXPECT_FALSE(ed.dirty());
+    ed.select(ElementRef::edge(e));
+    const Outcome out = ed.press(key_of('F'), 0);
+    EXPECT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(out.changes, unsigned{kTopology | kSelection});
+    EXPECT_EQ(out.message.rfind("flipped edge " + std::to_string(e.idx()), 0), 0u) << out.message;
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    EXPECT_EQ(ed.selection().kind, Kind::Edge);
+    EXPECT_EQ(ed.selection().index, e.idx());
+    EXPECT_TRUE(ed.dirty());
+    EXPECT_EQ(ed.history().undo_steps(), 1u);
+
+    // A selected halfedge stands for its edge: flipping twice through it restores the cube's
+    // faces (not its halfedge layout, which flip does not promise).
+    Editor ed2 = editor_with(cube);
+    ed2.select(ElementRef::halfedge(Mesh::halfedge(e, 1)));
+    EXPECT_FALSE(ed2.run(edit("flip")).refused);
+    EXPECT_TRUE(test::identical(ed2.mesh(), expected));
+}
+
+TEST(Editor, RefusedFlipLeavesEverythingUntouched) {
+    const Mesh grid = shapes::grid(2, 2);
+    Editor ed = editor_with(grid);
+    const std::uint64_t revision = ed.document().revision;
+    const Edge boundary = edge_of(grid, 0, 1);
+    ed.select(ElementRef::edge(boundary));
+    const Outcome out = ed.press(key_of('F'), 0);
+    EXPECT_TRUE(out.refused);
+    EXPECT_EQ(out.message, "cannot flip: boundary edge");
+    EXPECT_EQ(out.changes, unsigned{kNothing});
+    EXPECT_TRUE(test::identical(ed.mesh(), grid));
+    EXPECT_EQ(ed.history().undo_steps(), 0u);
+    EXPECT_EQ(ed.document().revision, revision);
+    EXPECT_FALSE(ed.dirty());
+    EXPECT_EQ(ed.selection().index, boundary.idx()) << "the selection stays";
+}
+
+TEST(Editor, MeshOpsNeedAnEdge) {
+    Editor ed = editor_with(shapes::cube());
+    for (Key k : {key_of('F'), key_of('S'), key_of('C'), key_of('K')}) {
+        Outcome out = ed.press(k, 0);
+        EXPECT_TRUE(out.refused);
+        EXPECT_EQ(out.message, "select an edge first (click near an edge)");
+        ed.select(ElementRef::vertex(Vertex(2)));
+        out = ed.press(k, 0);
+        EXPECT_TRUE(out.refused);
+        EXPECT_EQ(out.message, "select an edge first (click near an edge)");
+        ed.select(ElementRef::face(Face(2)));
+        EXPECT_TRUE(ed.press(k, 0).refused);
+        ed.select({});
+    }
+    EXPECT_TRUE(test::identical(ed.mesh(), shapes::cube()));
+    EXPECT_FALSE(ed.dirty());
+}
+
+TEST(Editor, CollapseRefusalKeepsMeshAndReason) {
+    // Every edge of a tetrahedron is refused ("the mesh would degenerate").
+    const Mesh tet = shapes::tetrahedron();
+    Editor ed = editor_with(tet);
+    ed.select(ElementRef::edge(Edge(0)));
+    const Outcome out = ed.press(key_of('C'), 0);
+    EXPECT_TRUE(out.refused);
+    EXPECT_EQ(out.message, std::string(is_collapse_ok(tet, Edge(0)).reason()));
+    EXPECT_TRUE(test::identical(ed.mesh(), tet));
+    EXPECT_EQ(ed.history().undo_steps(), 0u);
+}
+
+TEST(Editor, SplitSelectsTheNewVertex) {
+    const Mesh cube = shapes::cube();
+    const Edge e = edge_of(cube, 0, 6);
+    Mesh expected = cube;
+    const Vertex m = *split(expected, e);
+
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::edge(e));
+    const Outcome out = ed.press(key_of('S'), 0);
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    EXPECT_EQ(ed.selection().kind, Kind::Vertex);
+    EXPECT_EQ(ed.selection().index, m.idx());
+    EXPECT_EQ(m.idx(), 8u);
+    EXPECT_EQ(out.message, "split edge " + std::to_string(e.idx()) + ": new vertex 8");
+    EXPECT_EQ(ed.mesh().position(m), (Vec3{-1, 0, 0}));
+    EXPECT_VALID(ed.mesh());
+}
+
+TEST(Editor, CollapseSelectsSurvivorAndCollectsGarbage) {
+    const Mesh ico = shapes::icosphere(1);
+    const Edge e = Edge(17);
+    const Vertex a = ico.from_vertex(Mesh::halfedge(e, 0));
+    const Vertex b = ico.to_vertex(Mesh::halfedge(e, 0));
+    const Vertex survivor(std::min(a.idx(), b.idx()));
+    const Vec3 mid = 0.5 * (ico.position(a) + ico.position(b));
+    Mesh expected = ico;
+    ASSERT_TRUE(collapse(expected, e));
+    expected.garbage_collection();
+
+    Editor ed = editor_with(ico);
+    ed.select(ElementRef::edge(e));
+    const Outcome out = ed.press(key_of('C'), 0);
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_FALSE(ed.mesh().has_garbage());
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    EXPECT_VALID(ed.mesh());
+    ASSERT_EQ(ed.selection().kind, Kind::Vertex);
+    EXPECT_EQ(ed.selection().index, survivor.idx());
+    EXPECT_EQ(ed.mesh().position(Vertex(ed.selection().index)), mid);
+    EXPECT_EQ(out.message, "collapsed edge 17 into vertex " + std::to_string(survivor.idx()));
+    EXPECT_EQ(ed.mesh().n_vertices(), ico.n_vertices() - 1);
+}
+
+TEST(Editor, SelectionIsRemappedWhenGarbageIsCollected) {
+    // A document that still holds tombstones (collapsed directly, not collected): selecting a
+    // high-index vertex and saving collects the garbage; the selection must follow the
+    // vertex to its new, lower index.
+    Mesh mesh = shapes::icosphere(1);
+    const Edge e = Edge(3);
+    const std::uint32_t deleted = std::max(mesh.from_vertex(Mesh::halfedge(e, 0)).idx(),
+                                           mesh.to_vertex(Mesh::halfedge(e, 0)).idx());
+    ASSERT_TRUE(collapse(mesh, e));
+    ASSERT_TRUE(mesh.has_garbage());
+    const Vertex high(static_cast<std::uint32_t>(mesh.vertices_size() - 1));
+    ASSERT_GT(high.idx(), deleted);
+    const Vec3 p = mesh.position(high);
+
+    Editor ed;
+    ed.set_document(mesh_document(mesh));
+    ed.select(ElementRef::vertex(high));
+    ASSERT_EQ(ed.selection().index, high.idx());
+    TempDir dir;
+    const Outcome out = ed.save_as(dir / "remap.obj");
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_FALSE(ed.mesh().has_garbage());
+    ASSERT_EQ(ed.selection().kind, Kind::Vertex);
+    EXPECT_EQ(ed.selection().index, high.idx() - 1);
+    EXPECT_EQ(ed.mesh().position(Vertex(ed.selection().index)), p);
+
+    // A deleted element cannot be selected at all.
+    Editor ed2;
+    ed2.set_document(mesh_document(mesh));
+    ed2.select(ElementRef::vertex(Vertex(deleted)));
+    EXPECT_TRUE(ed2.selection().is_none());
+    ed2.select(ElementRef::face(Face(9999)));
+    EXPECT_TRUE(ed2.selection().is_none());
+}
+
+TEST(Editor, RemapThroughAHandMadeMap) {
+    GarbageCollectionMap map;
+    map.vertices = {Vertex(0), Vertex(), Vertex(1), Vertex(2)};
+    map.edges = {Edge(), Edge(0), Edge(1)};
+    map.halfedges = {Halfedge(), Halfedge(), Halfedge(0), Halfedge(1), Halfedge(2), Halfedge(3)};
+    map.faces = {Face(), Face(0)};
+
+    const auto check = [&](ElementRef in, Kind kind, std::uint32_t index) {
+        const ElementRef out = remap(in, map);
+        EXPECT_EQ(out.kind, kind);
+        if (kind != Kind::None) {
+            EXPECT_EQ(out.index, index);
+        }
+    };
+    check(ElementRef::vertex(Vertex(0)), Kind::Vertex, 0);
+    check(ElementRef::vertex(Vertex(1)), Kind::None, 0);
+    check(ElementRef::vertex(Vertex(3)), Kind::Vertex, 2);
+    check(ElementRef::vertex(Vertex(4)), Kind::None, 0);  // out of range
+    check(ElementRef::edge(Edge(0)), Kind::None, 0);
+    check(ElementRef::edge(Edge(2)), Kind::Edge, 1);
+    check(ElementRef::halfedge(Halfedge(5)), Kind::Halfedge, 3);
+    check(ElementRef::halfedge(Halfedge(1)), Kind::None, 0);
+    check(ElementRef::face(Face(1)), Kind::Face, 0);
+    check(ElementRef::face(Face(0)), Kind::None, 0);
+    check(ElementRef{}, Kind::None, 0);
+}
+
+TEST(Editor, ToggleCreaseIsAnUndoableEdit) {
+    const Mesh cube = shapes::cube();
+    Editor ed = editor_with(cube);
+    const Edge e = edge_of(cube, 0, 1);
+    ed.select(ElementRef::edge(e));
+    Outcome out = ed.press(key_of('K'), 0);
+    ASSERT_FALSE(out.refused);
+    EXPECT_EQ(out.message, "edge " + std::to_string(e.idx()) + " is now a crease");
+    EXPECT_TRUE(out.changes & kDisplay);
+    auto crease = ed.mesh().get_property<Edge, std::uint8_t>(kCreaseProperty);
+    ASSERT_TRUE(crease);
+    EXPECT_EQ(crease[e], 1);
+    EXPECT_TRUE(ed.dirty());
+
+    out = ed.press(key_of('K'), 0);
+    EXPECT_EQ(out.message, "edge " + std::to_string(e.idx()) + " is no longer a crease");
+    EXPECT_EQ(crease_of(ed.mesh(), e), 0);
+    EXPECT_EQ(ed.history().undo_steps(), 2u);
+
+    ASSERT_FALSE(ed.press(key_of('Z'), kCtrl).refused);
+    EXPECT_EQ(crease_of(ed.mesh(), e), 1);
+    ASSERT_FALSE(ed.press(key_of('Z'), kCtrl).refused);
+    EXPECT_TRUE(test::identical(ed.mesh(), cube));
+    EXPECT_FALSE(ed.mesh().has_property<Edge>(kCreaseProperty)) << "bit-exact undo";
+    EXPECT_FALSE(ed.dirty());
+
+    // Boundary edges may be creased (harmless: Loop treats them as sharp anyway).
+    Editor open = editor_with(shapes::grid(2, 2));
+    open.select(ElementRef::edge(edge_of(open.mesh(), 0, 1)));
+    EXPECT_FALSE(open.press(key_of('K'), 0).refused);
+}
+
+TEST(Editor, LoopKeepsTheSelectedVertex) {
+    const Mesh cube = shapes::cube();
+    Mesh expected = cube;
+    loop_subdivide(expected);
+
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::vertex(Vertex(5)));
+    const Outcome out = ed.press(key_of('L'), 0);
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(out.message, "Loop: 48 faces");
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    EXPECT_EQ(ed.selection().kind, Kind::Vertex);
+    EXPECT_EQ(ed.selection().index, 5u);
+
+    // U is Loop too; any other selection is cleared (indices change).
+    ed.select(ElementRef::edge(Edge(3)));
+    ASSERT_FALSE(ed.press(key_of('U'), 0).refused);
+    EXPECT_TRUE(ed.selection().is_none());
+    EXPECT_EQ(ed.mesh().n_faces(), 192u);
+    EXPECT_EQ(ed.history().undo_steps(), 2u);
+
+    Editor empty = editor_with(Mesh());
+    EXPECT_TRUE(empty.press(key_of('L'), 0).refused);
+}
+
+}  // namespace
+}  // namespace meshedit::viewer
