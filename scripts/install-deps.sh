@@ -17,7 +17,7 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libgtest-dev libgmock-dev libbenchmark-dev
     clang-format
-    libpugixml-dev libtinygltf-dev nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
+    libpugixml-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
     assimp-utils assimp-testmodels
     libosmesa6-dev libgl-dev libglm-dev libopenimageio-dev openimageio-tools
     libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri

@@ -14,7 +14,7 @@ set(rules
     "core|^(include/meshedit|src)/core/|^core/|^sys/mman\\.h$"
     "bezier|^(include/meshedit|src)/bezier/|^(core|bezier)/|^$"
     "files|^(include/meshedit|src)/files/|^(core|files)/|^(${std_posix})$"
-    "io|^(include/meshedit|src)/io/|^(core|bezier|files|io)/|^(${std_posix}|pugixml\\.hpp|tiny_gltf\\.h|tiny_obj_loader\\.h)$"
+    "io|^(include/meshedit|src)/io/|^(core|bezier|files|io)/|^(${std_posix}|pugixml\\.hpp|tiny_gltf\\.h)$"
     "ops|^(include/meshedit|src)/ops/|^(core|ops)/|^$"
     "render, GL-free part (overlay geometry, camera)|^(include/meshedit/render/(overlay|camera|shading)\\.h|src/render/(overlay|camera|scene_marks|shading)\\.cpp)$|^(core|bezier)/|render/(overlay|camera|shading)\\.h$|^glm/.*$"
     "render|^(include/meshedit|src)/render/|^(core|bezier|files|render)/|^(${gl}|OpenImageIO/imageio\\.h|unistd\\.h)$"

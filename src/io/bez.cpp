@@ -50,12 +50,7 @@ std::string quoted(std::string_view token) {
 /// lines for messages.
 class Scanner {
 public:
-    explicit Scanner(std::string_view text) : text_(text) {
-        // A UTF-8 byte order mark from a Windows editor is not content.
-        if (text_.substr(0, 3) == "\xEF\xBB\xBF") {
-            pos_ = 3;
-        }
-    }
+    explicit Scanner(std::string_view text) : text_(text) {}
 
     /// The next token, or false at the end of the text.
     bool next(std::string_view& token) {
@@ -164,9 +159,11 @@ std::string plural(std::uint64_t n, const char* singular, const char* plural_for
 }  // namespace
 
 std::vector<BezierPatch> read_bez(const std::filesystem::path& path) {
-    const std::string file = path.string();
-    const std::string text = read_file(path);
-    Scanner scanner(text);
+    return parse_bez(read_file(path), path.string());
+}
+
+std::vector<BezierPatch> parse_bez(std::string_view bytes, const std::string& file) {
+    Scanner scanner(io_util::text_of(bytes, file));
     std::string_view token;
     if (!scanner.next(token)) {
         throw IoError(file, scanner.end_where(),
@@ -209,9 +206,11 @@ std::vector<BezierPatch> read_bez(const std::filesystem::path& path) {
 }
 
 BezierCurve read_bzc(const std::filesystem::path& path) {
-    const std::string file = path.string();
-    const std::string text = read_file(path);
-    Scanner scanner(text);
+    return parse_bzc(read_file(path), path.string());
+}
+
+BezierCurve parse_bzc(std::string_view bytes, const std::string& file) {
+    Scanner scanner(io_util::text_of(bytes, file));
     std::string_view token;
     if (!scanner.next(token)) {
         throw IoError(file, scanner.end_where(),

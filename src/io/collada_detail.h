@@ -21,9 +21,9 @@ namespace meshedit::collada {
 /// node offsets refer to.
 class Document {
 public:
-    /// Reads, decodes (UTF-8 with or without BOM, UTF-16 LE/BE) and parses `path`.
-    /// \throws IoError for a missing, empty, binary or malformed file.
-    explicit Document(const std::string& path);
+    /// Decodes (UTF-8 with or without BOM, UTF-16 LE/BE) and parses a file's `bytes`; `name`
+    /// names the file in errors. \throws IoError for an empty, binary or malformed file.
+    Document(std::string bytes, const std::string& name);
     // pugixml's strings point into text_.
     Document(const Document&) = delete;
     Document& operator=(const Document&) = delete;

@@ -332,8 +332,8 @@ TokenError scan_index(const char*& p, const char* end, std::uint32_t& value) {
 
 }  // namespace
 
-Document::Document(const std::string& path) : file_(path) {
-    text_ = decode(file_, read_file(file_));
+Document::Document(std::string bytes, const std::string& name) : file_(name) {
+    text_ = decode(file_, std::move(bytes));
     if (std::all_of(text_.begin(), text_.end(), is_space)) {
         throw IoError(file_, "", "empty file");
     }

@@ -131,9 +131,6 @@ public:
             }
             out_.notices.push_back("the file has no scene; loaded every mesh untransformed");
         }
-        if (out_.soup.n_faces() == 0) {
-            throw IoError(file_, "", "the default scene has no triangle primitives");
-        }
         if (skipped_primitives_ > 0) {
             out_.notices.push_back("ignored " + std::to_string(skipped_primitives_) +
                                    " point or line primitive(s)");
@@ -447,18 +444,21 @@ int add_view(tinygltf::Model& model, std::size_t offset, std::size_t length, int
 }  // namespace
 
 MeshSoup read_gltf(const std::filesystem::path& path) {
-    const std::string file = path.string();
-    const std::string bytes = read_file(path);
+    return parse_gltf(read_file(path), path.string(), path.parent_path());
+}
+
+MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
+                    const std::optional<std::filesystem::path>& folder) {
     if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
         throw IoError(file, "", "file too large for the glTF loader (over 4 GiB)");
     }
     // The content decides, not the extension: a binary glTF always starts with "glTF".
-    const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+    const bool binary = bytes.substr(0, 4) == "glTF";
     gltf_guard::check_json_depth(bytes, binary, file);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skip_image, nullptr);
-    const std::string base_dir = path.parent_path().string();
-    gltf_guard::ConfinedFiles files(base_dir, kMaxBufferFileBytes);
+    const std::string base_dir = folder ? folder->string() : std::string();
+    gltf_guard::ConfinedFiles files(folder, kMaxBufferFileBytes);
     loader.SetFsCallbacks(files.callbacks());
     tinygltf::Model model;
     std::string err, warn;

@@ -67,8 +67,9 @@ void check_json_depth(std::string_view bytes, bool binary, const std::string& fi
     }
 }
 
-ConfinedFiles::ConfinedFiles(const fs::path& folder, std::size_t max_bytes)
-    : max_bytes_(max_bytes) {
+ConfinedFiles::ConfinedFiles(const std::optional<fs::path>& given, std::size_t max_bytes)
+    : max_bytes_(max_bytes), no_files_(!given) {
+    const fs::path folder = given.value_or(fs::path());
     std::error_code ec;
     root_ =
         fs::weakly_canonical(folder.empty() ? fs::current_path(ec) : fs::absolute(folder, ec), ec);
@@ -105,6 +106,10 @@ fs::path ConfinedFiles::admit(const std::string& path) {
         return {};
     }
     const std::string uri = uri_of(path);
+    if (no_files_) {
+        refuse(uri, "names a file, but the glTF was given without a folder to read it from");
+        return {};
+    }
     if (fs::path(uri).is_absolute()) {
         refuse(uri, "is an absolute path; only files in the model's folder may be read");
         return {};

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -27,7 +28,8 @@ void check_json_depth(std::string_view bytes, bool binary, const std::string& fi
 /// for the error message (tinygltf itself only says "file not found").
 class ConfinedFiles {
 public:
-    ConfinedFiles(const std::filesystem::path& folder, std::size_t max_bytes);
+    /// With no folder, no file may be read at all.
+    ConfinedFiles(const std::optional<std::filesystem::path>& folder, std::size_t max_bytes);
 
     /// Callbacks for TinyGLTF::SetFsCallbacks(); valid while this object lives.
     tinygltf::FsCallbacks callbacks();
@@ -51,7 +53,8 @@ private:
     std::string uri_of(const std::string& path) const;
 
     std::filesystem::path root_;  // canonical
-    std::string prefix_;          // what tinygltf puts before a URI: the folder and a '/'
+    bool no_files_ = false;
+    std::string prefix_;  // what tinygltf puts before a URI: the folder and a '/'
     std::size_t max_bytes_;
     std::string refusal_;
 };

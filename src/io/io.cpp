@@ -36,13 +36,20 @@ MeshSoup read_soup(const fs::path& path) {
                           ? "no file extension; expected .dae, .gltf, .glb or .obj"
                           : "unknown extension '" + ext + "'; expected .dae, .gltf, .glb or .obj");
     }
-    if (ext == ".dae") {
-        return read_collada(path);
+    MeshSoup soup = ext == ".dae"   ? read_collada(path)
+                    : ext == ".obj" ? read_obj(path)
+                                    : read_gltf(path);
+    // One wording, whatever the format, for a file with nothing to load (an empty OBJ, a
+    // text file named .obj, a glTF of lines only): never an empty mesh from a file.
+    if (soup.soup.n_faces() == 0) {
+        std::string why = "holds no faces to load";
+        for (std::size_t i = 0; i < soup.notices.size(); ++i) {
+            why += (i == 0 ? " (" : "; ") + soup.notices[i] +
+                   (i + 1 == soup.notices.size() ? ")" : "");
+        }
+        throw IoError(path.string(), "", why);
     }
-    if (ext == ".obj") {
-        return read_obj(path);
-    }
-    return read_gltf(path);
+    return soup;
 }
 
 LoadedMesh read_mesh(const fs::path& path) {

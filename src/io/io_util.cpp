@@ -2,9 +2,25 @@
 
 #include "io_util.h"
 
+#include <algorithm>
 #include <charconv>
 
 namespace meshedit::io_util {
+
+std::string_view text_of(std::string_view bytes, const std::string& name) {
+    if (bytes.substr(0, 3) == "\xEF\xBB\xBF") {
+        return bytes.substr(3);
+    }
+    const bool utf16_bom = bytes.substr(0, 2) == "\xFF\xFE" || bytes.substr(0, 2) == "\xFE\xFF";
+    const std::string_view first_line = bytes.substr(0, std::min(bytes.find('\n'), bytes.size()));
+    // ASCII text in UTF-16 has a NUL beside every character.
+    const bool wide = first_line.size() >= 2 && first_line.find('\0') != std::string_view::npos &&
+                      (first_line[0] == '\0' || first_line[1] == '\0');
+    if (utf16_bom || wide) {
+        throw IoError(name, "", "UTF-16 or UTF-32 text; save the file as UTF-8");
+    }
+    return bytes;
+}
 
 std::string format_double(double value) {
     char buf[32];

@@ -5,11 +5,17 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "meshedit/core/mesh.h"
 #include "meshedit/files/files.h"
 
 namespace meshedit::io_util {
+
+/// The text of a text format's file: `bytes` without a UTF-8 byte-order mark. \throws
+/// IoError naming `name` for UTF-16 or UTF-32 text (a byte-order mark or NUL bytes in the first
+/// line), which the text formats do not read.
+std::string_view text_of(std::string_view bytes, const std::string& name);
 
 /// Shortest decimal text that reads back as exactly `value` (std::to_chars).
 std::string format_double(double value);

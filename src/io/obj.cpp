@@ -1,13 +1,18 @@
-// Wavefront OBJ through tinyobjloader (the double-precision build, so a written file reads
-// back to the same doubles). Polygons are kept: triangulate = false.
+// Wavefront OBJ: a reader of our own (every number through std::from_chars, so a written file
+// reads back to the same doubles; every index checked, with the line it is on) and the
+// writer. Polygons stay polygons.
+//
+// Read: `v x y z [w | r g b]`, `vn x y z`, `vt …` (counted, for index checks), faces `f` with
+// corners `v`, `v/vt`, `v//vn`, `v/vt/vn` and negative (relative) indices; `l` and `p` are
+// counted and ignored, as are `o g s usemtl mtllib` and comments. Faces with fewer than three
+// corners are passed on, and build_mesh() drops and reports them as it does for every format.
 
 #include "meshedit/io/obj.h"
-
-#include <tiny_obj_loader.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -17,212 +22,235 @@
 namespace meshedit {
 namespace {
 
-/// The 1-based line of the `which`-th (0-based) line starting with `keyword` ("v", "f"):
-/// tinyobjloader does not keep line numbers, so errors found after parsing look them up.
-int line_of(std::string_view text, std::string_view keyword, std::size_t which) {
-    int line = 1;
-    std::size_t seen = 0;
-    std::size_t pos = 0;
-    while (pos < text.size()) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) {
-            end = text.size();
+std::string where_line(std::size_t line) {
+    return "line " + std::to_string(line);
+}
+
+class ObjReader {
+public:
+    ObjReader(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
+
+    MeshSoup read() {
+        std::size_t pos = 0;
+        while (pos < text_.size()) {
+            std::size_t end = text_.find('\n', pos);
+            if (end == std::string_view::npos) {
+                end = text_.size();
+            }
+            ++line_;
+            read_line(text_.substr(pos, end - pos));
+            pos = end + 1;
         }
-        std::string_view l = text.substr(pos, end - pos);
-        const std::size_t first = l.find_first_not_of(" \t");
-        if (first != std::string_view::npos) {
-            l.remove_prefix(first);
-            if (l.substr(0, keyword.size()) == keyword && l.size() > keyword.size() &&
-                (l[keyword.size()] == ' ' || l[keyword.size()] == '\t')) {
-                if (seen++ == which) {
-                    return line;
+        finish();
+        return std::move(out_);
+    }
+
+private:
+    static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f'; }
+
+    // The next whitespace-separated token of `l` (removed from it), or empty.
+    static std::string_view token(std::string_view& l) {
+        std::size_t b = 0;
+        while (b < l.size() && is_space(l[b])) {
+            ++b;
+        }
+        std::size_t e = b;
+        while (e < l.size() && !is_space(l[e])) {
+            ++e;
+        }
+        const std::string_view t = l.substr(b, e - b);
+        l.remove_prefix(e);
+        return t;
+    }
+
+    [[noreturn]] void fail(const std::string& problem) const {
+        throw IoError(file_, where_line(line_), problem);
+    }
+
+    double number(std::string_view t) const {
+        // from_chars does not take the leading '+' some exporters write.
+        const std::size_t skip = t.size() > 1 && t[0] == '+' ? 1 : 0;
+        double x = 0.0;
+        const auto [ptr, ec] = std::from_chars(t.data() + skip, t.data() + t.size(), x);
+        if (ec != std::errc() || ptr != t.data() + t.size()) {
+            fail("expected a number, found '" + std::string(t.substr(0, 24)) + "'");
+        }
+        return x;
+    }
+
+    Vec3 triple(std::string_view& rest, const char* what) const {
+        Vec3 p;
+        for (int i = 0; i < 3; ++i) {
+            const std::string_view t = token(rest);
+            if (t.empty()) {
+                fail(std::string("a ") + what + " needs three coordinates");
+            }
+            p[i] = number(t);
+        }
+        return p;
+    }
+
+    void read_line(std::string_view l) {
+        if (l.find('\0') != std::string_view::npos) {
+            fail("binary data (a NUL byte): not an OBJ text file");
+        }
+        const std::string_view key = token(l);
+        if (key.empty() || key[0] == '#') {
+            return;
+        }
+        if (key == "v") {
+            const Vec3 p = triple(l, "vertex");
+            if (!is_finite(p)) {
+                fail("vertex " + std::to_string(out_.soup.positions.size() + 1) +
+                     " is not finite (NaN or infinity)");
+            }
+            out_.soup.positions.push_back(p);
+        } else if (key == "vn") {
+            const Vec3 n = triple(l, "normal");
+            if (!is_finite(n)) {
+                fail("normal " + std::to_string(normals_.size() + 1) +
+                     " is not finite (NaN or infinity)");
+            }
+            normals_.push_back(n);
+        } else if (key == "vt") {
+            ++n_texcoords_;
+        } else if (key == "f") {
+            read_face(l);
+        } else if (key == "l" || key == "p") {
+            ++points_and_lines_;
+        }
+        // o, g, s, usemtl, mtllib and anything else: nothing to load.
+    }
+
+    // A 1-based, possibly negative OBJ index into `count` elements so far → 0-based. Absolute
+    // indices are checked against the final count in finish() (some files name vertices
+    // before they define them).
+    std::int64_t index(std::string_view t, std::size_t count, const char* what) const {
+        std::int64_t i = 0;
+        const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), i);
+        if (ec == std::errc::result_out_of_range) {
+            fail("face " + std::to_string(face_ + 1) + ": " + what + " index " + std::string(t) +
+                 " is out of range");
+        }
+        if (ec != std::errc() || ptr != t.data() + t.size()) {
+            fail("face " + std::to_string(face_ + 1) + ": bad " + what + " index '" +
+                 std::string(t.substr(0, 24)) + "'");
+        }
+        if (i == 0) {
+            fail("face " + std::to_string(face_ + 1) + " uses " + what +
+                 " index 0; OBJ indices start at 1");
+        }
+        if (i < 0) {
+            const std::int64_t resolved = static_cast<std::int64_t>(count) + i;
+            if (resolved < 0) {
+                fail("face " + std::to_string(face_ + 1) + " refers to a " + what +
+                     " that does not exist (relative index " + std::string(t) + ", " +
+                     std::to_string(count) + " so far)");
+            }
+            return resolved;
+        }
+        return i - 1;
+    }
+
+    void read_face(std::string_view l) {
+        bool pending = false;  // an absolute index beyond what is defined so far
+        for (std::string_view corner = token(l); !corner.empty(); corner = token(l)) {
+            const std::size_t s1 = corner.find('/');
+            const std::int64_t v =
+                index(corner.substr(0, s1), out_.soup.positions.size(), "vertex");
+            std::int64_t n = -1;
+            if (s1 != std::string_view::npos) {
+                const std::string_view rest = corner.substr(s1 + 1);
+                const std::size_t s2 = rest.find('/');
+                if (!rest.substr(0, s2).empty()) {
+                    const std::int64_t t = index(rest.substr(0, s2), n_texcoords_, "texture");
+                    pending |= static_cast<std::size_t>(t) >= n_texcoords_;
+                }
+                if (s2 != std::string_view::npos && !rest.substr(s2 + 1).empty()) {
+                    n = index(rest.substr(s2 + 1), normals_.size(), "normal");
+                    pending |= static_cast<std::size_t>(n) >= normals_.size();
+                }
+            }
+            if (v > std::int64_t{kInvalidIndex} - 1) {
+                fail("face " + std::to_string(face_ + 1) + ": vertex index " +
+                     std::to_string(v + 1) + " is out of range");
+            }
+            pending |= static_cast<std::size_t>(v) >= out_.soup.positions.size();
+            out_.soup.indices.push_back(static_cast<std::uint32_t>(v));
+            corner_normals_.push_back(n);
+        }
+        out_.soup.face_offsets.push_back(static_cast<std::uint32_t>(out_.soup.indices.size()));
+        if (pending) {
+            pending_.push_back({face_, line_});
+        }
+        ++face_;
+    }
+
+    void finish() {
+        const std::size_t nv = out_.soup.positions.size();
+        for (const auto& [face, line] : pending_) {
+            for (std::uint32_t c = out_.soup.face_offsets[face];
+                 c < out_.soup.face_offsets[face + 1]; ++c) {
+                const std::int64_t n = corner_normals_[c];
+                if (out_.soup.indices[c] >= nv ||
+                    (n >= 0 && static_cast<std::size_t>(n) >= normals_.size())) {
+                    throw IoError(file_, where_line(line),
+                                  "face " + std::to_string(face + 1) + " refers to a " +
+                                      (out_.soup.indices[c] >= nv ? "vertex" : "normal") +
+                                      " that does not exist (the file has " + std::to_string(nv) +
+                                      " vertices and " + std::to_string(normals_.size()) +
+                                      " normals)");
                 }
             }
         }
-        ++line;
-        pos = end + 1;
-    }
-    return 0;
-}
-
-std::string where_line(int line) {
-    return line > 0 ? "line " + std::to_string(line) : std::string();
-}
-
-/// The first three numbers of every line starting with `keyword` ("v", "vn"), parsed with
-/// std::from_chars. tinyobjloader's own number parser is off by an ulp now and then, and a
-/// file MeshEdit writes must read back to the same doubles. Returns false (and leaves the
-/// loader's values in charge) on anything unusual; throws on a non-number or a non-finite one.
-bool parse_triples(std::string_view text, std::string_view keyword, const std::string& file,
-                   std::vector<Vec3>& out) {
-    out.clear();
-    int line = 0;
-    std::size_t pos = 0;
-    while (pos < text.size()) {
-        ++line;
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) {
-            end = text.size();
+        // Per-vertex normals exist when every corner of a vertex names the same `vn`.
+        std::vector<std::int64_t> normal_of(nv, -1);
+        bool per_vertex = !normals_.empty();
+        for (std::size_t c = 0; c < out_.soup.indices.size() && per_vertex; ++c) {
+            const std::int64_t n = corner_normals_[c];
+            std::int64_t& mine = normal_of[out_.soup.indices[c]];
+            per_vertex = n >= 0 && (mine < 0 || mine == n);
+            mine = n;
         }
-        std::string_view l = text.substr(pos, end - pos);
-        pos = end + 1;
-        const std::size_t first = l.find_first_not_of(" \t");
-        if (first == std::string_view::npos) {
-            continue;
-        }
-        l.remove_prefix(first);
-        if (l.substr(0, keyword.size()) != keyword || l.size() == keyword.size() ||
-            (l[keyword.size()] != ' ' && l[keyword.size()] != '\t')) {
-            continue;
-        }
-        l.remove_prefix(keyword.size());
-        Vec3 p;
-        for (int i = 0; i < 3; ++i) {
-            const std::size_t b = l.find_first_not_of(" \t\r");
-            if (b == std::string_view::npos) {
-                return false;  // short line: let tinyobjloader's defaults stand
+        if (per_vertex) {
+            out_.normals.resize(nv);
+            for (std::size_t v = 0; v < nv; ++v) {
+                if (normal_of[v] >= 0) {
+                    out_.normals[v] = normals_[static_cast<std::size_t>(normal_of[v])];
+                }
             }
-            l.remove_prefix(b);
-            const std::size_t e = std::min(l.find_first_of(" \t\r"), l.size());
-            const std::string_view token = l.substr(0, e);
-            // from_chars does not take the leading '+' some exporters write.
-            const std::size_t skip = token.size() > 1 && token[0] == '+' ? 1 : 0;
-            const auto [ptr, ec] =
-                std::from_chars(token.data() + skip, token.data() + token.size(), p[i]);
-            if (ec != std::errc() || ptr != token.data() + token.size()) {
-                throw IoError(
-                    file, where_line(line),
-                    "expected a number, found '" + std::string(token.substr(0, 24)) + "'");
-            }
-            if (!std::isfinite(p[i])) {
-                throw IoError(file, where_line(line),
-                              std::string(keyword == "v" ? "vertex " : "normal ") +
-                                  std::to_string(out.size() + 1) +
-                                  " is not finite (NaN or infinity)");
-            }
-            l.remove_prefix(e);
         }
-        out.push_back(p);
+        if (points_and_lines_ > 0) {
+            out_.notices.push_back("ignored " + std::to_string(points_and_lines_) +
+                                   " point and line element(s); only faces are loaded");
+        }
     }
-    return true;
-}
 
-/// tinyobjloader's messages end in blank lines and sometimes carry a "line N" of their own.
-std::string trimmed(std::string s) {
-    while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) {
-        s.pop_back();
-    }
-    for (char& c : s) {
-        if (c == '\n') {
-            c = ' ';
-        }
-    }
-    return s;
-}
+    std::string_view text_;
+    std::string file_;
+    MeshSoup out_;
+    std::vector<Vec3> normals_;
+    std::vector<std::int64_t> corner_normals_;  // per corner: its vn, or -1
+    std::size_t n_texcoords_ = 0;
+    std::size_t points_and_lines_ = 0;
+    std::size_t line_ = 0;
+    std::size_t face_ = 0;
+    struct Pending {
+        std::size_t face;
+        std::size_t line;
+    };
+    std::vector<Pending> pending_;
+};
 
 }  // namespace
 
+MeshSoup parse_obj(std::string_view bytes, const std::string& name) {
+    return ObjReader(io_util::text_of(bytes, name), name).read();
+}
+
 MeshSoup read_obj(const std::filesystem::path& path) {
-    const std::string file = path.string();
-    // Read the text ourselves: one error path for missing files, and the text is needed for
-    // line numbers anyway. Materials are not used; parsing from a string skips `mtllib`.
     const std::string text = read_file(path);
-
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = false;
-    config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromString(text, "", config)) {
-        throw IoError(file, "", trimmed(reader.Error().empty() ? "cannot parse" : reader.Error()));
-    }
-
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    std::vector<Vec3> exact_positions, exact_normals;
-    const bool have_exact_positions = parse_triples(text, "v", file, exact_positions) &&
-                                      exact_positions.size() * 3 == attrib.vertices.size();
-    const bool have_exact_normals = parse_triples(text, "vn", file, exact_normals) &&
-                                    exact_normals.size() * 3 == attrib.normals.size();
-    MeshSoup out;
-    PolygonSoup& soup = out.soup;
-    const std::size_t n_vertices = attrib.vertices.size() / 3;
-    soup.positions.reserve(n_vertices);
-    for (std::size_t i = 0; i < n_vertices; ++i) {
-        const Vec3 p = have_exact_positions
-                           ? exact_positions[i]
-                           : Vec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
-                                  attrib.vertices[3 * i + 2]);
-        if (!is_finite(p)) {
-            throw IoError(file, where_line(line_of(text, "v", i)),
-                          "vertex " + std::to_string(i + 1) + " is not finite (NaN or infinity)");
-        }
-        soup.positions.push_back(p);
-    }
-
-    // Per-vertex normals exist when every corner of a vertex names the same `vn`.
-    const std::size_t n_normals = attrib.normals.size() / 3;
-    std::vector<int> normal_of(n_vertices, -1);
-    bool per_vertex_normals = n_normals > 0;
-
-    std::size_t face = 0;
-    std::size_t points_and_lines = 0;
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-        points_and_lines += shape.lines.num_line_vertices.size() + shape.points.indices.size();
-        std::size_t corner = 0;
-        for (const unsigned char valence : shape.mesh.num_face_vertices) {
-            if (corner + valence > shape.mesh.indices.size()) {
-                break;  // inconsistent counts: reported below
-            }
-            for (std::size_t k = 0; k < valence; ++k) {
-                const tinyobj::index_t idx = shape.mesh.indices[corner + k];
-                // Negative (relative) indices are already resolved; one that points before
-                // the first vertex comes out negative.
-                if (idx.vertex_index < 0 ||
-                    static_cast<std::size_t>(idx.vertex_index) >= n_vertices) {
-                    throw IoError(file, where_line(line_of(text, "f", face)),
-                                  "face " + std::to_string(face + 1) +
-                                      " refers to a vertex that does not exist (the file has " +
-                                      std::to_string(n_vertices) + " vertices)");
-                }
-                const auto v = static_cast<std::uint32_t>(idx.vertex_index);
-                soup.indices.push_back(v);
-                if (per_vertex_normals) {
-                    const int n = idx.normal_index;
-                    if (n < 0 || static_cast<std::size_t>(n) >= n_normals ||
-                        (normal_of[v] >= 0 && normal_of[v] != n)) {
-                        per_vertex_normals = false;
-                    } else {
-                        normal_of[v] = n;
-                    }
-                }
-            }
-            corner += valence;
-            soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
-            ++face;
-        }
-        // tinyobjloader counts corners in an unsigned char: a face with more than 255 corners
-        // wraps around and the counts stop adding up. Refuse rather than load wrong faces.
-        if (corner != shape.mesh.indices.size()) {
-            throw IoError(file, "",
-                          "a face has more than 255 corners, which the OBJ loader cannot read");
-        }
-    }
-
-    if (per_vertex_normals) {
-        out.normals.resize(n_vertices);
-        for (std::size_t v = 0; v < n_vertices; ++v) {
-            if (const int n = normal_of[v]; n >= 0) {
-                out.normals[v] = have_exact_normals
-                                     ? exact_normals[static_cast<std::size_t>(n)]
-                                     : Vec3(attrib.normals[3 * n], attrib.normals[3 * n + 1],
-                                            attrib.normals[3 * n + 2]);
-            }
-        }
-    }
-    if (points_and_lines > 0) {
-        out.notices.push_back("ignored " + std::to_string(points_and_lines) +
-                              " point and line element(s); only faces are loaded");
-    }
-    return out;
+    return parse_obj(text, path.string());
 }
 
 void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
@@ -238,7 +266,7 @@ void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
                        std::to_string(soup.n_faces()) + " faces\n";
     text.reserve(soup.positions.size() * (flags.write_normals ? 140 : 70) +
                  soup.indices.size() * 14);
-    // Shortest round-trip decimals keep every double exactly (tinyobjloader_double).
+    // Shortest round-trip decimals keep every double exactly.
     auto put3 = [&text](const char* key, const Vec3& p) {
         text += key;
         for (int i = 0; i < 3; ++i) {

@@ -414,7 +414,11 @@ MeshSoup SceneReader::read() {
 }  // namespace
 
 MeshSoup read_collada(const std::filesystem::path& path) {
-    const Document doc(path.string());
+    return parse_collada(read_file(path), path.string());
+}
+
+MeshSoup parse_collada(std::string bytes, const std::string& name) {
+    const Document doc(std::move(bytes), name);
     return SceneReader(doc).read();
 }
 

@@ -97,8 +97,7 @@ TEST(Obj, Errors) {
                     "abc.obj: line 2: expected a number, found 'abc'");
     test::spit(dir / "plus.obj", "v +1 0 0\r\nv 1 +2.5e0 0\r\nv 0 1 -0\r\nf 1 2 3\r\n");
     EXPECT_EQ(read_obj(dir / "plus.obj").soup.positions[1], Vec3(1, 2.5, 0));
-    // tinyobjloader cannot count past 255 corners; the reader says so instead of loading
-    // wrong faces.
+    // Polygons of any size (tinyobjloader, used before, counted corners in a byte).
     std::string big;
     // Appended piecewise: `"v " + std::string` trips a GCC 12 -Wrestrict false positive.
     for (int i = 0; i < 300; ++i) {
@@ -114,11 +113,56 @@ TEST(Obj, Errors) {
         big += std::to_string(i);
     }
     test::spit(dir / "big.obj", big + "\n");
-    EXPECT_CONTAINS(io_error_of([&] { read_obj(dir / "big.obj"); }),
-                    "big.obj: a face has more than 255 corners");
+    const MeshSoup big_soup = read_obj(dir / "big.obj");
+    ASSERT_EQ(big_soup.soup.n_faces(), 1u);
+    EXPECT_EQ(big_soup.soup.indices.size(), 300u);
     test::spit(dir / "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
     EXPECT_CONTAINS(io_error_of([&] { read_obj(dir / "nan.obj"); }),
                     "nan.obj: line 2: vertex 2 is not finite");
+}
+
+// What loaded silently wrong before: a byte-order mark that ate the first vertex, an index
+// that overflowed into a relative one, faces with fewer than three corners that vanished.
+TEST(Obj, ByteOrderMarkIsSkipped) {
+    const MeshSoup soup = parse_obj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "bom.obj");
+    ASSERT_EQ(soup.soup.positions.size(), 3u);
+    EXPECT_EQ(faces_of(soup.soup), (std::vector<std::vector<std::uint32_t>>{{0, 1, 2}}));
+}
+
+TEST(Obj, Utf16AndBinaryDataAreRefused) {
+    const std::string utf16(
+        "\xFF\xFEv\0 \0"
+        "0\0",
+        9);
+    EXPECT_CONTAINS(io_error_of([&] { parse_obj(utf16, "wide.obj"); }),
+                    "wide.obj: UTF-16 or UTF-32 text; save the file as UTF-8");
+    const std::string nul("v 0 0 0\n\0\0\0\0", 12);
+    EXPECT_CONTAINS(io_error_of([&] { parse_obj(nul, "zero.obj"); }),
+                    "zero.obj: line 2: binary data (a NUL byte): not an OBJ text file");
+}
+
+TEST(Obj, IndicesAreCheckedWithTheirLine) {
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    EXPECT_CONTAINS(io_error_of([&] { parse_obj(tri + "f 1 2 99999999999999999999\n", "o.obj"); }),
+                    "o.obj: line 4: face 1: vertex index 99999999999999999999 is out of range");
+    EXPECT_CONTAINS(io_error_of([&] { parse_obj(tri + "f 1 2 -4\n", "r.obj"); }),
+                    "r.obj: line 4: face 1 refers to a vertex that does not exist (relative index "
+                    "-4, 3 so far)");
+    EXPECT_CONTAINS(io_error_of([&] { parse_obj(tri + "f 1 2 0\n", "z.obj"); }),
+                    "z.obj: line 4: face 1 uses vertex index 0; OBJ indices start at 1");
+    EXPECT_CONTAINS(io_error_of([&] { parse_obj(tri + "vn 0 0 1\nf 1//1 2//2 3//1\n", "n.obj"); }),
+                    "n.obj: line 5: face 1 refers to a normal that does not exist");
+    // A face may name a vertex defined after it.
+    EXPECT_EQ(parse_obj("f 1 2 3\n" + tri, "late.obj").soup.n_faces(), 1u);
+}
+
+TEST(Obj, FacesWithFewerThanThreeCornersAreDroppedAndReported) {
+    test::ScratchDir dir;
+    test::spit(dir / "short.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1\nf 1 2\nf 1 2 3\n");
+    const LoadedMesh loaded = read_mesh(dir / "short.obj");
+    EXPECT_EQ(loaded.mesh.n_faces(), 1u);
+    EXPECT_EQ(loaded.repairs.dropped_faces, (std::vector<std::uint32_t>{0, 1}));
+    EXPECT_CONTAINS(loaded.repairs.summary(), "dropped 2 degenerate faces");
 }
 
 }  // namespace

@@ -12,6 +12,8 @@ namespace meshedit {
 /// and the up axis converted to Y-up. Vertex `i` of a single-geometry file is position `i`
 /// of its `<float_array>`. \throws IoError naming the file and the XML element.
 MeshSoup read_collada(const std::filesystem::path& path);
+/// The same from the file's bytes (parsed in place); `name` names it in errors.
+MeshSoup parse_collada(std::string bytes, const std::string& name);
 
 /// Writes one `<geometry>` with a `<polylist>`, positions and (if flags say so) normals, as
 /// COLLADA 1.4.1, atomically. \throws IoError.

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -71,6 +72,9 @@ void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const IoFla
 std::vector<BezierPatch> read_bez(const std::filesystem::path& path);
 /// A Bezier curve of a .bzc file (docs/spec.md §2: N, then N points x y; N ≥ 2). \throws IoError.
 BezierCurve read_bzc(const std::filesystem::path& path);
+/// read_bez() and read_bzc() from the file's bytes; `name` names it in errors.
+std::vector<BezierPatch> parse_bez(std::string_view bytes, const std::string& name);
+BezierCurve parse_bzc(std::string_view bytes, const std::string& name);
 /// Writes a .bzc file atomically. \throws IoError.
 void write_bzc(const BezierCurve& curve, const std::filesystem::path& path);
 

@@ -1,8 +1,11 @@
 #pragma once
 /// \file
-/// Wavefront OBJ through tinyobjloader; polygons are kept as polygons.
+/// Wavefront OBJ, read by MeshEdit's own parser (exact doubles, every index checked); polygons
+/// are kept as polygons.
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "meshedit/io/io.h"
 
@@ -10,6 +13,8 @@ namespace meshedit {
 
 /// \throws IoError naming the file and line.
 MeshSoup read_obj(const std::filesystem::path& path);
+/// The same from the file's bytes; `name` names it in errors.
+MeshSoup parse_obj(std::string_view bytes, const std::string& name);
 /// Writes `v` and `f` lines (and `vn` if flags say so), atomically. \throws IoError.
 void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags = {});
 
