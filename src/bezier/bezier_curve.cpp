@@ -4,6 +4,7 @@
 
 #include "meshedit/bezier/bezier_curve.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "meshedit/core/assert.h"
@@ -54,6 +55,14 @@ std::vector<std::vector<Vec3>> de_casteljau_levels(std::span<const Vec3> control
         levels.push_back(std::move(next));
     }
     return levels;
+}
+
+double de_casteljau_level_points(std::size_t n_points, int max_level) {
+    const double n = static_cast<double>(n_points);
+    const double levels =
+        max_level < 0 ? n : std::min(n, static_cast<double>(max_level) + 1.0);  // 0 … max
+    // Level k holds n − k points: the sum over k < levels.
+    return levels * n - levels * (levels - 1.0) / 2.0;
 }
 
 Vec3 de_casteljau(std::span<const Vec3> control, double t) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/core/build.h"
 
 namespace meshedit {
@@ -19,29 +20,31 @@ namespace {
 using Index = std::uint32_t;
 using Triangle = std::array<Index, 3>;
 
-// Maps every sample to a representative so that representatives are pairwise farther apart
-// than `tol`: a sample joins the first representative within `tol`, otherwise it becomes one.
-// Cells of side >= `tol` mean all candidates lie in the 27 cells around the sample.
+// Maps every sample to a representative: a sample joins the first representative within
+// min(its tolerance, the representative's), otherwise it becomes one. Tolerances are relative
+// to each patch's size, so a patch a long way off (or a huge one) cannot weld a small one
+// away. Representatives live in one grid per tolerance scale (powers of 16), each grid's cells
+// at least as wide as its tolerances: a representative that can join a sample lies within its
+// own tolerance of it, so the 27 cells around the sample in each grid hold every candidate.
 class Welder {
 public:
     /// `extent` bounds |coordinate|; cells never get so small that their indices overflow.
-    Welder(double tol, double extent) : tol_(tol) {
-        const double cell = std::max(tol, extent * 0x1p-50);
-        inv_cell_ = cell > 0.0 ? 1.0 / cell : 0.0;
-    }
+    explicit Welder(double extent) : min_cell_(extent * 0x1p-50) {}
 
-    Index add(const Vec3& p) {
-        const std::array<std::int64_t, 3> c = cell(p);
-        for (std::int64_t dx = -1; dx <= 1; ++dx) {
-            for (std::int64_t dy = -1; dy <= 1; ++dy) {
-                for (std::int64_t dz = -1; dz <= 1; ++dz) {
-                    const auto it = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
-                    if (it == cells_.end()) {
-                        continue;
-                    }
-                    for (Index r : it->second) {
-                        if (distance(points_[r], p) <= tol_) {
-                            return r;
+    Index add(const Vec3& p, double tol) {
+        for (Grid& g : grids_) {
+            const std::array<std::int64_t, 3> c = g.cell(p);
+            for (std::int64_t dx = -1; dx <= 1; ++dx) {
+                for (std::int64_t dy = -1; dy <= 1; ++dy) {
+                    for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                        const auto it = g.cells.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+                        if (it == g.cells.end()) {
+                            continue;
+                        }
+                        for (Index r : it->second) {
+                            if (distance(points_[r], p) <= std::min(tol, tols_[r])) {
+                                return r;
+                            }
                         }
                     }
                 }
@@ -49,18 +52,41 @@ public:
         }
         const Index r = static_cast<Index>(points_.size());
         points_.push_back(p);
-        cells_[key(c)].push_back(r);
+        tols_.push_back(tol);
+        Grid& g = grid_for(tol);
+        g.cells[key(g.cell(p))].push_back(r);
         return r;
     }
 
     const std::vector<Vec3>& points() const { return points_; }
 
 private:
-    std::array<std::int64_t, 3> cell(const Vec3& p) const {
-        return {static_cast<std::int64_t>(std::floor(p.x * inv_cell_)),
-                static_cast<std::int64_t>(std::floor(p.y * inv_cell_)),
-                static_cast<std::int64_t>(std::floor(p.z * inv_cell_))};
+    struct Grid {
+        int scale;  // cells are 16^scale wide (or min_cell_, whichever is larger)
+        double inv_cell;
+        std::unordered_map<std::uint64_t, std::vector<Index>> cells;
+
+        std::array<std::int64_t, 3> cell(const Vec3& p) const {
+            return {static_cast<std::int64_t>(std::floor(p.x * inv_cell)),
+                    static_cast<std::int64_t>(std::floor(p.y * inv_cell)),
+                    static_cast<std::int64_t>(std::floor(p.z * inv_cell))};
+        }
+    };
+
+    Grid& grid_for(double tol) {
+        int exponent = 0;
+        std::frexp(tol, &exponent);
+        const int scale = tol > 0.0 ? (exponent + 3) / 4 : -1000;  // 16^scale >= tol
+        for (Grid& g : grids_) {
+            if (g.scale == scale) {
+                return g;
+            }
+        }
+        const double cell = std::max(tol > 0.0 ? std::ldexp(1.0, 4 * scale) : 0.0, min_cell_);
+        grids_.push_back({scale, cell > 0.0 ? 1.0 / cell : 0.0, {}});
+        return grids_.back();
     }
+
     static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
         // Mixing hash; collisions only cost a few extra distance tests.
         std::uint64_t h = 0x9e3779b97f4a7c15ull;
@@ -70,10 +96,10 @@ private:
         return h;
     }
 
-    double tol_;
-    double inv_cell_ = 0.0;
+    double min_cell_;
     std::vector<Vec3> points_;
-    std::unordered_map<std::uint64_t, std::vector<Index>> cells_;
+    std::vector<double> tols_;
+    std::vector<Grid> grids_;
 };
 
 // Flips triangles so that neighbours across every manifold edge agree, then orients each
@@ -184,11 +210,21 @@ void orient(std::vector<Triangle>& tris, const std::vector<Vec3>& points) {
 Mesh tessellate(std::span<const BezierPatch> patches, const TessellationOptions& options) {
     const int d = std::max(options.density, 1);
     const std::size_t side = std::size_t(d) + 1;
+    // About 240 bytes per triangle were measured at the peak (samples, welding hash, edge
+    // uses and adjacency for orienting), then the soup and the mesh.
+    const double samples_n = static_cast<double>(patches.size() * side * side);
+    const double triangles = 2.0 * static_cast<double>(patches.size()) * d * d;
+    check_budget(240.0 * triangles + build_bytes(samples_n, 3.0 * triangles, triangles),
+                 "tessellating " + std::to_string(patches.size()) + " patches at density " +
+                     std::to_string(d));
 
     std::vector<Vec3> samples;
     samples.reserve(patches.size() * side * side);
-    BoundingBox box;
+    std::vector<double> patch_tolerance;
+    patch_tolerance.reserve(patches.size());
+    double extent = 0.0;
     for (const BezierPatch& patch : patches) {
+        BoundingBox box;
         for (int j = 0; j <= d; ++j) {
             for (int i = 0; i <= d; ++i) {
                 // i / d and j / d are exact at 0 and 1, so patch corners hit control points.
@@ -197,18 +233,15 @@ Mesh tessellate(std::span<const BezierPatch> patches, const TessellationOptions&
                 box.add(p);
             }
         }
-    }
-
-    double extent = 0.0;
-    if (!box.is_empty()) {
+        patch_tolerance.push_back(options.weld_tolerance * box.diagonal());
         for (int i = 0; i < 3; ++i) {
             extent = std::max({extent, std::abs(box.min[i]), std::abs(box.max[i])});
         }
     }
-    Welder welder(options.weld_tolerance * box.diagonal(), extent);
+    Welder welder(extent);
     std::vector<Index> welded(samples.size());
     for (std::size_t s = 0; s < samples.size(); ++s) {
-        welded[s] = welder.add(samples[s]);
+        welded[s] = welder.add(samples[s], patch_tolerance[s / (side * side)]);
     }
 
     std::vector<Triangle> tris;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/io/io.h"
 
 namespace meshedit::cli {
@@ -54,6 +55,10 @@ int eval_curve(const std::filesystem::path& path, const Settings& s) {
     const double t = s.t;
     const BezierCurve curve = read_bzc(path);
     if (s.levels) {
+        // Every level printed: n(n+1)/2 points, each a Vec3 and about 40 bytes of text.
+        check_budget(64.0 * de_casteljau_level_points(curve.control_points.size()),
+                     "printing every de Casteljau level of a curve of " +
+                         std::to_string(curve.control_points.size()) + " points");
         const auto levels = curve.levels(t);
         for (std::size_t k = 0; k < levels.size(); ++k) {
             std::string line = "level " + std::to_string(k) + ":";

@@ -13,6 +13,7 @@
 
 #include "cli.h"
 #include "command_line.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/files/io_error.h"
 #include "meshedit/ops/ops.h"
 
@@ -156,6 +157,9 @@ int main(int argc, char** argv) {
     } catch (const meshedit::ops::OpError& e) {
         print_error(e.what());
         return e.refused() ? 1 : 2;
+    } catch (const meshedit::BudgetError& e) {
+        print_error(e.what());
+        return 1;
     } catch (const Failure& e) {
         print_error(e.what());
         return 1;

@@ -102,4 +102,10 @@ std::optional<std::string> over_budget(double bytes) {
            format_bytes(budget) + " (--memory-budget or MESHEDIT_MEMORY_BUDGET sets it)";
 }
 
+void check_budget(double bytes, const std::string& what) {
+    if (const auto over = over_budget(bytes)) {
+        throw BudgetError(what + " " + *over);
+    }
+}
+
 }  // namespace meshedit

@@ -5,6 +5,7 @@
 #include "meshedit/core/normals.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -31,8 +32,48 @@ Vec3 face_area_vector(const Mesh& mesh, Face f) {
     return sum;
 }
 
+namespace {
+
+// A power of two that brings the largest coordinate of `mesh` near 1: scaling by it is exact,
+// so normals computed from scaled positions have the same directions, without the overflow
+// that cross products of coordinates above ~1e154 run into.
+double unit_scale(const Mesh& mesh) {
+    double largest = 0.0;
+    for (const Vertex v : mesh.vertices()) {
+        const Vec3& p = mesh.position(v);
+        largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    }
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    return largest > 0.0 ? std::ldexp(1.0, -exponent) : 1.0;
+}
+
+}  // namespace
+
 Vec3 face_normal(const Mesh& mesh, Face f) {
-    return normalize(face_area_vector(mesh, f));
+    const Vec3 area = face_area_vector(mesh, f);
+    if (is_finite(area)) {
+        return normalize(area);
+    }
+    // Overflowed: the same directions from the face's corners scaled near 1.
+    double largest = 0.0;
+    for (const Vertex v : mesh.vertices(f)) {
+        const Vec3& p = mesh.position(v);
+        largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    }
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    const double s = std::ldexp(1.0, -exponent);
+    const Halfedge h0 = mesh.halfedge(f);
+    const Vec3 p0 = s * mesh.position(mesh.from_vertex(h0));
+    Vec3 sum;
+    Vec3 d1 = s * mesh.position(mesh.to_vertex(h0)) - p0;
+    for (Halfedge h = mesh.next(h0); mesh.to_vertex(h) != mesh.from_vertex(h0); h = mesh.next(h)) {
+        const Vec3 d2 = s * mesh.position(mesh.to_vertex(h)) - p0;
+        sum += cross(d1, d2);
+        d1 = d2;
+    }
+    return normalize(sum);
 }
 
 double signed_volume(const Mesh& mesh) {
@@ -228,11 +269,25 @@ void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out, unsigned m
             own.add(mesh, i, face_corners(mesh, arrays, i), false);
         }
     }
+    // A sum that overflowed (coordinates above ~1e154) is noticed here, in the pass that
+    // touches every normal anyway, so ordinary meshes pay one comparison per vertex for it.
+    std::vector<std::uint8_t> overflowed((nv + kChunk - 1) / kChunk, 0);
     parallel::for_chunks(nv, kChunk, threads, [&](std::size_t begin, std::size_t end) {
+        bool bad = false;
         for (std::size_t i = begin; i < end; ++i) {
+            bad |= !is_finite(out[i]);
             out[i] = normalize(out[i]);
         }
+        overflowed[begin / kChunk] = bad ? 1 : 0;
     });
+    if (std::find(overflowed.begin(), overflowed.end(), 1) != overflowed.end()) {
+        Mesh scaled = mesh;
+        const double s = unit_scale(mesh);
+        for (const Vertex v : scaled.vertices()) {
+            scaled.position(v) *= s;
+        }
+        compute_vertex_normals(scaled, out, max_threads);
+    }
 }
 
 void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out) {

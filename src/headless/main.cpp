@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/files/io_error.h"
 #include "meshedit/io/document.h"
 #include "meshedit/ops/ops.h"
@@ -71,6 +72,10 @@ int run(const Options& options) {
         if (!options.select.empty() || !options.ops.empty()) {
             throw UsageError("--select and --ops need a mesh or .bez file, not a curve");
         }
+        // Every level drawn is one line per point: n(n+1)/2 of them for all levels.
+        check_budget(128.0 * de_casteljau_level_points(curve.control_points.size(), options.level),
+                     "drawing the de Casteljau levels of a curve of " +
+                         std::to_string(curve.control_points.size()) + " points");
         scene.curve = &curve;
         scene.t = options.t;
         scene.level = options.level;
@@ -195,6 +200,9 @@ int main(int argc, char** argv) {
     } catch (const ops::OpError& e) {
         print_error(e.what());
         return e.refused() ? 1 : 2;
+    } catch (const BudgetError& e) {
+        print_error(e.what());
+        return 1;
     } catch (const GlError& e) {
         print_error(e.what());
         return 1;

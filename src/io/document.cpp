@@ -48,6 +48,11 @@ LoadedDocument read_document(const std::filesystem::path& path, const ReadOption
             TessellationOptions tessellation;
             tessellation.density = options.density;
             doc.mesh = tessellate(doc.patches, tessellation);
+            if (doc.mesh.n_faces() == 0) {
+                throw IoError(path.string(), "",
+                              "holds no faces to load (every patch is degenerate: its control "
+                              "points coincide)");
+            }
         } else {
             LoadedMesh loaded = read_mesh(path);
             doc.kind = DocumentKind::Mesh;

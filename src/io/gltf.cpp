@@ -19,6 +19,7 @@
 
 #include "gltf_guard.h"
 #include "io_util.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/core/normals.h"
 
 namespace meshedit {
@@ -202,6 +203,7 @@ private:
                 throw IoError(file_, where, "no POSITION attribute");
             }
             const int pos_accessor = pos_it->second;
+            plan(prim, pos_accessor, where);
             std::uint32_t base = 0;
             std::size_t n_vertices = 0;
             if (auto found = base_of_accessor.find(pos_accessor); found != base_of_accessor.end()) {
@@ -223,6 +225,22 @@ private:
                 base_of_accessor.emplace(pos_accessor, base);
             }
             add_faces(prim, where, base, n_vertices, determinant3(world) < 0);
+        }
+    }
+
+    // Many nodes may instance one mesh: the budget decides before anything is copied, from
+    // the accessors' counts (checked against their buffers when they are read).
+    void plan(const tinygltf::Primitive& prim, int pos_accessor, const std::string& where) {
+        const auto count = [&](int accessor) {
+            return accessor >= 0 && static_cast<std::size_t>(accessor) < model_.accessors.size()
+                       ? static_cast<double>(model_.accessors[accessor].count)
+                       : 0.0;
+        };
+        const double vertices = count(pos_accessor);
+        const double corners = prim.indices >= 0 ? count(prim.indices) : vertices;
+        planned_bytes_ += build_bytes(vertices, corners, corners / 3.0);
+        if (const auto over = over_budget(planned_bytes_)) {
+            throw IoError(file_, where, "the scene's mesh instances " + *over);
         }
     }
 
@@ -399,6 +417,7 @@ private:
     std::string file_;
     MeshSoup out_;
     bool all_have_normals_ = true;
+    double planned_bytes_ = 0.0;
     std::size_t skipped_primitives_ = 0;
 };
 

@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include "collada_detail.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/io/collada.h"
 
@@ -139,6 +140,8 @@ private:
     std::vector<Instance> instances_;
     std::vector<pugi::xml_node> active_;  // nodes on the current path (cycle guard)
     std::size_t visits_ = 0;
+    std::size_t appended_ = 0;
+    double planned_bytes_ = 0.0;
     std::size_t skipped_transforms_ = 0;
     bool normals_ok_ = true;
 };
@@ -304,6 +307,14 @@ void SceneReader::instance_controller(pugi::xml_node at, const Mat4& transform) 
 
 // `last_use`: no later instance needs `g`, so its arrays may be moved out.
 void SceneReader::append(const Instance& instance, collada::GeometryData& g, bool last_use) {
+    // Instancing multiplies what the file holds: the budget decides before anything is copied.
+    ++appended_;
+    planned_bytes_ += build_bytes(static_cast<double>(g.positions.size()),
+                                  static_cast<double>(g.indices.size()),
+                                  static_cast<double>(g.face_offsets.size() - 1));
+    if (const auto over = over_budget(planned_bytes_)) {
+        doc_.fail(instance.at, std::to_string(appended_) + " geometry instances so far " + *over);
+    }
     const std::size_t base = out_.soup.positions.size();
     if (base + g.positions.size() >= std::numeric_limits<std::uint32_t>::max() ||
         out_.soup.indices.size() + g.indices.size() > kMaxCorners) {

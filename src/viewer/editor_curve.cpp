@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "meshedit/core/budget.h"
 #include "meshedit/viewer/editor.h"
 
 namespace meshedit::viewer {
@@ -36,6 +37,9 @@ Outcome Editor::run_curve(Action action) {
         case Command::LevelDown:
             if (level >= last_level) {
                 return refused("already at the last level (B(t))");
+            }
+            if (const auto over = over_budget(128.0 * de_casteljau_level_points(n, level + 1))) {
+                return refused("showing level " + std::to_string(level + 1) + " " + *over);
             }
             view_.level = level + 1;
             return {kDisplay, level_message()};

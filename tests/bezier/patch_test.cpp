@@ -272,6 +272,23 @@ TEST(Tessellate, WeldsAcrossTheToleranceOnly) {
     }
 }
 
+// Tolerances are relative to each patch: a patch a long way off (or a huge one) once made
+// the bounding box so big that the tolerance welded every other patch into nothing.
+TEST(Tessellate, AFarOrHugePatchDoesNotWeldTheOthersAway) {
+    const int d = 4;
+    const std::vector<BezierPatch> grid = height_field_patches(2, 2);
+    for (const BezierPatch& extra : {flat_patch({1e10, 0, 0}, {1, 0, 0}, {0, 1, 0}),
+                                     flat_patch({5, 5, 5}, {1e10, 0, 0}, {0, 1e10, 0})}) {
+        std::vector<BezierPatch> patches = grid;
+        patches.push_back(extra);
+        const Mesh mesh = tessellate(patches, {d, 1e-7});
+        ASSERT_VALID(mesh);
+        EXPECT_EQ(mesh.n_vertices(), std::size_t((2 * d + 1) * (2 * d + 1) + (d + 1) * (d + 1)));
+        EXPECT_EQ(mesh.n_faces(), std::size_t(8 * d * d + 2 * d * d));
+        EXPECT_EQ(count_boundary_loops(mesh), 2u);
+    }
+}
+
 TEST(Tessellate, NoPatchesGiveAnEmptyMesh) {
     const Mesh mesh = tessellate({});
     ASSERT_VALID(mesh);

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,7 +29,7 @@ bool drain(int fd, std::string& sink) {
 }  // namespace
 
 RunResult run_program(const std::string& program, const std::vector<std::string>& args,
-                      double timeout_seconds) {
+                      double timeout_seconds, std::size_t memory_limit_bytes) {
     int out_pipe[2];
     int err_pipe[2];
     if (::pipe2(out_pipe, O_CLOEXEC) != 0 || ::pipe2(err_pipe, O_CLOEXEC) != 0) {
@@ -51,6 +52,10 @@ RunResult run_program(const std::string& program, const std::vector<std::string>
         ::dup2(null_fd, STDIN_FILENO);
         ::dup2(out_pipe[1], STDOUT_FILENO);
         ::dup2(err_pipe[1], STDERR_FILENO);
+        if (memory_limit_bytes > 0) {
+            const rlimit limit{memory_limit_bytes, memory_limit_bytes};
+            ::setrlimit(RLIMIT_AS, &limit);
+        }
         ::execv(program.c_str(), argv.data());
         ::_exit(127);
     }
@@ -110,8 +115,9 @@ RunResult run_program(const std::string& program, const std::vector<std::string>
     return result;
 }
 
-RunResult run_meshedit(const std::vector<std::string>& args, double timeout_seconds) {
-    return run_program(MESHEDIT_EXE, args, timeout_seconds);
+RunResult run_meshedit(const std::vector<std::string>& args, double timeout_seconds,
+                       std::size_t memory_limit_bytes) {
+    return run_program(MESHEDIT_EXE, args, timeout_seconds, memory_limit_bytes);
 }
 
 std::filesystem::path repo_root() {

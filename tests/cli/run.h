@@ -19,12 +19,14 @@ struct RunResult {
 };
 
 /// Runs `program` with `args`, stdin from /dev/null, killing it (SIGKILL) after
-/// `timeout_seconds`.
+/// `timeout_seconds`; with `memory_limit_bytes`, the process's address space is limited to
+/// that (an allocation beyond it fails as it would on a machine that small).
 RunResult run_program(const std::string& program, const std::vector<std::string>& args,
-                      double timeout_seconds = 20.0);
+                      double timeout_seconds = 20.0, std::size_t memory_limit_bytes = 0);
 
 /// run_program() on the built meshedit (MESHEDIT_EXE).
-RunResult run_meshedit(const std::vector<std::string>& args, double timeout_seconds = 20.0);
+RunResult run_meshedit(const std::vector<std::string>& args, double timeout_seconds = 20.0,
+                       std::size_t memory_limit_bytes = 0);
 
 /// The repository root (MESHEDIT_SOURCE_DIR), e.g. for dae/ and bez/.
 std::filesystem::path repo_root();

@@ -283,5 +283,27 @@ TEST(Normals, SignedVolumeFarFromOriginKeepsPrecision) {
     EXPECT_NEAR(signed_volume(mesh), 1.0, 1e-6);
 }
 
+// Coordinates above ~1e154 overflow the cross products (a file converted with them once got
+// `vn 0 0 -nan`, which MeshEdit then refused to read). Scaled by a power of two, every normal
+// is the same bits as the unscaled mesh's, face and vertex normals alike.
+TEST(Normals, HugeCoordinatesGiveTheSameNormalsAsScaledOnes) {
+    const Mesh small = shapes::icosphere(2);
+    Mesh huge = small;
+    const double s = std::ldexp(1.0, 700);  // about 5e210
+    for (const Vertex v : huge.vertices()) {
+        huge.position(v) *= s;
+    }
+    const std::vector<Vec3> expected = vertex_normals(small);
+    const std::vector<Vec3> actual = vertex_normals(huge);
+    ASSERT_EQ(actual.size(), expected.size());
+    for (std::size_t i = 0; i < actual.size(); ++i) {
+        ASSERT_TRUE(is_finite(actual[i])) << "vertex " << i;
+        EXPECT_EQ(actual[i], expected[i]) << "vertex " << i;
+    }
+    for (const Face f : huge.faces()) {
+        EXPECT_EQ(face_normal(huge, f), face_normal(small, f)) << "face " << f.idx();
+    }
+}
+
 }  // namespace
 }  // namespace meshedit

@@ -30,6 +30,11 @@ Vec3 de_casteljau_reduce(std::vector<Vec3>& points, double t, Vec3* derivative =
 /// B(t). \pre control.size() >= 1.
 std::vector<std::vector<Vec3>> de_casteljau_levels(std::span<const Vec3> control, double t);
 
+/// How many points levels 0 … `max_level` of a curve of `n_points` control points hold
+/// together (`max_level` < 0: all, n(n+1)/2): the size every caller that shows or prints
+/// levels checks against the memory budget (core/budget.h) first, as it grows with n².
+double de_casteljau_level_points(std::size_t n_points, int max_level = -1);
+
 /// B(t) by de Casteljau (repeated lerp). \pre control.size() >= 1.
 Vec3 de_casteljau(std::span<const Vec3> control, double t);
 

@@ -44,20 +44,23 @@ struct TessellationOptions {
     /// Quads per patch side: each patch becomes density × density quads, split into
     /// triangles.
     int density = 8;
-    /// Points closer than this fraction of the bounding-box diagonal are welded.
+    /// Points closer than this fraction of their patch's bounding-box diagonal are welded
+    /// (of the smaller patch's, for points of two patches).
     double weld_tolerance = 1e-7;
 };
 
 /// Tessellates the patches into one triangle mesh: samples every patch on a
 /// (density+1)² grid (quad (i, j) split along its (i,j)–(i+1,j+1) diagonal unless that
-/// diagonal's ends weld together), welds points within `weld_tolerance` × bounding-box
-/// diagonal across patch seams (spatial hash; the survivors are pairwise farther apart),
+/// diagonal's ends weld together), welds points within `weld_tolerance` × their patch's
+/// bounding-box diagonal across patch seams (spatial hash; a patch far away or much larger
+/// cannot weld a small one away),
 /// drops triangles with a repeated welded corner (poles), and orients the faces of each
 /// connected component consistently before building, since patch sets such as the teapot mix
 /// orientations. Each component then faces outward (positive signed volume about its
 /// centroid) if it is closed-ish (its face area vectors sum to at most half their total
 /// length), else it keeps the area-weighted majority of the input orientation. Vertices are
 /// numbered in order of first use by the faces; no isolated vertices.
+/// \throws BudgetError (core/budget.h) if the work would not fit the memory budget.
 /// \post validate() passes.
 Mesh tessellate(std::span<const BezierPatch> patches, const TessellationOptions& options = {});
 

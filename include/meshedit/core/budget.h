@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace meshedit {
@@ -28,6 +29,16 @@ std::optional<std::size_t> parse_byte_size(const std::string& text);
 
 /// "7.9 GB".
 std::string format_bytes(double bytes);
+
+/// A step refused because it would not fit the memory budget; what() is the whole sentence
+/// ("tessellating 1000 patches at density 128 would need about 7.9 GB of memory, over …").
+class BudgetError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// \throws BudgetError with "<what> <over_budget() sentence>" when `bytes` does not fit.
+void check_budget(double bytes, const std::string& what);
 
 /// nullopt if `bytes` fits in the budget; else a sentence for the refusal: "would need about
 /// 7.9 GB of memory, over the budget of 4.0 GB (--memory-budget or MESHEDIT_MEMORY_BUDGET

@@ -65,6 +65,11 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// Estimated peak bytes of holding a soup of that size and building its mesh (the soup, the
+/// builder's scratch and the mesh's arrays), for readers that check the memory budget
+/// (budget.h) before they make a soup that big.
+double build_bytes(double vertices, double corners, double faces);
+
 /// Builds a halfedge mesh from `soup`. Vertex `i` of the result is `soup.positions[i]`; the
 /// faces keep their order, minus dropped ones. Non-manifold input is repaired (never refused):
 /// non-manifold and inconsistently oriented edges are cut into boundary edges, then every
