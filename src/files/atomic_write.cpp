@@ -1,10 +1,15 @@
-// The atomic write every writer goes through (files.h): a temporary file beside the target,
-// flushed, then renamed over it.
+// The atomic write every writer goes through (files.h): a temporary file beside the real
+// target (through symbolic links, as editors do), flushed, given the old file's mode and owner,
+// then renamed over it. Temporary files that a killed process left behind are recognised by
+// their name (they carry the writer's pid) and removed by the next write into that folder.
 
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <charconv>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -52,6 +57,59 @@ void sync_file(const fs::path& path) {
     }
 }
 
+// ".NAME.tmp-PID-COUNTER-NONCE": the pid if `name` is one of our temporary files, else 0.
+long temporary_pid(const std::string& name) {
+    if (name.empty() || name[0] != '.') {
+        return 0;
+    }
+    const std::size_t at = name.rfind(".tmp-");
+    if (at == std::string::npos) {
+        return 0;
+    }
+    long fields[3] = {0, 0, 0};
+    std::size_t pos = at + 5;
+    for (int i = 0; i < 3; ++i) {
+        const char* first = name.data() + pos;
+        const char* last = name.data() + name.size();
+        const auto [end, ec] = std::from_chars(first, last, fields[i]);
+        if (ec != std::errc() || end == first || (i < 2 ? (end == last || *end != '-') : end != last)) {
+            return 0;
+        }
+        pos = static_cast<std::size_t>(end - name.data()) + 1;
+    }
+    return fields[0];
+}
+
+// Removes the temporary files of writers that are gone (killed mid-write: SIGKILL, power
+// loss). A live pid keeps its files, even if it is another program's now: never remove what
+// might be in use.
+void remove_stale_temporaries(const fs::path& folder) {
+    std::error_code ec;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const long pid = temporary_pid(it->path().filename().string());
+        if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 &&
+            errno == ESRCH) {
+            std::error_code ignored;
+            fs::remove(it->path(), ignored);
+        }
+    }
+}
+
+// The file a write to `target` must replace: `target` itself, or the file its chain of
+// symbolic links ends at (which need not exist yet), so that the links survive the write.
+fs::path real_target(const fs::path& target) {
+    fs::path real = target;
+    std::error_code ec;
+    for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(real, ec)); ++hops) {
+        const fs::path link = fs::read_symlink(real, ec);
+        if (ec) {
+            break;
+        }
+        real = link.is_absolute() ? link : real.parent_path() / link;
+    }
+    return real;
+}
+
 }  // namespace
 
 void write_atomically(const fs::path& target,
@@ -60,7 +118,8 @@ void write_atomically(const fs::path& target,
     if (target.filename().empty()) {
         throw IoError(name, "", "not a file name");
     }
-    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    const fs::path real = real_target(target);
+    const fs::path folder = real.has_parent_path() ? real.parent_path() : fs::path(".");
     std::error_code ec;
     const fs::file_status folder_status = fs::status(folder, ec);
     if (!fs::exists(folder_status)) {
@@ -69,13 +128,14 @@ void write_atomically(const fs::path& target,
     if (!fs::is_directory(folder_status)) {
         throw IoError(name, "", "'" + folder.string() + "' is not a folder");
     }
-    if (fs::is_directory(fs::status(target, ec))) {
+    if (fs::is_directory(fs::status(real, ec))) {
         throw IoError(name, "", "is a folder");
     }
+    remove_stale_temporaries(folder);
 
     // Create the temporary file exclusively ("x"): this claims the name and proves the folder
     // is writable before any work is done.
-    const fs::path tmp = temporary_name(folder, target);
+    const fs::path tmp = temporary_name(folder, real);
     std::FILE* claim = std::fopen(tmp.c_str(), "wx");
     if (claim == nullptr) {
         throw IoError(name, "",
@@ -86,12 +146,16 @@ void write_atomically(const fs::path& target,
     try {
         write(tmp);
         sync_file(tmp);
-        // Keep the permissions of the file being replaced (a 0600 file stays private).
-        const fs::file_status old_status = fs::status(target, ec);
-        if (!ec && fs::exists(old_status)) {
-            fs::permissions(tmp, old_status.permissions(), ec);
+        // Keep the mode of the file being replaced (a 0600 file stays private) and, where the
+        // process may (root), its owner and group.
+        struct stat old {};
+        if (::stat(real.c_str(), &old) == 0) {
+            ::chmod(tmp.c_str(), old.st_mode & 07777);
+            if (old.st_uid != ::geteuid() || old.st_gid != ::getegid()) {
+                [[maybe_unused]] const int ignored = ::chown(tmp.c_str(), old.st_uid, old.st_gid);
+            }
         }
-        fs::rename(tmp, target);
+        fs::rename(tmp, real);
     } catch (const IoError& e) {
         fs::remove(tmp, ec);
         throw IoError(name, e.where(), e.problem());

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <system_error>
 
+#include "meshedit/core/budget.h"
 #include "meshedit/core/memory.h"
 
 namespace fs = std::filesystem;
@@ -29,6 +30,9 @@ std::string file_extension(const fs::path& path) {
 
 std::string read_file(const fs::path& path, std::size_t max_bytes) {
     const std::string name = path.string();
+    if (max_bytes == 0) {
+        max_bytes = memory_budget();
+    }
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (!fs::exists(status)) {
@@ -57,8 +61,10 @@ std::string read_file(const fs::path& path, std::size_t max_bytes) {
     const auto size = static_cast<std::size_t>(st.st_size);
     if (size > max_bytes) {
         throw IoError(name, "",
-                      "is " + std::to_string(size) + " bytes, more than the limit of " +
-                          std::to_string(max_bytes));
+                      "is " + format_bytes(static_cast<double>(size)) +
+                          ", more than the memory budget of " +
+                          format_bytes(static_cast<double>(max_bytes)) +
+                          " (--memory-budget or MESHEDIT_MEMORY_BUDGET sets it)");
     }
     // One spare byte, so that a file read whole meets its end without growing the buffer.
     std::string bytes;
@@ -70,7 +76,8 @@ std::string read_file(const fs::path& path, std::size_t max_bytes) {
         if (used == bytes.size()) {
             if (used > max_bytes) {
                 throw IoError(name, "",
-                              "is more than " + std::to_string(max_bytes) + " bytes, the limit");
+                              "is more than the memory budget of " +
+                                  format_bytes(static_cast<double>(max_bytes)));
             }
             bytes.resize(std::max<std::size_t>(2 * bytes.size(), 1 << 16));
         }

@@ -79,20 +79,6 @@ TEST(AtomicWrite, FolderThatIsARegularFileFailsEvenForRoot) {
     EXPECT_EQ(test::slurp(dir / "plain"), "x");
 }
 
-TEST(AtomicWrite, ReadOnlyFolder) {
-    if (::geteuid() == 0) {
-        GTEST_SKIP() << "root ignores folder permissions (covered by the regular-file case)";
-    }
-    test::ScratchDir dir;
-    fs::create_directory(dir / "ro");
-    fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec);
-    const fs::path target = dir / "ro" / "out.obj";
-    EXPECT_CONTAINS(io_error_of([&] { write_mesh(shapes::cube(), target); }),
-                    target.string() + ": cannot create a file in");
-    fs::permissions(dir / "ro", fs::perms::owner_all);
-    EXPECT_TRUE(fs::is_empty(dir / "ro"));
-}
-
 TEST(AtomicWrite, UnknownExtensionWritesNothing) {
     test::ScratchDir dir;
     EXPECT_CONTAINS(io_error_of([&] { write_mesh(shapes::cube(), dir / "cube.stl"); }),

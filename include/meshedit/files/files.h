@@ -17,16 +17,13 @@ namespace meshedit {
 /// The extension of `path`, lower-cased, with its dot (".dae"); empty if none.
 std::string file_extension(const std::filesystem::path& path);
 
-/// Files larger than this are refused by read_file() (a mesh that big would not fit the
-/// memory budget anyway).
-inline constexpr std::size_t kMaxFileBytes = std::size_t{16} << 30;
-
 /// The whole file as bytes, read once into a buffer sized from the file (big buffers in huge
 /// pages, see core/memory.h); `/proc`-style files that report no size are read in growing
 /// steps. \throws IoError naming `path`: "no such file", "is a folder, not a file", "is not a
 /// regular file" (a FIFO, a device, a socket: reading one could block or never end), "is N
-/// bytes, more than the limit of M", "cannot open: <reason>", "read error".
-std::string read_file(const std::filesystem::path& path, std::size_t max_bytes = kMaxFileBytes);
+/// bytes, more than the memory budget" (core/budget.h; `max_bytes` overrides), "cannot open:
+/// <reason>", "read error".
+std::string read_file(const std::filesystem::path& path, std::size_t max_bytes = 0);
 
 /// Writes `bytes` to `path` (created or truncated) and checks every step, so a full disk
 /// surfaces as an exception rather than a short file. \throws std::runtime_error.
