@@ -5,7 +5,7 @@ BENCH_DIR     ?= build-bench
 JOBS          ?= $(shell nproc)
 CMAKE_FLAGS   ?=
 
-.PHONY: all deps build run test test-release test-sanitize bench format clean
+.PHONY: all deps build run test test-release test-sanitize bench fuzz format clean
 
 all: build
 
@@ -50,6 +50,18 @@ bench:
 	python3 bench/run_bench.py --build $(BENCH_DIR) --out docs/performance.md \
 	    --budget $(BENCH_BUDGET)
 
+# A fuzzing campaign (docs/testing.md): every reader and the edit language under libFuzzer
+# with ASan + UBSan for FUZZ_SECONDS each (default 60). `make test` only replays the corpus.
+FUZZ_DIR      ?= build-fuzz
+FUZZ_SECONDS  ?= 60
+fuzz:
+	./scripts/install-deps.sh --fuzz
+	cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	    -DCMAKE_CXX_COMPILER=clang++ -DMESHEDIT_FUZZ=ON -DMESHEDIT_BUILD_VIEWER=OFF $(CMAKE_FLAGS)
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_collada fuzz_obj fuzz_gltf fuzz_bez \
+	    fuzz_bzc fuzz_ops meshedit
+	FUZZ_SECONDS=$(FUZZ_SECONDS) ./scripts/fuzz.sh $(FUZZ_DIR)
+
 # Regenerates the sample meshes in dae/ with the project's own code (docs/samples.md).
 .PHONY: samples
 samples: deps $(BUILD_DIR)/build.ninja
@@ -60,4 +72,4 @@ format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(BENCH_DIR)
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(BENCH_DIR) $(FUZZ_DIR)

@@ -1,7 +1,13 @@
 # meshedit_set_sanitizers(target): ASan + UBSan when MESHEDIT_SANITIZE is on. Applied to every
 # project target (libraries and tests alike) so their runtimes agree.
 function(meshedit_set_sanitizers target)
-    if(MESHEDIT_SANITIZE)
+    if(MESHEDIT_FUZZ)
+        # Coverage for libFuzzer everywhere; the fuzz executables add -fsanitize=fuzzer.
+        target_compile_options(${target} PRIVATE
+            -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
+            -fno-omit-frame-pointer)
+        target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    elseif(MESHEDIT_SANITIZE)
         target_compile_options(${target} PRIVATE
             -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
         target_link_options(${target} PRIVATE -fsanitize=address,undefined)

@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # Installs every Debian package MeshEdit needs to build and test; with --bench also the
 # benchmark anchors (OpenMesh, OpenSubdiv, CGAL and its demo meshes, Assimp) and perf, which
-# only `make bench` needs. Idempotent: when everything is present it only runs dpkg queries
+# only `make bench` needs; with --fuzz clang and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs dpkg queries
 # (well under a second).
 set -euo pipefail
 
 bench=0
+fuzz=0
 for arg in "$@"; do
     case "$arg" in
         --bench) bench=1 ;;
-        *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
+        --fuzz) fuzz=1 ;;
+        *) echo "usage: $0 [--bench] [--fuzz]" >&2; exit 2 ;;
     esac
 done
 
@@ -23,6 +25,9 @@ packages=(
     libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri
     fonts-dejavu-core xvfb xdotool imagemagick x11-utils
 )
+if [ "$fuzz" -eq 1 ]; then
+    packages+=(clang libclang-rt-14-dev)
+fi
 if [ "$bench" -eq 1 ]; then
     packages+=(libopenmesh-dev libosd-dev libcgal-dev libcgal-demo libassimp-dev linux-perf)
 fi

@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// What every reader's fuzz target does with what it read (docs/testing.md, "Fuzzing"): build
+/// the mesh, validate() it, run one local operation picked by the input's own bytes behind its
+/// predicate (validate again, or check the refusal changed nothing), write the mesh out and
+/// read it back (the same mesh), and one Loop level on small meshes. Anything wrong aborts,
+/// which libFuzzer (or the replay driver) reports with the input that did it.
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "meshedit/core/mesh.h"
+#include "meshedit/io/io.h"
+
+namespace meshedit::fuzz {
+
+/// Sets what every target shares: a small memory budget (so a hostile size is refused, not
+/// allocated) and a scratch folder for round trips. Call once, from the target.
+void set_up();
+
+/// Aborts with `what` on stderr when `condition` is false (kept in release builds).
+void check(bool condition, std::string_view what);
+
+/// A stable 64-bit hash of the input, to pick operations from.
+std::uint64_t hash(const std::uint8_t* data, std::size_t size);
+
+/// build_mesh() on the soup (an invalid soup is the reader's business: a TopologyError is a
+/// clean refusal), then everything the file comment lists.
+void exercise(const MeshSoup& soup, std::uint64_t seed);
+
+/// The same on a mesh already built (the .bez target's tessellation).
+void exercise(Mesh mesh, std::uint64_t seed);
+
+}  // namespace meshedit::fuzz
