@@ -46,7 +46,7 @@ printf 'flip:0-6,split:0-1,loop\nloop:2\ncollapse:1-3,triangulate\ncrease:0-1,lo
 run_one() {
     local t=$1
     local log="$build/logs/$t.log"
-    TMPDIR="$build" "$build/tests/fuzz/fuzz_$t" "$build/corpus/$t" \
+    TMPDIR="${FUZZ_TMPDIR:-/dev/shm}" "$build/tests/fuzz/fuzz_$t" "$build/corpus/$t" \
         -dict="tests/fuzz/dict/$t.dict" -max_total_time="$seconds" -rss_limit_mb=2048 \
         -timeout=20 -max_len=262144 -print_final_stats=1 \
         -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1 || true

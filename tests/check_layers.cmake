@@ -7,7 +7,7 @@
 # on the path after "meshedit/"; and the other headers it may include, as a regex on the text
 # between < and >. Standard headers (no '/' and no '.') are always allowed, and so are private
 # headers beside the file ("name.h", no '/').
-set(std_posix "fcntl\\.h|unistd\\.h|sys/(stat|mman|types)\\.h")
+set(std_posix "fcntl\\.h|unistd\\.h|signal\\.h|sys/(stat|mman|types)\\.h")
 set(gl "GL/glcorearb\\.h|glm/.*")
 set(rules
     # name | files | project headers | other headers

@@ -57,7 +57,7 @@ int eval_curve(const std::filesystem::path& path, const Settings& s) {
     if (s.levels) {
         // Every level printed: n(n+1)/2 points, each a Vec3 and about 40 bytes of text.
         check_budget(64.0 * de_casteljau_level_points(curve.control_points.size()),
-                     "printing every de Casteljau level of a curve of " +
+                     path.string() + ": printing every de Casteljau level of a curve of " +
                          std::to_string(curve.control_points.size()) + " points");
         const auto levels = curve.levels(t);
         for (std::size_t k = 0; k < levels.size(); ++k) {

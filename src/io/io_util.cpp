@@ -13,9 +13,9 @@ std::string_view text_of(std::string_view bytes, const std::string& name) {
     }
     const bool utf16_bom = bytes.substr(0, 2) == "\xFF\xFE" || bytes.substr(0, 2) == "\xFE\xFF";
     const std::string_view first_line = bytes.substr(0, std::min(bytes.find('\n'), bytes.size()));
-    // ASCII text in UTF-16 has a NUL beside every character.
-    const bool wide = first_line.size() >= 2 && first_line.find('\0') != std::string_view::npos &&
-                      (first_line[0] == '\0' || first_line[1] == '\0');
+    // ASCII text in UTF-16 has a NUL beside every character (and zeros are not text at all:
+    // the format's parser calls them binary data).
+    const bool wide = first_line.size() >= 2 && (first_line[0] == '\0') != (first_line[1] == '\0');
     if (utf16_bom || wide) {
         throw IoError(name, "", "UTF-16 or UTF-32 text; save the file as UTF-8");
     }

@@ -3,8 +3,8 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 #include <string_view>
+#include <vector>
 
 #include "fuzz_common.h"
 #include "meshedit/core/budget.h"

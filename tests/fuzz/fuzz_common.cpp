@@ -57,15 +57,16 @@ void one_local_op(Mesh& mesh, std::uint64_t seed) {
     }
     const Mesh before = mesh;
     const int op = static_cast<int>(seed % 3);
-    const OpStatus ok = op == 0 ? is_flip_ok(mesh, e)
+    const OpStatus ok = op == 0   ? is_flip_ok(mesh, e)
                         : op == 1 ? is_split_ok(mesh, e)
                                   : is_collapse_ok(mesh, e);
-    const bool done = op == 0 ? flip(mesh, e).ok() : op == 1 ? split(mesh, e).ok()
-                                                             : collapse(mesh, e).ok();
+    const bool done = op == 0   ? flip(mesh, e).ok()
+                      : op == 1 ? split(mesh, e).ok()
+                                : collapse(mesh, e).ok();
     check(done == static_cast<bool>(ok), "an op disagrees with its predicate");
     if (!done) {
-        check(faces_of(mesh) == faces_of(before) && mesh.position_vector().size() ==
-                                                        before.position_vector().size(),
+        check(faces_of(mesh) == faces_of(before) &&
+                  mesh.position_vector().size() == before.position_vector().size(),
               "a refused op changed the mesh");
         return;
     }

@@ -1,4 +1,5 @@
-// Fuzz target: the glTF and GLB (the content decides which; no folder, so only embedded buffers) reader, then everything fuzz_common.h lists on what it read.
+// Fuzz target: the glTF and GLB (the content decides which; no folder, so only embedded buffers)
+// reader, then everything fuzz_common.h lists on what it read.
 
 #include <cstddef>
 #include <cstdint>
