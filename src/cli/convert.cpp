@@ -31,6 +31,13 @@ void check_mesh_output(const std::filesystem::path& out) {
     }
 }
 
+// What the output's format could not keep, as notes: never lost without a word.
+void report_unkept(const std::filesystem::path& out, const std::vector<std::string>& unkept) {
+    for (const std::string& what : unkept) {
+        print_notice(out.string() + ": not kept: " + what);
+    }
+}
+
 ops::ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
     ops::ApplyOptions options;
     options.weights = weights;
@@ -106,7 +113,7 @@ Command add_convert(CLI::App& meshedit) {
                         rethrow_with_file(e, s->in);
                     }
                 }
-                write_mesh(input.mesh, s->out);
+                report_unkept(s->out, write_mesh(input.mesh, s->out));
                 return 0;
             }};
 }
@@ -157,7 +164,7 @@ Command add_subdivide(CLI::App& meshedit) {
                         rethrow_with_file(e, s->in);
                     }
                 }
-                write_mesh(input.mesh, s->out);
+                report_unkept(s->out, write_mesh(input.mesh, s->out));
                 return 0;
             }};
 }

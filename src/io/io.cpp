@@ -87,7 +87,48 @@ LoadedMesh read_mesh(const fs::path& path) {
 
 // ----------------------------------------------------------------- writing
 
-void write_mesh(const Mesh& mesh, const fs::path& path, const IoFlags& flags) {
+std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& ext) {
+    std::vector<std::string> unkept;
+    const bool obj = ext == ".obj";
+    const bool gltf = ext == ".gltf" || ext == ".glb";
+    if (!obj && !gltf) {
+        return unkept;  // COLLADA keeps polygons, creases and every double
+    }
+    std::size_t creases = 0;
+    if (const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+        for (const Edge e : mesh.edges()) {
+            creases += crease[e] != 0 ? 1 : 0;
+        }
+    }
+    const std::string format = obj ? "OBJ" : "glTF";
+    if (creases > 0) {
+        unkept.push_back(std::to_string(creases) + " crease mark" + (creases == 1 ? "" : "s") +
+                         " (" + format + " has no crease edges)");
+    }
+    if (gltf) {
+        std::size_t polygons = 0;
+        for (const Face f : mesh.faces()) {
+            polygons += mesh.is_triangle(f) ? 0 : 1;
+        }
+        if (polygons > 0) {
+            unkept.push_back(std::to_string(polygons) + " polygon" + (polygons == 1 ? "" : "s") +
+                             " (glTF stores triangles: each is fanned)");
+        }
+        for (const Vertex v : mesh.vertices()) {
+            const Vec3& p = mesh.position(v);
+            if (static_cast<double>(static_cast<float>(p.x)) != p.x ||
+                static_cast<double>(static_cast<float>(p.y)) != p.y ||
+                static_cast<double>(static_cast<float>(p.z)) != p.z) {
+                unkept.push_back("coordinates beyond 32-bit float precision (glTF stores floats)");
+                break;
+            }
+        }
+    }
+    return unkept;
+}
+
+std::vector<std::string> write_mesh(const Mesh& mesh, const fs::path& path,
+                                    const IoFlags& flags) {
     const std::string ext = file_extension(path);
     std::optional<Mesh> storage;
     const Mesh& dense = io_util::compacted(mesh, storage);
@@ -103,6 +144,7 @@ void write_mesh(const Mesh& mesh, const fs::path& path, const IoFlags& flags) {
                           ? "no file extension; expected .dae, .gltf, .glb or .obj"
                           : "cannot write '" + ext + "' files; expected .dae, .gltf, .glb or .obj");
     }
+    return unkept_by_format(dense, ext);
 }
 
 }  // namespace meshedit

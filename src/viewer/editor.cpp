@@ -40,6 +40,12 @@ Outcome Editor::run(Action action) {
     if (c != Command::Escape && c != Command::Quit) {
         quit_armed_ = false;
     }
+    if (c != Command::Open) {
+        replace_armed_ = false;
+    }
+    if (c != Command::Save && c != Command::SaveAs) {
+        lossy_armed_.clear();
+    }
     if (!available(c, doc_.mode)) {
         return refused(std::string("not available in ") + kind_name(doc_.mode) + " mode");
     }
@@ -151,6 +157,7 @@ Outcome Editor::edit(const std::function<std::string()>& check,
     history_.push(std::move(before));
     doc_.revision = next_revision_++;
     quit_armed_ = false;
+    replace_armed_ = false;
     if (edited.select) {
         doc_.selection = *edited.select;
     }
@@ -165,6 +172,7 @@ void Editor::snapshot() {
     history_.push(doc_);
     doc_.revision = next_revision_++;
     quit_armed_ = false;
+    replace_armed_ = false;
 }
 
 // ------------------------------------------------------------------------------ history

@@ -19,6 +19,14 @@ std::string counts(const Mesh& mesh) {
            " F " + std::to_string(mesh.n_faces());
 }
 
+std::string join(const std::vector<std::string>& parts) {
+    std::string out;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        out += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    }
+    return out;
+}
+
 /// Multi-line summaries as one status line.
 std::string one_line(std::string text) {
     while (!text.empty() && text.back() == '\n') {
@@ -33,6 +41,11 @@ std::string one_line(std::string text) {
 }  // namespace
 
 Outcome Editor::open(const std::filesystem::path& path) {
+    if (dirty() && !replace_armed_) {
+        replace_armed_ = true;
+        return refused("unsaved changes to " + file_name(path_) +
+                       ": open again to discard them, or Ctrl+S to save first");
+    }
     // Everything is read into a local document first: an IoError leaves the editor as it was.
     LoadedDocument loaded = read_document(path);
     Document doc;
@@ -114,6 +127,15 @@ Outcome Editor::save_as(const std::filesystem::path& path) {
 
 Outcome Editor::write_to(const std::filesystem::path& path) {
     Outcome outcome;
+    std::vector<std::string> unkept;
+    if (doc_.mode != Mode::Curve) {
+        unkept = unkept_by_format(doc_.mesh, file_extension(path));
+        if (!unkept.empty() && lossy_armed_ != path) {
+            lossy_armed_ = path;
+            return refused("saving as " + file_extension(path) + " loses " + join(unkept) +
+                           ": save again to save anyway, or save as .dae to keep everything");
+        }
+    }
     try {
         if (doc_.mode == Mode::Curve) {
             write_bzc(doc_.curve, path);
@@ -134,6 +156,10 @@ Outcome Editor::write_to(const std::filesystem::path& path) {
     quit_armed_ = false;
     outcome.changes |= kDisplay;  // the title loses its '*'
     outcome.message = "saved " + file_name(path);
+    if (!unkept.empty()) {
+        outcome.message += " (not kept: " + join(unkept) + ")";
+    }
+    lossy_armed_.clear();
     return outcome;
 }
 

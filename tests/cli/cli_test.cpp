@@ -237,6 +237,25 @@ TEST(CliConvert, CreaseTogglesAndSurvivesCollada) {
     EXPECT_EQ(info_json(tmp / "out.dae")["creases"], 31);
 }
 
+// Nothing is lost without a word: what the output format cannot keep is a note on stderr.
+TEST(CliConvert, WhatTheFormatCannotKeepIsSaid) {
+    TempDir tmp;
+    const auto creased = (repo_root() / "dae/creased.dae").string();
+    RunResult r = run_meshedit({"convert", creased, (tmp / "c.obj").string()});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("c.obj: not kept: 32 crease marks (OBJ has no crease edges)"),
+              std::string::npos)
+        << r.err;
+    r = run_meshedit({"convert", creased, (tmp / "c.dae").string()});
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_EQ(r.err.find("not kept"), std::string::npos) << r.err;
+    r = run_meshedit({"convert", (repo_root() / "dae/quadball.dae").string(),
+                      (tmp / "q.glb").string()});
+    EXPECT_NE(r.err.find("q.glb: not kept: 96 polygons (glTF stores triangles: each is fanned)"),
+              std::string::npos)
+        << r.err;
+}
+
 TEST(CliConvert, QuadsTriangulate) {
     TempDir tmp;
     const RunResult r = run_meshedit({"convert", (repo_root() / "dae/quadball.dae").string(),

@@ -34,6 +34,7 @@ TEST(Editor, BrokenFileLeavesTheDocumentUntouched) {
 
     const fs::path bad = dir / "broken.dae";
     std::ofstream(bad) << "<COLLADA><this is not xml";
+    EXPECT_TRUE(ed.open(bad).refused) << "unsaved changes: refused once before reading";
     EXPECT_THROW(ed.open(bad), IoError);
     EXPECT_THROW(ed.open(dir / "missing.obj"), IoError);
     EXPECT_THROW(ed.open(dir / "file.xyz"), IoError);
@@ -53,6 +54,7 @@ TEST(Editor, OpenClearsHistoryAndSelection) {
     Editor ed = editor_with(shapes::cube());
     ed.select(ElementRef::edge(Edge(0)));
     ed.press(key_of('K'), 0);
+    EXPECT_TRUE(ed.open(dir / "ico.obj").refused);
     const Outcome out = ed.open(dir / "ico.obj");
     EXPECT_EQ(out.message, "opened ico.obj: V 12 E 30 F 20");
     EXPECT_TRUE(out.changes & kDocument);
@@ -61,6 +63,62 @@ TEST(Editor, OpenClearsHistoryAndSelection) {
     EXPECT_FALSE(ed.dirty());
     EXPECT_FALSE(ed.quit_armed());
     EXPECT_EQ(ed.mode(), Mode::Mesh);
+}
+
+// Opening over unsaved work is guarded as quitting is: refused once with the reason, nothing
+// read and nothing lost (undo still works); the same open again goes through. Any other
+// command in between, or another edit, disarms it.
+TEST(Editor, OpenOverUnsavedChangesIsRefusedOnce) {
+    TempDir dir;
+    write_mesh(shapes::cube(), dir / "a.obj");
+    write_mesh(shapes::icosahedron(), dir / "b.obj");
+    Editor ed;
+    ed.open(dir / "a.obj");
+    ed.select(ElementRef::edge(Edge(3)));
+    ASSERT_FALSE(ed.press(key_of('S'), 0).refused);
+    const Mesh edited = ed.mesh();
+    Outcome out = ed.open(dir / "b.obj");
+    EXPECT_TRUE(out.refused);
+    EXPECT_EQ(out.message,
+              "unsaved changes to a.obj: open again to discard them, or Ctrl+S to save first");
+    EXPECT_TRUE(test::identical(ed.mesh(), edited));
+    EXPECT_EQ(ed.history().undo_steps(), 1u);
+    // Another command in between disarms the guard.
+    ed.press(key_of('W'), 0);
+    EXPECT_TRUE(ed.open(dir / "b.obj").refused);
+    out = ed.open(dir / "b.obj");
+    EXPECT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(ed.mesh().n_faces(), 20u);
+    // A clean document opens at once.
+    EXPECT_FALSE(ed.open(dir / "a.obj").refused);
+}
+
+// A format that cannot hold the document is named before anything is lost: Ctrl+S to OBJ
+// with creases is refused once with what would go, and the next Ctrl+S saves and says it.
+TEST(Editor, SavingToAFormatThatLosesSomethingAsksOnce) {
+    TempDir dir;
+    Editor ed = editor_with(shapes::cube());
+    ed.select(ElementRef::edge(Edge(0)));
+    ed.press(key_of('K'), 0);
+    Outcome out = ed.save_as(dir / "c.obj");
+    EXPECT_TRUE(out.refused);
+    EXPECT_EQ(out.message,
+              "saving as .obj loses 1 crease mark (OBJ has no crease edges): save again to save "
+              "anyway, or save as .dae to keep everything");
+    EXPECT_FALSE(fs::exists(dir / "c.obj"));
+    out = ed.save_as(dir / "c.obj");
+    EXPECT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(out.message, "saved c.obj (not kept: 1 crease mark (OBJ has no crease edges))");
+    EXPECT_FALSE(ed.dirty());
+    // COLLADA keeps creases: no question.
+    EXPECT_FALSE(ed.save_as(dir / "c.dae").refused);
+    // glTF stores triangles and floats.
+    Editor quads = editor_with(shapes::quad_sphere(1));
+    out = quads.save_as(dir / "q.glb");
+    EXPECT_TRUE(out.refused);
+    EXPECT_NE(out.message.find("polygons (glTF stores triangles: each is fanned)"),
+              std::string::npos)
+        << out.message;
 }
 
 TEST(Editor, SaveRefusals) {

@@ -64,9 +64,16 @@ struct LoadedMesh {
 /// the file).
 LoadedMesh read_mesh(const std::filesystem::path& path);
 
+/// What a file of that extension (".obj") cannot keep of `mesh`, one phrase each ("12 crease
+/// marks (OBJ has no crease edges)", "30 polygons (glTF stores triangles: each is fanned)",
+/// "coordinates beyond 32-bit float precision (glTF stores floats)"); empty if nothing.
+std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& extension);
+
 /// Writes `mesh` in the format of `path`'s extension (garbage-collected copy if needed),
-/// atomically. \throws IoError.
-void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags = {});
+/// atomically. \return what the format could not keep (unkept_by_format()), for the caller
+/// to tell the user. \throws IoError.
+std::vector<std::string> write_mesh(const Mesh& mesh, const std::filesystem::path& path,
+                                    const IoFlags& flags = {});
 
 /// Bezier patches of a .bez file (docs/spec.md §2). \throws IoError.
 std::vector<BezierPatch> read_bez(const std::filesystem::path& path);

@@ -86,16 +86,20 @@ public:
 
     // ------------------------------------------------------------- files (editor_files.cpp)
 
-    /// Opens `path` (.dae .gltf .glb .obj → Mesh, .bez → Surface, .bzc → Curve). On failure
-    /// throws IoError and leaves the current document untouched. Clears history and
-    /// selection; the document is clean (not dirty).
+    /// Opens `path` (.dae .gltf .glb .obj → Mesh, .bez → Surface, .bzc → Curve). With unsaved
+    /// changes it is refused once, as quitting is (every way a document is replaced — Ctrl+O,
+    /// a dropped file — comes here); the next open goes through. On failure throws IoError
+    /// and leaves the current document untouched. Clears history and selection; the document
+    /// is clean (not dirty).
     Outcome open(const std::filesystem::path& path);
     /// Replaces the document with an in-memory one (tests, new documents); clean.
     void set_document(Document document, std::filesystem::path path = {});
 
     /// Saves to path() atomically (Ctrl+S). Refused (with reason) when there is no path or
     /// the format cannot hold the document (a .bez path in Surface mode: the edited mesh is
-    /// no patch set — use save as a mesh file). IoErrors become refused outcomes.
+    /// no patch set — use save as a mesh file). A format that would lose something (creases
+    /// in OBJ, polygons in glTF) is refused once with what it would lose; saving again goes
+    /// through and says what was not kept. IoErrors become refused outcomes.
     Outcome save();
     /// Saves to `path` and makes it the document's path (Ctrl+Shift+S after the window has
     /// asked for a path). Mesh/Surface write a mesh format; Curve writes .bzc.
@@ -200,6 +204,8 @@ private:
     bool dragging_ = false;
     bool drag_moved_ = false;
     bool quit_armed_ = false;
+    bool replace_armed_ = false;         ///< the next open() may discard unsaved changes
+    std::filesystem::path lossy_armed_;  ///< the next save to this path may lose what it said
     std::uint32_t drag_index_ = 0;  ///< the vertex or control point being dragged
     /// Surface mode: revisions whose mesh is exactly tessellate(patches, density), so a
     /// density change can say whether it replaces mesh edits.
