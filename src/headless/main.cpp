@@ -105,6 +105,7 @@ int run(const Options& options) {
     if (is_curve) {
         camera.frame_2d({0.0f, 0.0f}, {1.0f, 1.0f}, aspect);
     } else {
+        camera.up = options.up;
         camera.azimuth_deg = options.azimuth.value_or(30.0f);
         camera.elevation_deg = options.elevation.value_or(20.0f);
         // The control points count too when the nets are drawn.

@@ -134,6 +134,12 @@ int parse_options(int argc, char** argv, Options& o) {
                    "orbit angles in degrees and distance to the bounding-box centre (default "
                    "30,20 at the distance that frames the box)")
         ->type_name("AZ,EL[,DIST]");
+    app.add_option_function<std::string>(
+           "--up", [&o](const std::string& v) { o.up = v == "z" ? UpAxis::Z : UpAxis::Y; },
+           "which axis is up: y, z (the CS184 course's models), or file (the file's declared "
+           "axis, +Y once read; the default); --camera's angles turn about it")
+        ->type_name("y|z|file")
+        ->check(CLI::IsMember({"y", "z", "file"}));
     app.add_option("--select", o.select,
                    "highlight a vertex, the edge A-B, the halfedge A->B, a face")
         ->option_text("v:I|e:A-B|h:A-B|f:I");

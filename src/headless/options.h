@@ -10,6 +10,7 @@
 
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
+#include "meshedit/render/camera.h"
 
 namespace meshedit::headless {
 
@@ -29,6 +30,7 @@ struct Options {
     std::optional<bool> smooth;
     bool wireframe = false;
     std::optional<float> azimuth, elevation, distance;
+    UpAxis up = UpAxis::Y;
     std::string select;
     std::optional<bool> features;
     int density = 8;

@@ -12,18 +12,64 @@
 
 namespace meshedit {
 
+glm::vec3 Camera::world_up() const {
+    if (trackball && !orthographic) {
+        return orientation * glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+    return up == UpAxis::Z && !orthographic ? glm::vec3(0.0f, 0.0f, 1.0f)
+                                            : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
 glm::vec3 Camera::eye() const {
     if (orthographic) {
         return target + glm::vec3(0.0f, 0.0f, distance);
     }
+    if (trackball) {
+        return target + distance * (orientation * glm::vec3(0.0f, 0.0f, 1.0f));
+    }
     const float az = glm::radians(azimuth_deg);
     const float el = glm::radians(std::clamp(elevation_deg, -89.0f, 89.0f));
+    // In a Y-up frame; a Z-up world maps (x, y, z) to (x, −z, y), so the front eye is on −Y.
     const glm::vec3 offset(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-    return target + distance * offset;
+    const glm::vec3 world = up == UpAxis::Z ? glm::vec3(offset.x, -offset.z, offset.y) : offset;
+    return target + distance * world;
 }
 
 glm::mat4 Camera::view() const {
-    return glm::lookAt(eye(), target, glm::vec3(0.0f, 1.0f, 0.0f));
+    return glm::lookAt(eye(), target, world_up());
+}
+
+void Camera::orbit(float dx_deg, float dy_deg) {
+    if (!trackball) {
+        azimuth_deg -= dx_deg;
+        elevation_deg = std::clamp(elevation_deg + dy_deg, -89.0f, 89.0f);
+        return;
+    }
+    // Dragging right turns the scene right: the eye goes left about the screen's up axis;
+    // dragging down tips it towards the viewer: the eye goes up about the screen's right.
+    const glm::vec3 screen_up = orientation * glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 screen_right = orientation * glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::quat turn = glm::angleAxis(glm::radians(-dx_deg), screen_up) *
+                           glm::angleAxis(glm::radians(-dy_deg), screen_right);
+    orientation = glm::normalize(turn * orientation);
+}
+
+void Camera::set_trackball(bool on) {
+    if (on == trackball) {
+        return;
+    }
+    if (on) {
+        // The camera's axes in world space are the rows of the view rotation.
+        orientation = glm::quat_cast(glm::transpose(glm::mat3(view())));
+        trackball = true;
+        return;
+    }
+    // Back to azimuth and elevation of the current eye direction about the up axis.
+    const glm::vec3 d = glm::normalize(eye() - target);
+    trackball = false;
+    const glm::vec3 frame = up == UpAxis::Z ? glm::vec3(d.x, d.z, -d.y) : d;  // to Y-up
+    elevation_deg = glm::degrees(std::asin(std::clamp(frame.y, -1.0f, 1.0f)));
+    azimuth_deg = glm::degrees(std::atan2(frame.x, frame.z));
 }
 
 // Near and far hug the scene's bounding sphere: depth precision where it matters.

@@ -81,6 +81,7 @@ void load_ui_font(float scale) {
 }  // namespace
 
 App::App(const ViewerOptions& options) {
+    editor_.view().up = options.up;
     glfwSetErrorCallback([](int code, const char* text) {
         std::fprintf(stderr, "meshedit: GLFW error %d: %s\n", code, text);
     });
@@ -280,9 +281,7 @@ void App::on_cursor(double x, double y) {
             drag_ = DragMode::Orbit;
             [[fallthrough]];
         case DragMode::Orbit:
-            camera_.azimuth_deg -= delta.x * kOrbitDegreesPerPixel;
-            camera_.elevation_deg =
-                std::clamp(camera_.elevation_deg + delta.y * kOrbitDegreesPerPixel, -89.0f, 89.0f);
+            camera_.orbit(delta.x * kOrbitDegreesPerPixel, delta.y * kOrbitDegreesPerPixel);
             break;
         case DragMode::Pan: {
             // One window pixel moves the target by the world size of a pixel at its depth.
@@ -384,6 +383,9 @@ void App::apply(const Outcome& outcome) {
         scene_->mesh().update_geometry(editor_.mesh());
         cursor_moved_ = true;
     }
+    if ((c & kDisplay) && !camera_.orthographic && camera_.trackball != editor_.view().trackball) {
+        camera_.set_trackball(editor_.view().trackball);
+    }
     if (c & (kTopology | kGeometry | kSelection | kDisplay | kCurve | kDocument)) {
         // Feature edges walk every edge: redone only when the mesh or a crease changed,
         // not when the selection or hover moves.
@@ -396,10 +398,10 @@ void App::apply(const Outcome& outcome) {
         write_screenshot();
     }
     if (c & kAskSavePath) {
-        panels_.ask_path(Panels::Prompt::SaveAs, editor_.path().string());
+        panels_.ask_path(Panels::Prompt::SaveAs, editor_.path());
     }
     if (c & kAskOpenPath) {
-        panels_.ask_path(Panels::Prompt::Open, editor_.path().parent_path().string());
+        panels_.ask_path(Panels::Prompt::Open, editor_.path());
     }
     if (c & kQuit) {
         quit_ = true;
@@ -446,11 +448,13 @@ void App::rebuild_overlay(bool features_changed) {
 void App::reset_camera() {
     const float a = aspect();
     camera_ = Camera();
+    camera_.up = editor_.view().up;
     if (!mesh_mode()) {
         camera_.frame_2d({0.0f, 0.0f}, {1.0f, 1.0f}, a);
     } else {
         camera_.frame_mesh(editor_.mesh(), a);  // the same opening view as `meshedit render`
     }
+    camera_.set_trackball(editor_.view().trackball && !camera_.orthographic);
     scene_center_ = camera_.target;
     scene_radius_ = camera_.orthographic ? 1.0f : camera_.scene_radius;
     cursor_moved_ = true;

@@ -23,6 +23,7 @@ struct ViewerOptions {
     int width = 1280;            ///< window size in screen coordinates
     int height = 800;
     bool vsync = true;
+    UpAxis up = UpAxis::Y;  ///< --up: which world axis starts up on the screen
 };
 
 class App {

@@ -62,6 +62,8 @@ constexpr std::array kTable{
     Binding{key_of('O'), kCtrl, kAllModes, {Command::Open}, "Ctrl+O", "open a file"},
     Binding{key_of('P'), kNoMods, kAllModes, {Command::Screenshot}, "P", "screenshot to PNG"},
     Binding{Key::Space, kNoMods, kAllModes, {Command::ResetCamera}, "Space", "reset the camera"},
+    Binding{key_of('Y'), kNoMods, kMeshModes, {Command::CycleUp}, "Y", "up axis: +Y (as the file declares) or +Z (the CS184 course's models)"},
+    Binding{key_of('O'), kNoMods, kMeshModes, {Command::ToggleTrackball}, "O", "orbit: turntable (the up axis stays up) or trackball (free rotation)"},
     Binding{Key::Escape, kNoMods, kAllModes, {Command::Escape}, "Esc", "clear the selection; with nothing selected, quit"},
     Binding{key_of('Q'), kCtrl, kAllModes, {Command::Quit}, "Ctrl+Q", "quit"},
     // Curve mode.

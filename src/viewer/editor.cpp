@@ -65,6 +65,8 @@ Outcome Editor::run(Action action) {
         case Command::ToggleInfo:
         case Command::ToggleHelp:
         case Command::ResetCamera:
+        case Command::CycleUp:
+        case Command::ToggleTrackball:
         case Command::Screenshot:
             return run_display(action);
         case Command::Undo:
@@ -128,6 +130,16 @@ Outcome Editor::run_display(Action action) {
             return {kDisplay, ""};
         case Command::ResetCamera:
             return {kResetCamera, ""};
+        case Command::CycleUp:
+            view_.up = view_.up == UpAxis::Y ? UpAxis::Z : UpAxis::Y;
+            return {kResetCamera | kDisplay, view_.up == UpAxis::Y
+                                                 ? "up axis +Y, as the file declares"
+                                                 : "up axis +Z (the CS184 course's models are "
+                                                   "Z-up whatever they declare)"};
+        case Command::ToggleTrackball:
+            view_.trackball = !view_.trackball;
+            return {kDisplay, view_.trackball ? "orbit: trackball (free rotation)"
+                                              : "orbit: turntable (the up axis stays up)"};
         case Command::Screenshot:
             return {kScreenshot, ""};
         default:

@@ -41,6 +41,12 @@ int main(int argc, char** argv) {
     app.add_option("--size", size, "window size in screen coordinates (default 1280x800)")
         ->type_name("WxH");
     app.add_flag("--no-vsync", no_vsync, "draw without waiting for the display's refresh");
+    std::string up = "file";
+    app.add_option("--up", up,
+                   "which axis is up: y, z (the CS184 course's models), or file (the file's "
+                   "declared axis, +Y once read; the default); Y switches in the window")
+        ->type_name("y|z|file")
+        ->check(CLI::IsMember({"y", "z", "file"}));
     app.footer(
         "The meshedit-view executable; 'meshedit FILE' and 'meshedit view FILE' run it.\n"
         "Without a display, use 'meshedit render FILE -o out.png' to render headless.");
@@ -54,6 +60,7 @@ int main(int argc, char** argv) {
     }
     options.file = file;
     options.vsync = !no_vsync;
+    options.up = up == "z" ? meshedit::UpAxis::Z : meshedit::UpAxis::Y;
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland)) {

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "meshedit/render/shading.h"
+#include "meshedit/viewer/paths.h"
 
 namespace meshedit::viewer {
 
@@ -32,10 +33,29 @@ void rows_table(const char* id, const std::vector<std::pair<std::string, std::st
 
 }  // namespace
 
-void Panels::ask_path(Prompt prompt, const std::string& initial) {
+void Panels::ask_path(Prompt prompt, const std::filesystem::path& document) {
     prompt_ = prompt;
     prompt_fresh_ = true;
-    path_ = initial;
+    place_cursor_ = true;
+    path_ = prompt_start(document, prompt == Prompt::SaveAs);
+    folder_ = std::filesystem::path(prompt_start(document, false));
+    candidates_.clear();
+}
+
+int Panels::on_prompt_input(ImGuiInputTextCallbackData* data) {
+    auto* self = static_cast<Panels*>(data->UserData);
+    if (data->EventFlag == ImGuiInputTextFlags_CallbackAlways && self->place_cursor_) {
+        // Whatever ImGui did on activation (it selects all on the first focus), the field
+        // starts the same way every time: the cursor after the text, nothing selected.
+        data->CursorPos = data->SelectionStart = data->SelectionEnd = data->BufTextLen;
+        self->place_cursor_ = false;
+    } else if (data->EventFlag == ImGuiInputTextFlags_CallbackCompletion) {
+        const Completion c = complete_path(std::string(data->Buf, data->BufTextLen), self->folder_);
+        self->candidates_ = c.candidates.size() > 1 ? c.candidates : std::vector<std::string>{};
+        data->DeleteChars(0, data->BufTextLen);
+        data->InsertChars(0, c.text.c_str());
+    }
+    return 0;
 }
 
 bool Panels::contains(glm::vec2 point) const {
@@ -247,14 +267,29 @@ void Panels::draw_prompt(PanelRequests& requests) {
             prompt_fresh_ = false;
         }
         ImGui::SetNextItemWidth(520);
-        const bool entered =
-            ImGui::InputText("##path", &path_, ImGuiInputTextFlags_EnterReturnsTrue);
+        const bool entered = ImGui::InputText("##path", &path_,
+                                              ImGuiInputTextFlags_EnterReturnsTrue |
+                                                  ImGuiInputTextFlags_CallbackAlways |
+                                                  ImGuiInputTextFlags_CallbackCompletion,
+                                              &Panels::on_prompt_input, this);
+        if (!candidates_.empty()) {
+            std::string shown;
+            for (std::size_t i = 0; i < candidates_.size() && i < 12; ++i) {
+                shown += (i ? "   " : "") + candidates_[i];
+            }
+            if (candidates_.size() > 12) {
+                shown += "   … (" + std::to_string(candidates_.size()) + ")";
+            }
+            ImGui::TextDisabled("%s", shown.c_str());
+        }
+        ImGui::TextDisabled("Tab completes a name; ~ is your home folder");
         const bool ok = ImGui::Button(prompt_ == Prompt::SaveAs ? "Save" : "Open") || submit_;
         ImGui::SameLine();
         const bool cancel = ImGui::Button("Cancel") || cancel_;
         submit_ = cancel_ = false;
         if ((entered || ok) && !path_.empty()) {
-            (prompt_ == Prompt::SaveAs ? requests.save_as : requests.open) = path_;
+            (prompt_ == Prompt::SaveAs ? requests.save_as : requests.open) =
+                resolve_prompt_path(path_, folder_);
             prompt_ = Prompt::None;
             ImGui::CloseCurrentPopup();
         } else if (cancel) {

@@ -12,6 +12,8 @@
 
 #include <glm/glm.hpp>
 
+struct ImGuiInputTextCallbackData;
+
 #include "meshedit/viewer/editor.h"
 
 namespace meshedit::viewer {
@@ -34,8 +36,10 @@ class Panels {
 public:
     enum class Prompt { None, SaveAs, Open };
 
-    /// Shows the path prompt (a small modal) pre-filled with `initial`.
-    void ask_path(Prompt prompt, const std::string& initial);
+    /// Shows the path prompt (a small modal) for the document at `document`: open starts at
+    /// its folder, save as at its path (paths.h); the cursor always starts at the end, Tab
+    /// completes, and the text is resolved against the starting folder.
+    void ask_path(Prompt prompt, const std::filesystem::path& document);
     bool prompting() const { return prompt_ != Prompt::None; }
     /// Return / Esc pressed while prompting. The window forwards them because ImGui 1.86
     /// polls key state once per frame and misses a press and release within one frame
@@ -62,8 +66,12 @@ private:
     std::vector<std::pair<glm::vec2, glm::vec2>> rects_;  ///< min, max of last frame's panels
     Prompt prompt_ = Prompt::None;
     bool prompt_fresh_ = false;  ///< open the popup and focus the text field next frame
+    bool place_cursor_ = false;  ///< put the cursor at the end, nothing selected
     bool submit_ = false, cancel_ = false;
     std::string path_;
+    std::filesystem::path folder_;         ///< relative text is resolved against this
+    std::vector<std::string> candidates_;  ///< names Tab found, when there were several
+    static int on_prompt_input(ImGuiInputTextCallbackData* data);
 };
 
 }  // namespace meshedit::viewer

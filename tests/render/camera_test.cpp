@@ -73,5 +73,46 @@ TEST(BackFaces, ShownWhenTheNearPlaneCanReachTheBox) {
     EXPECT_GT(shown_count, 1000);
 }
 
+// The up axis: with +Z up, the front view (azimuth 0) looks along +Y from −Y, and the screen's
+// up is +Z; with +Y up as before, from +Z.
+TEST(CameraUp, FrontViewOfEachUpAxis) {
+    Camera camera;
+    camera.azimuth_deg = 0.0f;
+    camera.elevation_deg = 0.0f;
+    camera.distance = 2.0f;
+    EXPECT_NEAR(camera.eye().z, 2.0f, 1e-6f);
+    camera.up = UpAxis::Z;
+    EXPECT_NEAR(camera.eye().y, -2.0f, 1e-6f);
+    EXPECT_NEAR(camera.eye().z, 0.0f, 1e-6f);
+    const glm::mat4 view = camera.view();
+    // The view's second row is the screen's up in world space.
+    EXPECT_NEAR(view[2][1], 1.0f, 1e-6f);
+    camera.elevation_deg = 30.0f;
+    EXPECT_NEAR(camera.eye().z, 2.0f * std::sin(glm::radians(30.0f)), 1e-5f);
+}
+
+// The trackball keeps the view it starts from and turns freely past the poles; back on the
+// turntable the view is levelled again, with the same eye.
+TEST(CameraUp, TrackballStartsAndEndsWhereTheTurntableIs) {
+    Camera camera;
+    camera.azimuth_deg = 40.0f;
+    camera.elevation_deg = 25.0f;
+    camera.distance = 3.0f;
+    const glm::vec3 eye = camera.eye();
+    camera.set_trackball(true);
+    EXPECT_LT(glm::length(camera.eye() - eye), 1e-5f);
+    camera.set_trackball(false);
+    EXPECT_NEAR(camera.azimuth_deg, 40.0f, 1e-3f);
+    EXPECT_NEAR(camera.elevation_deg, 25.0f, 1e-3f);
+
+    camera.set_trackball(true);
+    for (int i = 0; i < 4; ++i) {
+        camera.orbit(0.0f, 45.0f);  // 180° over the top: the turntable clamps at 89°
+    }
+    EXPECT_NEAR(glm::length(camera.eye() - camera.target), 3.0f, 1e-4f);
+    const glm::vec3 d = glm::normalize(camera.eye() - camera.target);
+    EXPECT_LT(d.y, -0.3f) << "went over the pole to below";
+}
+
 }  // namespace
 }  // namespace meshedit

@@ -54,6 +54,8 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('O'), kCtrl, kAllModes, {Command::Open}},
             {key_of('P'), 0, kAllModes, {Command::Screenshot}},
             {Key::Space, 0, kAllModes, {Command::ResetCamera}},
+            {key_of('Y'), 0, kMeshModes, {Command::CycleUp}},
+            {key_of('O'), 0, kMeshModes, {Command::ToggleTrackball}},
             {Key::Escape, 0, kAllModes, {Command::Escape}},
             {key_of('Q'), kCtrl, kAllModes, {Command::Quit}},
             // Curve mode.

@@ -1,23 +1,37 @@
 #pragma once
 /// \file
-/// An orbit camera (Y up): the eye circles a target at an azimuth and elevation in degrees
-/// and a distance. Perspective by default; orthographic for 2D views (Bezier curves). Shared
-/// by the headless renderer and the interactive viewer.
+/// An orbit camera: the eye circles a target at an azimuth and elevation in degrees and a
+/// distance, around the world's +Y or +Z axis (a turntable), or turns freely (a trackball).
+/// Perspective by default; orthographic for 2D views (Bezier curves). Shared by the headless
+/// renderer and the interactive viewer.
 
 #include <span>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "meshedit/core/math.h"
 #include "meshedit/core/mesh.h"
 
 namespace meshedit {
 
+/// Which world axis points up on the screen.
+enum class UpAxis {
+    Y,  ///< glTF's and OBJ's convention, and what COLLADA files are converted to on reading
+    Z,  ///< the CS184 course's models (tagged Y_UP, but their data is Z-up), CAD, Blender
+};
+
 class Camera {
 public:
     glm::vec3 target{0.0f};
-    float azimuth_deg = 30.0f;    ///< around +Y, 0 looks along −Z (eye on +Z)
-    float elevation_deg = 20.0f;  ///< above the XZ plane, clamped to ±89°
+    /// Around the up axis; 0 puts the eye on +Z (up +Y) or on −Y (up +Z): the front view.
+    float azimuth_deg = 30.0f;
+    float elevation_deg = 20.0f;  ///< above the ground plane, clamped to ±89°
+    UpAxis up = UpAxis::Y;
+    /// Free rotation: `orientation` (camera axes in world space) replaces azimuth and
+    /// elevation, and orbit() turns about the screen's axes with no clamp.
+    bool trackball = false;
+    glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};
     float distance = 3.0f;
     float fov_y_deg = 40.0f;
     /// Radius of the scene around `target`, for the near and far planes.
@@ -39,6 +53,15 @@ public:
     /// Orthographic view of the rectangle [min, max] (x, y) with `margin` around it, fitted
     /// to `aspect` (width / height).
     void frame_2d(glm::vec2 min, glm::vec2 max, float aspect, float margin = 0.05f);
+
+    /// Turns the view by a mouse drag of (dx, dy) degrees: azimuth and elevation on the
+    /// turntable, rotation about the screen's up and right axes on the trackball.
+    void orbit(float dx_deg, float dy_deg);
+    /// Switches to or from the trackball keeping the current view (back on the turntable,
+    /// the view is levelled to the up axis).
+    void set_trackball(bool on);
+    /// The world direction that is up on the screen.
+    glm::vec3 world_up() const;
 
     glm::vec3 eye() const;
     glm::mat4 view() const;

@@ -47,6 +47,8 @@ enum class Command {
     ToggleInfo,
     ToggleHelp,
     ResetCamera,
+    CycleUp,          ///< which world axis is up: +Y, +Z
+    ToggleTrackball,  ///< turntable or trackball orbit
     Screenshot,
     // History and files.
     Undo,

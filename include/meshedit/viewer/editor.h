@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/render/camera.h"
 #include "meshedit/render/shading.h"
 #include "meshedit/viewer/bindings.h"
 #include "meshedit/viewer/history.h"
@@ -67,6 +68,8 @@ struct ViewState {
     bool show_curve = true;  ///< Curve mode
     double t = 0.5;          ///< Curve mode: de Casteljau parameter
     int level = -1;          ///< Curve mode: levels shown (−1 = all, with B(t))
+    UpAxis up = UpAxis::Y;   ///< which world axis is up on the screen (Y cycles)
+    bool trackball = false;  ///< free rotation instead of the turntable (O toggles)
 };
 
 /// The viewer's logic: one class, its members spread over files by responsibility.
@@ -206,7 +209,7 @@ private:
     bool quit_armed_ = false;
     bool replace_armed_ = false;         ///< the next open() may discard unsaved changes
     std::filesystem::path lossy_armed_;  ///< the next save to this path may lose what it said
-    std::uint32_t drag_index_ = 0;  ///< the vertex or control point being dragged
+    std::uint32_t drag_index_ = 0;       ///< the vertex or control point being dragged
     /// Surface mode: revisions whose mesh is exactly tessellate(patches, density), so a
     /// density change can say whether it replaces mesh edits.
     std::unordered_set<std::uint64_t> pristine_revisions_;

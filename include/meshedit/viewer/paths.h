@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// The open and save-as prompts' paths, without a window: what the field starts with, what a
+/// typed text names, and Tab completion. The window's prompt (src/viewer/panels.cpp) calls
+/// these; tests call them directly.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace meshedit::viewer {
+
+/// The text a prompt starts with: for open, the document's folder (the current folder when
+/// nothing is open) as an absolute path ending in a separator, so that a typed name lands in
+/// it; for save as, the document's own absolute path (or that folder and "untitled.dae").
+std::string prompt_start(const std::filesystem::path& document, bool save_as);
+
+/// What a prompt's text names: a leading `~` is the home folder, a relative path is taken
+/// relative to `folder` (the folder the prompt started in), and `.` and `..` are resolved
+/// ("a/../b/./c" → "b/c").
+std::filesystem::path resolve_prompt_path(const std::string& text,
+                                          const std::filesystem::path& folder);
+
+/// Tab in a prompt: `text` extended by the longest prefix shared by the names in its folder
+/// that start with what follows the last separator (a single folder gets its separator, so
+/// Tab can go on into it), and those names, sorted, for the prompt to show when there are
+/// several. Hidden entries (starting with '.') only match a prefix that starts with '.'.
+struct Completion {
+    std::string text;
+    std::vector<std::string> candidates;
+};
+Completion complete_path(const std::string& text, const std::filesystem::path& folder);
+
+}  // namespace meshedit::viewer

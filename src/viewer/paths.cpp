@@ -1,0 +1,85 @@
+// The prompts' paths (paths.h).
+
+#include "meshedit/viewer/paths.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <system_error>
+
+namespace fs = std::filesystem;
+
+namespace meshedit::viewer {
+namespace {
+
+std::string with_separator(const fs::path& folder) {
+    std::string s = folder.lexically_normal().string();
+    if (s.empty() || s.back() != '/') {
+        s += '/';
+    }
+    return s;
+}
+
+// `~` and `~/…` → the home folder; other text as it is.
+std::string expand_home(const std::string& text) {
+    if (text.empty() || text[0] != '~' || (text.size() > 1 && text[1] != '/')) {
+        return text;
+    }
+    const char* home = std::getenv("HOME");
+    return home != nullptr ? std::string(home) + text.substr(1) : text;
+}
+
+}  // namespace
+
+std::string prompt_start(const fs::path& document, bool save_as) {
+    std::error_code ec;
+    const fs::path current = fs::current_path(ec);
+    if (document.empty()) {
+        return save_as ? with_separator(current) + "untitled.dae" : with_separator(current);
+    }
+    const fs::path absolute = fs::absolute(document, ec).lexically_normal();
+    return save_as ? absolute.string() : with_separator(absolute.parent_path());
+}
+
+fs::path resolve_prompt_path(const std::string& text, const fs::path& folder) {
+    const fs::path path = expand_home(text);
+    return (path.is_absolute() ? path : folder / path).lexically_normal();
+}
+
+Completion complete_path(const std::string& text, const fs::path& folder) {
+    Completion out{text, {}};
+    const std::string expanded = expand_home(text);
+    const std::size_t slash = expanded.rfind('/');
+    const std::string dir_text = slash == std::string::npos ? "" : expanded.substr(0, slash + 1);
+    const std::string prefix = slash == std::string::npos ? expanded : expanded.substr(slash + 1);
+    const fs::path dir = resolve_prompt_path(dir_text.empty() ? "." : dir_text, folder);
+    std::error_code ec;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        std::string name = it->path().filename().string();
+        if (name.compare(0, prefix.size(), prefix) != 0 ||
+            (name[0] == '.' && (prefix.empty() || prefix[0] != '.'))) {
+            continue;
+        }
+        std::error_code is_dir_ec;
+        if (it->is_directory(is_dir_ec)) {
+            name += '/';
+        }
+        out.candidates.push_back(std::move(name));
+    }
+    std::sort(out.candidates.begin(), out.candidates.end());
+    if (out.candidates.empty()) {
+        return out;
+    }
+    std::string shared = out.candidates.front();
+    for (const std::string& c : out.candidates) {
+        std::size_t n = 0;
+        while (n < shared.size() && n < c.size() && shared[n] == c[n]) {
+            ++n;
+        }
+        shared.resize(n);
+    }
+    // Keep what the user typed (a `~` stays a `~`) and append the shared rest.
+    out.text = text + shared.substr(prefix.size());
+    return out;
+}
+
+}  // namespace meshedit::viewer
