@@ -17,10 +17,6 @@ namespace {
 /// Halfedge shafts are cut back this fraction of the edge at each end, so arrows of the
 /// halfedges around a vertex do not touch each other.
 constexpr double kShaftShorten = 0.15;
-/// Arrowhead length as a fraction of the shaft length.
-constexpr double kArrowLength = 0.2;
-/// Arrowhead half-width relative to its length.
-constexpr double kArrowHalfWidth = 0.4;
 /// Face tints are lifted off the surface by this fraction of the bounding-box diagonal, so
 /// they win the depth test against the shaded face without visibly floating.
 constexpr double kFaceOffset = 1e-3;
@@ -46,8 +42,8 @@ float net_point_size(const OverlayStyle& s) {
     return s.vertex_size_px * 0.5f;
 }
 
-/// Curves are 2D (docs/spec.md §4): drop any z so every curve overlay lies in the z = 0 plane even if
-/// a file carried a stray z.
+/// Curves are 2D (docs/spec.md §4): drop any z so every curve overlay lies in the z = 0 plane even
+/// if a file carried a stray z.
 Vec3 flat(const Vec3& p) {
     return {p.x, p.y, 0.0};
 }
@@ -80,8 +76,10 @@ void add_halfedge_arrow(const Mesh& m, Halfedge h, const Color& color, const Ove
     const Vec3 tail = lerp(a, b, kShaftShorten);
     const Vec3 head = lerp(a, b, 1.0 - kShaftShorten);
     if (!f.is_valid() || dd == 0.0) {
-        // A dangling edge with no face on either side: no plane to inset into, so only a shaft.
+        // A dangling edge with no face on either side: no plane to inset into, so on the edge.
         out.lines.push_back({tail, head, color, style.edge_width_px});
+        out.arrowheads.push_back(
+            {head, tail, Vec3{}, color, style.arrowhead_length_px, style.arrowhead_half_width_px});
         return;
     }
 
@@ -94,22 +92,10 @@ void add_halfedge_arrow(const Mesh& m, Halfedge h, const Color& color, const Ove
     const Vec3 shaft_a = tail + s * (c - tail);
     const Vec3 shaft_b = head + s * (c - head);
     out.lines.push_back({shaft_a, shaft_b, color, style.edge_width_px});
-
-    // Arrowhead in the face plane: `across` is perpendicular to the edge inside the plane
-    // (towards the centroid). Its half-width is capped at half the shaft's distance from the
-    // edge so the head never crosses the edge into the neighbouring face.
-    const Vec3 shaft = shaft_b - shaft_a;
-    const double shaft_len = norm(shaft);
-    const Vec3 across = normalize(c - foot);
-    const double offset = s * norm(c - foot);
-    const double length = kArrowLength * shaft_len;
-    double half_width = kArrowHalfWidth * length;
-    if (half_width > 0.5 * offset) {
-        half_width = 0.5 * offset;
-    }
-    const Vec3 base = shaft_b - normalize(shaft) * length;
-    out.triangles.push_back(
-        {shaft_b, base + across * half_width, base - across * half_width, color});
+    // The head is sized in pixels by the renderer, so it reads at every zoom; it lies in the
+    // face's plane (across: from the edge towards the centroid).
+    out.arrowheads.push_back({shaft_b, shaft_a, normalize(c - foot), color,
+                              style.arrowhead_length_px, style.arrowhead_half_width_px});
 }
 
 void add_face_tint(const Mesh& m, Face f, const Color& color, const OverlayStyle& style,
@@ -134,6 +120,7 @@ void OverlayBatch::append(const OverlayBatch& other) {
     points.insert(points.end(), other.points.begin(), other.points.end());
     lines.insert(lines.end(), other.lines.begin(), other.lines.end());
     triangles.insert(triangles.end(), other.triangles.begin(), other.triangles.end());
+    arrowheads.insert(arrowheads.end(), other.arrowheads.begin(), other.arrowheads.end());
 }
 
 void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out) {

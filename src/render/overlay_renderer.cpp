@@ -15,6 +15,7 @@ namespace {
 constexpr int kPointFloats = 3 + 4 + 1;
 constexpr int kLineFloats = 3 + 3 + 4 + 1;
 constexpr int kTriangleVertexFloats = 3 + 4;
+constexpr int kArrowheadFloats = 3 + 3 + 3 + 4 + 2;
 
 void grow_and_upload(unsigned vbo, std::size_t& capacity, const std::vector<float>& data) {
     const std::size_t bytes = data.size() * sizeof(float);
@@ -51,10 +52,10 @@ void push(std::vector<float>& out, const Color& c) {
 
 OverlayRenderer::~OverlayRenderer() {
     if (point_vao_ != 0) {
-        const GLuint vaos[3] = {point_vao_, line_vao_, tri_vao_};
-        const GLuint vbos[3] = {point_vbo_, line_vbo_, tri_vbo_};
-        glDeleteVertexArrays(3, vaos);
-        glDeleteBuffers(3, vbos);
+        const GLuint vaos[4] = {point_vao_, line_vao_, tri_vao_, arrow_vao_};
+        const GLuint vbos[4] = {point_vbo_, line_vbo_, tri_vbo_, arrow_vbo_};
+        glDeleteVertexArrays(4, vaos);
+        glDeleteBuffers(4, vbos);
     }
 }
 
@@ -65,16 +66,19 @@ void OverlayRenderer::ensure_gl_objects() {
     point_shader_ = ShaderProgram("overlay_point.vert", "overlay_point.frag");
     line_shader_ = ShaderProgram("overlay_line.vert", "overlay_line.frag");
     tri_shader_ = ShaderProgram("overlay_tri.vert", "overlay_tri.frag");
-    GLuint vaos[3];
-    GLuint vbos[3];
-    glGenVertexArrays(3, vaos);
-    glGenBuffers(3, vbos);
+    arrow_shader_ = ShaderProgram("overlay_arrow.vert", "overlay_tri.frag");
+    GLuint vaos[4];
+    GLuint vbos[4];
+    glGenVertexArrays(4, vaos);
+    glGenBuffers(4, vbos);
     point_vao_ = vaos[0];
     line_vao_ = vaos[1];
     tri_vao_ = vaos[2];
+    arrow_vao_ = vaos[3];
     point_vbo_ = vbos[0];
     line_vbo_ = vbos[1];
     tri_vbo_ = vbos[2];
+    arrow_vbo_ = vbos[3];
 
     glBindVertexArray(point_vao_);
     glBindBuffer(GL_ARRAY_BUFFER, point_vbo_);
@@ -94,6 +98,14 @@ void OverlayRenderer::ensure_gl_objects() {
     attribute(0, 3, kTriangleVertexFloats, 0, false);
     attribute(1, 4, kTriangleVertexFloats, 3, false);
 
+    glBindVertexArray(arrow_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, arrow_vbo_);
+    attribute(0, 3, kArrowheadFloats, 0, true);
+    attribute(1, 3, kArrowheadFloats, 3, true);
+    attribute(2, 3, kArrowheadFloats, 6, true);
+    attribute(3, 4, kArrowheadFloats, 9, true);
+    attribute(4, 2, kArrowheadFloats, 13, true);
+
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     check_gl("OverlayRenderer setup");
@@ -104,6 +116,7 @@ void OverlayRenderer::upload(const OverlayBatch& batch) {
     points_.clear();
     lines_.clear();
     triangles_.clear();
+    arrowheads_.clear();
     for (const auto& p : batch.points) {
         push(points_, p.p);
         push(points_, p.color);
@@ -121,18 +134,28 @@ void OverlayRenderer::upload(const OverlayBatch& batch) {
             push(triangles_, t.color);
         }
     }
+    for (const auto& a : batch.arrowheads) {
+        push(arrowheads_, a.tip);
+        push(arrowheads_, a.tail);
+        push(arrowheads_, a.across);
+        push(arrowheads_, a.color);
+        arrowheads_.push_back(a.length_px);
+        arrowheads_.push_back(a.half_width_px);
+    }
     n_points_ = batch.points.size();
     n_lines_ = batch.lines.size();
     n_triangles_ = batch.triangles.size();
+    n_arrowheads_ = batch.arrowheads.size();
     grow_and_upload(point_vbo_, point_capacity_, points_);
     grow_and_upload(line_vbo_, line_capacity_, lines_);
     grow_and_upload(tri_vbo_, tri_capacity_, triangles_);
+    grow_and_upload(arrow_vbo_, arrow_capacity_, arrowheads_);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     check_gl("OverlayRenderer::upload");
 }
 
 void OverlayRenderer::draw(const Camera& camera, int width, int height, float depth_bias) {
-    if (n_points_ + n_lines_ + n_triangles_ == 0) {
+    if (n_points_ + n_lines_ + n_triangles_ + n_arrowheads_ == 0) {
         return;
     }
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -149,28 +172,29 @@ void OverlayRenderer::draw(const Camera& camera, int width, int height, float de
     // Translucent overlays must not hide each other through the depth buffer.
     glDepthMask(GL_FALSE);
 
-    // Order: face tints, then lines, then discs on top.
+    // Every overlay shader takes the same uniforms (the triangles' ignores the viewport).
+    const auto use = [&](const ShaderProgram& shader, unsigned vao) {
+        shader.use();
+        shader.set_mat4("u_view_projection", vp);
+        shader.set_vec2("u_viewport", w, h);
+        shader.set_float("u_depth_bias", depth_bias);
+        glBindVertexArray(vao);
+    };
+    // Order: face tints, then lines, arrowheads over their shafts, then discs on top.
     if (n_triangles_ > 0) {
-        tri_shader_.use();
-        tri_shader_.set_mat4("u_view_projection", vp);
-        tri_shader_.set_float("u_depth_bias", depth_bias);
-        glBindVertexArray(tri_vao_);
+        use(tri_shader_, tri_vao_);
         glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * n_triangles_));
     }
     if (n_lines_ > 0) {
-        line_shader_.use();
-        line_shader_.set_mat4("u_view_projection", vp);
-        line_shader_.set_vec2("u_viewport", w, h);
-        line_shader_.set_float("u_depth_bias", depth_bias);
-        glBindVertexArray(line_vao_);
+        use(line_shader_, line_vao_);
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n_lines_));
     }
+    if (n_arrowheads_ > 0) {
+        use(arrow_shader_, arrow_vao_);
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 3, static_cast<GLsizei>(n_arrowheads_));
+    }
     if (n_points_ > 0) {
-        point_shader_.use();
-        point_shader_.set_mat4("u_view_projection", vp);
-        point_shader_.set_vec2("u_viewport", w, h);
-        point_shader_.set_float("u_depth_bias", depth_bias);
-        glBindVertexArray(point_vao_);
+        use(point_shader_, point_vao_);
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n_points_));
     }
     glBindVertexArray(0);

@@ -87,6 +87,10 @@ const std::vector<GoldenCase>& golden_cases() {
         {"select_halfedge_twin",
          "dae/icosahedron.dae",
          {"--select", "h:1-0", "--wireframe", "--camera", "0,70"}},
+        // Zoomed out: the arrowhead keeps its size in pixels.
+        {"select_halfedge_far",
+         "dae/icosahedron.dae",
+         {"--select", "h:0-1", "--wireframe", "--camera", "0,70,9"}},
         {"select_face",
          "dae/icosahedron.dae",
          {"--select", "f:0", "--wireframe", "--camera", "-45,35"}},

@@ -203,7 +203,7 @@ TEST(ElementHighlight, InteriorHalfedgeArrowByHand) {
     OverlayBatch out;
     add_element_highlight(mesh, ElementRef::halfedge(h), kRed, style, out);
     ASSERT_EQ(out.lines.size(), 1u);
-    ASSERT_EQ(out.triangles.size(), 1u);
+    ASSERT_EQ(out.arrowheads.size(), 1u);
     EXPECT_TRUE(out.points.empty());
 
     // Shortened to 15% … 85% of (0,0)→(3,0): x = 0.45 and 2.55; then each end moves `s` of
@@ -218,19 +218,16 @@ TEST(ElementHighlight, InteriorHalfedgeArrowByHand) {
     EXPECT_TRUE(strictly_inside_right_triangle(shaft.a));
     EXPECT_TRUE(strictly_inside_right_triangle(shaft.b));
 
-    // Arrowhead: tip at the shaft's head end, pointing along the halfedge (its base behind
-    // the tip), every corner strictly inside the face, in the face plane.
-    const auto& head = out.triangles[0];
-    EXPECT_EQ(head.a, shaft.b);
+    // Arrowhead: tip at the shaft's head end, its axis along the shaft (so it points along
+    // the halfedge), sized in pixels by the style whatever the mesh's scale.
+    const auto& head = out.arrowheads[0];
+    EXPECT_EQ(head.tip, shaft.b);
+    EXPECT_EQ(head.tail, shaft.a);
+    EXPECT_VEC_NEAR(head.across, Vec3(0, 1, 0));  // into the face, in its plane
     EXPECT_EQ(head.color, kRed);
-    const Vec3 base_mid = 0.5 * (head.b + head.c);
-    EXPECT_LT(base_mid.x, head.a.x);
-    EXPECT_GT(base_mid.x, shaft.a.x);
-    EXPECT_NEAR(base_mid.y, shaft.b.y, kTol);
-    EXPECT_TRUE(strictly_inside_right_triangle(head.a));
-    EXPECT_TRUE(strictly_inside_right_triangle(head.b));
-    EXPECT_TRUE(strictly_inside_right_triangle(head.c));
-    EXPECT_GT(norm(cross(head.b - head.a, head.c - head.a)), 0.0);  // not degenerate
+    EXPECT_EQ(head.length_px, style.arrowhead_length_px);
+    EXPECT_EQ(head.half_width_px, style.arrowhead_half_width_px);
+    EXPECT_TRUE(out.triangles.empty());
 }
 
 TEST(ElementHighlight, BoundaryHalfedgeArrowIsMirroredOutside) {
@@ -243,21 +240,17 @@ TEST(ElementHighlight, BoundaryHalfedgeArrowIsMirroredOutside) {
     OverlayBatch out;
     add_element_highlight(mesh, ElementRef::halfedge(h), kRed, style, out);
     ASSERT_EQ(out.lines.size(), 1u);
-    ASSERT_EQ(out.triangles.size(), 1u);
+    ASSERT_EQ(out.arrowheads.size(), 1u);
 
     // (3,0)→(0,0): shortened to x = 2.55 … 0.45, inset towards the twin's centroid (1,1)
     // mirrored across the edge, i.e. (1,−1).
     const auto& shaft = out.lines[0];
     EXPECT_VEC_NEAR(shaft.a, Vec3(2.55 + s * (1.0 - 2.55), -s, 0));
     EXPECT_VEC_NEAR(shaft.b, Vec3(0.45 + s * (1.0 - 0.45), -s, 0));
-    // Outside the face (y < 0) and the head at the x = 0 end.
-    const auto& head = out.triangles[0];
-    EXPECT_EQ(head.a, shaft.b);
-    for (const Vec3& p : {head.a, head.b, head.c}) {
-        EXPECT_LT(p.y, 0.0);
-        EXPECT_EQ(p.z, 0.0);
-    }
-    EXPECT_GT(0.5 * (head.b.x + head.c.x), head.a.x);
+    // The head at the x = 0 end, pointing along the shaft.
+    const auto& head = out.arrowheads[0];
+    EXPECT_EQ(head.tip, shaft.b);
+    EXPECT_EQ(head.tail, shaft.a);
 }
 
 TEST(ElementHighlight, TwinArrowsLieOnOppositeSidesOfTheEdge) {
@@ -283,7 +276,7 @@ TEST(ElementHighlight, TwinArrowsLieOnOppositeSidesOfTheEdge) {
     EXPECT_LT(side(lb.b), 0.0);
 }
 
-TEST(ElementHighlight, ArrowheadLiesInATiltedFacePlane) {
+TEST(ElementHighlight, ArrowLiesInATiltedFacePlane) {
     const Mesh mesh =
         test::mesh_from_faces({{1, 0, 0}, {0, 2, 0}, {0, 0, 3}}, {{0, 1, 2}});  // x+y/2+z/3=1
     const Vec3 n{1.0, 0.5, 1.0 / 3.0};
@@ -291,11 +284,14 @@ TEST(ElementHighlight, ArrowheadLiesInATiltedFacePlane) {
         OverlayBatch out;
         add_element_highlight(mesh, ElementRef::halfedge(h), kRed, OverlayStyle{}, out);
         ASSERT_EQ(out.lines.size(), 1u);
-        ASSERT_EQ(out.triangles.size(), 1u);
-        const auto& t = out.triangles[0];
-        for (const Vec3& p : {out.lines[0].a, out.lines[0].b, t.a, t.b, t.c}) {
+        ASSERT_EQ(out.arrowheads.size(), 1u);
+        const auto& head = out.arrowheads[0];
+        for (const Vec3& p : {out.lines[0].a, out.lines[0].b, head.tip, head.tail}) {
             EXPECT_NEAR(dot(n, p), 1.0, 1e-12);
         }
+        EXPECT_NEAR(dot(n, head.across), 0.0, 1e-12);
+        EXPECT_NEAR(dot(head.tail - head.tip, head.across), 0.0, 1e-12);
+        EXPECT_NEAR(norm(head.across), 1.0, 1e-12);
     }
 }
 

@@ -39,16 +39,32 @@ struct OverlayBatch {
         Vec3 a, b, c;
         Color color;
     };
+    /// A filled arrowhead sized in pixels, whatever the zoom: its point at `tip`, its axis
+    /// along `tail` → `tip` on screen, `length_px` long (at most the tail–tip distance on
+    /// screen) and `half_width_px` wide on each side of the axis. `across` (a unit vector
+    /// perpendicular to the axis; zero if there is none) spans, with the axis, the plane the
+    /// head lies in, which gives its corners their depth: a head flat on screen would sink
+    /// into a face seen at a slant.
+    struct Arrowhead {
+        Vec3 tip, tail, across;
+        Color color;
+        float length_px;
+        float half_width_px;
+    };
     std::vector<Point> points;
     std::vector<Line> lines;
     std::vector<Triangle> triangles;
+    std::vector<Arrowhead> arrowheads;
 
     void clear() {
         points.clear();
         lines.clear();
         triangles.clear();
+        arrowheads.clear();
     }
-    bool empty() const { return points.empty() && lines.empty() && triangles.empty(); }
+    bool empty() const {
+        return points.empty() && lines.empty() && triangles.empty() && arrowheads.empty();
+    }
     void append(const OverlayBatch& other);
 };
 
@@ -61,6 +77,9 @@ struct OverlayStyle {
     float vertex_size_px = 12.0f;
     float control_point_px = 16.0f;  ///< a hovered or selected curve control point
     float edge_width_px = 4.0f;
+    /// A selected or hovered halfedge's arrowhead: long and wide enough to read at any zoom.
+    float arrowhead_length_px = 16.0f;
+    float arrowhead_half_width_px = 7.0f;
     float feature_width_px = 2.5f;  ///< boundary and crease edges
     float face_tint_alpha = 0.45f;
     /// Halfedge arrows sit inside their face: pulled this fraction toward the face centre.
@@ -79,7 +98,7 @@ struct OverlayStyle {
 void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out);
 
 /// The highlight of one element in `color`: a vertex disc; an edge as a thick line; a
-/// halfedge as an arrow (a line plus an arrowhead triangle) inset into its face towards the
+/// halfedge as an arrow (a line plus an Arrowhead sized in pixels) inset into its face towards the
 /// face centre, as in CS184 (a boundary halfedge is inset towards the other side's face,
 /// mirrored); a face as a translucent tint of its polygon (fan triangles, offset slightly
 /// along the normal so it wins the depth test).

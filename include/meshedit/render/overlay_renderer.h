@@ -4,7 +4,8 @@
 ///
 /// Points become screen-space discs and lines screen-space quads (GL 3.3 core forbids wide
 /// lines), both by instancing a 4-vertex strip whose corners the vertex shader pushes out in
-/// pixels; triangles are drawn as they are. All use alpha blending and a small depth bias
+/// pixels; arrowheads are triangles sized in pixels the same way; triangles are drawn as
+/// they are. All use alpha blending and a small depth bias
 /// towards the eye, so edges lying on the surface win the depth test.
 
 #include <cstddef>
@@ -32,12 +33,13 @@ public:
 private:
     void ensure_gl_objects();
 
-    ShaderProgram point_shader_, line_shader_, tri_shader_;
-    unsigned point_vao_ = 0, line_vao_ = 0, tri_vao_ = 0;
-    unsigned point_vbo_ = 0, line_vbo_ = 0, tri_vbo_ = 0;
-    std::size_t point_capacity_ = 0, line_capacity_ = 0, tri_capacity_ = 0;  ///< bytes
-    std::size_t n_points_ = 0, n_lines_ = 0, n_triangles_ = 0;
-    std::vector<float> points_, lines_, triangles_;  ///< staging
+    ShaderProgram point_shader_, line_shader_, tri_shader_, arrow_shader_;
+    unsigned point_vao_ = 0, line_vao_ = 0, tri_vao_ = 0, arrow_vao_ = 0;
+    unsigned point_vbo_ = 0, line_vbo_ = 0, tri_vbo_ = 0, arrow_vbo_ = 0;
+    std::size_t point_capacity_ = 0, line_capacity_ = 0, tri_capacity_ = 0,
+                arrow_capacity_ = 0;  ///< bytes
+    std::size_t n_points_ = 0, n_lines_ = 0, n_triangles_ = 0, n_arrowheads_ = 0;
+    std::vector<float> points_, lines_, triangles_, arrowheads_;  ///< staging
 };
 
 /// A vertical background gradient (a full-screen triangle, no vertex buffer).
