@@ -76,8 +76,9 @@ Command add_convert(CLI::App& meshedit) {
     app->footer(
         "Reads IN (.dae .gltf .glb .obj, or a .bez tessellated at --density), applies the --ops\n"
         "edits in order and writes OUT in the format of its extension (.dae .gltf .glb .obj).\n"
-        "A .bzc curve converts only to .bzc. OUT is written to a temporary file and renamed, so\n"
-        "a failed run never leaves a partial OUT.\n"
+        "A .bzc curve converts only to .bzc, and a .bez to .bez keeps its patches (both written\n"
+        "as the CS184 course's skeleton reads them). OUT is written to a temporary file and\n"
+        "renamed, so a failed run never leaves a partial OUT.\n"
         "\n"
         "Examples:\n"
         "  meshedit convert dae/cube.dae cube.obj\n"
@@ -99,6 +100,15 @@ Command add_convert(CLI::App& meshedit) {
                         throw UsageError("convert: --ops applies to meshes, not to a .bzc curve");
                     }
                     write_bzc(read_bzc(s->in), s->out);
+                    return 0;
+                }
+                if (file_extension(s->in) == ".bez" && file_extension(s->out) == ".bez") {
+                    if (!steps.empty()) {
+                        throw UsageError(
+                            "convert: --ops edits meshes; .bez to .bez keeps the patches as they "
+                            "are (convert to .dae to edit the tessellation)");
+                    }
+                    write_bez(read_bez(s->in), s->out);
                     return 0;
                 }
                 check_mesh_output(s->out);

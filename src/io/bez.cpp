@@ -1,4 +1,5 @@
-// .bez (Bezier patches) and .bzc (Bezier curve) files, docs/spec.md §2.
+// .bez (Bezier patches) and .bzc (Bezier curve) files, docs/spec.md §2: readers that accept
+// more than the course's files use (comments, free layout), writers that emit exactly that.
 //
 // Both are free-form streams of numbers: any whitespace separates them, line breaks carry no
 // meaning, and `#` starts a comment that runs to the end of the line. A .bez file is a patch
@@ -246,6 +247,27 @@ BezierCurve parse_bzc(std::string_view bytes, const std::string& file) {
     return curve;
 }
 
+// Both writers follow the CS184 course's grammar, which its skeleton reads with fscanf: the
+// count ("%d"), then the numbers ("%lf"); no comments, which fscanf cannot skip. Numbers in
+// the shortest form that reads back as the same double.
+namespace {
+
+std::string coordinates(const std::string& file, const std::string& what, const Vec3& p, int n) {
+    std::string line;
+    for (int k = 0; k < n; ++k) {
+        if (!std::isfinite(p[k])) {
+            throw IoError(file, "", what + " is not finite");
+        }
+        if (k > 0) {
+            line += ' ';
+        }
+        line += io_util::format_double(p[k]);
+    }
+    return line + "\n";
+}
+
+}  // namespace
+
 void write_bzc(const BezierCurve& curve, const std::filesystem::path& path) {
     const std::string file = path.string();
     const std::size_t n = curve.control_points.size();
@@ -253,16 +275,32 @@ void write_bzc(const BezierCurve& curve, const std::filesystem::path& path) {
         throw IoError(file, "",
                       "a curve needs at least 2 points, this one has " + std::to_string(n));
     }
-    std::string text = "# MeshEdit Bezier curve: the number of control points, then x y each\n";
-    text += std::to_string(n) + "\n";
+    std::string text = std::to_string(n) + "\n";
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec3& p = curve.control_points[i];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-            throw IoError(file, "", "point " + std::to_string(i + 1) + " is not finite");
+        // z is not stored: curves live in the z = 0 plane.
+        text += coordinates(file, "point " + std::to_string(i + 1), curve.control_points[i], 2);
+    }
+    write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, text); });
+}
+
+void write_bez(const std::vector<BezierPatch>& patches, const std::filesystem::path& path) {
+    const std::string file = path.string();
+    if (patches.empty()) {
+        throw IoError(file, "", "no patches to write");
+    }
+    std::string text = std::to_string(patches.size()) + "\n";
+    for (std::size_t p = 0; p < patches.size(); ++p) {
+        const BezierPatch& patch = patches[p];
+        const std::string name = "patch " + std::to_string(p + 1);
+        if (patch.rows != 4 || patch.cols != 4 || patch.control_points.size() != 16) {
+            throw IoError(file, "",
+                          name + " is " + std::to_string(patch.rows) + " × " +
+                              std::to_string(patch.cols) + "; a .bez file holds 4 × 4 patches");
         }
-        // Shortest round-trip form: read_bzc gives back the same doubles. z is not stored
-        // (curves live in the z = 0 plane).
-        text += io_util::format_double(p.x) + " " + io_util::format_double(p.y) + "\n";
+        for (std::size_t k = 0; k < 16; ++k) {  // row-major cp[row][col], one point a line
+            text += coordinates(file, name + ", point " + std::to_string(k + 1),
+                                patch.control_points[k], 3);
+        }
     }
     write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, text); });
 }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "meshedit/files/files.h"
 #include "meshedit/io/io.h"
 #include "run.h"
 #include "support/mesh_compare.h"
@@ -249,8 +250,8 @@ TEST(CliConvert, WhatTheFormatCannotKeepIsSaid) {
     r = run_meshedit({"convert", creased, (tmp / "c.dae").string()});
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_EQ(r.err.find("not kept"), std::string::npos) << r.err;
-    r = run_meshedit({"convert", (repo_root() / "dae/quadball.dae").string(),
-                      (tmp / "q.glb").string()});
+    r = run_meshedit(
+        {"convert", (repo_root() / "dae/quadball.dae").string(), (tmp / "q.glb").string()});
     EXPECT_NE(r.err.find("q.glb: not kept: 96 polygons (glTF stores triangles: each is fanned)"),
               std::string::npos)
         << r.err;
@@ -275,6 +276,23 @@ TEST(CliConvert, BezierPatchesConvertToAMesh) {
     const Mesh a = read_mesh(tmp / "teapot.dae").mesh;
     const Mesh b = read_mesh(repo_root() / "dae/teapot.dae").mesh;
     EXPECT_TRUE(same_faces_by_position(a, b, 1e-9));
+}
+
+TEST(CliConvert, BezierFilesRewriteInTheCourseFormat) {
+    TempDir tmp;
+    const auto teapot = repo_root() / "bez/teapot.bez";
+    RunResult r = run_meshedit({"convert", teapot.string(), (tmp / "t.bez").string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto in = read_bez(teapot);
+    const auto out = read_bez(tmp / "t.bez");
+    ASSERT_EQ(out.size(), in.size());
+    for (std::size_t p = 0; p < in.size(); ++p) {
+        EXPECT_EQ(out[p].control_points, in[p].control_points);
+    }
+    EXPECT_EQ(read_file(tmp / "t.bez").rfind("32\n", 0), 0u) << "the count first, no header";
+    r = run_meshedit({"convert", teapot.string(), (tmp / "u.bez").string(), "--ops", "loop"});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("keeps the patches"), std::string::npos) << r.err;
 }
 
 TEST(CliConvert, RefusedOpExitsOneNamingOpAndReason) {

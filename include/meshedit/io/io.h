@@ -82,7 +82,11 @@ BezierCurve read_bzc(const std::filesystem::path& path);
 /// read_bez() and read_bzc() from the file's bytes; `name` names it in errors.
 std::vector<BezierPatch> parse_bez(std::string_view bytes, const std::string& name);
 BezierCurve parse_bzc(std::string_view bytes, const std::string& name);
-/// Writes a .bzc file atomically. \throws IoError.
+/// Write .bzc and .bez files atomically, in the CS184 course's grammar (its skeleton reads
+/// them with fscanf): the count on the first line, then one point a line (x y; x y z, a
+/// patch's 16 points row-major), no comments, every double in the shortest form that reads
+/// back the same. \throws IoError (too few points, a patch not 4 × 4, a non-finite number).
 void write_bzc(const BezierCurve& curve, const std::filesystem::path& path);
+void write_bez(const std::vector<BezierPatch>& patches, const std::filesystem::path& path);
 
 }  // namespace meshedit
