@@ -1,11 +1,16 @@
-# User entry points: `make run`, `make test`, `make bench`. Each installs what it needs first.
+# User entry points: `make run`, `make test`, `make bench`, `make install`. Each installs what
+# it needs first.
 BUILD_DIR     ?= build
+PREFIX        ?= $(HOME)/.local
+# What a user runs; `make run` and `make install` build only these, `make test` everything.
+PROGRAMS      := meshedit meshedit-render meshedit-view
 ASAN_DIR      ?= build-asan
 BENCH_DIR     ?= build-bench
 JOBS          ?= $(shell nproc)
 CMAKE_FLAGS   ?=
 
-.PHONY: all deps build run test test-release test-sanitize bench fuzz format clean
+.PHONY: all deps build programs run install test test-release test-sanitize bench fuzz format \
+	clean
 
 all: build
 
@@ -18,8 +23,20 @@ $(BUILD_DIR)/build.ninja: | deps
 build: deps $(BUILD_DIR)/build.ninja
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-run: build
+programs: deps $(BUILD_DIR)/build.ninja
+	targets=$$(cmake --build $(BUILD_DIR) --target help | sed -n 's/: phony$$//p' | \
+	    grep -xF $(addprefix -e ,$(PROGRAMS))); \
+	    cmake --build $(BUILD_DIR) -j $(JOBS) --target $$targets
+
+run: programs
 	@./scripts/run.sh $(BUILD_DIR)
+
+# The programs and their shaders into PREFIX (default ~/.local: bin/ is on Debian's PATH once
+# it exists, after logging in again).
+install: programs
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+	@case ":$$PATH:" in *":$(PREFIX)/bin:"*) ;; \
+	    *) echo "make install: add $(PREFIX)/bin to PATH to run meshedit by name";; esac
 
 # Every test: the Release suite (unit, CLI, golden images, the viewer under Xvfb), then the
 # core, file-format and viewer command-layer tests again under ASan + UBSan.

@@ -83,12 +83,19 @@ float Camera::near_plane() const {
 }
 
 glm::mat4 Camera::projection(float aspect) const {
+    glm::mat4 p;
     if (orthographic) {
         const float h = 0.5f * ortho_height;
         const float w = h * aspect;
-        return glm::ortho(-w, w, -h, h, near_plane(), far_plane());
+        p = glm::ortho(-w, w, -h, h, near_plane(), far_plane());
+    } else {
+        p = glm::perspective(glm::radians(fov_y_deg), aspect, near_plane(), far_plane());
     }
-    return glm::perspective(glm::radians(fov_y_deg), aspect, near_plane(), far_plane());
+    if (lens_shift_x != 0.0f) {
+        // x_ndc += shift, applied in clip space (x += shift · w).
+        p = glm::translate(glm::mat4(1.0f), glm::vec3(lens_shift_x, 0.0f, 0.0f)) * p;
+    }
+    return p;
 }
 
 void Camera::frame_mesh(const Mesh& mesh, float aspect, std::span<const Vec3> extra) {

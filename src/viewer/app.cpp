@@ -18,6 +18,7 @@
 #include "meshedit/files/io_error.h"
 #include "meshedit/render/image.h"
 #include "meshedit/render/overlay.h"
+#include "meshedit/viewer/paths.h"
 
 namespace meshedit::viewer {
 
@@ -45,18 +46,6 @@ App& app_of(GLFWwindow* window) {
 
 glm::vec3 to_glm(const Vec3& p) {
     return {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
-}
-
-std::filesystem::path unused_path(const std::filesystem::path& stem, int& counter) {
-    while (true) {
-        std::filesystem::path path = stem;
-        path += '-';
-        path += std::to_string(++counter);
-        path += ".png";
-        if (!std::filesystem::exists(path)) {
-            return path;
-        }
-    }
 }
 
 // DejaVu Sans (Debian's fonts-dejavu-core) for arrows and dashes in the panels; ImGui's
@@ -138,6 +127,7 @@ App::App(const ViewerOptions& options) {
     ImGui::StyleColorsDark();
     ImGui::GetStyle().ScaleAllSizes(content_scale);
     ImGui::GetStyle().WindowRounding = 4.0f * content_scale;
+    panels_.set_scale(content_scale);
     ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 0.88f;
     ImGui_ImplGlfw_InitForOpenGL(window_, true);  // chains to the callbacks above
     ImGui_ImplOpenGL3_Init("#version 330 core");
@@ -147,6 +137,9 @@ App::App(const ViewerOptions& options) {
 
     if (!options.file.empty()) {
         open_file(options.file);
+        if (!status_error_) {
+            set_status(status_ + "; ? for help", false);  // the first window says where keys are
+        }
     } else {
         set_status("drop a file on the window or press Ctrl+O to open one; ? for help", false);
     }
@@ -247,8 +240,9 @@ void App::on_mouse_button(int button, int action, int mods) {
     }
     // Release.
     if (drag_ == DragMode::Element) {
-        editor_.end_drag();
-        apply({kSelection, "", false});
+        Outcome outcome = editor_.end_drag();
+        outcome.changes |= kSelection;
+        apply(outcome);
     } else if (drag_ == DragMode::Pending && button == GLFW_MOUSE_BUTTON_LEFT) {
         const ElementRef hit = pick_at_cursor();
         Outcome outcome = editor_.select(hit);
@@ -445,14 +439,35 @@ void App::rebuild_overlay(bool features_changed) {
 
 // ----------------------------------------------------------------------------- camera
 
+int App::covered_pixels() const {
+    if (!editor_.view().show_info) {
+        return 0;
+    }
+    int w = 1, h = 1;
+    glfwGetWindowSize(window_, &w, &h);
+    const int fb = framebuffer_size().x;
+    // Window coordinates to framebuffer pixels (HiDPI); at most half the view.
+    const float px = panels_.info_right_edge() * static_cast<float>(fb) / static_cast<float>(w);
+    return std::clamp(static_cast<int>(std::lround(px)), 0, fb / 2);
+}
+
+void App::keep_room_for_panels() {
+    camera_.lens_shift_x =
+        static_cast<float>(covered_pixels()) / static_cast<float>(framebuffer_size().x);
+}
+
 void App::reset_camera() {
-    const float a = aspect();
+    // Framed into the part of the window the info panel leaves free, and centred there: the
+    // same picture as `meshedit render` at that part's size.
+    const glm::ivec2 size = framebuffer_size();
+    const float a = static_cast<float>(size.x - covered_pixels()) / static_cast<float>(size.y);
     camera_ = Camera();
+    keep_room_for_panels();
     camera_.up = editor_.view().up;
     if (!mesh_mode()) {
         camera_.frame_2d({0.0f, 0.0f}, {1.0f, 1.0f}, a);
     } else {
-        camera_.frame_mesh(editor_.mesh(), a);  // the same opening view as `meshedit render`
+        camera_.frame_mesh(editor_.mesh(), a);  // as `meshedit render`, in the free part
     }
     camera_.set_trackball(editor_.view().trackball && !camera_.orthographic);
     scene_center_ = camera_.target;
@@ -559,11 +574,18 @@ void App::drag_element_to_cursor() {
     } else {
         position = editor_.document().curve.control_points[s.index];
     }
-    // Keep the point's depth; move it to where the cursor is in the screen plane.
-    const glm::vec4 c =
-        camera_.projection(aspect()) * camera_.view() * glm::vec4(to_glm(position), 1.0f);
-    const glm::vec3 moved = unproject(cursor_pixels() - glm::vec2(0.5f), c.z / c.w);
-    apply(editor_.drag_to(Vec3{moved.x, moved.y, moved.z}));
+    // Keep the point's depth; move it to where the cursor is in the screen plane. In double
+    // precision, so no float rounding reaches the document (or the saved file).
+    const glm::dmat4 clip_of_world =
+        glm::dmat4(camera_.projection(aspect())) * glm::dmat4(camera_.view());
+    const glm::dvec4 c = clip_of_world * glm::dvec4(position.x, position.y, position.z, 1.0);
+    const glm::ivec2 size = framebuffer_size();
+    const glm::dvec2 p = glm::dvec2(cursor_pixels());
+    const glm::dvec4 ndc(2.0 * p.x / size.x - 1.0, 1.0 - 2.0 * p.y / size.y, c.z / c.w, 1.0);
+    const glm::dvec4 world = glm::inverse(clip_of_world) * ndc;
+    const double pixel =
+        camera_.orthographic ? static_cast<double>(camera_.ortho_height) / size.y : 0.0;
+    apply(editor_.drag_to(Vec3{world.x / world.w, world.y / world.w, world.z / world.w}, pixel));
 }
 
 // ---------------------------------------------------------------------------- drawing
@@ -574,6 +596,7 @@ void App::draw_scene(int width, int height) {
 
 void App::draw_frame() {
     const auto start = std::chrono::steady_clock::now();
+    keep_room_for_panels();  // follows the info panel (I) and window resizes
     const glm::ivec2 size = framebuffer_size();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, size.x, size.y);
@@ -604,30 +627,38 @@ void App::draw_frame() {
     if (requests.view_changed) {
         redraw_frames_ = std::max(redraw_frames_, 1);
     }
+    if (requests.action) {
+        apply(editor_.run(*requests.action));
+    }
 }
 
 void App::write_screenshot() {
-    // The 3D view without the panels and without the hover highlight (it follows the mouse,
-    // not the document), at the framebuffer's size, 4× MSAA like the window.
+    // The 3D view the panels leave free (the whole window with the info panel hidden), without
+    // the hover highlight (it follows the mouse, not the document), 4× MSAA like the window.
+    // Its camera is the window's without the lens shift, at that part's aspect: the same
+    // picture, pixel for pixel, and the same as `meshedit render` at that size after Space.
     const ElementRef hover = editor_.hover();
     editor_.set_hover({});
     rebuild_overlay();
     editor_.set_hover(hover);
     const glm::ivec2 size = framebuffer_size();
-    RenderTarget target(size.x, size.y, 4);
+    const int width = size.x - covered_pixels();
+    RenderTarget target(width, size.y, 4);
     target.bind();
-    draw_scene(size.x, size.y);
+    Camera free_part = camera_;
+    free_part.lens_shift_x = 0.0f;
+    scene_->draw(free_part, width, size.y, editor_.view().render);
     const Image image = target.read();
     rebuild_overlay();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, size.x, size.y);
-    std::filesystem::path stem =
-        editor_.path().empty() ? "meshedit" : "meshedit-" + editor_.path().stem().string();
-    const std::filesystem::path path = unused_path(stem, screenshot_count_);
     try {
+        const std::filesystem::path folder = pictures_folder();
+        std::filesystem::create_directories(folder);
+        const std::filesystem::path path = screenshot_path(folder, editor_.path());
         write_png(image, path);
-        set_status("screenshot saved to " + std::filesystem::absolute(path).string(), false);
-        std::printf("meshedit: screenshot %s\n", std::filesystem::absolute(path).c_str());
+        set_status("screenshot saved to " + path.string(), false);
+        std::printf("meshedit: screenshot %s\n", path.c_str());
         std::fflush(stdout);
     } catch (const std::exception& e) {
         set_status(std::string("screenshot failed: ") + e.what(), true);

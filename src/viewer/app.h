@@ -78,6 +78,10 @@ private:
     /// The world point under framebuffer pixel `p` at normalised device depth `ndc_z`.
     glm::vec3 unproject(glm::vec2 p, float ndc_z) const;
     bool mesh_mode() const { return editor_.mode() != Mode::Curve; }
+    /// Framebuffer pixels the info panel covers on the left (0 when hidden), and the lens
+    /// shift that centres the view in the rest.
+    int covered_pixels() const;
+    void keep_room_for_panels();
 
     GLFWwindow* window_ = nullptr;
     Editor editor_;
@@ -101,7 +105,6 @@ private:
     int redraw_frames_ = 3;          ///< frames still to draw (ImGui settles over a few)
     double last_frame_ms_ = 0.0;
     double last_pick_ms_ = 0.0;
-    int screenshot_count_ = 0;
     bool quit_ = false;
 };
 

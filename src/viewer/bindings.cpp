@@ -17,7 +17,7 @@ constexpr Key num(int d) {
 
 constexpr std::string_view kShadingHelp =
     "shading mode (0 normals as colour, 1 Blinn-Phong, 2 flat grey, 3 studio, 4 matcap, "
-    "5 depth, 6 hemisphere)";
+    "5 depth, 6 hemisphere; 7–9 same as 1 for now)";
 constexpr std::string_view kTHelp = "decrease / increase t by 0.01";
 
 // clang-format off
@@ -33,7 +33,7 @@ constexpr std::array kTable{
     Binding{key_of('N'), kNoMods, kMeshModes, {Command::Next}, "N", "selected halfedge → next"},
     Binding{key_of('T'), kNoMods, kMeshModes, {Command::Twin}, "T", "selected halfedge → twin"},
     Binding{key_of('H'), kNoMods, kMeshModes, {Command::ToHalfedge}, "H", "from the selection go to its halfedge"},
-    Binding{key_of('V'), kNoMods, kMeshModes, {Command::ToVertex}, "V", "from the selection go to its vertex"},
+    Binding{key_of('V'), kNoMods, kMeshModes, {Command::ToVertex}, "V", "from the selection go to its vertex (a halfedge's source: vertex() = from)"},
     Binding{key_of('E'), kNoMods, kMeshModes, {Command::ToEdge}, "E", "from the selection go to its edge"},
     Binding{key_of('G'), kNoMods, kMeshModes, {Command::ToFace}, "G", "from the selection go to its face"},
     Binding{key_of('K'), kNoMods, kMeshModes, edit("crease"), "K", {}},
@@ -60,7 +60,7 @@ constexpr std::array kTable{
     Binding{key_of('S'), kCtrl, kAllModes, {Command::Save}, "Ctrl+S", "save"},
     Binding{key_of('S'), kCtrl | kShift, kAllModes, {Command::SaveAs}, "Ctrl+Shift+S", "save as"},
     Binding{key_of('O'), kCtrl, kAllModes, {Command::Open}, "Ctrl+O", "open a file"},
-    Binding{key_of('P'), kNoMods, kAllModes, {Command::Screenshot}, "P", "screenshot to PNG"},
+    Binding{key_of('P'), kNoMods, kAllModes, {Command::Screenshot}, "P", "screenshot to PNG (the 3D view the panels leave free, in Pictures/MeshEdit)"},
     Binding{Key::Space, kNoMods, kAllModes, {Command::ResetCamera}, "Space", "reset the camera"},
     Binding{key_of('Y'), kNoMods, kMeshModes, {Command::CycleUp}, "Y", "up axis: +Y (as the file declares) or +Z (the CS184 course's models)"},
     Binding{key_of('O'), kNoMods, kMeshModes, {Command::ToggleTrackball}, "O", "orbit: turntable (the up axis stays up) or trackball (free rotation)"},
@@ -86,12 +86,17 @@ constexpr std::array kTable{
     Binding{key_of('B'), kNoMods, kSurfaceMode, {Command::ToggleNets}, "B", "toggle control nets"},
 };
 
-const std::array<HelpRow, 6> kMouseRows{{
-    {"left-click", "select the element under the cursor (vertex near a corner, edge near an edge, halfedge just inside it, else face)", ""},
-    {"left-drag on empty space", "orbit", ""},
+// The mouse as each mode handles it (App::on_mouse_button, on_cursor, on_scroll).
+const std::array<HelpRow, 10> kMouseRows{{
+    {"left-click", "select the element under the cursor (vertex near a corner, edge near an edge, halfedge just inside it, else face)", "mesh, surface"},
+    {"left-drag on empty space", "orbit (turntable about the up axis; O: trackball)", "mesh, surface"},
+    {"left-drag on a vertex", "move it in the screen plane", "mesh, surface"},
+    {"wheel", "zoom to the cursor", "mesh, surface"},
+    {"left-click", "select the control point under the cursor", "curve"},
+    {"left-drag on a control point", "move it", "curve"},
+    {"left-drag on empty paper", "pan", "curve"},
+    {"wheel", "change t by 0.01 a step", "curve"},
     {"middle-drag / Shift+left-drag", "pan", ""},
-    {"wheel", "zoom to the cursor (curve mode: change t)", ""},
-    {"left-drag on the selected vertex", "move it in the screen plane (curve mode: control points)", ""},
     {"drop a file", "open it", ""},
 }};
 // clang-format on
@@ -190,6 +195,45 @@ std::vector<HelpRow> help_rows() {
         rows.push_back({std::string(m.label), std::string(m.help), modes_text(m.modes)});
     }
     rows.insert(rows.end(), kMouseRows.begin(), kMouseRows.end());
+    return rows;
+}
+
+std::vector<HelpRow> help_rows(Mode mode) {
+    const std::string_view word = mode == Mode::Mesh      ? "mesh"
+                                  : mode == Mode::Surface ? "surface"
+                                                          : "curve";
+    std::vector<HelpRow> rows;
+    for (HelpRow& row : help_rows()) {
+        if (row.modes.empty() || row.modes.find(word) != std::string::npos) {
+            rows.push_back(std::move(row));
+        }
+    }
+    return rows;
+}
+
+std::vector<LegendRow> legend(Mode mode, const OverlayStyle& style) {
+    std::vector<LegendRow> rows;
+    if (mode == Mode::Curve) {
+        const std::size_t n = style.levels.size();
+        for (std::size_t k = 0; k < n; ++k) {
+            rows.push_back({style.levels[k], k == 0 ? "level 0, the control polygon (level " +
+                                                          std::to_string(n) +
+                                                          " and on reuse these colours in turn)"
+                                                    : "de Casteljau level " + std::to_string(k)});
+        }
+        rows.push_back({style.curve, "the curve (C shows or hides it)"});
+        rows.push_back({style.evaluated_point, "the point B(t) on the curve"});
+        rows.push_back({style.hovered, "the control point under the cursor"});
+        rows.push_back({style.selected, "the selected control point"});
+        return rows;
+    }
+    rows.push_back({style.hovered, "the element under the cursor"});
+    rows.push_back({style.selected, "the selection (a halfedge: an arrow inside its face)"});
+    rows.push_back({style.boundary, "boundary edges"});
+    rows.push_back({style.crease, "crease edges (K)"});
+    if (mode == Mode::Surface) {
+        rows.push_back({style.control_net, "control nets (B)"});
+    }
     return rows;
 }
 

@@ -119,8 +119,10 @@ Outcome Editor::run_display(Action action) {
                 return refused("no shading mode " + std::to_string(n));
             }
             r.shading = n;
+            const ShadingMode& m = kShadingModes[static_cast<std::size_t>(n)];
+            const bool alias = m.description.starts_with("same as");
             return {kDisplay, "shading " + std::to_string(n) + ": " +
-                                  std::string(kShadingModes[static_cast<std::size_t>(n)].name)};
+                                  std::string(alias ? m.description : m.name)};
         }
         case Command::ToggleInfo:
             view_.show_info = !view_.show_info;

@@ -85,6 +85,9 @@ void Editor::set_document(Document document, std::filesystem::path path) {
     path_ = std::move(path);
     view_.level = 0;
     view_.t = 0.5;
+    // Flat below kSmoothFromFaces faces, as CS184 starts: on a cube or an icosahedron the
+    // facets are what one edits. Smooth above, where the faces approximate a curved shape.
+    view_.render.smooth = doc_.mode != Mode::Curve && doc_.mesh.n_faces() >= kSmoothFromFaces;
     dragging_ = false;
     drag_moved_ = false;
     quit_armed_ = false;
@@ -98,12 +101,8 @@ Outcome Editor::save() {
     if (doc_.mode == Mode::Curve && ext != ".bzc") {
         return refused("a curve is saved as .bzc: use Ctrl+Shift+S");
     }
-    if (doc_.mode == Mode::Surface && ext == ".bez") {
-        return refused(
-            "a .bez file holds patches, not the edited mesh: save as .dae, .obj or .gltf "
-            "(Ctrl+Shift+S)");
-    }
-    if (doc_.mode != Mode::Curve && !is_mesh_extension(ext)) {
+    if (doc_.mode != Mode::Curve && !is_mesh_extension(ext) &&
+        !(doc_.mode == Mode::Surface && ext == ".bez")) {
         return refused("cannot save a mesh as '" + ext +
                        "': use Ctrl+Shift+S with .dae, .gltf, .glb or .obj");
     }
@@ -115,7 +114,13 @@ Outcome Editor::save_as(const std::filesystem::path& path) {
     if (doc_.mode == Mode::Curve && ext != ".bzc") {
         return refused("a curve is saved as .bzc, not '" + ext + "'");
     }
-    if (doc_.mode != Mode::Curve && !is_mesh_extension(ext)) {
+    if (doc_.mode == Mode::Surface && ext != ".bez" && !is_mesh_extension(ext)) {
+        return refused(
+            "a surface is saved as .bez (its patches) or as .dae, .gltf, .glb or .obj "
+            "(its tessellation), not '" +
+            ext + "'");
+    }
+    if (doc_.mode == Mode::Mesh && !is_mesh_extension(ext)) {
         return refused("a mesh is saved as .dae, .gltf, .glb or .obj, not '" + ext + "'");
     }
     Outcome outcome = write_to(path);
@@ -128,17 +133,24 @@ Outcome Editor::save_as(const std::filesystem::path& path) {
 Outcome Editor::write_to(const std::filesystem::path& path) {
     Outcome outcome;
     std::vector<std::string> unkept;
-    if (doc_.mode != Mode::Curve) {
-        unkept = unkept_by_format(doc_.mesh, file_extension(path));
-        if (!unkept.empty() && lossy_armed_ != path) {
-            lossy_armed_ = path;
-            return refused("saving as " + file_extension(path) + " loses " + join(unkept) +
-                           ": save again to save anyway, or save as .dae to keep everything");
+    const bool patches = doc_.mode == Mode::Surface && file_extension(path) == ".bez";
+    if (patches) {
+        if (pristine_revisions_.count(doc_.revision) == 0) {
+            unkept = {"the edits of the tessellated mesh (a .bez file holds only the patches)"};
         }
+    } else if (doc_.mode != Mode::Curve) {
+        unkept = unkept_by_format(doc_.mesh, file_extension(path));
+    }
+    if (!unkept.empty() && lossy_armed_ != path) {
+        lossy_armed_ = path;
+        return refused("saving as " + file_extension(path) + " loses " + join(unkept) +
+                       ": save again to save anyway, or save as .dae to keep everything");
     }
     try {
         if (doc_.mode == Mode::Curve) {
             write_bzc(doc_.curve, path);
+        } else if (patches) {
+            write_bez(doc_.patches, path);
         } else {
             // Collect first, so the file numbers elements as the info panel showed them.
             if (doc_.mesh.has_garbage()) {

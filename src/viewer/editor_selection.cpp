@@ -3,6 +3,9 @@
 
 #include "meshedit/viewer/editor.h"
 
+#include <cmath>
+#include <cstdio>
+
 namespace meshedit::viewer {
 
 namespace {
@@ -11,6 +14,20 @@ using Kind = ElementRef::Kind;
 
 std::string idx(std::uint32_t i) {
     return std::to_string(i);
+}
+
+// "vertex 3 by (0.1000, 0.0000, -0.2500), 0.2693": what a drag did, in the info panel's
+// number format.
+std::string moved_by(bool curve, std::uint32_t index, const Vec3& d) {
+    char text[160];
+    if (curve) {
+        std::snprintf(text, sizeof text, "control point %u by (%.4f, %.4f), %.4f", index, d.x, d.y,
+                      norm(d));
+    } else {
+        std::snprintf(text, sizeof text, "vertex %u by (%.4f, %.4f, %.4f), %.4f", index, d.x, d.y,
+                      d.z, norm(d));
+    }
+    return text;
 }
 
 }  // namespace
@@ -49,7 +66,23 @@ bool Editor::begin_drag() {
     return true;
 }
 
-Outcome Editor::drag_to(const Vec3& position) {
+namespace {
+
+double round_to_pixel(double value, double pixel) {
+    // The decimal step just below a pixel: 10^floor(log10(pixel)). Dividing by 10^k (an
+    // exact integer for steps below 1) rounds correctly, so 0.3075 stays 0.3075 in a file.
+    const double exponent = std::floor(std::log10(pixel));
+    if (exponent < 0.0) {
+        const double per_unit = std::pow(10.0, -exponent);
+        return std::round(value * per_unit) / per_unit;
+    }
+    const double step = std::pow(10.0, exponent);
+    return std::round(value / step) * step;
+}
+
+}  // namespace
+
+Outcome Editor::drag_to(const Vec3& position, double pixel) {
     if (!dragging_) {
         return {};
     }
@@ -68,6 +101,11 @@ Outcome Editor::drag_to(const Vec3& position) {
         }
         target = &doc_.curve.control_points[drag_index_];
         wanted.z = target->z;  // curves are 2D: keep z
+        if (pixel > 0.0 && std::isfinite(pixel)) {
+            // A drag is only as precise as a pixel: no digits beyond it in the file.
+            wanted.x = round_to_pixel(wanted.x, pixel);
+            wanted.y = round_to_pixel(wanted.y, pixel);
+        }
     } else {
         if (!is_live(doc_.mesh, s)) {
             return {};
@@ -82,14 +120,26 @@ Outcome Editor::drag_to(const Vec3& position) {
         drag_moved_ = true;
         target = doc_.mode == Mode::Curve ? &doc_.curve.control_points[drag_index_]
                                           : &doc_.mesh.position(Vertex(drag_index_));
+        drag_from_ = *target;
     }
     *target = wanted;
-    return {doc_.mode == Mode::Curve ? unsigned{kCurve} : unsigned{kGeometry}, ""};
+    const bool curve = doc_.mode == Mode::Curve;
+    return {curve ? unsigned{kCurve} : unsigned{kGeometry},
+            "moving " + moved_by(curve, drag_index_, wanted - drag_from_)};
 }
 
-void Editor::end_drag() {
+Outcome Editor::end_drag() {
+    const bool moved = dragging_ && drag_moved_;
     dragging_ = false;
     drag_moved_ = false;
+    if (!moved) {
+        return {};
+    }
+    const bool curve = doc_.mode == Mode::Curve;
+    const Vec3 now =
+        curve ? doc_.curve.control_points[drag_index_] : doc_.mesh.position(Vertex(drag_index_));
+    return {kSelection,
+            "moved " + moved_by(curve, drag_index_, now - drag_from_) + " (Ctrl+Z undoes it)"};
 }
 
 Outcome Editor::run_navigation(Command command) {

@@ -113,8 +113,9 @@ Rows edge_info(const Mesh& mesh, Edge e) {
 
 Rows halfedge_info(const Mesh& mesh, Halfedge h) {
     Rows rows;
-    rows.emplace_back("from", std::to_string(mesh.from_vertex(h).idx()));
-    rows.emplace_back("vertex", std::to_string(mesh.to_vertex(h).idx()));
+    // CS184's h->vertex() is the source; the core's to_vertex(h) the head: name both ends.
+    rows.emplace_back("from (vertex())", std::to_string(mesh.from_vertex(h).idx()));
+    rows.emplace_back("to", std::to_string(mesh.to_vertex(h).idx()));
     rows.emplace_back("next", std::to_string(mesh.next(h).idx()));
     rows.emplace_back("prev", std::to_string(mesh.prev(h).idx()));
     rows.emplace_back("twin", std::to_string(Mesh::twin(h).idx()));

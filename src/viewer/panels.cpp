@@ -18,14 +18,17 @@ constexpr ImGuiWindowFlags kOverlayFlags =
     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
     ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
 
+// Name and value columns; values wrap inside the panel's fixed width.
 void rows_table(const char* id, const std::vector<std::pair<std::string, std::string>>& rows) {
-    if (ImGui::BeginTable(id, 2, ImGuiTableFlags_SizingFixedFit)) {
+    if (ImGui::BeginTable(id, 2, ImGuiTableFlags_SizingStretchProp)) {
+        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
         for (const auto& [name, value] : rows) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextDisabled("%s", name.c_str());
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(value.c_str());
+            ImGui::TextWrapped("%s", value.c_str());
         }
         ImGui::EndTable();
     }
@@ -86,43 +89,81 @@ PanelRequests Panels::draw(Editor& editor, const FrameStats& stats, const std::s
     return requests;
 }
 
+float Panels::info_right_edge() const {
+    return info_right_ > 0.0f ? info_right_ : kInfoMargin + kInfoWidth * scale_;
+}
+
 void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& requests) {
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(280, 0), ImVec2(640, 10000));
+    // A fixed width, so a long row wraps instead of widening the panel over the model (the
+    // camera's framing leaves this much room, App::free_view_fraction); as tall as its
+    // open sections, scrolling when they do not fit.
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float width = kInfoWidth * scale_;
+    ImGui::SetNextWindowPos(ImVec2(kInfoMargin, kInfoMargin), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(
+        ImVec2(width, 0), ImVec2(width, std::max(viewport->WorkSize.y - 70.0f * scale_, 100.0f)));
     if (!ImGui::Begin("Info (I)", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         remember_rect();
+        info_right_ = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
         ImGui::End();
         return;
     }
+    info_right_ = ImGui::GetWindowPos().x + width;
     const Document& doc = editor.document();
-    ImGui::TextDisabled("%s", mode_description(doc.mode));
-    if (doc.mode == Mode::Curve) {
-        ImGui::Text("control points %zu, degree %d", doc.curve.control_points.size(),
-                    doc.curve.degree());
-        ImGui::Text("t = %.3f, level %d", editor.view().t, editor.view().level);
-    } else {
-        const Mesh& mesh = editor.mesh();
-        ImGui::Text("V %zu  E %zu  F %zu", mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
-        ImGui::Text("triangles drawn %zu", stats.triangles);
-        if (doc.mode == Mode::Surface) {
-            ImGui::Text("%zu patches, density %d", doc.patches.size(), doc.density);
+    if (ImGui::CollapsingHeader("Document", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::TextDisabled("%s", mode_description(doc.mode));
+        if (doc.mode == Mode::Curve) {
+            ImGui::Text("control points %zu, degree %d", doc.curve.control_points.size(),
+                        doc.curve.degree());
+            ImGui::Text("t = %.3f, level %d", editor.view().t, editor.view().level);
+        } else {
+            const Mesh& mesh = editor.mesh();
+            ImGui::Text("V %zu  E %zu  F %zu", mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
+            if (doc.mode == Mode::Surface) {
+                ImGui::Text("%zu patches, density %d", doc.patches.size(), doc.density);
+            }
+            // The same commands as the Y and O keys. Files are read into +Y up, so +Y is
+            // what the file declares.
+            const ViewState& view = editor.view();
+            ImGui::TextUnformatted("up (Y)");
+            ImGui::SameLine();
+            if (ImGui::RadioButton("+Y, as declared", view.up == UpAxis::Y) &&
+                view.up != UpAxis::Y) {
+                requests.action = Action{Command::CycleUp};
+            }
+            ImGui::SameLine();
+            if (ImGui::RadioButton("+Z", view.up == UpAxis::Z) && view.up != UpAxis::Z) {
+                requests.action = Action{Command::CycleUp};
+            }
+            bool trackball = view.trackball;
+            if (ImGui::Checkbox("trackball orbit (O)", &trackball)) {
+                requests.action = Action{Command::ToggleTrackball};
+            }
+        }
+        const History& history = editor.history();
+        ImGui::Text("undo %zu, redo %zu", history.undo_steps(), history.redo_steps());
+    }
+
+    if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const ElementRef& selection = editor.selection();
+        if (selection.is_none()) {
+            ImGui::TextDisabled("nothing selected (click an element)");
+        } else if (doc.mode == Mode::Curve) {
+            rows_table("selection", control_point_info(doc.curve, selection.index));
+        } else {
+            rows_table("selection", element_info(editor.mesh(), selection));
         }
     }
-    const History& history = editor.history();
-    ImGui::Text("undo %zu, redo %zu (%.1f of %zu MiB)", history.undo_steps(), history.redo_steps(),
-                static_cast<double>(history.bytes()) / (1 << 20), history.limits().max_bytes >> 20);
-    ImGui::Text("frame %.1f ms, pick %.1f ms", stats.frame_ms, stats.pick_ms);
-    ImGui::Text("%d × %d px", stats.width, stats.height);
 
-    ImGui::Separator();
-    ImGui::TextDisabled("Selection");
-    const ElementRef& selection = editor.selection();
-    if (selection.is_none()) {
-        ImGui::TextDisabled("nothing selected (click an element)");
-    } else if (doc.mode == Mode::Curve) {
-        rows_table("selection", control_point_info(doc.curve, selection.index));
-    } else {
-        rows_table("selection", element_info(editor.mesh(), selection));
+    if (ImGui::CollapsingHeader("Statistics")) {
+        if (doc.mode != Mode::Curve) {
+            ImGui::Text("triangles drawn %zu", stats.triangles);
+        }
+        const History& history = editor.history();
+        ImGui::Text("undo memory %.1f of %zu MiB", static_cast<double>(history.bytes()) / (1 << 20),
+                    history.limits().max_bytes >> 20);
+        ImGui::Text("frame %.1f ms, pick %.1f ms", stats.frame_ms, stats.pick_ms);
+        ImGui::Text("%d × %d px", stats.width, stats.height);
     }
 
     if (doc.mode != Mode::Curve && ImGui::CollapsingHeader("Shading")) {
@@ -181,18 +222,10 @@ void Panels::draw_help(Mode mode) {
         ImGui::End();
         return;
     }
-    // Two columns of sections by mode, so the list fits a laptop screen.
-    // Only what works in the current mode: its own keys first, then the keys of every mode
-    // and the mouse.
-    const char* mode_word = mode == Mode::Mesh      ? "mesh"
-                            : mode == Mode::Surface ? "surface"
-                                                    : "curve";
-    std::vector<HelpRow> rows;
-    for (HelpRow& row : help_rows()) {
-        if (row.modes.empty() || row.modes.find(mode_word) != std::string::npos) {
-            rows.push_back(std::move(row));
-        }
-    }
+    // Only what works in the current mode, in two columns so it fits a laptop screen: the
+    // mode's own keys and mouse on the left; what works everywhere and the colours on the
+    // right. Long actions wrap.
+    const std::vector<HelpRow> rows = help_rows(mode);
     std::vector<std::string> sections;
     for (const HelpRow& row : rows) {
         if (!row.modes.empty() &&
@@ -200,24 +233,57 @@ void Panels::draw_help(Mode mode) {
             sections.push_back(row.modes);
         }
     }
-    sections.push_back("");
-    for (std::size_t s = 0; s < sections.size(); ++s) {
-        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s",
-                           sections[s].empty() ? "everywhere" : sections[s].c_str());
-        if (ImGui::BeginTable(sections[s].c_str(), 2, ImGuiTableFlags_SizingFixedFit)) {
+    const float column =
+        std::clamp((viewport->WorkSize.x - 60.0f) / 2.0f, 300.0f * scale_, 560.0f * scale_);
+    const ImVec4 heading(1.0f, 0.7f, 0.3f, 1.0f);
+    const auto section = [&](const std::string& modes) {
+        ImGui::TextColored(heading, "%s", modes.empty() ? "everywhere" : modes.c_str());
+        if (ImGui::BeginTable(modes.empty() ? "everywhere" : modes.c_str(), 2,
+                              ImGuiTableFlags_SizingFixedFit)) {
             for (const HelpRow& row : rows) {
-                if (row.modes != sections[s]) {
+                if (row.modes != modes) {
                     continue;
                 }
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
                 ImGui::TextUnformatted(row.keys.c_str());
                 ImGui::TableNextColumn();
+                ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + column * 0.68f);
                 ImGui::TextUnformatted(row.action.c_str());
+                ImGui::PopTextWrapPos();
             }
             ImGui::EndTable();
         }
         ImGui::Spacing();
+    };
+    if (ImGui::BeginTable("help", 2,
+                          ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("mode", ImGuiTableColumnFlags_WidthFixed, column);
+        ImGui::TableSetupColumn("everywhere", ImGuiTableColumnFlags_WidthFixed, column);
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        for (const std::string& modes : sections) {
+            section(modes);
+        }
+        ImGui::TableNextColumn();
+        section("");
+        ImGui::TextColored(heading, "colours");
+        if (ImGui::BeginTable("colours", 2, ImGuiTableFlags_SizingFixedFit)) {
+            for (const LegendRow& row : legend(mode, OverlayStyle{})) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                const ImVec4 c(row.color[0], row.color[1], row.color[2], 1.0f);
+                ImGui::ColorButton(row.meaning.c_str(), c,
+                                   ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoPicker,
+                                   ImVec2(28.0f * scale_, 0));
+                ImGui::TableNextColumn();
+                ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + column * 0.8f);
+                ImGui::TextUnformatted(row.meaning.c_str());
+                ImGui::PopTextWrapPos();
+            }
+            ImGui::EndTable();
+        }
+        ImGui::EndTable();
     }
     remember_rect();
     ImGui::End();

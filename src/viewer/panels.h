@@ -29,7 +29,8 @@ struct FrameStats {
 struct PanelRequests {
     std::optional<std::filesystem::path> save_as;
     std::optional<std::filesystem::path> open;
-    bool view_changed = false;  ///< a shading control moved
+    bool view_changed = false;     ///< a shading control moved
+    std::optional<Action> action;  ///< a control that stands for a key (up axis, orbit)
 };
 
 class Panels {
@@ -50,6 +51,12 @@ public:
     /// True if `point` (window coordinates) lies on a panel drawn in the last frame.
     bool contains(glm::vec2 point) const;
 
+    /// Sizes of panels: Dear ImGui's style is scaled by `scale` (the monitor's content scale).
+    void set_scale(float scale) { scale_ = scale; }
+    /// The info panel's right edge in window coordinates: where the free view begins (the
+    /// expected edge until the panel is first drawn).
+    float info_right_edge() const;
+
     /// Draws every visible panel; call between ImGui::NewFrame() and ImGui::Render().
     PanelRequests draw(Editor& editor, const FrameStats& stats, const std::string& status,
                        bool status_error);
@@ -63,6 +70,10 @@ private:
     /// Remembers the current ImGui window's rectangle (call between Begin and End).
     void remember_rect();
 
+    static constexpr float kInfoWidth = 300.0f;  ///< before scaling
+    static constexpr float kInfoMargin = 10.0f;
+    float scale_ = 1.0f;
+    float info_right_ = 0.0f;                             ///< 0 until drawn
     std::vector<std::pair<glm::vec2, glm::vec2>> rects_;  ///< min, max of last frame's panels
     Prompt prompt_ = Prompt::None;
     bool prompt_fresh_ = false;  ///< open the popup and focus the text field next frame

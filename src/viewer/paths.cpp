@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -80,6 +81,65 @@ Completion complete_path(const std::string& text, const fs::path& folder) {
     // Keep what the user typed (a `~` stays a `~`) and append the shared rest.
     out.text = text + shared.substr(prefix.size());
     return out;
+}
+
+namespace {
+
+// XDG_PICTURES_DIR's value in a user-dirs.dirs file ("$HOME/Pictures", quoted, $HOME
+// expanded), or empty.
+fs::path pictures_in_user_dirs(const fs::path& file, const std::string& home) {
+    std::ifstream in(file);
+    std::string line;
+    const std::string key = "XDG_PICTURES_DIR=";
+    while (std::getline(in, line)) {
+        if (line.rfind(key, 0) != 0) {
+            continue;
+        }
+        std::string value = line.substr(key.size());
+        if (value.size() >= 2 && value.front() == '"' && value.back() == '"') {
+            value = value.substr(1, value.size() - 2);
+        }
+        if (value.rfind("$HOME", 0) == 0) {
+            value = home + value.substr(5);
+        }
+        return value.empty() || value[0] != '/' ? fs::path() : fs::path(value);
+    }
+    return {};
+}
+
+}  // namespace
+
+fs::path pictures_folder() {
+    const char* home_env = std::getenv("HOME");
+    const std::string home = home_env != nullptr ? home_env : "";
+    fs::path pictures;
+    if (const char* env = std::getenv("XDG_PICTURES_DIR"); env != nullptr && env[0] == '/') {
+        pictures = env;
+    } else if (!home.empty()) {
+        const char* config = std::getenv("XDG_CONFIG_HOME");
+        const fs::path config_dir =
+            config != nullptr && config[0] == '/' ? fs::path(config) : fs::path(home) / ".config";
+        pictures = pictures_in_user_dirs(config_dir / "user-dirs.dirs", home);
+        if (pictures.empty()) {
+            pictures = fs::path(home) / "Pictures";
+        }
+    } else {
+        std::error_code ec;
+        pictures = fs::temp_directory_path(ec);
+    }
+    return (pictures / "MeshEdit").lexically_normal();
+}
+
+fs::path screenshot_path(const fs::path& folder, const fs::path& document) {
+    const std::string stem =
+        document.empty() ? "meshedit-" : "meshedit-" + document.stem().string() + "-";
+    for (int n = 1;; ++n) {
+        fs::path path = folder / (stem + std::to_string(n) + ".png");
+        std::error_code ec;
+        if (!fs::exists(path, ec)) {
+            return path;
+        }
+    }
 }
 
 }  // namespace meshedit::viewer

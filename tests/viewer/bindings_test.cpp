@@ -238,12 +238,66 @@ TEST(Bindings, HelpRowsMergeByLabelAndHelp) {
     EXPECT_EQ(find("F", "mesh, surface")->action, "flip the selected edge");
     // Key rows come first, then the mouse rows.
     const auto mouse = mouse_rows();
-    ASSERT_EQ(mouse.size(), 6u);
+    ASSERT_EQ(mouse.size(), 10u);
     ASSERT_GE(rows.size(), mouse.size());
     for (std::size_t i = 0; i < mouse.size(); ++i) {
         EXPECT_EQ(rows[rows.size() - mouse.size() + i].keys, mouse[i].keys);
     }
     EXPECT_EQ(rows.front().keys, "F");
+}
+
+TEST(Bindings, HelpShowsOnlyWhatTheModeDoes) {
+    const auto says = [](Mode mode, std::string_view word) {
+        for (const HelpRow& row : help_rows(mode)) {
+            if (row.keys.find(word) != std::string::npos ||
+                row.action.find(word) != std::string::npos) {
+                return true;
+            }
+        }
+        return false;
+    };
+    // Curves are flat: no orbit, no halfedges, no flips; the wheel changes t.
+    for (std::string_view word : {"orbit", "halfedge", "flip", "zoom"}) {
+        EXPECT_FALSE(says(Mode::Curve, word)) << word;
+        EXPECT_TRUE(says(Mode::Mesh, word)) << word;
+    }
+    EXPECT_TRUE(says(Mode::Curve, "change t"));
+    EXPECT_FALSE(says(Mode::Mesh, "change t"));
+    EXPECT_TRUE(says(Mode::Surface, "control nets"));
+    EXPECT_FALSE(says(Mode::Mesh, "control nets"));
+    // Every mode shows the mouse rows for all modes (pan, drop).
+    for (Mode mode : {Mode::Mesh, Mode::Surface, Mode::Curve}) {
+        EXPECT_TRUE(says(mode, "drop a file")) << mode_description(mode);
+        EXPECT_TRUE(says(mode, "pan")) << mode_description(mode);
+    }
+    EXPECT_TRUE(says(Mode::Mesh, "7–9 same as 1"));
+}
+
+TEST(Bindings, LegendTakesItsColoursFromTheStyle) {
+    OverlayStyle style;
+    style.hovered = {0.1f, 0.2f, 0.3f, 1.0f};
+    style.crease = {0.4f, 0.5f, 0.6f, 1.0f};
+    const auto colour_of = [](const std::vector<LegendRow>& rows, std::string_view meaning) {
+        for (const LegendRow& r : rows) {
+            if (r.meaning.find(meaning) != std::string::npos) {
+                return r.color;
+            }
+        }
+        return Color{-1, -1, -1, -1};
+    };
+    const auto mesh = legend(Mode::Mesh, style);
+    EXPECT_EQ(colour_of(mesh, "under the cursor"), style.hovered);
+    EXPECT_EQ(colour_of(mesh, "selection"), style.selected);
+    EXPECT_EQ(colour_of(mesh, "boundary"), style.boundary);
+    EXPECT_EQ(colour_of(mesh, "crease"), style.crease);
+    EXPECT_EQ(colour_of(mesh, "control nets")[0], -1.0f);
+    EXPECT_EQ(colour_of(legend(Mode::Surface, style), "control nets"), style.control_net);
+    const auto curve = legend(Mode::Curve, style);
+    EXPECT_EQ(colour_of(curve, "control polygon"), style.levels[0]);
+    EXPECT_EQ(colour_of(curve, "level 3"), style.levels[3]);
+    EXPECT_EQ(colour_of(curve, "B(t)"), style.evaluated_point);
+    EXPECT_EQ(colour_of(curve, "the curve"), style.curve);
+    EXPECT_EQ(colour_of(curve, "boundary")[0], -1.0f);
 }
 
 TEST(Bindings, MarkdownTable) {
@@ -256,8 +310,8 @@ TEST(Bindings, MarkdownTable) {
         << md;
     EXPECT_NE(md.find("| Esc | clear the selection; with nothing selected, quit | all |\n"),
               std::string::npos);
-    EXPECT_NE(md.find("| wheel | zoom to the cursor (curve mode: change t) | all |\n"),
-              std::string::npos);
+    EXPECT_NE(md.find("| wheel | zoom to the cursor | mesh, surface |\n"), std::string::npos);
+    EXPECT_NE(md.find("| wheel | change t by 0.01 a step | curve |\n"), std::string::npos);
     // One line per help row plus the two header lines, each a well-formed 3-column row.
     std::istringstream in(md);
     std::string line;

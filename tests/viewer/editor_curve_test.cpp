@@ -118,6 +118,19 @@ TEST(Editor, CurveLevelsPointsAndT) {
     EXPECT_EQ(ed.drag_to({0.5, 0.5, 7}).changes, unsigned{kCurve});
     ed.end_drag();
     EXPECT_EQ(ed.document().curve.control_points[3], (Vec3{0.5, 0.5, 0}));
+    // With the pixel size given (as the window does), no digits finer than a pixel: a point
+    // dragged where a pixel is 0.002 wide lands on a multiple of 0.001.
+    ASSERT_TRUE(ed.begin_drag());
+    const Outcome moved = ed.drag_to({0.30750003457069397, 0.51249, 0}, 0.002);
+    EXPECT_EQ(moved.message, "moving control point 3 by (-0.1920, 0.0120), 0.1924");
+    ed.end_drag();
+    EXPECT_EQ(ed.document().curve.control_points[3], (Vec3{0.308, 0.512, 0}));
+    ASSERT_TRUE(ed.begin_drag());
+    ed.drag_to({123.456, -0.049, 0}, 20.0);  // far out: steps of 10
+    ed.end_drag();
+    EXPECT_EQ(ed.document().curve.control_points[3], (Vec3{120, -0.0, 0}));
+    ed.press(key_of('Z'), kCtrl);
+    ed.press(key_of('Z'), kCtrl);
     ed.press(Key::Equal, 0);
     ASSERT_FALSE(ed.press(key_of('S'), kCtrl).refused);
     EXPECT_FALSE(ed.dirty());
@@ -193,20 +206,42 @@ TEST(Editor, SurfaceDensityRetessellates) {
     EXPECT_TRUE(out.refused);
     EXPECT_EQ(out.message, "density is already at the minimum (1)");
 
-    // B toggles the nets; saving to the .bez is refused, saving as a mesh works.
+    // B toggles the nets. Saving to the .bez writes the patches; having edited the
+    // tessellation, that is asked once (the edits would be lost); saving as a mesh keeps them.
     EXPECT_FALSE(ed.view().show_nets);
     ed.press(key_of('B'), 0);
     EXPECT_TRUE(ed.view().show_nets);
-    out = ed.save();
+    TempDir dir;
+    ed.select(ElementRef::edge(Edge(40)));
+    ASSERT_FALSE(ed.press(key_of('S'), 0).refused);
+    out = ed.save_as(dir / "teapot.bez");
     EXPECT_TRUE(out.refused);
     EXPECT_EQ(out.message,
-              "a .bez file holds patches, not the edited mesh: save as .dae, .obj or .gltf "
-              "(Ctrl+Shift+S)");
-    TempDir dir;
-    EXPECT_TRUE(ed.save_as(dir / "teapot.bez").refused);
+              "saving as .bez loses the edits of the tessellated mesh (a .bez file holds only "
+              "the patches): save again to save anyway, or save as .dae to keep everything");
+    EXPECT_FALSE(fs::exists(dir / "teapot.bez"));
+    EXPECT_TRUE(ed.save_as(dir / "teapot.txt").refused);
     ASSERT_FALSE(ed.save_as(dir / "teapot.obj").refused);
     EXPECT_FALSE(ed.dirty());
     EXPECT_EQ(read_mesh(dir / "teapot.obj").mesh.n_faces(), ed.mesh().n_faces());
+    out = ed.save_as(dir / "teapot.bez");
+    EXPECT_TRUE(out.refused) << "asked again: the target changed";
+    out = ed.save_as(dir / "teapot.bez");
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(read_bez(dir / "teapot.bez").size(), patches.size());
+    for (std::size_t p = 0; p < patches.size(); ++p) {
+        EXPECT_EQ(read_bez(dir / "teapot.bez")[p].control_points, patches[p].control_points);
+    }
+
+    // Unedited patches save without a question, Ctrl+S included.
+    Editor fresh;
+    ASSERT_FALSE(fresh.open(dir / "teapot.bez").refused);
+    fresh.press(Key::Minus, 0);
+    EXPECT_TRUE(fresh.dirty());
+    out = fresh.save();
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(out.message, "saved teapot.bez");
+    EXPECT_FALSE(fresh.dirty());
 }
 
 }  // namespace

@@ -162,8 +162,13 @@ TEST(Editor, DescribeAndInfo) {
     const auto hi = element_info(cube, ElementRef::halfedge(h));
     EXPECT_EQ(row(hi, "next"), std::to_string(cube.next(h).idx()));
     EXPECT_EQ(row(hi, "twin"), std::to_string(Mesh::twin(h).idx()));
-    EXPECT_EQ(row(hi, "from"), a);
-    EXPECT_EQ(row(hi, "vertex"), b);
+    EXPECT_EQ(row(hi, "from (vertex())"), a);
+    EXPECT_EQ(row(hi, "to"), b);
+    // V goes where the panel's "from (vertex())" row points.
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::halfedge(h));
+    ed.press(key_of('V'), 0);
+    EXPECT_EQ(std::to_string(ed.selection().index), a);
     EXPECT_EQ(row(hi, "face"), std::to_string(cube.face(h).idx()));
 
     const Mesh grid = shapes::grid(1, 1);
@@ -196,8 +201,12 @@ TEST(Editor, DragIsOneUndoStep) {
     ASSERT_TRUE(ed.begin_drag());
     EXPECT_TRUE(ed.dragging());
     EXPECT_EQ(ed.drag_to({1.5, 1, 1}).changes, unsigned{kGeometry});
-    EXPECT_EQ(ed.drag_to({2, 2, 2}).changes, unsigned{kGeometry});
-    ed.end_drag();
+    const Outcome moving = ed.drag_to({2, 2, 2});
+    EXPECT_EQ(moving.changes, unsigned{kGeometry});
+    EXPECT_EQ(moving.message, "moving vertex 7 by (1.0000, 1.0000, 1.0000), 1.7321");
+    // The cube's vertex 7 is (1, 1, 1): the status says what the drag did.
+    EXPECT_EQ(ed.end_drag().message,
+              "moved vertex 7 by (1.0000, 1.0000, 1.0000), 1.7321 (Ctrl+Z undoes it)");
     EXPECT_FALSE(ed.dragging());
     EXPECT_EQ(ed.history().undo_steps(), 1u);
     EXPECT_TRUE(ed.dirty());
@@ -210,7 +219,7 @@ TEST(Editor, DragIsOneUndoStep) {
     ed.select(ElementRef::vertex(Vertex(7)));
     ASSERT_TRUE(ed.begin_drag());
     EXPECT_EQ(ed.drag_to(cube.position(Vertex(7))).changes, unsigned{kNothing});
-    ed.end_drag();
+    EXPECT_TRUE(ed.end_drag().message.empty()) << "nothing moved, nothing to say";
     EXPECT_EQ(ed.history().undo_steps(), 0u);
     EXPECT_EQ(ed.history().redo_steps(), 1u);
     EXPECT_FALSE(ed.dirty());

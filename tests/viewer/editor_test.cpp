@@ -21,6 +21,22 @@ namespace {
 
 // ------------------------------------------------------------------------ display, mode
 
+TEST(Editor, SmallMeshesOpenFlatAndCurvedOnesSmooth) {
+    EXPECT_FALSE(editor_with(shapes::cube()).view().render.smooth) << "12 faces";
+    const Mesh sphere = shapes::icosphere(2);  // 320 faces
+    ASSERT_LT(sphere.n_faces(), kSmoothFromFaces);
+    EXPECT_FALSE(editor_with(sphere).view().render.smooth);
+    const Mesh finer = shapes::icosphere(3);  // 1280 faces
+    ASSERT_GE(finer.n_faces(), kSmoothFromFaces);
+    EXPECT_TRUE(editor_with(finer).view().render.smooth);
+    // Each document gets its own default, whatever Q did to the last one.
+    Editor ed = editor_with(finer);
+    ed.press(key_of('Q'), 0);
+    EXPECT_FALSE(ed.view().render.smooth);
+    ed.set_document(mesh_document(finer), "finer.obj");
+    EXPECT_TRUE(ed.view().render.smooth);
+}
+
 TEST(Editor, DisplayTogglesAreNotEdits) {
     Editor ed = editor_with(shapes::cube());
     const bool smooth = ed.view().render.smooth;
@@ -33,6 +49,10 @@ TEST(Editor, DisplayTogglesAreNotEdits) {
     EXPECT_EQ(ed.view().render.shading, 5);
     EXPECT_EQ(out.message, "shading 5: depth");
     EXPECT_EQ(ed.press(key_of('1'), 0).message, "shading 1: phong");
+    // 7–9 are not modes of their own yet, and say so.
+    EXPECT_EQ(ed.press(key_of('8'), 0).message,
+              "shading 8: same as 1 (Blinn-Phong) until a mode takes this number");
+    EXPECT_EQ(ed.view().render.shading, 8);
     const bool info = ed.view().show_info;
     ed.press(key_of('I'), 0);
     EXPECT_NE(ed.view().show_info, info);

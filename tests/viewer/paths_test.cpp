@@ -1,4 +1,5 @@
-// The open and save-as prompts' paths: what they start with, what a typed text names, and Tab.
+// The open and save-as prompts' paths (what they start with, what a typed text names, Tab)
+// and where screenshots go.
 
 #include "meshedit/viewer/paths.h"
 
@@ -6,6 +7,10 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "support/scratch_dir.h"
 
@@ -63,6 +68,67 @@ TEST(PromptPaths, TabCompletesNamesAndFolders) {
     c = complete_path(base + "models/zz", "/");
     EXPECT_EQ(c.text, base + "models/zz");
     EXPECT_TRUE(c.candidates.empty());
+}
+
+// Sets environment variables for one test and puts the old values back.
+class ScopedEnvironment {
+public:
+    void set(const char* name, const std::string& value) {
+        remember(name);
+        ::setenv(name, value.c_str(), 1);
+    }
+    void unset(const char* name) {
+        remember(name);
+        ::unsetenv(name);
+    }
+    ~ScopedEnvironment() {
+        for (const auto& [name, value] : saved_) {
+            if (value) {
+                ::setenv(name.c_str(), value->c_str(), 1);
+            } else {
+                ::unsetenv(name.c_str());
+            }
+        }
+    }
+
+private:
+    void remember(const char* name) {
+        const char* old = std::getenv(name);
+        saved_.emplace_back(name, old ? std::optional<std::string>(old) : std::nullopt);
+    }
+    std::vector<std::pair<std::string, std::optional<std::string>>> saved_;
+};
+
+TEST(Screenshots, GoToTheUsersPicturesFolder) {
+    test::ScratchDir home;
+    ScopedEnvironment env;
+    env.set("HOME", home.path().string());
+    env.unset("XDG_PICTURES_DIR");
+    env.unset("XDG_CONFIG_HOME");
+    EXPECT_EQ(pictures_folder(), home / "Pictures" / "MeshEdit");
+
+    // A desktop's user-dirs.dirs names it (here in another language).
+    fs::create_directories(home / ".config");
+    std::ofstream(home / ".config" / "user-dirs.dirs")
+        << "# written by xdg-user-dirs-update\nXDG_DESKTOP_DIR=\"$HOME/Desktop\"\n"
+           "XDG_PICTURES_DIR=\"$HOME/Bilder\"\n";
+    EXPECT_EQ(pictures_folder(), home / "Bilder" / "MeshEdit");
+    env.set("XDG_CONFIG_HOME", (home / "elsewhere").string());
+    EXPECT_EQ(pictures_folder(), home / "Pictures" / "MeshEdit");
+    env.set("XDG_PICTURES_DIR", "/srv/shots");
+    EXPECT_EQ(pictures_folder(), fs::path("/srv/shots/MeshEdit"));
+    env.unset("XDG_PICTURES_DIR");
+    env.unset("HOME");
+    EXPECT_EQ(pictures_folder(), fs::temp_directory_path() / "MeshEdit");
+}
+
+TEST(Screenshots, AreNamedAfterTheDocumentAndNeverOverwrite) {
+    test::ScratchDir dir;
+    EXPECT_EQ(screenshot_path(dir.path(), "/models/cow.dae"), dir / "meshedit-cow-1.png");
+    std::ofstream(dir / "meshedit-cow-1.png") << "x";
+    std::ofstream(dir / "meshedit-cow-2.png") << "x";
+    EXPECT_EQ(screenshot_path(dir.path(), "/models/cow.dae"), dir / "meshedit-cow-3.png");
+    EXPECT_EQ(screenshot_path(dir.path(), ""), dir / "meshedit-1.png");
 }
 
 }  // namespace

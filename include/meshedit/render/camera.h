@@ -42,6 +42,12 @@ public:
     bool orthographic = false;
     float ortho_height = 1.0f;
 
+    /// Moves the picture sideways without turning the camera: the target appears at this
+    /// normalised x (−1 left edge … 1 right edge) instead of the centre. The viewer uses
+    /// it to centre the model in the space its info panel leaves free; orbits still turn
+    /// about the target.
+    float lens_shift_x = 0.0f;
+
     /// Perspective view of `box` from the current azimuth and elevation: the target becomes
     /// the box centre and the distance the smallest at which all eight box corners fit a
     /// viewport of `aspect` (width / height), plus a small margin. If `points` is given (the

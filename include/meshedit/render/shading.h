@@ -26,9 +26,9 @@ inline constexpr std::array<ShadingMode, 10> kShadingModes{{
     {5, "depth", "grey by view depth (near light, far dark)"},
     {6, "hemisphere", "sky/ground hemisphere light"},
     // 7–9 are free for later modes; until then they alias existing ones so every key works.
-    {7, "phong7", "alias of 1 (reserved)"},
-    {8, "phong8", "alias of 1 (reserved)"},
-    {9, "phong9", "alias of 1 (reserved)"},
+    {7, "phong7", "same as 1 (Blinn-Phong) until a mode takes this number"},
+    {8, "phong8", "same as 1 (Blinn-Phong) until a mode takes this number"},
+    {9, "phong9", "same as 1 (Blinn-Phong) until a mode takes this number"},
 }};
 
 /// Looks a mode up by name or number ("phong", "1"); nullopt if unknown.

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "meshedit/render/overlay.h"
 #include "meshedit/viewer/document.h"
 #include "meshedit/viewer/keys.h"
 
@@ -113,8 +114,20 @@ struct HelpRow {
 /// Key rows (bindings merged by label and help, in table order) followed by the mouse rows.
 std::vector<HelpRow> help_rows();
 
+/// The rows that apply in `mode` (its own and those of every mode): what the help shows.
+std::vector<HelpRow> help_rows(Mode mode);
+
 /// The mouse actions (not dispatched through the key table, listed for the help).
 std::span<const HelpRow> mouse_rows();
+
+/// One colour the viewer draws with and what it means.
+struct LegendRow {
+    Color color;
+    std::string meaning;
+};
+
+/// The colours of `mode`'s overlays (taken from `style`, so the legend cannot drift).
+std::vector<LegendRow> legend(Mode mode, const OverlayStyle& style);
 
 /// The README's keys-and-mouse table: a Markdown table of help_rows().
 std::string key_table_markdown();

@@ -59,6 +59,9 @@ inline RenderOptions with_wireframe() {
     return options;
 }
 
+/// A document opens with smooth shading from this many faces, flat below (Q toggles).
+inline constexpr std::size_t kSmoothFromFaces = 500;
+
 /// Display state: not part of the document, not undone.
 struct ViewState {
     RenderOptions render = with_wireframe();  ///< edges visible: they are what one picks
@@ -133,10 +136,13 @@ public:
 
     /// Dragging the selected vertex (or control point): begin records one undo step,
     /// move sets its position (world space; z ignored in Curve mode), end finishes. A drag
-    /// with no movement leaves no undo step and does not dirty the document.
+    /// with no movement leaves no undo step and does not dirty the document. In Curve mode
+    /// a `pixel` size (world units) rounds x and y to the decimal step just below it, so a
+    /// dragged point saves as 0.3075, not 0.30750003457069397.
     bool begin_drag();
-    Outcome drag_to(const Vec3& position);
-    void end_drag();
+    Outcome drag_to(const Vec3& position, double pixel = 0.0);
+    /// Ends a drag; after a move its outcome says what moved and by how much.
+    Outcome end_drag();
     bool dragging() const { return dragging_; }
 
     // ------------------------------------------------------------- curve (editor_curve.cpp)
@@ -206,6 +212,7 @@ private:
     std::uint64_t next_revision_ = 1;
     bool dragging_ = false;
     bool drag_moved_ = false;
+    Vec3 drag_from_;  ///< where the dragged point was before the drag
     bool quit_armed_ = false;
     bool replace_armed_ = false;         ///< the next open() may discard unsaved changes
     std::filesystem::path lossy_armed_;  ///< the next save to this path may lose what it said

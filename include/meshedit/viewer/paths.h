@@ -1,8 +1,8 @@
 #pragma once
 /// \file
-/// The open and save-as prompts' paths, without a window: what the field starts with, what a
-/// typed text names, and Tab completion. The window's prompt (src/viewer/panels.cpp) calls
-/// these; tests call them directly.
+/// The viewer's paths, without a window: the open and save-as prompts (what the field starts
+/// with, what a typed text names, Tab completion) and where screenshots go. The window
+/// (src/viewer/panels.cpp, app.cpp) calls these; tests call them directly.
 
 #include <filesystem>
 #include <string>
@@ -30,5 +30,16 @@ struct Completion {
     std::vector<std::string> candidates;
 };
 Completion complete_path(const std::string& text, const std::filesystem::path& folder);
+
+/// Where P saves screenshots: a MeshEdit folder in the user's pictures folder —
+/// $XDG_PICTURES_DIR, else its line in ${XDG_CONFIG_HOME:-~/.config}/user-dirs.dirs (as
+/// xdg-user-dirs writes it on desktops), else ~/Pictures. The system's temporary folder
+/// when there is no home folder.
+std::filesystem::path pictures_folder();
+
+/// The first free "meshedit-STEM-N.png" in `folder` (N from 1; "meshedit-N.png" for an
+/// unnamed document), STEM being the document's name without its extension.
+std::filesystem::path screenshot_path(const std::filesystem::path& folder,
+                                      const std::filesystem::path& document);
 
 }  // namespace meshedit::viewer
