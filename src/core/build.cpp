@@ -213,9 +213,8 @@ memory::Array<std::uint32_t> pair_halfedges(const SoupHalfedges& fh, std::size_t
                                      // Stable in h within each group, as the scan expects.
                                      std::sort(bucket.begin() + start[a], bucket.begin() + end,
                                                [](const TwoWords& x, const TwoWords& y) {
-                                                   return x.first != y.first
-                                                              ? x.first < y.first
-                                                              : x.second < y.second;
+                                                   return x.first != y.first ? x.first < y.first
+                                                                             : x.second < y.second;
                                                });
                                  }
                                  for (std::uint32_t i = start[a]; i < end; ++i) {
@@ -459,7 +458,8 @@ double build_bytes(double vertices, double corners, double faces) {
     // Soup: a position (24) and a normal (24) per vertex, an index per corner, an offset per
     // face. Build: about 12 bytes of scratch per corner. Mesh: each corner is a halfedge of
     // 16 bytes, with a twin; an edge byte per corner; 29 bytes per vertex, 5 per face.
-    return vertices * (48.0 + 29.0) + corners * (4.0 + 12.0 + 2.0 * 16.0 + 1.0) + faces * (4.0 + 5.0);
+    return vertices * (48.0 + 29.0) + corners * (4.0 + 12.0 + 2.0 * 16.0 + 1.0) +
+           faces * (4.0 + 5.0);
 }
 
 PolygonSoup to_polygon_soup(const Mesh& mesh) {

@@ -179,7 +179,7 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
         h = mesh.ccw_rotated(h);
     } while (h != first);
     mesh.set_halfedge(v0, anchor);
-    mesh.position(v0) = 0.5 * (mesh.position(v0) + mesh.position(v1));
+    mesh.position(v0) = midpoint(mesh.position(v0), mesh.position(v1));
 
     mesh.mark_deleted(e);
     mesh.mark_deleted(v1);

@@ -230,7 +230,7 @@ OpResult<Vertex> split(Mesh& mesh, Edge e) {
     const Face f0 = mesh.face(h0);
     const Face f1 = mesh.face(t0);
     const bool top = f0.is_valid();
-    const Vec3 midpoint = 0.5 * (mesh.position(b) + mesh.position(c));
+    const Vec3 midpoint = meshedit::midpoint(mesh.position(b), mesh.position(c));
     const bool b_anchored_at_h0 = mesh.halfedge(b) == h0;
 
     // Allocate, in one step per element kind: m; edges s, w (and u with a top face); faces

@@ -94,7 +94,7 @@ inline Vec3 smooth_edge_point(const Vec3& a, const Vec3& b, const Vec3& c, const
 
 /// Boundary or crease edge A-B: the midpoint.
 inline Vec3 sharp_edge_point(const Vec3& a, const Vec3& b) {
-    return 0.5 * (a + b);
+    return midpoint(a, b);
 }
 
 // ----------------------------------------------------------------- preconditions

@@ -44,6 +44,7 @@
 // the same old mesh. The tests compare both on several meshes.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <iterator>
 #include <stdexcept>
@@ -175,6 +176,30 @@ void loop_positions(memory::Array<Vec3>& out, const OldMesh& old, const memory::
             }
         }
     });
+}
+
+// Loop's points are convex combinations of old points, but the sums inside them (A + B, a
+// vertex's neighbours) are not, and overflow near the top of the double range. A mesh whose
+// largest coordinate exceeds 2^990 (a sum of 2^32 of them still fits) is subdivided at a
+// power-of-two scale and scaled back, which changes no bit of any other mesh's result.
+// Returns the exponent to scale by, 0 for every ordinary mesh.
+int overflow_exponent(const memory::Array<Vec3>& p) {
+    double largest = 0.0;
+    for (const Vec3& q : p) {
+        largest = std::max({largest, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+    }
+    if (!(largest > std::ldexp(1.0, 990))) {
+        return 0;
+    }
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    return exponent;
+}
+
+void scale_by_power_of_two(memory::Array<Vec3>& p, int exponent) {
+    for (Vec3& q : p) {
+        q = Vec3{std::ldexp(q.x, exponent), std::ldexp(q.y, exponent), std::ldexp(q.z, exponent)};
+    }
 }
 
 // The connectivity of the refined mesh, one array at a time, so that each old array is freed
@@ -473,8 +498,15 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
         {
             memory::Array<Vec3> position;
             position.resize_for_overwrite(new_nv);  // loop_positions writes every point
+            const int exponent = overflow_exponent(mesh.position_vector());
+            if (exponent != 0) {
+                scale_by_power_of_two(mesh.position_vector(), -exponent);
+            }
             loop_positions(position, old, mesh.position_vector(), options.weights, threads,
                            progress);
+            if (exponent != 0) {
+                scale_by_power_of_two(position, exponent);
+            }
             mesh.position_vector().swap(position);
         }
         LoopConnectivity(mesh, old, nv, threads, progress).run();

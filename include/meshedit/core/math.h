@@ -89,6 +89,13 @@ inline Vec3 normalize(const Vec3& a) {
     return n > 0.0 ? a / n : Vec3{};
 }
 
+/// (a + b) / 2 without overflow: halving is exact, so this is bit for bit 0.5·(a + b)
+/// wherever that is finite (and below the subnormal range), and finite near the top of the
+/// double range where the sum would overflow (split and collapse at 1e308).
+constexpr Vec3 midpoint(const Vec3& a, const Vec3& b) {
+    return 0.5 * a + 0.5 * b;
+}
+
 /// Linear interpolation `(1-t)·a + t·b`, written so that t = 0 and t = 1 are exact.
 constexpr Vec3 lerp(const Vec3& a, const Vec3& b, double t) {
     return (1.0 - t) * a + t * b;
