@@ -46,8 +46,13 @@ DEFAULT_CONFIGS = {
         for impl in ("meshedit", "assimp")
     ]
     + [("draw_1m_triangles", "all")],  # one run measures "meshedit" and "bare"
+    "bench_build": [
+        (f"build_{shape}_{size}", "meshedit")
+        for shape in ("fan_hub_first", "polygon") for size in ("100k", "300k", "1m")
+    ] + [("build_torus_1m", "meshedit")],
 }
-PROGRAMS = ["bench_loop", "bench_ops", "bench_io_draw"]
+PROGRAMS = ["bench_loop", "bench_ops", "bench_io_draw", "bench_build"]
+BUILD_SIZES = ("100k", "300k", "1m")
 # MeshEdit again with its huge-page hint off, for reference (not an anchor): what the hint is
 # worth on this machine. Only where memory is allocated in the timed region.
 NO_HUGE_PAGES = "meshedit_no_huge_pages"
@@ -67,6 +72,12 @@ JOB_TITLES = {
     "Triangulate)",
     "collada_load_1m_polylist": "Load a 1M-triangle COLLADA `<polylist>` with per-face normals "
     "(same impls)",
+    "build_torus_1m": "Build the halfedge mesh of a 1M-triangle torus soup (the ordinary "
+    "shape, for comparison with the rows below)",
+    **{f"build_fan_hub_first_{n}": f"Build a {n}-triangle fan whose hub is vertex 0 (all its "
+       "faces in one pairing bucket; 333 s for 1M before issue 14)" for n in BUILD_SIZES},
+    **{f"build_polygon_{n}": f"Build one polygon of {n} corners (the repeated-corner check; "
+       "208 s for 1M before issue 14)" for n in BUILD_SIZES},
     "draw_1m_triangles": "Headless draw of a 1M-triangle torus at 1280×800 (OSMesa); MeshEdit's "
     "smooth Blinn-Phong renderer (which culls back faces of closed outward meshes) vs a trivial "
     "shader over the same vertex buffer (`bare`), and the trivial shader with back faces culled "
@@ -446,6 +457,25 @@ def targets_table(jobs):
     else:
         rows.append(("draw 1M triangles headless", "≤ 1.2 × the bare draw",
                      not_measured("draw_1m_triangles", "meshedit or bare missing"), "n/a"))
+
+    # Loads that were once quadratic: the cost per face (per corner for the polygon) stays
+    # flat from 100k to 1M.
+    for shape, label in (("fan_hub_first", "build a fan around vertex 0"),
+                         ("polygon", "build one huge polygon")):
+        per = []
+        for n in BUILD_SIZES:
+            me = res(f"build_{shape}_{n}").get("meshedit", {})
+            if "ns_per_face_or_corner" in me:
+                per.append((n, me["ns_per_face_or_corner"]))
+        target = "ns per face flat: 1M ≤ 2 × 100k"
+        if len(per) == len(BUILD_SIZES):
+            growth = per[-1][1] / per[0][1]
+            rows.append((label + ", 100k / 300k / 1M", target,
+                         " / ".join(f"{v:.0f}" for _, v in per) + f" ns (× {growth:.2f})",
+                         "yes" if growth <= 2 else "no"))
+        else:
+            rows.append((label, target, not_measured(f"build_{shape}_1m", "a size missing"),
+                         "n/a"))
 
     lines = ["| job | target | measured (median, MeshEdit / anchor) | met? |", "|---|---|---|---|"]
     lines += [f"| {a} | {b} | {c} | {d} |" for a, b, c, d in rows]
