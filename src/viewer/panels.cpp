@@ -90,7 +90,11 @@ PanelRequests Panels::draw(Editor& editor, const FrameStats& stats, const std::s
 }
 
 float Panels::info_right_edge() const {
-    return info_right_ > 0.0f ? info_right_ : kInfoMargin + kInfoWidth * scale_;
+    if (info_right_ <= 0.0f) {
+        return kInfoMargin + kInfoWidth * scale_;  // not drawn yet: where it will be
+    }
+    // Dragged away from the left edge, the panel floats over the view: keep no room for it.
+    return info_left_ <= 4.0f * kInfoMargin * scale_ ? info_right_ : 0.0f;
 }
 
 void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& requests) {
@@ -104,11 +108,13 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
         ImVec2(width, 0), ImVec2(width, std::max(viewport->WorkSize.y - 70.0f * scale_, 100.0f)));
     if (!ImGui::Begin("Info (I)", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         remember_rect();
-        info_right_ = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
+        info_left_ = ImGui::GetWindowPos().x;
+        info_right_ = info_left_ + ImGui::GetWindowSize().x;
         ImGui::End();
         return;
     }
-    info_right_ = ImGui::GetWindowPos().x + width;
+    info_left_ = ImGui::GetWindowPos().x;
+    info_right_ = info_left_ + width;
     const Document& doc = editor.document();
     if (ImGui::CollapsingHeader("Document", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::TextDisabled("%s", mode_description(doc.mode));

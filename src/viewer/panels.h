@@ -54,7 +54,7 @@ public:
     /// Sizes of panels: Dear ImGui's style is scaled by `scale` (the monitor's content scale).
     void set_scale(float scale) { scale_ = scale; }
     /// The info panel's right edge in window coordinates: where the free view begins (the
-    /// expected edge until the panel is first drawn).
+    /// expected edge until the panel is first drawn; 0 once it is dragged off the left edge).
     float info_right_edge() const;
 
     /// Draws every visible panel; call between ImGui::NewFrame() and ImGui::Render().
@@ -73,7 +73,7 @@ private:
     static constexpr float kInfoWidth = 300.0f;  ///< before scaling
     static constexpr float kInfoMargin = 10.0f;
     float scale_ = 1.0f;
-    float info_right_ = 0.0f;                             ///< 0 until drawn
+    float info_left_ = 0.0f, info_right_ = 0.0f;          ///< last drawn edges; right 0 until drawn
     std::vector<std::pair<glm::vec2, glm::vec2>> rects_;  ///< min, max of last frame's panels
     Prompt prompt_ = Prompt::None;
     bool prompt_fresh_ = false;  ///< open the popup and focus the text field next frame
