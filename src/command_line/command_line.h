@@ -50,9 +50,7 @@ inline CLI::Option* add_memory_budget_option(CLI::App& app) {
     return app
         .add_option_function<std::string>(
             "--memory-budget",
-            [](const std::string& text) {
-                set_memory_budget(parse_byte_size(text).value_or(0));
-            },
+            [](const std::string& text) { set_memory_budget(parse_byte_size(text).value_or(0)); },
             "how much memory a step may plan to use, e.g. 8G or 512M (default: half the "
             "physical memory, or MESHEDIT_MEMORY_BUDGET)")
         ->type_name("SIZE")

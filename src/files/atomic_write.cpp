@@ -9,8 +9,8 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <random>
@@ -72,7 +72,8 @@ long temporary_pid(const std::string& name) {
         const char* first = name.data() + pos;
         const char* last = name.data() + name.size();
         const auto [end, ec] = std::from_chars(first, last, fields[i]);
-        if (ec != std::errc() || end == first || (i < 2 ? (end == last || *end != '-') : end != last)) {
+        if (ec != std::errc() || end == first ||
+            (i < 2 ? (end == last || *end != '-') : end != last)) {
             return 0;
         }
         pos = static_cast<std::size_t>(end - name.data()) + 1;

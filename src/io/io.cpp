@@ -127,8 +127,7 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
     return unkept;
 }
 
-std::vector<std::string> write_mesh(const Mesh& mesh, const fs::path& path,
-                                    const IoFlags& flags) {
+std::vector<std::string> write_mesh(const Mesh& mesh, const fs::path& path, const IoFlags& flags) {
     const std::string ext = file_extension(path);
     std::optional<Mesh> storage;
     const Mesh& dense = io_util::compacted(mesh, storage);

@@ -309,9 +309,9 @@ void SceneReader::instance_controller(pugi::xml_node at, const Mat4& transform) 
 void SceneReader::append(const Instance& instance, collada::GeometryData& g, bool last_use) {
     // Instancing multiplies what the file holds: the budget decides before anything is copied.
     ++appended_;
-    planned_bytes_ += build_bytes(static_cast<double>(g.positions.size()),
-                                  static_cast<double>(g.indices.size()),
-                                  static_cast<double>(g.face_offsets.size() - 1));
+    planned_bytes_ +=
+        build_bytes(static_cast<double>(g.positions.size()), static_cast<double>(g.indices.size()),
+                    static_cast<double>(g.face_offsets.size() - 1));
     if (const auto over = over_budget(planned_bytes_)) {
         doc_.fail(instance.at, std::to_string(appended_) + " geometry instances so far " + *over);
     }

@@ -132,9 +132,10 @@ TEST(BuildMesh, InconsistentOrientationIsCut) {
 }
 
 // Faces (0,1,2), (0,2,1), (0,1,3): edge 0-1 has three faces and is cut; the third face gets
-// copies of 1 and 0 (4 and 5, in the order its corners are met). The first two still share 0 and 1, and their two sides of
-// 0-1 are glued back: a closed pillow and a separate triangle, and no doubled edge (a slit
-// of two boundary edges 0-1 once made collapse() leave a self-loop).
+// copies of 1 and 0 (4 and 5, in the order its corners are met). The first two still share
+// 0 and 1, and their two sides of 0-1 are glued back: a closed pillow and a separate
+// triangle, and no doubled edge (a slit of two boundary edges 0-1 once made collapse() leave
+// a self-loop).
 TEST(BuildMesh, CutEdgeWhoseSidesStillJoinTheSameVerticesIsGlued) {
     BuildReport report;
     const Mesh mesh = build_mesh(test::pillow_and_ear_soup(), &report);

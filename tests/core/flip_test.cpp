@@ -1,6 +1,6 @@
-// Edge flip, as specified in docs/spec.md §3: (a,b,c),(c,b,d) -> (a,d,c),(a,b,d). Each case draws the
-// two triangles before and after, builds the expected mesh from the input's face list edited
-// by hand, and compares by position.
+// Edge flip, as specified in docs/spec.md §3: (a,b,c),(c,b,d) -> (a,d,c),(a,b,d). Each case
+// draws the two triangles before and after, builds the expected mesh from the input's face
+// list edited by hand, and compares by position.
 
 #include <gtest/gtest.h>
 

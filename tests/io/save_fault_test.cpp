@@ -89,9 +89,9 @@ TEST(SaveFaults, FolderThatCannotBeWrittenKeepsTheOldFile) {
         try {
             write_mesh(shapes::tetrahedron(), locked / "mesh.obj");
         } catch (const IoError& e) {
-            return std::string(e.what()).find("cannot create a file in") != std::string::npos
-                       ? 0
-                       : 2;
+            const bool says_why =
+                std::string(e.what()).find("cannot create a file in") != std::string::npos;
+            return says_why ? 0 : 2;
         }
         return 1;
     };
@@ -167,8 +167,9 @@ TEST(SaveFaults, OwnerAndModeAreKeptWhenRootRewrites) {
 }
 
 // 100 children (20 in unoptimised sanitizer builds) each start writing a 60,000-face mesh
-// over the same file and are killed at a random moment. After every kill the file is the old mesh or the new one, whole; the
-// temporary files the dead children left are removed by the next write into the folder.
+// over the same file and are killed at a random moment. After every kill the file is the old
+// mesh or the new one, whole; the temporary files the dead children left are removed by the
+// next write into the folder.
 TEST(SaveFaults, KilledMidWriteNeverLeavesAPartialFile) {
     test::ScratchDir dir;
     const fs::path target = dir / "big.obj";

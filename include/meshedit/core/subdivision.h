@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Loop subdivision with boundary and crease rules (docs/spec.md §3, docs/halfedge.md "Loop rules").
+/// Loop subdivision with boundary and crease rules (docs/spec.md §3, docs/halfedge.md "Loop
+/// rules").
 
 #include <cstddef>
 #include <functional>
