@@ -68,16 +68,18 @@ bench:
 	    --budget $(BENCH_BUDGET)
 
 # A fuzzing campaign (docs/testing.md): every reader and the edit language under libFuzzer
-# with ASan + UBSan for FUZZ_SECONDS each (default 60). `make test` only replays the corpus.
+# with ASan + UBSan for FUZZ_SECONDS each (default 60), or for FUZZ_RUNS executions each.
+# `make test` only replays the corpus.
 FUZZ_DIR      ?= build-fuzz
-FUZZ_SECONDS  ?= 60
+FUZZ_SECONDS  ?=
+FUZZ_RUNS     ?=
 fuzz:
 	./scripts/install-deps.sh --fuzz
 	cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	    -DCMAKE_CXX_COMPILER=clang++ -DMESHEDIT_FUZZ=ON -DMESHEDIT_BUILD_VIEWER=OFF $(CMAKE_FLAGS)
 	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_collada fuzz_obj fuzz_gltf fuzz_bez \
 	    fuzz_bzc fuzz_ops meshedit
-	FUZZ_SECONDS=$(FUZZ_SECONDS) ./scripts/fuzz.sh $(FUZZ_DIR)
+	FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_RUNS=$(FUZZ_RUNS) ./scripts/fuzz.sh $(FUZZ_DIR)
 
 # Regenerates the sample meshes in dae/ with the project's own code (docs/samples.md).
 .PHONY: samples

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A fuzzing campaign (make fuzz): every target of tests/fuzz under libFuzzer with ASan and
-# UBSan, FUZZ_SECONDS each (default 60), two at a time when there are two cores. Seeds come
+# UBSan, FUZZ_SECONDS each (default 60), two at a time when there are two cores; with
+# FUZZ_RUNS=N each target stops after N executions instead (FUZZ_SECONDS still caps it). Seeds come
 # from the project's own files (dae/, bez/, tests/io/data, tests/fuzz/regressions) and from
 # OBJ and glTF conversions of the samples made by this build's meshedit; the corpus grows in
 # BUILD/corpus/TARGET between runs. Crashes land in BUILD/artifacts/ (minimise one with
@@ -9,7 +10,12 @@
 # exits 1 if any target found something.
 set -euo pipefail
 build=${1:-build-fuzz}
-seconds=${FUZZ_SECONDS:-60}
+max_runs=${FUZZ_RUNS:--1}
+if [ "$max_runs" != -1 ]; then
+    seconds=${FUZZ_SECONDS:-86400}  # a run count alone: no time cap worth the name
+else
+    seconds=${FUZZ_SECONDS:-60}
+fi
 jobs=${FUZZ_JOBS:-$(nproc)}
 targets=${FUZZ_TARGETS:-"collada obj gltf bez bzc ops"}
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -47,7 +53,7 @@ run_one() {
     local t=$1
     local log="$build/logs/$t.log"
     TMPDIR="${FUZZ_TMPDIR:-/dev/shm}" "$build/tests/fuzz/fuzz_$t" "$build/corpus/$t" \
-        -dict="tests/fuzz/dict/$t.dict" -max_total_time="$seconds" -rss_limit_mb=2048 \
+        -dict="tests/fuzz/dict/$t.dict" -max_total_time="$seconds" -runs="$max_runs" -rss_limit_mb=2048 \
         -timeout=20 -max_len=262144 -print_final_stats=1 \
         -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1 || true
 }
