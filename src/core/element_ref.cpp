@@ -9,7 +9,17 @@ namespace {
 
 using Kind = ElementRef::Kind;
 
-std::size_t kind_size(const Mesh& mesh, Kind kind) {
+template <class H>
+ElementRef remap_one(const std::vector<H>& map, std::uint32_t index, Kind kind) {
+    if (index >= map.size() || !map[index].is_valid()) {
+        return {};
+    }
+    return {kind, map[index].idx()};
+}
+
+}  // namespace
+
+std::size_t elements_size(const Mesh& mesh, Kind kind) {
     switch (kind) {
         case Kind::Vertex:
             return mesh.vertices_size();
@@ -24,16 +34,6 @@ std::size_t kind_size(const Mesh& mesh, Kind kind) {
     }
     return 0;
 }
-
-template <class H>
-ElementRef remap_one(const std::vector<H>& map, std::uint32_t index, Kind kind) {
-    if (index >= map.size() || !map[index].is_valid()) {
-        return {};
-    }
-    return {kind, map[index].idx()};
-}
-
-}  // namespace
 
 const char* kind_name(Kind kind) {
     switch (kind) {
@@ -52,7 +52,7 @@ const char* kind_name(Kind kind) {
 }
 
 bool is_live(const Mesh& mesh, const ElementRef& element) {
-    if (element.kind == Kind::None || element.index >= kind_size(mesh, element.kind)) {
+    if (element.kind == Kind::None || element.index >= elements_size(mesh, element.kind)) {
         return false;
     }
     switch (element.kind) {
@@ -82,7 +82,7 @@ std::string describe(const Mesh& mesh, const ElementRef& element) {
         return "nothing selected";
     }
     std::string out = to_string(element);
-    if (element.index >= kind_size(mesh, element.kind)) {
+    if (element.index >= elements_size(mesh, element.kind)) {
         return out + " (not in the mesh)";
     }
     if (!is_live(mesh, element)) {

@@ -302,4 +302,64 @@ OpResult<Vertex> split(Mesh& mesh, Edge e) {
     return m;
 }
 
+OpStatus is_bisect_ok(const Mesh& mesh, Edge e) {
+    MESHEDIT_ASSERT(mesh.is_valid(e));
+    if (mesh.is_deleted(e)) {
+        return OpStatus::refused("cannot bisect: the edge is deleted");
+    }
+    return OpStatus::ok();
+}
+
+// As split, h0 is the boundary side if e has one. e is kept as the m-c half; the new edge s
+// is the b-m half. No face is divided: the loops of h0 and t0 each gain a corner m.
+//
+//        (loop of h0: f0, or a boundary gap)           (loop of h0)
+//      h2                    h1                  h2                      h1
+//    ---> b ------h0------> c --->      =>     ---> b --s0--> m --h0--> c --->
+//    <--- b <-----t0------- c <---             <--- b <--s1-- m <--t0-- c <---
+//      t1                    t2                  t1                      t2
+//        (loop of t0: f1, or a boundary gap)           (loop of t0)
+OpResult<Vertex> bisect(Mesh& mesh, Edge e) {
+    MESHEDIT_ASSERT(mesh.is_valid(e));
+    if (const OpStatus ok = is_bisect_ok(mesh, e); !ok) {
+        return ok;
+    }
+    const unsigned i = mesh.is_boundary(Mesh::halfedge(e, 1)) ? 1 : 0;
+    const Halfedge h0 = Mesh::halfedge(e, i);
+    const Halfedge t0 = Mesh::twin(h0);
+    const Halfedge h2 = mesh.prev(h0);
+    const Halfedge t1 = mesh.next(t0);
+    const Vertex b = mesh.to_vertex(t0);
+    const Vertex c = mesh.to_vertex(h0);
+    const Vec3 midpoint = meshedit::midpoint(mesh.position(b), mesh.position(c));
+
+    const auto first_e = static_cast<std::uint32_t>(mesh.edges_size());
+    const Vertex m = mesh.new_vertex(midpoint);
+    mesh.new_elements(0, 1, 0);
+    const Halfedge s0 = Mesh::halfedge(Edge(first_e), 0);
+    const Halfedge s1 = Mesh::twin(s0);
+    if (auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+        crease[Mesh::edge(s0)] = crease[e];
+    }
+
+    // Loop of h0: h2 -> s0 -> h0; loop of t0: t0 -> s1 -> t1.
+    mesh.set_vertex(s0, m);
+    mesh.set_vertex(s1, b);
+    mesh.set_vertex(t0, m);
+    mesh.set_next(h2, s0);
+    mesh.set_next(s0, h0);
+    mesh.set_next(t0, s1);
+    mesh.set_next(s1, t1);
+    mesh.set_face(s0, mesh.face(h0));
+    mesh.set_face(s1, mesh.face(t0));
+
+    // Anchors: h0 now leaves m (a boundary halfedge if e was on the boundary); s0 takes h0's
+    // place at b and is a boundary halfedge exactly when h0 is.
+    mesh.set_halfedge(m, h0);
+    if (mesh.halfedge(b) == h0) {
+        mesh.set_halfedge(b, s0);
+    }
+    return m;
+}
+
 }  // namespace meshedit

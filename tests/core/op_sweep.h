@@ -1,19 +1,24 @@
 #pragma once
 /// \file
 /// The random operation sweep (geometry-central's HalfedgeMutationSuite, at scale): random
-/// flips, splits and collapses on a mesh, with validate() after every op and after every
-/// garbage collection, exact element-count deltas and the Euler characteristic after every
-/// success, and a bit-for-bit unchanged mesh after every refusal. Used by the op sweep tests
-/// and the long soak.
+/// local operations on random elements of a mesh, with validate() after every op and after
+/// every garbage collection, the op's documented result, exact element-count deltas and so
+/// the Euler characteristic after every success, and a bit-for-bit unchanged mesh after every
+/// refusal. Used by the op sweep tests and the long soak. An operation joins the sweep with
+/// one row in sweep_ops().
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/op_test_util.h"
+#include "meshedit/core/element_ref.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/validate.h"
 #include "support/fixtures.h"
@@ -26,98 +31,207 @@ struct Counts {
         : v(static_cast<long>(m.n_vertices())),
           e(static_cast<long>(m.n_edges())),
           f(static_cast<long>(m.n_faces())) {}
+    Counts(long v_, long e_, long f_) : v(v_), e(e_), f(f_) {}
 };
+
+/// The kind of element an operation acts on; None for an operation on the whole mesh.
+using Target = ElementRef::Kind;
+
+/// One operation of the sweep.
+struct SweepOp {
+    std::string_view name;
+    Target target;
+    /// 1 if it adds elements, -1 if it removes them, 0 if neither: the sweep leans towards
+    /// growing ops while the mesh is smaller than it started, and towards shrinking ones
+    /// while it is larger.
+    int grows;
+    double weight;
+    OpStatus (*check)(const Mesh&, std::uint32_t);
+    /// Runs the op on element `i`: its refusal reason, or empty after a success whose
+    /// documented result was checked (`wrong` says what was not as documented).
+    std::string_view (*run)(Mesh&, std::uint32_t i, std::string& wrong);
+    /// The change of V, E and F that a success makes, read from the mesh before it.
+    Counts (*delta)(const Mesh&, std::uint32_t i);
+};
+
+inline Counts no_change(const Mesh&, std::uint32_t) {
+    return {0, 0, 0};
+}
+
+// clang-format off
+inline const SweepOp kSweepOps[] = {
+    {"flip", Target::Edge, 0, 3,
+     [](const Mesh& m, std::uint32_t i) { return is_flip_ok(m, Edge(i)); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const auto r = flip(m, Edge(i));
+         if (r && *r != Edge(i)) { wrong = "flip returned another edge"; }
+         return r.reason();
+     },
+     no_change},
+    {"split", Target::Edge, 1, 3,
+     [](const Mesh& m, std::uint32_t i) { return is_split_ok(m, Edge(i)); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const auto r = split(m, Edge(i));
+         if (r && Mesh::edge(m.halfedge(*r)) != Edge(i)) {
+             wrong = "split lost its documented halfedge";
+         }
+         return r.reason();
+     },
+     [](const Mesh& m, std::uint32_t i) {
+         return m.is_boundary(Edge(i)) ? Counts{1, 2, 1} : Counts{1, 3, 2};
+     }},
+    {"collapse", Target::Edge, -1, 3,
+     [](const Mesh& m, std::uint32_t i) { return is_collapse_ok(m, Edge(i)); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const Vertex survivor = std::min(m.vertex(Edge(i), 0), m.vertex(Edge(i), 1));
+         const auto r = collapse(m, Edge(i));
+         if (r && *r != survivor) { wrong = "collapse kept the wrong vertex"; }
+         return r.reason();
+     },
+     [](const Mesh& m, std::uint32_t i) {
+         return m.is_boundary(Edge(i)) ? Counts{-1, -2, -1} : Counts{-1, -3, -2};
+     }},
+    {"bisect", Target::Edge, 1, 1,
+     [](const Mesh& m, std::uint32_t i) { return is_bisect_ok(m, Edge(i)); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const auto r = bisect(m, Edge(i));
+         if (r && (Mesh::edge(m.halfedge(*r)) != Edge(i) || m.valence(*r) != 2)) {
+             wrong = "bisect's vertex is not on the old edge with two edges";
+         }
+         return r.reason();
+     },
+     [](const Mesh&, std::uint32_t) { return Counts{1, 1, 0}; }},
+    {"poke", Target::Face, 1, 1,
+     [](const Mesh& m, std::uint32_t i) { return is_poke_ok(m, Face(i)); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const Halfedge h = m.halfedge(Face(i));
+         const std::size_t n = m.valence(Face(i));
+         const auto r = poke(m, Face(i));
+         if (r && (m.face(h) != Face(i) || m.valence(*r) != n)) {
+             wrong = "poke did not keep f on its halfedge or join every corner";
+         }
+         return r.reason();
+     },
+     [](const Mesh& m, std::uint32_t i) {
+         const auto n = static_cast<long>(m.valence(Face(i)));
+         return Counts{1, n, n - 1};
+     }},
+    {"flip_orientation", Target::None, 0, 0.02,
+     [](const Mesh&, std::uint32_t) { return OpStatus::ok(); },
+     [](Mesh& m, std::uint32_t, std::string&) -> std::string_view {
+         flip_orientation(m);
+         return {};
+     },
+     no_change},
+};
+// clang-format on
+
+inline std::span<const SweepOp> sweep_ops() {
+    return kSweepOps;
+}
+
+/// The sweep's index of the op called `name`.
+inline std::size_t op_index(std::string_view name) {
+    for (std::size_t k = 0; k < sweep_ops().size(); ++k) {
+        if (sweep_ops()[k].name == name) {
+            return k;
+        }
+    }
+    ADD_FAILURE() << "no sweep op " << name;
+    return 0;
+}
 
 struct Tally {
     long ops = 0;
-    long applied[3] = {0, 0, 0};
-    long refused[3] = {0, 0, 0};
+    std::vector<long> applied = std::vector<long>(sweep_ops().size(), 0);
+    std::vector<long> refused = std::vector<long>(sweep_ops().size(), 0);
+    long applied_of(std::string_view name) const { return applied[op_index(name)]; }
+    long refused_of(std::string_view name) const { return refused[op_index(name)]; }
 };
 
-enum Op { kFlip, kSplit, kCollapse };
+/// How many elements of `target`'s kind the arrays hold, deleted ones included (1 for the
+/// whole mesh).
+inline std::size_t element_count(const Mesh& mesh, Target target) {
+    return target == Target::None ? 1 : elements_size(mesh, target);
+}
 
-// Runs one op on a live edge and checks its contract; returns false on a failed assertion.
-inline ::testing::AssertionResult run_op(Mesh& mesh, Op op, Edge e, Tally& tally) {
-    const Counts before(mesh);
-    const bool boundary = mesh.is_boundary(e);
-    const OpStatus ok = op == kFlip    ? is_flip_ok(mesh, e)
-                        : op == kSplit ? is_split_ok(mesh, e)
-                                       : is_collapse_ok(mesh, e);
+inline bool is_deleted(const Mesh& mesh, Target target, std::uint32_t i) {
+    return target != Target::None && !is_live(mesh, ElementRef{target, i});
+}
+
+/// Runs `op` on live element `i` and checks its contract.
+inline ::testing::AssertionResult run_op(Mesh& mesh, const SweepOp& op, std::uint32_t i,
+                                         Tally& tally) {
+    const std::size_t k = static_cast<std::size_t>(&op - sweep_ops().data());
+    const OpStatus ok = op.check(mesh, i);
+    std::string wrong;
     if (!ok) {
         const Mesh snapshot = mesh;
-        std::string_view reason;
-        bool done = false;
-        if (op == kFlip) {
-            const auto r = flip(mesh, e);
-            done = r.ok(), reason = r.reason();
-        } else if (op == kSplit) {
-            const auto r = split(mesh, e);
-            done = r.ok(), reason = r.reason();
-        } else {
-            const auto r = collapse(mesh, e);
-            done = r.ok(), reason = r.reason();
-        }
-        ++tally.refused[op];
-        if (done || reason != ok.reason()) {
-            return ::testing::AssertionFailure() << "op disagrees with its predicate";
+        const std::string_view reason = op.run(mesh, i, wrong);
+        ++tally.refused[k];
+        if (reason != ok.reason()) {
+            return ::testing::AssertionFailure() << op.name << " disagrees with its predicate: '"
+                                                 << reason << "' vs '" << ok.reason() << "'";
         }
         return test::identical(mesh, snapshot);
     }
-    ++tally.applied[op];
-    long dv = 0, de = 0, df = 0;
-    if (op == kFlip) {
-        const auto r = flip(mesh, e);
-        if (!r || *r != e) {
-            return ::testing::AssertionFailure() << "flip failed after its predicate passed";
-        }
-    } else if (op == kSplit) {
-        const auto r = split(mesh, e);
-        if (!r || Mesh::edge(mesh.halfedge(*r)) != e) {
-            return ::testing::AssertionFailure() << "split failed or lost its documented halfedge";
-        }
-        dv = 1, de = boundary ? 2 : 3, df = boundary ? 1 : 2;
-    } else {
-        const Vertex v0 = mesh.vertex(e, 0), v1 = mesh.vertex(e, 1);
-        const auto r = collapse(mesh, e);
-        if (!r || *r != std::min(v0, v1)) {
-            return ::testing::AssertionFailure() << "collapse failed or kept the wrong vertex";
-        }
-        dv = -1, de = boundary ? -2 : -3, df = boundary ? -1 : -2;
+    ++tally.applied[k];
+    const Counts before(mesh);
+    const Counts delta = op.delta(mesh, i);
+    const std::string_view reason = op.run(mesh, i, wrong);
+    if (!reason.empty()) {
+        return ::testing::AssertionFailure()
+               << op.name << " refused after its predicate passed: " << reason;
+    }
+    if (!wrong.empty()) {
+        return ::testing::AssertionFailure() << wrong;
     }
     const Counts after(mesh);
-    if (after.v - before.v != dv || after.e - before.e != de || after.f - before.f != df) {
-        return ::testing::AssertionFailure() << "element counts changed wrongly";
+    if (after.v - before.v != delta.v || after.e - before.e != delta.e ||
+        after.f - before.f != delta.f) {
+        return ::testing::AssertionFailure()
+               << op.name << " changed V/E/F by " << after.v - before.v << "/" << after.e - before.e
+               << "/" << after.f - before.f << ", expected " << delta.v << "/" << delta.e << "/"
+               << delta.f;
     }
     return ::testing::AssertionSuccess();
 }
 
-// Random ops on one mesh. The mix leans towards splits while the mesh is smaller than it
-// started and towards collapses while it is larger; leaving [F/4, 4F] restarts from the shape.
-// validate() runs after every op (O(n): on big meshes the op count is kept small).
-inline void sweep(const NamedMesh& shape, unsigned seed, long n_ops, Tally& tally) {
+// Random ops on one mesh (`ops` restricts the mix to those names; empty: every op). The mix
+// leans towards growing ops while the mesh is smaller than it started and towards shrinking
+// ones while it is larger; leaving [F/4, 4F] faces or 4E edges restarts from the shape.
+// validate() runs after every op (O(n): on big meshes the op count is kept small). The
+// exact V/E/F deltas of run_op() fix each op's change of the Euler characteristic.
+inline void sweep(const NamedMesh& shape, unsigned seed, long n_ops, Tally& tally,
+                  std::span<const std::string_view> ops = {}) {
     SCOPED_TRACE(shape.name + ", seed " + std::to_string(seed));
     std::mt19937 rng(seed);
     Mesh mesh = shape.mesh;
     const std::size_t f0 = shape.mesh.n_faces();
-    const long chi = test::euler(mesh);
+    const std::size_t e0 = shape.mesh.n_edges();
+    std::vector<double> small_mix, large_mix;
+    for (const SweepOp& op : sweep_ops()) {
+        const bool wanted = ops.empty() || std::find(ops.begin(), ops.end(), op.name) != ops.end();
+        const double w = wanted ? op.weight : 0.0;
+        small_mix.push_back(op.grows > 0 ? 1.5 * w : op.grows < 0 ? 0.75 * w : w);
+        large_mix.push_back(op.grows > 0 ? 0.75 * w : op.grows < 0 ? 1.5 * w : w);
+    }
+    std::discrete_distribution<std::size_t> when_small(small_mix.begin(), small_mix.end());
+    std::discrete_distribution<std::size_t> when_large(large_mix.begin(), large_mix.end());
     for (long k = 0; k < n_ops; ++k) {
-        if (mesh.n_faces() > 4 * f0 || 4 * mesh.n_faces() < f0) {
+        if (mesh.n_faces() > 4 * f0 || 4 * mesh.n_faces() < f0 || mesh.n_edges() > 4 * e0) {
             mesh = shape.mesh;
         }
-        const bool small = mesh.n_faces() < f0;
-        std::discrete_distribution<int> mix(small ? std::initializer_list<double>{3, 4, 2}
-                                                  : std::initializer_list<double>{3, 2, 4});
-        const Op op = static_cast<Op>(mix(rng));
+        const SweepOp& op = sweep_ops()[mesh.n_faces() < f0 ? when_small(rng) : when_large(rng)];
         std::uniform_int_distribution<std::uint32_t> pick(
-            0, static_cast<std::uint32_t>(mesh.edges_size() - 1));
-        Edge e(pick(rng));
-        while (mesh.is_deleted(e)) {
-            e = Edge(pick(rng));
+            0, static_cast<std::uint32_t>(element_count(mesh, op.target) - 1));
+        std::uint32_t i = pick(rng);
+        while (is_deleted(mesh, op.target, i)) {
+            i = pick(rng);
         }
         ++tally.ops;
-        ASSERT_TRUE(run_op(mesh, op, e, tally)) << "op " << op << " on edge " << e.idx();
-        ASSERT_VALID(mesh) << "after op " << op << " on edge " << e.idx() << ", step " << k;
-        ASSERT_EQ(test::euler(mesh), chi);
+        ASSERT_TRUE(run_op(mesh, op, i, tally)) << op.name << " on element " << i;
+        ASSERT_VALID(mesh) << "after " << op.name << " on element " << i << ", step " << k;
         if (k % 97 == 0) {
             mesh.garbage_collection();
             ASSERT_VALID(mesh) << "after garbage collection";

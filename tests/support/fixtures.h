@@ -20,7 +20,7 @@ Mesh mesh_from_faces(const std::vector<Vec3>& positions,
 PolygonSoup soup_from_faces(const std::vector<Vec3>& positions,
                             const std::vector<std::vector<std::uint32_t>>& faces);
 
-/// Two triangles sharing edge 1-2 (a quad cut by its diagonal), in the z = 0 plane:
+/// Two triangles sharing edge 0-2 (a quad cut by its diagonal), in the z = 0 plane:
 ///
 ///     3 ----- 2
 ///     |     / |

@@ -31,6 +31,9 @@ struct ElementRef {
 /// "vertex", "edge", "halfedge", "face"; "nothing" for none.
 const char* kind_name(ElementRef::Kind kind);
 
+/// The size of the index range of `kind` in `mesh` (deleted elements included); 0 for none.
+std::size_t elements_size(const Mesh& mesh, ElementRef::Kind kind);
+
 /// True if `element` names a live element of `mesh` (in range and not deleted).
 bool is_live(const Mesh& mesh, const ElementRef& element);
 

@@ -68,6 +68,13 @@ OpStatus is_split_ok(const Mesh& mesh, Edge e);
 /// boundary-anchor rule requires.
 OpResult<Vertex> split(Mesh& mesh, Edge e);
 
+/// \return ok if `e` is live.
+OpStatus is_bisect_ok(const Mesh& mesh, Edge e);
+/// Inserts a vertex m at the midpoint of `e` without dividing any face: both faces (or a
+/// face and a boundary loop) gain m as a corner. A crease edge leaves two creases.
+/// \return m; `halfedge(m)` follows the same rule as split()'s.
+OpResult<Vertex> bisect(Mesh& mesh, Edge e);
+
 /// \return ok if collapsing `e` keeps the mesh a valid manifold: the faces beside `e` are
 /// triangles; `e` is not an interior edge joining two boundary vertices (that would pinch
 /// the surface); the link condition holds (the endpoints' common neighbours are exactly the
@@ -92,5 +99,22 @@ OpResult<Face> triangulate(Mesh& mesh, Face f);
 /// Triangulates every non-triangle face; faces that is_triangulate_ok() refuses are left
 /// as they are. \return how many faces were triangulated.
 std::size_t triangulate(Mesh& mesh);
+
+// ------------------------------------------------------------ faces (src/core/poke.cpp)
+
+/// \return ok if `f` is live.
+OpStatus is_poke_ok(const Mesh& mesh, Face f);
+/// Pokes `f` (Scotty3D's inset_vertex): a new vertex c at the average of f's corners, joined
+/// to every corner, so that an n-gon becomes a fan of n triangles; `f` stays the triangle on
+/// `halfedge(f)` and the n − 1 others are new. Works on any face, boundary sides included.
+/// \return c; `halfedge(c)` runs from c to `from_vertex(halfedge(f))`.
+OpResult<Vertex> poke(Mesh& mesh, Face f);
+
+// ----------------------------------------------------- orientation (src/core/orientation.cpp)
+
+/// Reverses every face and boundary loop (Scotty3D's flip_orientation): each halfedge
+/// runs the other way, so outward becomes inward. Never refuses; creates and deletes
+/// nothing; handles stay valid. Applying it twice gives the mesh back bit for bit.
+void flip_orientation(Mesh& mesh);
 
 }  // namespace meshedit
