@@ -15,9 +15,25 @@ Halfedge from_survivor(const Mesh& mesh, Edge e) {
     return mesh.from_vertex(h) < mesh.to_vertex(h) ? h : Mesh::twin(h);
 }
 
-// The corner opposite `h` in its triangle; invalid for a boundary halfedge.
+// Whether `h` lies in a triangle (not a polygon, not a boundary gap): the sides of e that
+// disappear in a collapse, taking one of their two other edges with them.
+bool in_triangle(const Mesh& mesh, Halfedge h) {
+    return !mesh.is_boundary(h) && mesh.is_triangle(mesh.face(h));
+}
+
+// The corner opposite `h` in its triangle; invalid for a boundary halfedge or a polygon,
+// which only loses a corner and so may share no neighbour of both ends.
 Vertex opposite(const Mesh& mesh, Halfedge h) {
-    return mesh.is_boundary(h) ? Vertex() : mesh.to_vertex(mesh.next(h));
+    return in_triangle(mesh, h) ? mesh.to_vertex(mesh.next(h)) : Vertex();
+}
+
+// Takes `h` out of its loop (a polygon losing a corner, or a boundary gap closing).
+void unlink(Mesh& mesh, Halfedge h) {
+    const Face f = mesh.face(h);
+    mesh.set_next(mesh.prev(h), mesh.next(h));
+    if (f.is_valid() && mesh.halfedge(f) == h) {
+        mesh.set_halfedge(f, mesh.next(h));
+    }
 }
 
 // Puts `h` in the place of `old` in old's loop (a face or a boundary loop).
@@ -42,9 +58,6 @@ OpStatus is_collapse_ok(const Mesh& mesh, Edge e) {
     const Halfedge t0 = Mesh::twin(h0);
     const Face f0 = mesh.face(h0);
     const Face f1 = mesh.face(t0);
-    if ((f0.is_valid() && !mesh.is_triangle(f0)) || (f1.is_valid() && !mesh.is_triangle(f1))) {
-        return OpStatus::refused("cannot collapse: an adjacent face is not a triangle");
-    }
     const Vertex v0 = mesh.from_vertex(h0);
     const Vertex v1 = mesh.to_vertex(h0);
     // Both virtual cone vertices would be common neighbours: the surface would be pinched.
@@ -55,7 +68,7 @@ OpStatus is_collapse_ok(const Mesh& mesh, Edge e) {
     }
     const Vertex a = opposite(mesh, h0);
     const Vertex d = opposite(mesh, t0);
-    if (a == d) {  // both faces are the same three vertices: a two-triangle pillow
+    if (a.is_valid() && a == d) {  // both faces are the same three vertices: a pillow
         return OpStatus::refused("cannot collapse: the mesh would degenerate");
     }
     // Vertex part of the link condition: common neighbours are exactly a and d. A second
@@ -92,7 +105,7 @@ OpStatus is_collapse_ok(const Mesh& mesh, Edge e) {
                 return OpStatus::refused("cannot collapse: the mesh would degenerate");
             }
         }
-    } else {
+    } else if (mesh.is_boundary(e) && (a.is_valid() || d.is_valid())) {
         const Halfedge h = f0.is_valid() ? h0 : t0;
         if (mesh.is_boundary(Mesh::twin(mesh.next(h))) &&
             mesh.is_boundary(Mesh::twin(mesh.prev(h)))) {
@@ -130,6 +143,9 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
     const Halfedge h2 = mesh.next(h1);
     const Halfedge t1 = mesh.next(t0);
     const Halfedge t2 = mesh.next(t1);
+    const Halfedge p0 = mesh.prev(h0);  // ends at v0; never deleted
+    const bool triangle0 = in_triangle(mesh, h0);
+    const bool triangle1 = in_triangle(mesh, t0);
 
     // Everything that pointed at v1 now points at v0 (the walk reads only next/prev).
     const Halfedge start = mesh.halfedge(v1);
@@ -141,13 +157,13 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
 
     // Relink. Each step reads its neighbours when it runs, so the steps compose even where
     // they touch the same loop (an ear, a valence-3 v1).
-    if (!f0.is_valid()) {
-        mesh.set_next(mesh.prev(h0), mesh.next(h0));
+    if (!triangle0) {
+        unlink(mesh, h0);
     }
-    if (!f1.is_valid()) {
-        mesh.set_next(mesh.prev(t0), mesh.next(t0));
+    if (!triangle1) {
+        unlink(mesh, t0);
     }
-    if (f0.is_valid()) {
+    if (triangle0) {
         const Vertex a = mesh.to_vertex(h1);
         const Halfedge o1 = Mesh::twin(h1);
         replace(mesh, o1, h2);
@@ -157,7 +173,7 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
         mesh.mark_deleted(Mesh::edge(h1));
         mesh.mark_deleted(f0);
     }
-    if (f1.is_valid()) {
+    if (triangle1) {
         const Vertex d = mesh.to_vertex(t1);
         replace(mesh, Mesh::twin(t2), t1);
         if (mesh.halfedge(d) == t2) {
@@ -168,7 +184,9 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
     }
 
     // Anchor v0 at an outgoing boundary halfedge if it has one (boundary-anchor rule).
-    const Halfedge first = f0.is_valid() ? Mesh::twin(h2) : t1;
+    // Any live halfedge leaving v0: twin(h2) = v0 -> a beside a triangle; after p0 in a
+    // polygon f0 (h1 itself may be gone, taken by a triangle f1 beside it); t1 after a gap.
+    const Halfedge first = triangle0 ? Mesh::twin(h2) : f0.is_valid() ? mesh.next(p0) : t1;
     Halfedge anchor = first;
     h = first;
     do {

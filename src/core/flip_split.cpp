@@ -89,6 +89,68 @@ void prefetch_edge_frame(const Mesh& mesh, Edge e, const EdgeFrameLinks& links) 
     }
 }
 
+// Whether the loop of `h` is a triangle or a boundary gap: the sides split() divides as
+// drawn below.
+bool is_triangle_or_gap(const Mesh& mesh, Halfedge h) {
+    return mesh.is_boundary(h) || is_triangle_loop(mesh, h);
+}
+
+// Cuts the face of `hu` and `hv` by a new edge from u = to_vertex(hu) to v = to_vertex(hv),
+// two corners of it that are not neighbours. The part from u to v (next(hu) ... hv) keeps
+// the face, closed by n1 = v -> u; the part from v to u (next(hv) ... hu) becomes the new
+// face g, closed by n0 = u -> v. \return n0.
+//
+//        v <--hv-- .                v <--hv-- .
+//        |         ^                | ^  n1   ^
+//        |    f    |       =>       |  n0 \ f |
+//        v         |                v  g   v  |
+//        . --hu--> u                . --hu--> u
+Halfedge cut(Mesh& mesh, Halfedge hu, Halfedge hv) {
+    const Face f = mesh.face(hu);
+    const Halfedge u_out = mesh.next(hu);
+    const Halfedge v_out = mesh.next(hv);
+    const Halfedge n0 = mesh.new_edge(mesh.to_vertex(hu), mesh.to_vertex(hv));
+    const Halfedge n1 = Mesh::twin(n0);
+    const Face g = mesh.new_face();
+    mesh.set_next(hv, n1);
+    mesh.set_next(n1, u_out);
+    mesh.set_next(hu, n0);
+    mesh.set_next(n0, v_out);
+    mesh.set_face(n1, f);
+    for (Halfedge h = n0; mesh.face(h) != g; h = mesh.next(h)) {
+        mesh.set_face(h, g);
+    }
+    mesh.set_halfedge(f, n1);
+    mesh.set_halfedge(g, n0);
+    return n0;
+}
+
+// split() when a face beside e is not a triangle: bisect e, then cut each side that was a
+// triangle, now the quad (b, m, c, a), from m to its third corner; a polygon side keeps m
+// as one more corner. The sides of m - c are halfedge(e, 0) and halfedge(e, 1) (bisect keeps
+// e as that half): the one leaving m is followed by c -> a, the one arriving at m by m -> b
+// and then b -> d.
+OpResult<Vertex> split_beside_polygon(Mesh& mesh, Edge e) {
+    bool divide[2];
+    for (unsigned k = 0; k < 2; ++k) {
+        const Halfedge h = Mesh::halfedge(e, k);
+        divide[k] = !mesh.is_boundary(h) && is_triangle_loop(mesh, h);
+    }
+    const Vertex m = *bisect(mesh, e);
+    for (unsigned k = 0; k < 2; ++k) {
+        if (!divide[k]) {
+            continue;
+        }
+        const Halfedge h = Mesh::halfedge(e, k);
+        if (mesh.from_vertex(h) == m) {
+            cut(mesh, mesh.prev(h), mesh.next(h));
+        } else {
+            cut(mesh, h, mesh.next(mesh.next(h)));
+        }
+    }
+    return m;
+}
+
 }  // namespace
 
 OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
@@ -101,16 +163,35 @@ OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
     }
     const Halfedge h0 = Mesh::halfedge(e, 0);
     const Halfedge t0 = Mesh::halfedge(e, 1);
-    if (!is_triangle_loop(mesh, h0) || !is_triangle_loop(mesh, t0)) {
-        return OpStatus::refused("cannot flip: an adjacent face is not a triangle");
-    }
     const Halfedge h1 = mesh.next(h0);  // c -> a
-    const Halfedge h2 = mesh.prev(h0);  // a -> b
     const Vertex a = mesh.to_vertex(h1);
     const Vertex d = mesh.to_vertex(mesh.next(t0));
-    // a == d happens on a two-triangle "pillow"; an existing a-d edge would be doubled (this
-    // also covers an endpoint of valence 3, whose third face already holds a-d).
-    if (a == d || has_outgoing_to(mesh, h2, Mesh::twin(h1), d)) {
+    if (is_triangle_loop(mesh, h0) && is_triangle_loop(mesh, t0)) {
+        // a == d happens on a two-triangle "pillow"; an existing a-d edge would be doubled
+        // (this also covers an endpoint of valence 3, whose third face already holds a-d).
+        // h2 = prev(h0) runs a -> b: with twin(h1) it brackets a's ring.
+        if (a == d || has_outgoing_to(mesh, mesh.prev(h0), Mesh::twin(h1), d)) {
+            return OpStatus::refused("cannot flip: the new edge already exists");
+        }
+        return OpStatus::ok();
+    }
+    // A polygon beside e: f0 trades corner c for d and f1 trades b for a. A corner already
+    // there would be visited twice (this covers an endpoint of valence 2, whose two faces
+    // share its other edge too).
+    if (a == d) {
+        return OpStatus::refused("cannot flip: the new edge already exists");
+    }
+    for (const Halfedge h : mesh.loop(h0)) {
+        if (mesh.to_vertex(h) == d) {
+            return OpStatus::refused("cannot flip: a face would visit a vertex twice");
+        }
+    }
+    for (const Halfedge h : mesh.loop(t0)) {
+        if (mesh.to_vertex(h) == a) {
+            return OpStatus::refused("cannot flip: a face would visit a vertex twice");
+        }
+    }
+    if (mesh.find_halfedge(a, d).is_valid()) {
         return OpStatus::refused("cannot flip: the new edge already exists");
     }
     return OpStatus::ok();
@@ -127,6 +208,20 @@ OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
 //          v  f1  /                         v |v  /
 //            d                                d
 //                                         (h0 up, t0 down)
+//
+// Polygons (Scotty3D's rule): the edge turns to join the corners that follow its ends, d
+// after b in f1 and a after c in f0, and each face keeps its number of sides. With
+// h3 = next(h1) and t3 = next(t1), f0 = t1 -> h0 -> h3 ... h2 and f1 = h1 -> t0 -> t3 ... t2;
+// for triangles h3 = h2 and t3 = t2, which is the relinking above. Two quads:
+//
+//        p <--h3-- a                 p <--h3-- a
+//        |   f0    ^                 |  f0   / ^
+//     h2 v         | h1           h2 v   h0/   | h1
+//        b --h0--> c       =>        b    /    c       f0 = (b,c,a,p) -> (b,d,a,p)
+//        | <--t0-- ^                 |   /t0   ^       f1 = (c,b,d,r) -> (c,a,d,r)
+//     t1 v   f1    | t2           t1 v  /  f1  | t2
+//        d --t3--> r                 d --t3--> r
+//
 OpResult<Edge> flip(Mesh& mesh, Edge e) {
     MESHEDIT_ASSERT(mesh.is_valid(e));
     prefetch_edge_frame(mesh, e, kFlipLinks);
@@ -137,9 +232,11 @@ OpResult<Edge> flip(Mesh& mesh, Edge e) {
     const Halfedge h0 = Mesh::halfedge(e, 0);
     const Halfedge h1 = mesh.next(h0);
     const Halfedge h2 = mesh.prev(h0);
+    const Halfedge h3 = mesh.next(h1);
     const Halfedge t0 = Mesh::twin(h0);
     const Halfedge t1 = mesh.next(t0);
     const Halfedge t2 = mesh.prev(t0);
+    const Halfedge t3 = mesh.next(t1);
     const Vertex a = mesh.to_vertex(h1);
     const Vertex b = mesh.to_vertex(t0);
     const Vertex c = mesh.to_vertex(h0);
@@ -147,13 +244,13 @@ OpResult<Edge> flip(Mesh& mesh, Edge e) {
     const Face f0 = mesh.face(h0);
     const Face f1 = mesh.face(t0);
 
-    // Relink: f0 = h0 -> h2 -> t1, f1 = t0 -> t2 -> h1.
+    // Relink: f0 = t1 -> h0 -> h3 ... h2 -> t1, f1 = h1 -> t0 -> t3 ... t2 -> h1.
     mesh.set_vertex(h0, a);
     mesh.set_vertex(t0, d);
-    mesh.set_next(h0, h2);
+    mesh.set_next(h0, h3);
     mesh.set_next(h2, t1);
     mesh.set_next(t1, h0);
-    mesh.set_next(t0, t2);
+    mesh.set_next(t0, t3);
     mesh.set_next(t2, h1);
     mesh.set_next(h1, t0);
     mesh.set_face(t1, f0);
@@ -181,12 +278,10 @@ OpStatus is_split_ok(const Mesh& mesh, Edge e) {
     if (!f0.is_valid() && !f1.is_valid()) {
         return OpStatus::refused("cannot split: the edge has no face");
     }
-    if ((f0.is_valid() && !is_triangle_loop(mesh, Mesh::halfedge(e, 0))) ||
-        (f1.is_valid() && !is_triangle_loop(mesh, Mesh::halfedge(e, 1)))) {
-        return OpStatus::refused("cannot split: an adjacent face is not a triangle");
-    }
     // Two triangles on the same three corners (a "pillow"): the spokes m-a and m-d coincide.
-    if (f0.is_valid() && f1.is_valid() &&
+    // (A polygon beside e is not divided, so only two triangles can make two spokes.)
+    if (f0.is_valid() && f1.is_valid() && is_triangle_loop(mesh, Mesh::halfedge(e, 0)) &&
+        is_triangle_loop(mesh, Mesh::halfedge(e, 1)) &&
         mesh.to_vertex(mesh.next(Mesh::halfedge(e, 0))) ==
             mesh.to_vertex(mesh.next(Mesh::halfedge(e, 1)))) {
         return OpStatus::refused("cannot split: the new edges would coincide");
@@ -213,6 +308,10 @@ OpResult<Vertex> split(Mesh& mesh, Edge e) {
     prefetch_edge_frame(mesh, e, kSplitLinks);
     if (const OpStatus ok = is_split_ok(mesh, e); !ok) {
         return ok;
+    }
+    if (!is_triangle_or_gap(mesh, Mesh::halfedge(e, 0)) ||
+        !is_triangle_or_gap(mesh, Mesh::halfedge(e, 1))) {
+        return split_beside_polygon(mesh, e);
     }
     // Collect every value first: on a large mesh these reads are cache misses at random
     // places, and issued together, before any write or allocation, they overlap.

@@ -121,11 +121,12 @@ StepResult run_triangulate(Mesh& mesh, const Step&, const RunOptions&) {
 // clang-format off
 constexpr std::array kVerbs{
     Verb{"flip", Shape::Edge, "flip:A-B",
-         "flips the interior edge A-B between two triangles",
+         "flips the interior edge A-B: it turns inside its two faces to join the corners "
+         "after its ends (triangles stay triangles, polygons keep their sides)",
          "flip the selected edge", check_flip, run_flip},
     Verb{"split", Shape::Edge, "split:A-B",
-         "splits A-B at its midpoint; the new vertex gets the next free index (`V` before the "
-         "split)",
+         "splits A-B at its midpoint and divides the triangles beside it (a polygon only "
+         "gains the vertex); the new vertex gets the next free index (`V` before the split)",
          "split the selected edge", check_split, run_split},
     Verb{"collapse", Shape::Edge, "collapse:A-B",
          "collapses A-B to its midpoint; the smaller index survives, the other is deleted "

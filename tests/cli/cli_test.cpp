@@ -309,17 +309,28 @@ TEST(CliConvert, RefusedOpExitsOneNamingOpAndReason) {
     EXPECT_TRUE(tmp.entries().empty());
 }
 
-TEST(CliConvert, RefusedOpsOnQuadsExitOne) {
+TEST(CliConvert, RefusedOpExitsOneWithOneLineAndWritesNothing) {
     TempDir tmp;
-    // quadball is all quads: flip and split need triangles beside the edge.
-    for (const char* op : {"flip:0-1", "split:0-1"}) {
-        const RunResult r = run_meshedit({"convert", (repo_root() / "dae/quadball.dae").string(),
-                                          (tmp / "out.dae").string(), "--ops", op});
-        EXPECT_EQ(r.exit_code, 1) << r.err;
-        EXPECT_NE(r.err.find(std::string(op) + " refused: "), std::string::npos) << r.err;
-        EXPECT_EQ(split_lines(r.err).size(), 1u) << r.err;
-    }
+    const RunResult r = run_meshedit({"convert", (repo_root() / "dae/bowl.dae").string(),
+                                      (tmp / "out.dae").string(), "--ops", "flip:121-122"});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("flip:121-122 refused: cannot flip: boundary edge"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(split_lines(r.err).size(), 1u) << r.err;
     EXPECT_TRUE(tmp.entries().empty());
+}
+
+// quadball is all quads (its first face is 0-1-6-5): a flip keeps every face a quad, and a
+// split of a side between two quads only adds a corner to each.
+TEST(CliConvert, QuadsFlipAndSplit) {
+    TempDir tmp;
+    const RunResult r = run_meshedit({"convert", (repo_root() / "dae/quadball.dae").string(),
+                                      (tmp / "out.obj").string(), "--ops", "flip:0-1,split:1-6"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Json j = info_json(tmp / "out.obj");
+    EXPECT_EQ(j["vertices"], 99);
+    EXPECT_EQ(j["edges"], 193);
+    EXPECT_EQ(j["faces"], 96);
 }
 
 TEST(CliConvert, MissingEdgeIsBadInputNamingIt) {

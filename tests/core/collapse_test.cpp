@@ -25,6 +25,15 @@ Mesh expected_collapse(const Mesh& input, std::uint32_t v0, std::uint32_t v1,
     }
     expected.positions[v0] = test::midpoint(input, v0, v1);
     expected.rename(v1, v0);
+    // A polygon beside the edge now holds v0 twice in a row: it loses that corner.
+    for (test::Corners& f : expected.faces) {
+        for (std::size_t i = 0; i < f.size(); ++i) {
+            if (f[i] == v0 && f[(i + 1) % f.size()] == v0) {
+                f.erase(f.begin() + static_cast<std::ptrdiff_t>(i));
+                break;
+            }
+        }
+    }
     expected.erase_vertex(v1);
     return expected.build();
 }
@@ -161,6 +170,102 @@ void expect_refused(Mesh& mesh, Edge e, std::string_view reason) {
     EXPECT_TRUE(test::identical(mesh, before));
 }
 
+// ----------------------------------------------------------------- polygons
+
+// A cube of six quads: the two quads beside edge 0-1 lose a corner each and become
+// triangles. Only vertex 1 and the edge are deleted (V-1, E-1, F+0): a polygon loses a
+// corner where a triangle would disappear.
+//      3 ------ 2            3 ------ 2
+//      |        |            |    .`  |
+//      |  quad  |     =>     |  .`    |     (0,1,2,3) -> (0,2,3), and the quad on the
+//      |        |            |.`      |     other side of 0-1 likewise
+//      0 ------ 1            0(mid)
+TEST(Collapse, QuadCubeEdge) {
+    Mesh mesh = test::mesh_from_faces(
+        {{-1, -1, -1},
+         {1, -1, -1},
+         {1, 1, -1},
+         {-1, 1, -1},
+         {-1, -1, 1},
+         {1, -1, 1},
+         {1, 1, 1},
+         {-1, 1, 1}},
+        {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
+    const Mesh input = mesh;
+    const std::size_t edges = mesh.n_edges();
+    expect_collapse(mesh, 0, 1);
+    EXPECT_EQ(mesh.n_edges(), edges - 1);
+    EXPECT_EQ(mesh.n_faces(), 6u);
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected_collapse(input, 0, 1, {})));
+}
+
+// A boundary side of a quad strip: the quad loses corner 1 and becomes a triangle; the next
+// quad takes 0 in 1's place.
+//   3 ----- 4 ----- 5        3 ----- 4 ----- 5
+//   |       |       |        |     / |       |
+//   |       |       |   =>   |   /   |       |      (0,1,4,3) -> (0,4,3)
+//   |       |       |        | /     |       |      (1,2,5,4) -> (0,2,5,4)
+//   0 ----- 1 ----- 2        0 ------------- 2
+TEST(Collapse, BoundarySideOfAQuadStrip) {
+    Mesh mesh =
+        test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}},
+                              {{0, 1, 4, 3}, {1, 2, 5, 4}});
+    const Mesh input = mesh;
+    expect_collapse(mesh, 0, 1);
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected_collapse(input, 0, 1, {})));
+    EXPECT_TRUE(mesh.is_boundary(mesh.halfedge(Vertex(0)))) << "boundary anchor";
+}
+
+// A lone quad: a side collapses and a triangle is left (a lone triangle cannot shrink).
+TEST(Collapse, LoneQuadBecomesATriangle) {
+    Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}});
+    const Mesh input = mesh;
+    expect_collapse(mesh, 1, 2);
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected_collapse(input, 1, 2, {})));
+    expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(1)),
+                   "cannot collapse: the mesh would degenerate");
+}
+
+// A quad and a triangle share both edges of vertex 1 (valence 2). Collapsing 0-1: the
+// triangle goes and its edge 1-2 is deleted, the quad loses corner 1 and takes the
+// triangle's 0-2 in its place. (The sweep found the anchor walk starting from 1-2.)
+//   3 ----- 2
+//   |   Q / |
+//   |   1   |     Q = (0,1,2,3), T = (2,1,0)  ->  (0,2,3)
+//   | / T   |
+//   0 ------'
+TEST(Collapse, QuadAndTriangleAroundAValenceTwoVertex) {
+    Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {0.5, 0.5, 0}, {1, 1, 0}, {0, 1, 0}},
+                                      {{0, 1, 2, 3}, {2, 1, 0}});
+    ASSERT_VALID(mesh);
+    const Mesh input = mesh;
+    expect_collapse(mesh, 0, 1);
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected_collapse(input, 0, 1, {{2, 1, 0}})));
+}
+
+// A triangle beside a quad, inside a closed mesh: the triangle goes (its two other edges
+// merge), the quad loses a corner. The quad cube with its top face cut by the diagonal 4-6.
+TEST(Collapse, TriangleBesideQuad) {
+    Mesh mesh = test::mesh_from_faces({{-1, -1, -1},
+                                       {1, -1, -1},
+                                       {1, 1, -1},
+                                       {-1, 1, -1},
+                                       {-1, -1, 1},
+                                       {1, -1, 1},
+                                       {1, 1, 1},
+                                       {-1, 1, 1}},
+                                      {{0, 3, 2, 1},
+                                       {4, 5, 6},
+                                       {4, 6, 7},
+                                       {0, 1, 5, 4},
+                                       {1, 2, 6, 5},
+                                       {2, 3, 7, 6},
+                                       {3, 0, 4, 7}});
+    const Mesh input = mesh;
+    expect_collapse(mesh, 4, 5);  // (4,5,6) goes; (0,1,5,4) -> (0,1,4)
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected_collapse(input, 4, 5, {{4, 5, 6}})));
+}
+
 // Every edge of a tetrahedron: the mesh would collapse to a two-triangle pillow.
 TEST(Collapse, RefusesTetrahedron) {
     Mesh mesh = shapes::tetrahedron();
@@ -210,12 +315,14 @@ TEST(Collapse, RefusesInteriorEdgeBetweenBoundaryVertices) {
     expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(4)), reason);
 }
 
-// A quad (0,1,2,3) next to the triangle (0,3,4) across edge 0-3.
-TEST(Collapse, RefusesNonTriangle) {
+// A quad (0,1,2,3) next to the triangle (0,3,4) across edge 0-3: a polygon is no reason to
+// refuse, but 0 and 3 are both on the rim and the edge between them is inside.
+TEST(Collapse, QuadBesideTriangleOnTheRimPinches) {
     Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}},
                                       {{0, 1, 2, 3}, {0, 3, 4}});
     expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(3)),
-                   "cannot collapse: an adjacent face is not a triangle");
+                   "cannot collapse: an interior edge joining two boundary vertices would pinch "
+                   "the surface");
 }
 
 // Two triangles (0,1,2) and (0,2,1) glued along all three edges: a == d.

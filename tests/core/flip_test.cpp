@@ -151,6 +151,55 @@ TEST(Flip, GridDiagonal) {
     EXPECT_TRUE(test::same_faces_by_position(mesh, expected.build()));
 }
 
+// ----------------------------------------------------------------- polygons
+
+// A quad Q beside a triangle T across 0-3 (Scotty3D's rule): the edge turns to join the
+// corners after its ends, 1 (after 0 in Q) and 4 (after 3 in T); each face keeps its sides.
+//        3 ----- 2              3 ----- 2
+//      / |       |            /         |
+//     4 T|   Q   |     =>    4     Q    |      Q: (0,1,2,3) -> (1,2,3,4)
+//      \ |       |            \ ` - . _ |      T: (0,3,4)   -> (0,1,4)
+//        0 ----- 1              0 ----- 1
+TEST(Flip, QuadBesideTriangle) {
+    Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}},
+                                      {{0, 1, 2, 3}, {0, 3, 4}});
+    Indexed expected = test::indexed(mesh);
+    expected.remove({0, 1, 2, 3});
+    expected.remove({0, 3, 4});
+    expected.add({1, 2, 3, 4});
+    expected.add({0, 1, 4});
+    expect_flip(mesh, 0, 3, 1, 4);
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected.build()));
+}
+
+// Two quads side by side: the middle edge 1-4 turns into the diagonal 2-3.
+//   3 ----- 4 ----- 5        3 ----- 4 ----- 5
+//   |       |       |        | ` .           |
+//   |       |       |   =>   |     ` .       |     (0,1,4,3) -> (0,1,2,3)
+//   |       |       |        |         ` .   |     (1,2,5,4) -> (2,5,4,3)
+//   0 ----- 1 ----- 2        0 ----- 1 ----- 2
+TEST(Flip, TwoQuads) {
+    Mesh mesh =
+        test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}},
+                              {{0, 1, 4, 3}, {1, 2, 5, 4}});
+    Indexed expected = test::indexed(mesh);
+    expected.remove({0, 1, 4, 3});
+    expected.remove({1, 2, 5, 4});
+    expected.add({0, 1, 2, 3});
+    expected.add({2, 5, 4, 3});
+    expect_flip(mesh, 1, 4, 2, 3);
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected.build()));
+    // The next flip turns it on: 2-3 becomes 0-5 (after 2 comes 5 in one quad, after 3
+    // comes 0 in the other), and the third brings the edge back between 1 and 4.
+    const Edge e = mesh.find_edge(Vertex(2), Vertex(3));
+    ASSERT_TRUE(flip(mesh, e));
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(test::endpoints(mesh, e), std::make_pair(0u, 5u));
+    ASSERT_TRUE(flip(mesh, e));
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(test::endpoints(mesh, e), std::make_pair(1u, 4u));
+}
+
 // ----------------------------------------------------------------- refusals
 
 // Asserts that flipping `e` is refused with `reason` and leaves the mesh bit for bit.
@@ -170,17 +219,22 @@ TEST(Flip, RefusesBoundaryEdge) {
     expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(1)), "cannot flip: boundary edge");
 }
 
-// A quad (0,1,2,3) next to the triangle (0,3,4) across edge 0-3:
+// A face that would gain a corner it already has: faces F = (0,1,2,3) and G = (2,1,0,4)
+// share the two edges at vertex 1, which has valence 2. Flipping 0-1 would join 2 to 4, and G
+// already holds 2.
 //   3 ----- 2
-//   | \     |
-//   4  \    |        (0,3,4) is a triangle, (0,1,2,3) is not
-//   |   \   |
-//   0 ----- 1
-TEST(Flip, RefusesNonTriangle) {
-    Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}},
-                                      {{0, 1, 2, 3}, {0, 3, 4}});
-    expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(3)),
-                   "cannot flip: an adjacent face is not a triangle");
+//   |   F / |
+//   |   1   4      F = (0,1,2,3), G = (2,1,0,4)
+//   | / G   |
+//   0 ------'
+TEST(Flip, RefusesWhenAFaceWouldVisitAVertexTwice) {
+    Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {0.5, 0.5, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 0}},
+                                      {{0, 1, 2, 3}, {2, 1, 0, 4}});
+    ASSERT_VALID(mesh);
+    expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(1)),
+                   "cannot flip: a face would visit a vertex twice");
+    expect_refused(mesh, mesh.find_edge(Vertex(1), Vertex(2)),
+                   "cannot flip: a face would visit a vertex twice");
 }
 
 // Every edge of a tetrahedron: the opposite corners are already joined.

@@ -78,7 +78,13 @@ inline const SweepOp kSweepOps[] = {
          return r.reason();
      },
      [](const Mesh& m, std::uint32_t i) {
-         return m.is_boundary(Edge(i)) ? Counts{1, 2, 1} : Counts{1, 3, 2};
+         // One new edge along e, and one edge and one face per triangle beside it.
+         long triangles = 0;
+         for (unsigned k = 0; k < 2; ++k) {
+             const Halfedge h = Mesh::halfedge(Edge(i), k);
+             triangles += !m.is_boundary(h) && m.is_triangle(m.face(h)) ? 1 : 0;
+         }
+         return Counts{1, 1 + triangles, triangles};
      }},
     {"collapse", Target::Edge, -1, 3,
      [](const Mesh& m, std::uint32_t i) { return is_collapse_ok(m, Edge(i)); },
@@ -89,7 +95,13 @@ inline const SweepOp kSweepOps[] = {
          return r.reason();
      },
      [](const Mesh& m, std::uint32_t i) {
-         return m.is_boundary(Edge(i)) ? Counts{-1, -2, -1} : Counts{-1, -3, -2};
+         // The edge, and per triangle beside it the triangle and one of its other edges.
+         long triangles = 0;
+         for (unsigned k = 0; k < 2; ++k) {
+             const Halfedge h = Mesh::halfedge(Edge(i), k);
+             triangles += !m.is_boundary(h) && m.is_triangle(m.face(h)) ? 1 : 0;
+         }
+         return Counts{-1, -1 - triangles, -triangles};
      }},
     {"bisect", Target::Edge, 1, 1,
      [](const Mesh& m, std::uint32_t i) { return is_bisect_ok(m, Edge(i)); },

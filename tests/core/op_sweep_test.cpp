@@ -23,9 +23,19 @@ using test::Tally;
 // The three triangle operations the first sweeps were written for.
 constexpr std::string_view kTriangleOps[] = {"flip", "split", "collapse"};
 
-// is_flip_ok() and is_split_ok() as first written: whole faces through is_triangle(face),
-// the a-d search through find_halfedge() from halfedge(a). The optimised predicates (which
-// start from the edge's own halfedges) must refuse exactly the same edges for the same reasons.
+// is_flip_ok() and is_split_ok() written plainly: whole faces through is_triangle(face), the
+// a-d search through find_halfedge() from halfedge(a), a face's corners by its circulator.
+// The optimised predicates (which start from the edge's own halfedges) must refuse exactly
+// the same edges for the same reasons.
+bool has_corner(const Mesh& mesh, Face f, Vertex v) {
+    for (const Vertex w : mesh.vertices(f)) {
+        if (w == v) {
+            return true;
+        }
+    }
+    return false;
+}
+
 std::string_view reference_flip_refusal(const Mesh& mesh, Edge e) {
     if (mesh.is_deleted(e)) {
         return "cannot flip: the edge is deleted";
@@ -35,12 +45,16 @@ std::string_view reference_flip_refusal(const Mesh& mesh, Edge e) {
     }
     const Halfedge h0 = Mesh::halfedge(e, 0);
     const Halfedge t0 = Mesh::halfedge(e, 1);
-    if (!mesh.is_triangle(mesh.face(h0)) || !mesh.is_triangle(mesh.face(t0))) {
-        return "cannot flip: an adjacent face is not a triangle";
-    }
     const Vertex a = mesh.to_vertex(mesh.next(h0));
     const Vertex d = mesh.to_vertex(mesh.next(t0));
-    if (a == d || mesh.find_halfedge(a, d).is_valid()) {
+    if (a == d) {
+        return "cannot flip: the new edge already exists";
+    }
+    // A polygon beside e gains a corner it may already have (triangles: only when a == d).
+    if (has_corner(mesh, mesh.face(h0), d) || has_corner(mesh, mesh.face(t0), a)) {
+        return "cannot flip: a face would visit a vertex twice";
+    }
+    if (mesh.find_halfedge(a, d).is_valid()) {
         return "cannot flip: the new edge already exists";
     }
     return {};
@@ -55,10 +69,7 @@ std::string_view reference_split_refusal(const Mesh& mesh, Edge e) {
     if (!f0.is_valid() && !f1.is_valid()) {
         return "cannot split: the edge has no face";
     }
-    if ((f0.is_valid() && !mesh.is_triangle(f0)) || (f1.is_valid() && !mesh.is_triangle(f1))) {
-        return "cannot split: an adjacent face is not a triangle";
-    }
-    if (f0.is_valid() && f1.is_valid() &&
+    if (f0.is_valid() && f1.is_valid() && mesh.is_triangle(f0) && mesh.is_triangle(f1) &&
         mesh.to_vertex(mesh.next(Mesh::halfedge(e, 0))) ==
             mesh.to_vertex(mesh.next(Mesh::halfedge(e, 1)))) {
         return "cannot split: the new edges would coincide";

@@ -16,10 +16,11 @@ namespace {
 
 using test::Indexed;
 
-// Splits the edge b-c, which must succeed, and checks the documented halfedge of m:
+// Splits the edge b-c, which must succeed, and checks the documented halfedge of m and its
+// valence (`valence`, or 3 on the boundary and 4 inside between triangles):
 // interior edge: halfedge(m) = halfedge(e, 0), from m towards its old head; boundary edge:
 // the boundary halfedge along the old edge, from m towards the old boundary halfedge's head.
-Vertex expect_split(Mesh& mesh, std::uint32_t b, std::uint32_t c) {
+Vertex expect_split(Mesh& mesh, std::uint32_t b, std::uint32_t c, std::size_t valence = 0) {
     const Edge e = mesh.find_edge(Vertex(b), Vertex(c));
     EXPECT_TRUE(e.is_valid());
     const bool boundary = mesh.is_boundary(e);
@@ -39,7 +40,7 @@ Vertex expect_split(Mesh& mesh, std::uint32_t b, std::uint32_t c) {
     EXPECT_EQ(mesh.to_vertex(h), head);
     EXPECT_EQ(mesh.is_boundary(h), boundary);
     EXPECT_EQ(mesh.is_boundary(m), boundary);
-    EXPECT_EQ(mesh.valence(m), boundary ? 3u : 4u);
+    EXPECT_EQ(mesh.valence(m), valence != 0 ? valence : boundary ? 3u : 4u);
     return m;
 }
 
@@ -208,6 +209,44 @@ TEST(Split, KeepsCrease) {
     EXPECT_EQ(crease[mesh.find_edge(m, Vertex(1))], 1);
 }
 
+// ----------------------------------------------------------------- polygons
+
+// A quad Q beside a triangle T across 0-3: T is divided as ever (m joined to 4), Q only
+// gains m as a fifth corner.
+//        3 ----- 2              3 ----- 2
+//      / |       |            / |       |
+//     4 T|   Q   |     =>    4 -5   Q   |     Q: (0,1,2,3) -> (0,1,2,3,5)
+//      \ |       |            \ |       |     T: (0,3,4)   -> (5,3,4), (0,5,4)
+//        0 ----- 1              0 ----- 1
+TEST(Split, QuadBesideTriangle) {
+    Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}},
+                                      {{0, 1, 2, 3}, {0, 3, 4}});
+    Indexed expected = test::indexed(mesh);
+    const std::uint32_t m = expected.add_vertex({0, 0.5, 0});
+    expected.remove({0, 1, 2, 3});
+    expected.remove({0, 3, 4});
+    expected.add({0, 1, 2, 3, m});
+    expected.add({m, 3, 4});
+    expected.add({0, m, 4});
+    const std::size_t edges = mesh.n_edges();
+    const Vertex v = expect_split(mesh, 0, 3, 3);
+    EXPECT_EQ(v, Vertex(m));
+    EXPECT_EQ(mesh.n_edges(), edges + 2);
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected.build()));
+}
+
+// A boundary side of a quad: the quad gains m, the boundary loop too; nothing is divided.
+TEST(Split, BoundarySideOfAQuad) {
+    Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}},
+                                      {{0, 1, 2, 3}, {0, 3, 4}});
+    Indexed expected = test::indexed(mesh);
+    const std::uint32_t m = expected.add_vertex({0.5, 0, 0});
+    expected.remove({0, 1, 2, 3});
+    expected.add({0, m, 1, 2, 3});
+    EXPECT_EQ(expect_split(mesh, 0, 1, 2), Vertex(m));
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected.build()));
+}
+
 // ----------------------------------------------------------------- refusals
 
 void expect_refused(Mesh& mesh, Edge e, std::string_view reason) {
@@ -217,16 +256,6 @@ void expect_refused(Mesh& mesh, Edge e, std::string_view reason) {
     EXPECT_FALSE(r);
     EXPECT_EQ(r.reason(), reason);
     EXPECT_TRUE(test::identical(mesh, before));
-}
-
-// A quad (0,1,2,3) next to the triangle (0,3,4) across edge 0-3, and its boundary edge 0-1.
-TEST(Split, RefusesNonTriangle) {
-    Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}},
-                                      {{0, 1, 2, 3}, {0, 3, 4}});
-    expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(3)),
-                   "cannot split: an adjacent face is not a triangle");
-    expect_refused(mesh, mesh.find_edge(Vertex(0), Vertex(1)),
-                   "cannot split: an adjacent face is not a triangle");
 }
 
 // Two triangles (0,1,2) and (0,2,1) glued along all three edges: the spokes from m to the

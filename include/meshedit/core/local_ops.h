@@ -48,19 +48,24 @@ private:
     std::string_view reason_;
 };
 
-/// \return ok if `e` is a live interior edge between two triangles whose flipped edge would
-/// not already exist (and would not join a vertex to itself).
+/// \return ok if `e` is a live interior edge whose flipped edge would not already exist (nor
+/// join a vertex to itself) and whose faces would not visit a vertex twice.
 OpStatus is_flip_ok(const Mesh& mesh, Edge e);
-/// Flips `e` inside its two triangles: (a,b,c),(c,b,d) → (a,d,c),(a,b,d) where b-c is `e`.
-/// No allocation; O(1) relinking after an O(valence(a)) search for an existing a-d edge.
+/// Turns `e` inside its two faces to join the corners that follow its ends: for triangles
+/// (a,b,c),(c,b,d) → (a,d,c),(a,b,d) where b-c is `e`; polygons keep their number of sides
+/// (Scotty3D's rule; docs/halfedge.md). No allocation; O(1) relinking after an
+/// O(valence(a)) search for an existing a-d edge (plus O(sides) for polygons).
 /// \return the same edge handle, now joining a and d.
 OpResult<Edge> flip(Mesh& mesh, Edge e);
 
-/// \return ok if `e` is live and every face beside it is a triangle.
+/// \return ok if `e` is live, has a face, and is not between two triangles on the same three
+/// corners.
 OpStatus is_split_ok(const Mesh& mesh, Edge e);
 /// Splits `e` at its midpoint. An interior edge's two triangles become four; a boundary
-/// edge's one triangle becomes two and the boundary gains the vertex. O(1); no allocation
-/// beyond appending the new elements. A crease edge (kCreaseProperty) leaves two creases.
+/// edge's one triangle becomes two and the boundary gains the vertex. A face beside `e` that
+/// is not a triangle is not divided: it only gains the vertex as a corner (as bisect()).
+/// O(1); no allocation beyond appending the new elements. A crease edge (kCreaseProperty)
+/// leaves two creases.
 /// \return the new vertex m. `halfedge(m)` is `halfedge(e, i)`, where i = 0 for an interior
 /// edge and i is the boundary side for a boundary edge: it runs along the original edge from
 /// m towards the old `to_vertex(halfedge(e, i))`, and `e` itself (shortened) is that half.
@@ -75,15 +80,16 @@ OpStatus is_bisect_ok(const Mesh& mesh, Edge e);
 /// \return m; `halfedge(m)` follows the same rule as split()'s.
 OpResult<Vertex> bisect(Mesh& mesh, Edge e);
 
-/// \return ok if collapsing `e` keeps the mesh a valid manifold: the faces beside `e` are
-/// triangles; `e` is not an interior edge joining two boundary vertices (that would pinch
-/// the surface); the link condition holds (the endpoints' common neighbours are exactly the
-/// corners opposite `e`, and no other polygon holds both endpoints); and nothing degenerates
-/// (a tetrahedron, a lone triangle, a two-triangle pillow).
+/// \return ok if collapsing `e` keeps the mesh a valid manifold: `e` is not an interior edge
+/// joining two boundary vertices (that would pinch the surface); the link condition holds
+/// (the endpoints' common neighbours are exactly the corners opposite `e` in the triangles
+/// beside it, and no other polygon holds both endpoints); and nothing degenerates (a
+/// tetrahedron, a lone triangle, a two-triangle pillow).
 OpStatus is_collapse_ok(const Mesh& mesh, Edge e);
 /// Collapses `e` to its midpoint. The endpoint with the smaller index survives (so CLI edge
 /// names stay predictable); the other endpoint, `e`, the triangles beside `e` and one of the
-/// two edges each of them merges are deleted (garbage collection is left to the caller).
+/// two edges each of them merges are deleted (garbage collection is left to the caller); a
+/// polygon beside `e` only loses a corner.
 /// O(valence). \return the surviving vertex, anchored at an outgoing boundary halfedge if
 /// it is on the boundary.
 OpResult<Vertex> collapse(Mesh& mesh, Edge e);
