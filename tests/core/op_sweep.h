@@ -58,6 +58,23 @@ inline Counts no_change(const Mesh&, std::uint32_t) {
     return {0, 0, 0};
 }
 
+// make_boundary(f): f goes, so do its sides already on the boundary and the corners both of
+// whose sides go.
+inline Counts make_boundary_delta(const Mesh& m, std::uint32_t i) {
+    long edges = 0, vertices = 0;
+    for (const Halfedge h : m.halfedges(Face(i))) {
+        const bool goes = m.is_boundary(Mesh::twin(h));
+        edges += goes ? 1 : 0;
+        vertices += goes && m.is_boundary(Mesh::twin(m.next(h))) ? 1 : 0;
+    }
+    return {-vertices, -edges, -1};
+}
+
+// The boundary halfedge of `e`, or halfedge 0 of an interior edge.
+inline Halfedge boundary_side(const Mesh& m, Edge e) {
+    return m.is_boundary(Mesh::halfedge(e, 1)) ? Mesh::halfedge(e, 1) : Mesh::halfedge(e, 0);
+}
+
 // clang-format off
 inline const SweepOp kSweepOps[] = {
     {"flip", Target::Edge, 0, 3,
@@ -127,6 +144,55 @@ inline const SweepOp kSweepOps[] = {
      [](const Mesh& m, std::uint32_t i) {
          const auto n = static_cast<long>(m.valence(Face(i)));
          return Counts{1, n, n - 1};
+     }},
+    {"make_boundary", Target::Face, -1, 0.5,
+     [](const Mesh& m, std::uint32_t i) { return is_make_boundary_ok(m, Face(i)); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const auto r = make_boundary(m, Face(i));
+         if (r && r.value().is_valid() && !m.is_boundary(*r)) {
+             wrong = "make_boundary returned a halfedge off the boundary";
+         }
+         return r.reason();
+     },
+     make_boundary_delta},
+    {"fill_hole", Target::Edge, 1, 0.5,
+     [](const Mesh& m, std::uint32_t i) { return is_fill_hole_ok(m, boundary_side(m, Edge(i))); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const Halfedge h = boundary_side(m, Edge(i));
+         const auto r = fill_hole(m, h);
+         if (r && m.face(h) != *r) {
+             wrong = "fill_hole's face is not on the hole's halfedge";
+         }
+         return r.reason();
+     },
+     [](const Mesh&, std::uint32_t) { return Counts{0, 0, 1}; }},
+    {"dissolve_edge", Target::Edge, -1, 1,
+     [](const Mesh& m, std::uint32_t i) { return is_dissolve_edge_ok(m, Edge(i)); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const Face kept = m.face(Mesh::halfedge(Edge(i), 0));
+         const bool boundary = m.is_boundary(Edge(i));
+         const auto r = dissolve_edge(m, Edge(i));
+         if (r && !boundary && *r != kept) {
+             wrong = "dissolve_edge kept the wrong face";
+         }
+         return r.reason();
+     },
+     [](const Mesh& m, std::uint32_t i) {
+         const Halfedge h = Mesh::halfedge(Edge(i), 0);
+         if (!m.is_boundary(Edge(i))) {
+             return Counts{0, -1, -1};
+         }
+         return make_boundary_delta(m, m.face(m.is_boundary(h) ? Mesh::twin(h) : h).idx());
+     }},
+    {"dissolve_vertex", Target::Vertex, -1, 1,
+     [](const Mesh& m, std::uint32_t i) { return is_dissolve_vertex_ok(m, Vertex(i)); },
+     [](Mesh& m, std::uint32_t i, std::string&) -> std::string_view {
+         return dissolve_vertex(m, Vertex(i)).reason();
+     },
+     [](const Mesh& m, std::uint32_t i) {
+         const auto n = static_cast<long>(m.valence(Vertex(i)));
+         return m.is_boundary(Vertex(i)) ? Counts{-1, -(n - 1), -(n - 2)}
+                                         : Counts{-1, -n, -(n - 1)};
      }},
     {"flip_orientation", Target::None, 0, 0.02,
      [](const Mesh&, std::uint32_t) { return OpStatus::ok(); },

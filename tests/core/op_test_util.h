@@ -124,6 +124,36 @@ inline std::pair<std::uint32_t, std::uint32_t> endpoints(const Mesh& mesh, Edge 
     return {std::min(u, v), std::max(u, v)};
 }
 
+/// The live face whose corners are `corners` in this cyclic order; the test fails if none.
+inline Face face_with(const Mesh& mesh, const Corners& corners) {
+    for (const Face f : mesh.faces()) {
+        Corners c;
+        for (const Vertex v : mesh.vertices(f)) {
+            c.push_back(v.idx());
+        }
+        if (Indexed::same_cycle(c, corners)) {
+            return f;
+        }
+    }
+    ADD_FAILURE() << "no face " << Indexed::describe(corners);
+    return Face();
+}
+
+/// The number of boundary loops.
+inline std::size_t boundary_loops(const Mesh& mesh) {
+    std::vector<char> seen(mesh.halfedges_size(), 0);
+    std::size_t loops = 0;
+    for (const Halfedge h : mesh.halfedges()) {
+        if (mesh.is_boundary(h) && seen[h.idx()] == 0) {
+            ++loops;
+            for (const Halfedge x : mesh.loop(h)) {
+                seen[x.idx()] = 1;
+            }
+        }
+    }
+    return loops;
+}
+
 /// V - E + F over live elements.
 inline long euler(const Mesh& mesh) {
     return static_cast<long>(mesh.n_vertices()) - static_cast<long>(mesh.n_edges()) +

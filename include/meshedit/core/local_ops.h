@@ -106,6 +106,39 @@ OpResult<Face> triangulate(Mesh& mesh, Face f);
 /// as they are. \return how many faces were triangulated.
 std::size_t triangulate(Mesh& mesh);
 
+// ------------------------------------------- removing and filling (src/core/dissolve.cpp)
+
+/// \return ok if `f` is live and no corner of it would be on two holes once it is gone (a
+/// corner already on the boundary must have a side of `f` on that boundary).
+OpStatus is_make_boundary_ok(const Mesh& mesh, Face f);
+/// Deletes `f`, leaving a hole (Scotty3D's make_boundary, "delete face"). Sides of `f` that
+/// were on the boundary already go with it, so the hole merges with the holes beside it, and
+/// corners left without edges go too; the mesh may fall into several parts.
+/// \return a boundary halfedge of the new hole, or an invalid handle when nothing of `f`'s
+/// part is left (a lone face).
+OpResult<Halfedge> make_boundary(Mesh& mesh, Face f);
+
+/// \return ok if `h` is a live boundary halfedge whose loop has at least three sides.
+OpStatus is_fill_hole_ok(const Mesh& mesh, Halfedge h);
+/// Fills the boundary loop through `h` with one new face. \return the face.
+OpResult<Face> fill_hole(Mesh& mesh, Halfedge h);
+
+/// \return ok if `e` is live and the faces beside it share no corner but its ends (inside),
+/// or its face can become a hole (make_boundary's rule, on the boundary).
+OpStatus is_dissolve_edge_ok(const Mesh& mesh, Edge e);
+/// Removes `e` and merges the two faces beside it into one, the face of `halfedge(e, 0)`.
+/// On the boundary the one face joins the hole, as make_boundary() does.
+/// \return the merged face, or an invalid handle for a boundary edge.
+OpResult<Face> dissolve_edge(Mesh& mesh, Edge e);
+
+/// \return ok if `v` is live, has edges, and the merged face would have at least three
+/// corners, none twice; on the boundary, the edge that closes it must not exist yet.
+OpStatus is_dissolve_vertex_ok(const Mesh& mesh, Vertex v);
+/// Removes `v` and its edges and merges the faces around it into one. On the boundary an
+/// edge joins v's two boundary neighbours (one of v's boundary edges, turned), so the merged
+/// face does not swallow the hole. \return the merged face.
+OpResult<Face> dissolve_vertex(Mesh& mesh, Vertex v);
+
 // ------------------------------------------------------------ faces (src/core/poke.cpp)
 
 /// \return ok if `f` is live.
