@@ -70,6 +70,41 @@ inline Counts make_boundary_delta(const Mesh& m, std::uint32_t i) {
     return {-vertices, -edges, -1};
 }
 
+// The first edge of a weld drawn at index i: the first boundary edge from i on (so that the
+// sweep welds often enough; on a closed mesh edge i itself, which is refused).
+inline Edge weld_first(const Mesh& m, std::uint32_t i) {
+    const std::size_t n = m.edges_size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const Edge e(static_cast<std::uint32_t>((i + k) % n));
+        if (!m.is_deleted(e) && m.is_boundary(e)) {
+            return e;
+        }
+    }
+    return Edge(i);
+}
+
+// The second edge of a weld with `e1` (a boundary edge): for even indices the next edge along
+// its boundary loop (the two meet at a vertex: a zip), for odd ones the first boundary edge
+// from a scattered index on. `e1` itself when there is none.
+inline Edge weld_partner(const Mesh& m, Edge e1) {
+    if (!m.is_boundary(e1)) {
+        return e1;
+    }
+    const Halfedge g1 =
+        m.is_boundary(Mesh::halfedge(e1, 0)) ? Mesh::halfedge(e1, 0) : Mesh::halfedge(e1, 1);
+    if (e1.idx() % 2 == 0) {
+        return Mesh::edge(m.next(g1));
+    }
+    const std::size_t n = m.edges_size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const Edge e(static_cast<std::uint32_t>((e1.idx() * 7919u + k) % n));
+        if (e != e1 && !m.is_deleted(e) && m.is_boundary(e)) {
+            return e;
+        }
+    }
+    return e1;
+}
+
 // The boundary halfedge of `e`, or halfedge 0 of an interior edge.
 inline Halfedge boundary_side(const Mesh& m, Edge e) {
     return m.is_boundary(Mesh::halfedge(e, 1)) ? Mesh::halfedge(e, 1) : Mesh::halfedge(e, 0);
@@ -193,6 +228,31 @@ inline const SweepOp kSweepOps[] = {
          const auto n = static_cast<long>(m.valence(Vertex(i)));
          return m.is_boundary(Vertex(i)) ? Counts{-1, -(n - 1), -(n - 2)}
                                          : Counts{-1, -n, -(n - 1)};
+     }},
+    {"weld", Target::Edge, -1, 1,
+     [](const Mesh& m, std::uint32_t i) {
+         const Edge e1 = weld_first(m, i);
+         return is_weld_ok(m, e1, weld_partner(m, e1));
+     },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const Edge e1 = weld_first(m, i);
+         const auto r = weld(m, e1, weld_partner(m, e1));
+         if (r && (*r != e1 || m.is_boundary(*r))) {
+             wrong = "weld did not return e1 as an interior edge";
+         }
+         return r.reason();
+     },
+     [](const Mesh& m, std::uint32_t i) {
+         // Two vertices merge into two, one less where the edges meet (a zip); e2 goes.
+         const Edge e1 = weld_first(m, i);
+         const Edge e2 = weld_partner(m, e1);
+         long shared = 0;
+         for (unsigned x = 0; x < 2; ++x) {
+             for (unsigned y = 0; y < 2; ++y) {
+                 shared += m.vertex(e1, x) == m.vertex(e2, y) ? 1 : 0;
+             }
+         }
+         return Counts{-(2 - shared), -1, 0};
      }},
     {"flip_orientation", Target::None, 0, 0.02,
      [](const Mesh&, std::uint32_t) { return OpStatus::ok(); },

@@ -139,6 +139,18 @@ OpStatus is_dissolve_vertex_ok(const Mesh& mesh, Vertex v);
 /// face does not swallow the hole. \return the merged face.
 OpResult<Face> dissolve_vertex(Mesh& mesh, Vertex v);
 
+// ------------------------------------------------------------- welding (src/core/weld.cpp)
+
+/// \return ok if `e1` and `e2` are two live boundary edges of different faces whose weld
+/// would not make a face visit a vertex twice, nor an edge join a vertex to itself, nor two
+/// edges join the same vertices.
+OpStatus is_weld_ok(const Mesh& mesh, Edge e1, Edge e2);
+/// Glues boundary edges `e1` and `e2` into one interior edge (Scotty3D's weld_edges): e1's
+/// face and e2's face meet across it, oriented alike. The ends of `e1` survive, each at the
+/// midpoint of itself and the end of `e2` it meets; e2 and its ends go. Two edges that meet
+/// at a vertex are zipped there. \return `e1`.
+OpResult<Edge> weld(Mesh& mesh, Edge e1, Edge e2);
+
 // ------------------------------------------------------------ faces (src/core/poke.cpp)
 
 /// \return ok if `f` is live.
