@@ -70,9 +70,9 @@ inline Counts make_boundary_delta(const Mesh& m, std::uint32_t i) {
     return {-vertices, -edges, -1};
 }
 
-// The first edge of a weld drawn at index i: the first boundary edge from i on (so that the
-// sweep welds often enough; on a closed mesh edge i itself, which is refused).
-inline Edge weld_first(const Mesh& m, std::uint32_t i) {
+// The first boundary edge from index i on, for the ops that need one (weld, fill_hole), so
+// that the sweep applies them often enough; on a closed mesh edge i itself, which they refuse.
+inline Edge first_boundary_edge(const Mesh& m, std::uint32_t i) {
     const std::size_t n = m.edges_size();
     for (std::size_t k = 0; k < n; ++k) {
         const Edge e(static_cast<std::uint32_t>((i + k) % n));
@@ -103,6 +103,12 @@ inline Edge weld_partner(const Mesh& m, Edge e1) {
         }
     }
     return e1;
+}
+
+// extrude and inset: a corner, a rung, an inner side and a quad per side of the face.
+inline Counts ring_delta(const Mesh& m, std::uint32_t i) {
+    const auto n = static_cast<long>(m.valence(Face(i)));
+    return Counts{n, 2 * n, n};
 }
 
 // The boundary halfedge of `e`, or halfedge 0 of an interior edge.
@@ -191,9 +197,11 @@ inline const SweepOp kSweepOps[] = {
      },
      make_boundary_delta},
     {"fill_hole", Target::Edge, 1, 0.5,
-     [](const Mesh& m, std::uint32_t i) { return is_fill_hole_ok(m, boundary_side(m, Edge(i))); },
+     [](const Mesh& m, std::uint32_t i) {
+         return is_fill_hole_ok(m, boundary_side(m, first_boundary_edge(m, i)));
+     },
      [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
-         const Halfedge h = boundary_side(m, Edge(i));
+         const Halfedge h = boundary_side(m, first_boundary_edge(m, i));
          const auto r = fill_hole(m, h);
          if (r && m.face(h) != *r) {
              wrong = "fill_hole's face is not on the hole's halfedge";
@@ -231,11 +239,11 @@ inline const SweepOp kSweepOps[] = {
      }},
     {"weld", Target::Edge, -1, 1,
      [](const Mesh& m, std::uint32_t i) {
-         const Edge e1 = weld_first(m, i);
+         const Edge e1 = first_boundary_edge(m, i);
          return is_weld_ok(m, e1, weld_partner(m, e1));
      },
      [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
-         const Edge e1 = weld_first(m, i);
+         const Edge e1 = first_boundary_edge(m, i);
          const auto r = weld(m, e1, weld_partner(m, e1));
          if (r && (*r != e1 || m.is_boundary(*r))) {
              wrong = "weld did not return e1 as an interior edge";
@@ -244,7 +252,7 @@ inline const SweepOp kSweepOps[] = {
      },
      [](const Mesh& m, std::uint32_t i) {
          // Two vertices merge into two, one less where the edges meet (a zip); e2 goes.
-         const Edge e1 = weld_first(m, i);
+         const Edge e1 = first_boundary_edge(m, i);
          const Edge e2 = weld_partner(m, e1);
          long shared = 0;
          for (unsigned x = 0; x < 2; ++x) {
@@ -253,6 +261,47 @@ inline const SweepOp kSweepOps[] = {
              }
          }
          return Counts{-(2 - shared), -1, 0};
+     }},
+    {"extrude", Target::Face, 1, 0.5,
+     [](const Mesh& m, std::uint32_t i) { return is_extrude_ok(m, Face(i), 0.1 * (i % 3), 0.25); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const std::size_t n = m.valence(Face(i));
+         const auto r = extrude_face(m, Face(i), 0.1 * (i % 3), 0.25);
+         if (r && (*r != Face(i) || m.valence(*r) != n)) {
+             wrong = "extrude did not keep f as the inner face";
+         }
+         return r.reason();
+     },
+     ring_delta},
+    {"inset", Target::Face, 1, 0.5,
+     [](const Mesh& m, std::uint32_t i) { return is_inset_ok(m, Face(i), 0.3); },
+     [](Mesh& m, std::uint32_t i, std::string&) -> std::string_view {
+         return inset_face(m, Face(i), 0.3).reason();
+     },
+     ring_delta},
+    {"bevel_vertex", Target::Vertex, 1, 0.5,
+     [](const Mesh& m, std::uint32_t i) { return is_bevel_vertex_ok(m, Vertex(i), 0.2); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         const std::size_t n = m.valence(Vertex(i));
+         const auto r = bevel_vertex(m, Vertex(i), 0.2);
+         if (r && m.valence(*r) != n) {
+             wrong = "bevel_vertex's face does not have a corner per edge";
+         }
+         return r.reason();
+     },
+     [](const Mesh& m, std::uint32_t i) {
+         const auto n = static_cast<long>(m.valence(Vertex(i)));
+         return Counts{n - 1, n, 1};
+     }},
+    {"bevel_edge", Target::Edge, 1, 0.5,
+     [](const Mesh& m, std::uint32_t i) { return is_bevel_edge_ok(m, Edge(i), 0.2); },
+     [](Mesh& m, std::uint32_t i, std::string&) -> std::string_view {
+         return bevel_edge(m, Edge(i), 0.2).reason();
+     },
+     [](const Mesh& m, std::uint32_t i) {
+         const auto n = static_cast<long>(m.valence(m.vertex(Edge(i), 0)) +
+                                          m.valence(m.vertex(Edge(i), 1))) - 2;
+         return Counts{n - 2, n - 1, 1};
      }},
     {"flip_orientation", Target::None, 0, 0.02,
      [](const Mesh&, std::uint32_t) { return OpStatus::ok(); },

@@ -161,6 +161,38 @@ OpStatus is_poke_ok(const Mesh& mesh, Face f);
 /// \return c; `halfedge(c)` runs from c to `from_vertex(halfedge(f))`.
 OpResult<Vertex> poke(Mesh& mesh, Face f);
 
+// ------------------------------------------------ inset and extrude (src/core/extrude.cpp)
+
+/// \return ok if `f` is live, the amounts are finite, `shrink` is below 1 and, for a height
+/// other than 0, `f` has an area (so a normal).
+OpStatus is_extrude_ok(const Mesh& mesh, Face f, double height, double shrink);
+/// Surrounds `f` with a ring of quads, one per side, whose inner corners are a copy of f's
+/// moved `shrink` of the way to f's centre (0: the same size, 0.5: half; negative grows) and
+/// `height` (model units) along f's unit normal. `f` keeps its handle and becomes the inner
+/// face; the outer corners do not move. \return `f`.
+OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink);
+/// \return ok if `f` is live and `shrink` is finite and below 1.
+OpStatus is_inset_ok(const Mesh& mesh, Face f, double shrink);
+/// extrude_face() with height 0: a ring of quads inside `f`. \return `f`, the inner face.
+OpResult<Face> inset_face(Mesh& mesh, Face f, double shrink);
+
+// ------------------------------------------------------------ bevel (src/core/bevel.cpp)
+
+/// \return ok if `v` is live with at least three edges and 0 <= t < 1.
+OpStatus is_bevel_vertex_ok(const Mesh& mesh, Vertex v, double t);
+/// Replaces `v` by a new face with one corner on each of its edges, a fraction `t` of the way
+/// along it (t = 0: a face of no area at v's place). Each face around v gains a corner; on
+/// the boundary the new face has a side on the hole. \return the new face.
+OpResult<Face> bevel_vertex(Mesh& mesh, Vertex v, double t);
+/// \return ok if `e` is live, its ends have at least five edges together (so the new face has
+/// three corners or more) and 0 <= t < 1.
+OpStatus is_bevel_edge_ok(const Mesh& mesh, Edge e, double t);
+/// Replaces `e` by a new face with one corner on each other edge of its two ends, a fraction
+/// `t` of the way along it; `e` goes. On the boundary the new face has a side on the hole
+/// (Scotty3D refuses boundary edges; Blender bevels them, and so does MeshEdit).
+/// \return the new face.
+OpResult<Face> bevel_edge(Mesh& mesh, Edge e, double t);
+
 // ----------------------------------------------------- orientation (src/core/orientation.cpp)
 
 /// Reverses every face and boundary loop (Scotty3D's flip_orientation): each halfedge

@@ -1,0 +1,163 @@
+/// \file
+/// Vertex and edge bevel: the element is replaced by a new face with one corner on each edge
+/// that left it, each corner a fraction `t` of the way along its edge. Contract
+/// (local_ops.h): the predicate is checked first and a refusal leaves the mesh untouched.
+
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "meshedit/core/local_ops.h"
+
+namespace meshedit {
+namespace {
+
+bool is_amount_ok(double t) {
+    return std::isfinite(t) && t >= 0 && t < 1;
+}
+
+// Splits a fan of outgoing halfedges apart into a new face. o[0..N) are counter-clockwise:
+// between o[i] and o[i+1] lies the loop of o[i] (a face, or a boundary gap), in which
+// twin(o[i+1]) comes just before o[i] (or before the edge being removed, then o[i]). Corner
+// w[i] takes o[i]'s tail: `reuse[i]` if valid, else a new vertex. In each loop i a new
+// halfedge n[i] = w[i+1] -> w[i] comes between twin(o[i+1]) and o[i]; the twins of the n[i]
+// form the new face B = w[0] -> w[1] -> ... . Each w[i] moves to start[i] + t (head of o[i]
+// - start[i]). On a boundary gap n[i] is a boundary halfedge, so B has a side on that hole.
+//
+//                x1                                  x1
+//                ^                                   ^
+//          f1    | o[1]     f0                 f1    | o[1]     f0
+//                |                                   w1
+//      x2 <----- v -----> x0        =>     x2 <- w2 /  B  \ w0 -> x0     n[i]: w[i+1] -> w[i]
+//          o[2]  |  o[0]                         \  /          o[0]     in loop i (f_i);
+//          f2    | o[3]    f3                     w3                    twin(n[i]) in B
+//                v                                   | o[3]
+//                x3                                  x3
+Face split_fan(Mesh& mesh, const std::vector<Halfedge>& o, const std::vector<Vertex>& reuse,
+               const std::vector<Vec3>& start, double t) {
+    const auto count = static_cast<std::uint32_t>(o.size());
+    std::vector<Vec3> rail_end(count);
+    std::vector<Face> loop(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        rail_end[i] = mesh.position(mesh.to_vertex(o[i]));
+        loop[i] = mesh.face(o[i]);
+    }
+    std::uint32_t fresh = 0;
+    for (const Vertex r : reuse) {
+        fresh += r.is_valid() ? 0 : 1;
+    }
+    const auto first_v = static_cast<std::uint32_t>(mesh.vertices_size());
+    const auto first_e = static_cast<std::uint32_t>(mesh.edges_size());
+    const auto bevel = Face(static_cast<std::uint32_t>(mesh.faces_size()));
+    mesh.new_elements(fresh, count, 1);
+    std::vector<Vertex> w(count);
+    for (std::uint32_t i = 0, next_new = first_v; i < count; ++i) {
+        w[i] = reuse[i].is_valid() ? reuse[i] : Vertex(next_new++);
+    }
+    const auto n = [&](std::uint32_t i) { return Mesh::halfedge(Edge(first_e + i % count), 0); };
+
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const Halfedge ni = n(i);
+        const Halfedge mi = Mesh::twin(ni);
+        mesh.set_vertex(Mesh::twin(o[i]), w[i]);
+        mesh.set_vertex(ni, w[i]);
+        mesh.set_vertex(mi, w[(i + 1) % count]);
+        mesh.set_next(Mesh::twin(o[(i + 1) % count]), ni);
+        mesh.set_next(ni, o[i]);
+        mesh.set_face(ni, loop[i]);
+        if (loop[i].is_valid()) {
+            mesh.set_halfedge(loop[i], ni);
+        }
+        mesh.set_next(mi, Mesh::twin(n(i + 1)));
+        mesh.set_face(mi, bevel);
+    }
+    for (std::uint32_t i = 0; i < count; ++i) {
+        // w[i] leaves along o[i] and along n[i-1]; the latter is its boundary halfedge when
+        // the loop before o[i] is a gap (when o[i]'s own loop is, o[i] is).
+        const Halfedge before = n(i + count - 1);
+        mesh.set_halfedge(w[i], mesh.is_boundary(before) ? before : o[i]);
+        mesh.position(w[i]) = start[i] + t * (rail_end[i] - start[i]);
+    }
+    mesh.set_halfedge(bevel, Mesh::twin(n(0)));
+    return bevel;
+}
+
+}  // namespace
+
+OpStatus is_bevel_vertex_ok(const Mesh& mesh, Vertex v, double t) {
+    MESHEDIT_ASSERT(mesh.is_valid(v));
+    if (mesh.is_deleted(v)) {
+        return OpStatus::refused("cannot bevel: the vertex is deleted");
+    }
+    if (!is_amount_ok(t)) {
+        return OpStatus::refused("cannot bevel: the amount must be at least 0 and below 1");
+    }
+    if (mesh.is_isolated(v) || mesh.valence(v) < 3) {
+        return OpStatus::refused("cannot bevel: the new face would have fewer than 3 corners");
+    }
+    return OpStatus::ok();
+}
+
+// The fan is every outgoing halfedge of v; v itself becomes the corner on halfedge(v).
+OpResult<Face> bevel_vertex(Mesh& mesh, Vertex v, double t) {
+    if (const OpStatus ok = is_bevel_vertex_ok(mesh, v, t); !ok) {
+        return ok;
+    }
+    std::vector<Halfedge> o;
+    for (const Halfedge h : mesh.halfedges(v)) {
+        o.push_back(h);
+    }
+    std::vector<Vertex> reuse(o.size());
+    reuse[0] = v;
+    const std::vector<Vec3> start(o.size(), mesh.position(v));
+    return split_fan(mesh, o, reuse, start, t);
+}
+
+OpStatus is_bevel_edge_ok(const Mesh& mesh, Edge e, double t) {
+    MESHEDIT_ASSERT(mesh.is_valid(e));
+    if (mesh.is_deleted(e)) {
+        return OpStatus::refused("cannot bevel: the edge is deleted");
+    }
+    if (!is_amount_ok(t)) {
+        return OpStatus::refused("cannot bevel: the amount must be at least 0 and below 1");
+    }
+    if (mesh.valence(mesh.vertex(e, 0)) + mesh.valence(mesh.vertex(e, 1)) < 5) {
+        return OpStatus::refused("cannot bevel: the new face would have fewer than 3 corners");
+    }
+    return OpStatus::ok();
+}
+
+// e = a-b, h = a -> b, t = b -> a. The fan is a's outgoing halfedges after h (counter-
+// clockwise, up to the one before h), then b's after t: the fan of the vertex a and b would
+// be if e were collapsed. e goes; a and b become the corners on ccw(h) and ccw(t).
+//
+//      x ------ a ------ y              x --- wa1       wam --- y
+//               |                             |  \     /  |
+//          f    h ^ t   g       =>        f   |    B      |   g      (B between a's and
+//               v |                           |  /     \  |           b's corners)
+//      z ------ b ------ u              z --- wb       wbk --- u
+OpResult<Face> bevel_edge(Mesh& mesh, Edge e, double amount) {
+    if (const OpStatus ok = is_bevel_edge_ok(mesh, e, amount); !ok) {
+        return ok;
+    }
+    const Halfedge h = Mesh::halfedge(e, 0);
+    const Halfedge t = Mesh::twin(h);
+    const Vertex a = mesh.from_vertex(h);
+    const Vertex b = mesh.to_vertex(h);
+    std::vector<Halfedge> o;
+    std::vector<Vertex> reuse;
+    std::vector<Vec3> start;
+    for (const auto& [around, end] : {std::pair{h, a}, std::pair{t, b}}) {
+        for (Halfedge x = mesh.ccw_rotated(around); x != around; x = mesh.ccw_rotated(x)) {
+            reuse.push_back(x == mesh.ccw_rotated(around) ? end : Vertex());
+            o.push_back(x);
+            start.push_back(mesh.position(end));
+        }
+    }
+    const Face bevel = split_fan(mesh, o, reuse, start, amount);
+    mesh.mark_deleted(e);
+    return bevel;
+}
+
+}  // namespace meshedit

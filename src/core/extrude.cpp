@@ -1,0 +1,145 @@
+/// \file
+/// Inset and extrude: a ring of quads around a face, whose inner copy shrinks towards its
+/// centre and (extrude) moves along its normal. Contract (local_ops.h): the predicate is
+/// checked first and a refusal leaves the mesh untouched.
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "meshedit/core/local_ops.h"
+
+namespace meshedit {
+namespace {
+
+// The unit normal of polygon `corners` by Newell's formula (an area-weighted average of its
+// triangles' normals, right for non-planar polygons too); zero for a face without area.
+Vec3 newell_normal(const std::vector<Vec3>& corners, const Vec3& centre) {
+    Vec3 n{0, 0, 0};
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        n += cross(corners[i] - centre, corners[(i + 1) % corners.size()] - centre);
+    }
+    const double length = norm(n);
+    return length > 0 && std::isfinite(length) ? n / length : Vec3{0, 0, 0};
+}
+
+}  // namespace
+
+OpStatus is_extrude_ok(const Mesh& mesh, Face f, double height, double shrink) {
+    MESHEDIT_ASSERT(mesh.is_valid(f));
+    if (mesh.is_deleted(f)) {
+        return OpStatus::refused("cannot extrude: the face is deleted");
+    }
+    if (!std::isfinite(height) || !std::isfinite(shrink)) {
+        return OpStatus::refused("cannot extrude: the amounts must be finite numbers");
+    }
+    if (shrink >= 1) {
+        return OpStatus::refused("cannot extrude: shrink must be below 1 (1 is a point)");
+    }
+    if (height != 0) {
+        std::vector<Vec3> corners;
+        Vec3 centre{0, 0, 0};
+        for (const Vertex v : mesh.vertices(f)) {
+            corners.push_back(mesh.position(v));
+        }
+        for (const Vec3& p : corners) {
+            centre += p / static_cast<double>(corners.size());
+        }
+        if (norm(newell_normal(corners, centre)) == 0) {
+            return OpStatus::refused("cannot extrude: the face has no area, so no normal");
+        }
+    }
+    return OpStatus::ok();
+}
+
+OpStatus is_inset_ok(const Mesh& mesh, Face f, double shrink) {
+    MESHEDIT_ASSERT(mesh.is_valid(f));
+    if (mesh.is_deleted(f)) {
+        return OpStatus::refused("cannot inset: the face is deleted");
+    }
+    if (!std::isfinite(shrink)) {
+        return OpStatus::refused("cannot inset: the amount must be a finite number");
+    }
+    if (shrink >= 1) {
+        return OpStatus::refused("cannot inset: shrink must be below 1 (1 is a point)");
+    }
+    return OpStatus::ok();
+}
+
+// f's sides h[i] run p[i] -> p[i+1]. New: inner corners q[i], rungs up[i] = p[i] -> q[i]
+// (twin down[i]), inner sides k[i] = q[i] -> q[i+1] (twin kt[i]) and quads Q[i]. f keeps its
+// handle and becomes the inner face k[0] -> k[1] -> ...; quad i is
+// h[i] -> up[i+1] -> kt[i] -> down[i].
+//
+//      p3 --------h2-------- p2          p3 ----------------- p2
+//       |                    ^            | \      Q2       / ^
+//       |                    |            |  q3 <--k2--- q2   |
+//       h3        f         h1    =>      Q3  |    f     ^   Q1
+//       |                    |            |   v          |    |
+//       v                    |            |  q0 ---k0--> q1   |
+//      p0 --------h0-------> p1           | /      Q0       \ |
+//                                        p0 -------h0------> p1
+//
+// q[i] = p[i] + shrink (c - p[i]) + height n, with c the average of the corners and n the
+// unit Newell normal of the face (area-weighted, exact for a planar polygon).
+OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink) {
+    if (const OpStatus ok = is_extrude_ok(mesh, f, height, shrink); !ok) {
+        return ok;
+    }
+    std::vector<Halfedge> h;
+    std::vector<Vec3> p;
+    for (const Halfedge side : mesh.halfedges(f)) {
+        h.push_back(side);
+        p.push_back(mesh.position(mesh.from_vertex(side)));
+    }
+    const auto n = static_cast<std::uint32_t>(h.size());
+    Vec3 centre{0, 0, 0};
+    for (const Vec3& x : p) {
+        centre += x / static_cast<double>(n);
+    }
+    const Vec3 lift = height == 0 ? Vec3{0, 0, 0} : height * newell_normal(p, centre);
+
+    const auto first_v = static_cast<std::uint32_t>(mesh.vertices_size());
+    const auto first_e = static_cast<std::uint32_t>(mesh.edges_size());
+    const auto first_f = static_cast<std::uint32_t>(mesh.faces_size());
+    mesh.new_elements(n, 2 * n, n);
+    const auto q = [&](std::uint32_t i) { return Vertex(first_v + i % n); };
+    const auto up = [&](std::uint32_t i) { return Mesh::halfedge(Edge(first_e + i % n), 0); };
+    const auto k = [&](std::uint32_t i) { return Mesh::halfedge(Edge(first_e + n + i % n), 0); };
+    const auto quad = [&](std::uint32_t i) { return Face(first_f + i); };
+
+    for (std::uint32_t i = 0; i < n; ++i) {
+        mesh.position(q(i)) = p[i] + shrink * (centre - p[i]) + lift;
+        mesh.set_vertex(up(i), q(i));
+        mesh.set_vertex(Mesh::twin(up(i)), mesh.from_vertex(h[i]));
+        mesh.set_vertex(k(i), q(i + 1));
+        mesh.set_vertex(Mesh::twin(k(i)), q(i));
+    }
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Face g = quad(i);
+        const Halfedge down = Mesh::twin(up(i));
+        const Halfedge kt = Mesh::twin(k(i));
+        mesh.set_next(h[i], up(i + 1));
+        mesh.set_next(up(i + 1), kt);
+        mesh.set_next(kt, down);
+        mesh.set_next(down, h[i]);
+        for (const Halfedge x : {h[i], up(i + 1), kt, down}) {
+            mesh.set_face(x, g);
+        }
+        mesh.set_halfedge(g, h[i]);
+        mesh.set_next(k(i), k(i + 1));
+        mesh.set_face(k(i), f);
+        mesh.set_halfedge(q(i), k(i));
+    }
+    mesh.set_halfedge(f, k(0));
+    return f;
+}
+
+OpResult<Face> inset_face(Mesh& mesh, Face f, double shrink) {
+    if (const OpStatus ok = is_inset_ok(mesh, f, shrink); !ok) {
+        return ok;
+    }
+    return extrude_face(mesh, f, 0.0, shrink);
+}
+
+}  // namespace meshedit
