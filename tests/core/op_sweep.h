@@ -303,6 +303,30 @@ inline const SweepOp kSweepOps[] = {
                                           m.valence(m.vertex(Edge(i), 1))) - 2;
          return Counts{n - 2, n - 1, 1};
      }},
+    {"collapse_face", Target::Face, -1, 0.5,
+     [](const Mesh& m, std::uint32_t i) { return is_collapse_face_ok(m, Face(i)); },
+     [](Mesh& m, std::uint32_t i, std::string& wrong) -> std::string_view {
+         Vertex smallest;
+         for (const Vertex v : m.vertices(Face(i))) {
+             smallest = smallest.is_valid() ? std::min(smallest, v) : v;
+         }
+         const auto r = collapse_face(m, Face(i));
+         if (r && *r != smallest) {
+             wrong = "collapse_face kept another corner than the smallest";
+         }
+         return r.reason();
+     },
+     [](const Mesh& m, std::uint32_t i) {
+         // f's corners become one, its sides go, and so does each triangle across a side
+         // with one more edge.
+         long n = 0, triangles = 0;
+         for (const Halfedge h : m.halfedges(Face(i))) {
+             ++n;
+             const Halfedge r = Mesh::twin(h);
+             triangles += !m.is_boundary(r) && m.is_triangle(m.face(r)) ? 1 : 0;
+         }
+         return Counts{-(n - 1), -n - triangles, -1 - triangles};
+     }},
     {"flip_orientation", Target::None, 0, 0.02,
      [](const Mesh&, std::uint32_t) { return OpStatus::ok(); },
      [](Mesh& m, std::uint32_t, std::string&) -> std::string_view {

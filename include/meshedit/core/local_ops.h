@@ -94,6 +94,17 @@ OpStatus is_collapse_ok(const Mesh& mesh, Edge e);
 /// it is on the boundary.
 OpResult<Vertex> collapse(Mesh& mesh, Edge e);
 
+/// \return ok if shrinking `f` to a point keeps the mesh a valid manifold: no other face
+/// would visit the new vertex twice or shrink below three corners (a triangle across a side
+/// disappears), no two edges would join the same vertices, and the new vertex would be on
+/// one hole at most with a face left around it.
+OpStatus is_collapse_face_ok(const Mesh& mesh, Face f);
+/// Shrinks `f` to one vertex at the average of its corners (Scotty3D's collapse_face): the
+/// corner with the smallest index survives there, the others, f's sides and f go; a polygon
+/// across a side loses a corner, a triangle across one disappears (its two other edges
+/// merge), a boundary gap across one closes over it. \return the surviving vertex.
+OpResult<Vertex> collapse_face(Mesh& mesh, Face f);
+
 /// \return ok if `f` is live and can be cut into triangles without adding an edge that
 /// already exists (a triangle is ok: triangulating it changes nothing).
 OpStatus is_triangulate_ok(const Mesh& mesh, Face f);
