@@ -89,6 +89,80 @@ void prefetch_edge_frame(const Mesh& mesh, Edge e, const EdgeFrameLinks& links) 
     }
 }
 
+// is_flip_ok() beside a polygon (e interior, a face of more than three sides beside it):
+// f0 trades corner c for d and f1 trades b for a. A corner already there would be visited
+// twice (this covers an endpoint of valence 2, whose two faces share its other edge too).
+// Kept out of line: flips between triangles, the hot path, stay as short as they were.
+[[gnu::noinline, gnu::cold]] OpStatus is_polygon_flip_ok(const Mesh& mesh, Halfedge h0,
+                                                         Halfedge t0) {
+    const Vertex a = mesh.to_vertex(mesh.next(h0));
+    const Vertex d = mesh.to_vertex(mesh.next(t0));
+    if (a == d) {
+        return OpStatus::refused("cannot flip: the new edge already exists");
+    }
+    for (const Halfedge h : mesh.loop(h0)) {
+        if (mesh.to_vertex(h) == d) {
+            return OpStatus::refused("cannot flip: a face would visit a vertex twice");
+        }
+    }
+    for (const Halfedge h : mesh.loop(t0)) {
+        if (mesh.to_vertex(h) == a) {
+            return OpStatus::refused("cannot flip: a face would visit a vertex twice");
+        }
+    }
+    if (mesh.find_halfedge(a, d).is_valid()) {
+        return OpStatus::refused("cannot flip: the new edge already exists");
+    }
+    return OpStatus::ok();
+}
+
+// The relinking of flip() (drawn above flip(), below): f0 = t1 -> h0 -> h3 ... h2 -> t1 and
+// f1 = h1 -> t0 -> t3 ... t2 -> h1, with h3 = next(h1) and t3 = next(t1); between triangles
+// h3 = h2 and t3 = t2 (f0 = h0 -> h2 -> t1, f1 = t0 -> t2 -> h1). Inlined in both callers so
+// that the triangle path compiles to exactly the triangle relinking.
+[[gnu::always_inline]] inline void relink_flip(Mesh& mesh, Edge e, Halfedge h1, Halfedge h2,
+                                               Halfedge h3, Halfedge t1, Halfedge t2, Halfedge t3) {
+    const Halfedge h0 = Mesh::halfedge(e, 0);
+    const Halfedge t0 = Mesh::twin(h0);
+    const Vertex a = mesh.to_vertex(h1);
+    const Vertex b = mesh.to_vertex(t0);
+    const Vertex c = mesh.to_vertex(h0);
+    const Vertex d = mesh.to_vertex(t1);
+    const Face f0 = mesh.face(h0);
+    const Face f1 = mesh.face(t0);
+
+    mesh.set_vertex(h0, a);
+    mesh.set_vertex(t0, d);
+    mesh.set_next(h0, h3);
+    mesh.set_next(h2, t1);
+    mesh.set_next(t1, h0);
+    mesh.set_next(t0, t3);
+    mesh.set_next(t2, h1);
+    mesh.set_next(h1, t0);
+    mesh.set_face(t1, f0);
+    mesh.set_face(h1, f1);
+
+    // Anchors. b and c lose e; as e is interior, a boundary anchor is never h0 or t0.
+    mesh.set_halfedge(f0, h0);
+    mesh.set_halfedge(f1, t0);
+    if (mesh.halfedge(b) == h0) {
+        mesh.set_halfedge(b, t1);
+    }
+    if (mesh.halfedge(c) == t0) {
+        mesh.set_halfedge(c, h1);
+    }
+}
+
+// flip() beside a polygon, after its predicate. Out of line, as is_polygon_flip_ok().
+[[gnu::noinline, gnu::cold]] Edge flip_polygons(Mesh& mesh, Edge e) {
+    const Halfedge h0 = Mesh::halfedge(e, 0);
+    const Halfedge t0 = Mesh::twin(h0);
+    const Halfedge h1 = mesh.next(h0);
+    const Halfedge t1 = mesh.next(t0);
+    relink_flip(mesh, e, h1, mesh.prev(h0), mesh.next(h1), t1, mesh.prev(t0), mesh.next(t1));
+    return e;
+}
+
 // Whether the loop of `h` is a triangle or a boundary gap: the sides split() divides as
 // drawn below.
 bool is_triangle_or_gap(const Mesh& mesh, Halfedge h) {
@@ -151,10 +225,10 @@ OpResult<Vertex> split_beside_polygon(Mesh& mesh, Edge e) {
     return m;
 }
 
-}  // namespace
-
-OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
+// is_flip_ok(), also saying whether both faces are triangles (flip() then reads nothing more).
+OpStatus flip_status(const Mesh& mesh, Edge e, bool& triangles) {
     MESHEDIT_ASSERT(mesh.is_valid(e));
+    triangles = false;
     if (edge_is_deleted(mesh, e)) {
         return OpStatus::refused("cannot flip: the edge is deleted");
     }
@@ -163,38 +237,27 @@ OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
     }
     const Halfedge h0 = Mesh::halfedge(e, 0);
     const Halfedge t0 = Mesh::halfedge(e, 1);
+    if (!is_triangle_loop(mesh, h0) || !is_triangle_loop(mesh, t0)) {
+        return is_polygon_flip_ok(mesh, h0, t0);
+    }
+    triangles = true;
     const Halfedge h1 = mesh.next(h0);  // c -> a
+    const Halfedge h2 = mesh.prev(h0);  // a -> b
     const Vertex a = mesh.to_vertex(h1);
     const Vertex d = mesh.to_vertex(mesh.next(t0));
-    if (is_triangle_loop(mesh, h0) && is_triangle_loop(mesh, t0)) {
-        // a == d happens on a two-triangle "pillow"; an existing a-d edge would be doubled
-        // (this also covers an endpoint of valence 3, whose third face already holds a-d).
-        // h2 = prev(h0) runs a -> b: with twin(h1) it brackets a's ring.
-        if (a == d || has_outgoing_to(mesh, mesh.prev(h0), Mesh::twin(h1), d)) {
-            return OpStatus::refused("cannot flip: the new edge already exists");
-        }
-        return OpStatus::ok();
-    }
-    // A polygon beside e: f0 trades corner c for d and f1 trades b for a. A corner already
-    // there would be visited twice (this covers an endpoint of valence 2, whose two faces
-    // share its other edge too).
-    if (a == d) {
-        return OpStatus::refused("cannot flip: the new edge already exists");
-    }
-    for (const Halfedge h : mesh.loop(h0)) {
-        if (mesh.to_vertex(h) == d) {
-            return OpStatus::refused("cannot flip: a face would visit a vertex twice");
-        }
-    }
-    for (const Halfedge h : mesh.loop(t0)) {
-        if (mesh.to_vertex(h) == a) {
-            return OpStatus::refused("cannot flip: a face would visit a vertex twice");
-        }
-    }
-    if (mesh.find_halfedge(a, d).is_valid()) {
+    // a == d happens on a two-triangle "pillow"; an existing a-d edge would be doubled (this
+    // also covers an endpoint of valence 3, whose third face already holds a-d).
+    if (a == d || has_outgoing_to(mesh, h2, Mesh::twin(h1), d)) {
         return OpStatus::refused("cannot flip: the new edge already exists");
     }
     return OpStatus::ok();
+}
+
+}  // namespace
+
+OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
+    bool triangles;
+    return flip_status(mesh, e, triangles);
 }
 
 // Before: e = b-c between f0 = (a,b,c) and f1 = (c,b,d). After: e = d-a between
@@ -225,46 +288,18 @@ OpStatus is_flip_ok(const Mesh& mesh, Edge e) {
 OpResult<Edge> flip(Mesh& mesh, Edge e) {
     MESHEDIT_ASSERT(mesh.is_valid(e));
     prefetch_edge_frame(mesh, e, kFlipLinks);
-    if (const OpStatus ok = is_flip_ok(mesh, e); !ok) {
+    bool triangles;
+    if (const OpStatus ok = flip_status(mesh, e, triangles); !ok) {
         return ok;
     }
-    // Collect.
+    if (!triangles) {
+        return flip_polygons(mesh, e);
+    }
     const Halfedge h0 = Mesh::halfedge(e, 0);
-    const Halfedge h1 = mesh.next(h0);
-    const Halfedge h2 = mesh.prev(h0);
-    const Halfedge h3 = mesh.next(h1);
     const Halfedge t0 = Mesh::twin(h0);
-    const Halfedge t1 = mesh.next(t0);
+    const Halfedge h2 = mesh.prev(h0);
     const Halfedge t2 = mesh.prev(t0);
-    const Halfedge t3 = mesh.next(t1);
-    const Vertex a = mesh.to_vertex(h1);
-    const Vertex b = mesh.to_vertex(t0);
-    const Vertex c = mesh.to_vertex(h0);
-    const Vertex d = mesh.to_vertex(t1);
-    const Face f0 = mesh.face(h0);
-    const Face f1 = mesh.face(t0);
-
-    // Relink: f0 = t1 -> h0 -> h3 ... h2 -> t1, f1 = h1 -> t0 -> t3 ... t2 -> h1.
-    mesh.set_vertex(h0, a);
-    mesh.set_vertex(t0, d);
-    mesh.set_next(h0, h3);
-    mesh.set_next(h2, t1);
-    mesh.set_next(t1, h0);
-    mesh.set_next(t0, t3);
-    mesh.set_next(t2, h1);
-    mesh.set_next(h1, t0);
-    mesh.set_face(t1, f0);
-    mesh.set_face(h1, f1);
-
-    // Anchors. b and c lose e; as e is interior, a boundary anchor is never h0 or t0.
-    mesh.set_halfedge(f0, h0);
-    mesh.set_halfedge(f1, t0);
-    if (mesh.halfedge(b) == h0) {
-        mesh.set_halfedge(b, t1);
-    }
-    if (mesh.halfedge(c) == t0) {
-        mesh.set_halfedge(c, h1);
-    }
+    relink_flip(mesh, e, mesh.next(h0), h2, h2, mesh.next(t0), t2, t2);
     return e;
 }
 
