@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "local_op_helpers.h"
 #include "meshedit/core/local_ops.h"
 
 namespace meshedit {
@@ -152,13 +153,8 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
     const bool triangle0 = in_triangle(mesh, h0);
     const bool triangle1 = in_triangle(mesh, t0);
 
-    // Everything that pointed at v1 now points at v0 (the walk reads only next/prev).
-    const Halfedge start = mesh.halfedge(v1);
-    Halfedge h = start;
-    do {
-        mesh.set_vertex(Mesh::twin(h), v0);
-        h = mesh.ccw_rotated(h);
-    } while (h != start);
+    // Everything that pointed at v1 now points at v0.
+    redirect_arrivals(mesh, v1, v0);
 
     // Relink. Each step reads its neighbours when it runs, so the steps compose even where
     // they touch the same loop (an ear, a valence-3 v1).
@@ -193,7 +189,7 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
     // polygon f0 (h1 itself may be gone, taken by a triangle f1 beside it); t1 after a gap.
     const Halfedge first = triangle0 ? Mesh::twin(h2) : f0.is_valid() ? mesh.next(p0) : t1;
     Halfedge anchor = first;
-    h = first;
+    Halfedge h = first;
     do {
         if (mesh.is_boundary(h)) {
             anchor = h;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "local_op_helpers.h"
 #include "meshedit/core/local_ops.h"
 
 namespace meshedit {
@@ -134,12 +135,7 @@ OpResult<Edge> weld(Mesh& mesh, Edge e1, Edge e2) {
             continue;
         }
         mesh.position(to) = midpoint(mesh.position(to), mesh.position(from));
-        const Halfedge start = mesh.halfedge(from);
-        Halfedge h = start;
-        do {
-            mesh.set_vertex(Mesh::twin(h), to);
-            h = mesh.ccw_rotated(h);
-        } while (h != start);
+        redirect_arrivals(mesh, from, to);
         mesh.set_halfedge(from, Halfedge());
         mesh.mark_deleted(from);
     }

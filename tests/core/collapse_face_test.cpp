@@ -145,15 +145,7 @@ TEST(CollapseFace, Refusals) {
                        "or no face left)");
     }
     {  // the middle of three quads touches the rim on two separate sides: two holes
-        Mesh mesh = test::mesh_from_faces({{0, 0, 0},
-                                           {1, 0, 0},
-                                           {2, 0, 0},
-                                           {3, 0, 0},
-                                           {0, 1, 0},
-                                           {1, 1, 0},
-                                           {2, 1, 0},
-                                           {3, 1, 0}},
-                                          {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}});
+        Mesh mesh = test::quad_strip(3);
         expect_refused(mesh, {1, 2, 6, 5},
                        "cannot collapse face: the new vertex would not be manifold (two holes, "
                        "or no face left)");

@@ -181,16 +181,7 @@ void expect_refused(Mesh& mesh, Edge e, std::string_view reason) {
 //      |        |            |.`      |     other side of 0-1 likewise
 //      0 ------ 1            0(mid)
 TEST(Collapse, QuadCubeEdge) {
-    Mesh mesh = test::mesh_from_faces(
-        {{-1, -1, -1},
-         {1, -1, -1},
-         {1, 1, -1},
-         {-1, 1, -1},
-         {-1, -1, 1},
-         {1, -1, 1},
-         {1, 1, 1},
-         {-1, 1, 1}},
-        {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
+    Mesh mesh = test::quad_cube();
     const Mesh input = mesh;
     const std::size_t edges = mesh.n_edges();
     expect_collapse(mesh, 0, 1);
@@ -207,9 +198,7 @@ TEST(Collapse, QuadCubeEdge) {
 //   |       |       |        | /     |       |      (1,2,5,4) -> (0,2,5,4)
 //   0 ----- 1 ----- 2        0 ------------- 2
 TEST(Collapse, BoundarySideOfAQuadStrip) {
-    Mesh mesh =
-        test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}},
-                              {{0, 1, 4, 3}, {1, 2, 5, 4}});
+    Mesh mesh = test::quad_strip(2);
     const Mesh input = mesh;
     expect_collapse(mesh, 0, 1);
     EXPECT_TRUE(test::same_faces_by_position(mesh, expected_collapse(input, 0, 1, {})));
@@ -246,21 +235,11 @@ TEST(Collapse, QuadAndTriangleAroundAValenceTwoVertex) {
 // A triangle beside a quad, inside a closed mesh: the triangle goes (its two other edges
 // merge), the quad loses a corner. The quad cube with its top face cut by the diagonal 4-6.
 TEST(Collapse, TriangleBesideQuad) {
-    Mesh mesh = test::mesh_from_faces({{-1, -1, -1},
-                                       {1, -1, -1},
-                                       {1, 1, -1},
-                                       {-1, 1, -1},
-                                       {-1, -1, 1},
-                                       {1, -1, 1},
-                                       {1, 1, 1},
-                                       {-1, 1, 1}},
-                                      {{0, 3, 2, 1},
-                                       {4, 5, 6},
-                                       {4, 6, 7},
-                                       {0, 1, 5, 4},
-                                       {1, 2, 6, 5},
-                                       {2, 3, 7, 6},
-                                       {3, 0, 4, 7}});
+    Indexed cut = test::indexed(test::quad_cube());
+    cut.remove({4, 5, 6, 7});
+    cut.add({4, 5, 6});
+    cut.add({4, 6, 7});
+    Mesh mesh = cut.build();
     const Mesh input = mesh;
     expect_collapse(mesh, 4, 5);  // (4,5,6) goes; (0,1,5,4) -> (0,1,4)
     EXPECT_TRUE(test::same_faces_by_position(mesh, expected_collapse(input, 4, 5, {{4, 5, 6}})));

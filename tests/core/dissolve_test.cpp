@@ -27,15 +27,6 @@ namespace {
 
 using test::Indexed;
 
-template <class Op>
-void expect_refused(Mesh& mesh, Op op, std::string_view reason) {
-    const Mesh before = mesh;
-    const auto r = op(mesh);
-    EXPECT_FALSE(r);
-    EXPECT_EQ(r.reason(), reason);
-    EXPECT_TRUE(test::identical(mesh, before));
-}
-
 // Garbage-collects (so that positions and faces compare with a built mesh) and checks.
 void collect_and_validate(Mesh& mesh) {
     ASSERT_VALID(mesh);
@@ -101,9 +92,7 @@ TEST(MakeBoundary, EarLosesItsCorner) {
 //   |     |     |     |   =>   |     |     |     |
 //   0 --- 1 --- 2 --- 3        0 --- 1     2 --- 3
 TEST(MakeBoundary, QuadStripFallsApart) {
-    Mesh mesh = test::mesh_from_faces(
-        {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {3, 1, 0}},
-        {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}});
+    Mesh mesh = test::quad_strip(3);
     Indexed expected = test::indexed(mesh);
     expected.remove({1, 2, 6, 5});
     ASSERT_TRUE(make_boundary(mesh, Face(1)));
@@ -131,7 +120,7 @@ TEST(MakeBoundary, RefusesACornerOnTwoHoles) {
     Mesh mesh = shapes::grid(3, 3);
     ASSERT_TRUE(make_boundary(mesh, test::face_with(mesh, {10, 11, 15})));
     const Face f = test::face_with(mesh, {5, 6, 10});
-    expect_refused(
+    test::expect_refused_by(
         mesh, [f](Mesh& m) { return make_boundary(m, f); },
         "cannot make boundary: a corner would touch two holes");
 }
@@ -140,7 +129,7 @@ TEST(MakeBoundary, RefusesADeletedFace) {
     Mesh mesh = shapes::grid(3, 3);
     const Face f = test::face_with(mesh, {5, 6, 10});
     ASSERT_TRUE(make_boundary(mesh, f));
-    expect_refused(
+    test::expect_refused_by(
         mesh, [f](Mesh& m) { return make_boundary(m, f); },
         "cannot make boundary: the face is deleted");
 }
@@ -177,7 +166,7 @@ TEST(FillHole, RimOfADisk) {
 TEST(FillHole, Refusals) {
     Mesh mesh = shapes::grid(3, 3);
     const Halfedge inside = mesh.find_halfedge(Vertex(5), Vertex(6));
-    expect_refused(
+    test::expect_refused_by(
         mesh, [inside](Mesh& m) { return fill_hole(m, inside); },
         "cannot fill: not a boundary edge");
 }
@@ -234,7 +223,7 @@ TEST(DissolveEdge, RefusesFacesThatShareAnotherCorner) {
     Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {0.5, 0.5, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 0}},
                                       {{0, 1, 2, 3}, {2, 1, 0, 4}});
     const Edge e = mesh.find_edge(Vertex(0), Vertex(1));
-    expect_refused(
+    test::expect_refused_by(
         mesh, [e](Mesh& m) { return dissolve_edge(m, e); },
         "cannot dissolve: the merged face would visit a vertex twice");
 }
@@ -282,9 +271,7 @@ TEST(DissolveVertex, BoundaryCornerKeepsTheHole) {
 //   |       |       |   =>   |               |     (0,2,5,4,3)
 //   0 ----- 1 ----- 2        0 ------------- 2
 TEST(DissolveVertex, RimVertexBetweenTwoQuads) {
-    Mesh mesh =
-        test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}},
-                              {{0, 1, 4, 3}, {1, 2, 5, 4}});
+    Mesh mesh = test::quad_strip(2);
     Indexed expected = test::indexed(mesh);
     expected.faces = {{0, 2, 5, 4, 3}};
     expected.erase_vertex(1);
@@ -309,7 +296,7 @@ TEST(DissolveVertex, ValenceTwoVertexBetweenTwoFaces) {
 TEST(DissolveVertex, Refusals) {
     {  // a corner of a lone triangle: two corners would be left
         Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
-        expect_refused(
+        test::expect_refused_by(
             mesh, [](Mesh& m) { return dissolve_vertex(m, Vertex(0)); },
             "cannot dissolve: the merged face would have fewer than 3 corners");
     }
@@ -319,7 +306,7 @@ TEST(DissolveVertex, Refusals) {
             {{0, 0, 0}, {1, 0, 0}, {-0.5, 0.9, 0}, {-0.5, -0.9, 0}, {2, 0, 0}, {-1, 0, 0}},
             {{0, 1, 4, 2}, {0, 2, 5, 3}, {0, 3, 4, 1}});
         ASSERT_VALID(mesh);
-        expect_refused(
+        test::expect_refused_by(
             mesh, [](Mesh& m) { return dissolve_vertex(m, Vertex(0)); },
             "cannot dissolve: the merged face would visit a vertex twice");
     }
@@ -327,7 +314,7 @@ TEST(DissolveVertex, Refusals) {
         Mesh mesh = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
                                           {{0, 1, 2}, {0, 2, 3}, {1, 3, 2}});
         ASSERT_VALID(mesh);
-        expect_refused(
+        test::expect_refused_by(
             mesh, [](Mesh& m) { return dissolve_vertex(m, Vertex(0)); },
             "cannot dissolve: the new edge already exists");
     }
@@ -335,7 +322,7 @@ TEST(DissolveVertex, Refusals) {
         Mesh mesh =
             test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 5}}, {{0, 1, 2}});
         ASSERT_TRUE(mesh.is_isolated(Vertex(3)));
-        expect_refused(
+        test::expect_refused_by(
             mesh, [](Mesh& m) { return dissolve_vertex(m, Vertex(3)); },
             "cannot dissolve: the vertex has no edges");
     }

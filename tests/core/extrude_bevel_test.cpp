@@ -15,31 +15,8 @@
 namespace meshedit {
 namespace {
 
-template <class Op>
-void expect_refused(Mesh& mesh, Op op, std::string_view reason) {
-    const Mesh before = mesh;
-    const auto r = op(mesh);
-    EXPECT_FALSE(r);
-    EXPECT_EQ(r.reason(), reason);
-    EXPECT_TRUE(test::identical(mesh, before));
-}
-
 Mesh unit_square() {
     return test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}});
-}
-
-// The cube [-1,1]³ as six quads.
-Mesh quad_cube() {
-    return test::mesh_from_faces(
-        {{-1, -1, -1},
-         {1, -1, -1},
-         {1, 1, -1},
-         {-1, 1, -1},
-         {-1, -1, 1},
-         {1, -1, 1},
-         {1, 1, 1},
-         {-1, 1, 1}},
-        {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
 }
 
 // ----------------------------------------------------------------- inset and extrude
@@ -73,7 +50,7 @@ TEST(Inset, SquareByHalf) {
 
 // The top of the cube extruded by 1 along its normal (+z): a closed mesh with a box on top.
 TEST(Extrude, CubeTopByOne) {
-    Mesh mesh = quad_cube();
+    Mesh mesh = test::quad_cube();
     const Face top = test::face_with(mesh, {4, 5, 6, 7});
     const OpResult<Face> r = extrude_face(mesh, top, 1.0, 0.0);
     ASSERT_TRUE(r) << r.reason();
@@ -82,7 +59,7 @@ TEST(Extrude, CubeTopByOne) {
     EXPECT_EQ(mesh.n_edges(), 20u);
     EXPECT_EQ(mesh.n_faces(), 10u);
     EXPECT_EQ(test::euler(mesh), 2);
-    test::Indexed expected = test::indexed(quad_cube());
+    test::Indexed expected = test::indexed(test::quad_cube());
     for (std::uint32_t i = 4; i < 8; ++i) {
         Vec3 p = expected.positions[i];
         p.z = 2;
@@ -112,17 +89,17 @@ TEST(Extrude, TriangleOnTheBoundaryShrinks) {
 TEST(Extrude, Refusals) {
     Mesh mesh = unit_square();
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    expect_refused(
+    test::expect_refused_by(
         mesh, [](Mesh& m) { return extrude_face(m, Face(0), 1.0, 1.0); },
         "cannot extrude: shrink must be below 1 (1 is a point)");
-    expect_refused(
+    test::expect_refused_by(
         mesh, [nan](Mesh& m) { return extrude_face(m, Face(0), nan, 0.0); },
         "cannot extrude: the amounts must be finite numbers");
-    expect_refused(
+    test::expect_refused_by(
         mesh, [](Mesh& m) { return inset_face(m, Face(0), 2.0); },
         "cannot inset: shrink must be below 1 (1 is a point)");
     Mesh flat = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 1, 2}});
-    expect_refused(
+    test::expect_refused_by(
         flat, [](Mesh& m) { return extrude_face(m, Face(0), 1.0, 0.0); },
         "cannot extrude: the face has no area, so no normal");
     ASSERT_TRUE(inset_face(flat, Face(0), 0.0)) << "no height, no normal needed";
@@ -133,7 +110,7 @@ TEST(Extrude, Refusals) {
 // Cube corner 0 at t = 1/4: a triangle cuts the corner off; its three quads become
 // pentagons.
 TEST(BevelVertex, CubeCorner) {
-    Mesh mesh = quad_cube();
+    Mesh mesh = test::quad_cube();
     const OpResult<Face> r = bevel_vertex(mesh, Vertex(0), 0.25);
     ASSERT_TRUE(r) << r.reason();
     ASSERT_VALID(mesh);
@@ -143,7 +120,7 @@ TEST(BevelVertex, CubeCorner) {
     EXPECT_EQ(mesh.n_faces(), 7u);
     // Corners a quarter of the way from (-1,-1,-1) to 1, 3 and 4.
     const Vec3 on1{-0.5, -1, -1}, on3{-1, -0.5, -1}, on4{-1, -1, -0.5};
-    test::Indexed expected = test::indexed(quad_cube());
+    test::Indexed expected = test::indexed(test::quad_cube());
     expected.positions[0] = on1;
     const std::uint32_t c3 = expected.add_vertex(on3);
     const std::uint32_t c4 = expected.add_vertex(on4);
@@ -198,7 +175,7 @@ TEST(BevelEdge, SquareDiagonal) {
 // A cube edge: its two ends have three edges each, so the new face has four corners; the
 // two quads beside the edge stay quads, the two at its ends become pentagons.
 TEST(BevelEdge, CubeEdgeCounts) {
-    Mesh mesh = quad_cube();
+    Mesh mesh = test::quad_cube();
     const OpResult<Face> r = bevel_edge(mesh, mesh.find_edge(Vertex(0), Vertex(1)), 0.1);
     ASSERT_TRUE(r) << r.reason();
     ASSERT_VALID(mesh);
@@ -211,15 +188,15 @@ TEST(BevelEdge, CubeEdgeCounts) {
 
 TEST(Bevel, Refusals) {
     Mesh square = unit_square();
-    expect_refused(
+    test::expect_refused_by(
         square, [](Mesh& m) { return bevel_vertex(m, Vertex(0), 0.1); },
         "cannot bevel: the new face would have fewer than 3 corners");
-    expect_refused(
+    test::expect_refused_by(
         square, [](Mesh& m) { return bevel_edge(m, m.find_edge(Vertex(0), Vertex(1)), 0.1); },
         "cannot bevel: the new face would have fewer than 3 corners");
-    Mesh cube = quad_cube();
+    Mesh cube = test::quad_cube();
     for (const double t : {-0.1, 1.0, std::numeric_limits<double>::infinity()}) {
-        expect_refused(
+        test::expect_refused_by(
             cube, [t](Mesh& m) { return bevel_vertex(m, Vertex(0), t); },
             "cannot bevel: the amount must be at least 0 and below 1");
     }

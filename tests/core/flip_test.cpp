@@ -179,9 +179,7 @@ TEST(Flip, QuadBesideTriangle) {
 //   |       |       |        |         ` .   |     (1,2,5,4) -> (2,5,4,3)
 //   0 ----- 1 ----- 2        0 ----- 1 ----- 2
 TEST(Flip, TwoQuads) {
-    Mesh mesh =
-        test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}},
-                              {{0, 1, 4, 3}, {1, 2, 5, 4}});
+    Mesh mesh = test::quad_strip(2);
     Indexed expected = test::indexed(mesh);
     expected.remove({0, 1, 4, 3});
     expected.remove({1, 2, 5, 4});

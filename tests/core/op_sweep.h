@@ -54,6 +54,17 @@ struct SweepOp {
     Counts (*delta)(const Mesh&, std::uint32_t i);
 };
 
+// How many of the two sides of `e` are triangles (not polygons, not boundary gaps): those
+// split() divides and collapse() removes.
+inline long triangles_beside(const Mesh& m, Edge e) {
+    long triangles = 0;
+    for (unsigned k = 0; k < 2; ++k) {
+        const Halfedge h = Mesh::halfedge(e, k);
+        triangles += !m.is_boundary(h) && m.is_triangle(m.face(h)) ? 1 : 0;
+    }
+    return triangles;
+}
+
 inline Counts no_change(const Mesh&, std::uint32_t) {
     return {0, 0, 0};
 }
@@ -137,11 +148,7 @@ inline const SweepOp kSweepOps[] = {
      },
      [](const Mesh& m, std::uint32_t i) {
          // One new edge along e, and one edge and one face per triangle beside it.
-         long triangles = 0;
-         for (unsigned k = 0; k < 2; ++k) {
-             const Halfedge h = Mesh::halfedge(Edge(i), k);
-             triangles += !m.is_boundary(h) && m.is_triangle(m.face(h)) ? 1 : 0;
-         }
+         const long triangles = triangles_beside(m, Edge(i));
          return Counts{1, 1 + triangles, triangles};
      }},
     {"collapse", Target::Edge, -1, 3,
@@ -154,11 +161,7 @@ inline const SweepOp kSweepOps[] = {
      },
      [](const Mesh& m, std::uint32_t i) {
          // The edge, and per triangle beside it the triangle and one of its other edges.
-         long triangles = 0;
-         for (unsigned k = 0; k < 2; ++k) {
-             const Halfedge h = Mesh::halfedge(Edge(i), k);
-             triangles += !m.is_boundary(h) && m.is_triangle(m.face(h)) ? 1 : 0;
-         }
+         const long triangles = triangles_beside(m, Edge(i));
          return Counts{-1, -1 - triangles, -triangles};
      }},
     {"bisect", Target::Edge, 1, 1,

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -122,6 +123,17 @@ inline std::pair<std::uint32_t, std::uint32_t> endpoints(const Mesh& mesh, Edge 
     const std::uint32_t u = mesh.vertex(e, 0).idx();
     const std::uint32_t v = mesh.vertex(e, 1).idx();
     return {std::min(u, v), std::max(u, v)};
+}
+
+/// Runs `op(mesh)`, which must be refused with `reason`, and checks that the mesh is bit for
+/// bit what it was.
+template <class Op>
+void expect_refused_by(Mesh& mesh, Op op, std::string_view reason) {
+    const Mesh before = mesh;
+    const auto r = op(mesh);
+    EXPECT_FALSE(r);
+    EXPECT_EQ(r.reason(), reason);
+    EXPECT_TRUE(identical(mesh, before));
 }
 
 /// The live face whose corners are `corners` in this cyclic order; the test fails if none.

@@ -89,9 +89,7 @@ TEST(Weld, ZipsASlitFanShut) {
 // A strip of three quads rolled up: its two end sides 0-4 and 3-7 meet in a tube with two
 // boundary loops (3 merges into 0, 7 into 4).
 TEST(Weld, QuadStripIntoATube) {
-    Mesh mesh = test::mesh_from_faces(
-        {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {3, 1, 0}},
-        {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}});
+    Mesh mesh = test::quad_strip(3);
     ASSERT_EQ(test::boundary_loops(mesh), 1u);
     const OpResult<Edge> r = weld(mesh, edge(mesh, 0, 4), edge(mesh, 3, 7));
     ASSERT_TRUE(r) << r.reason();
@@ -124,22 +122,12 @@ TEST(Weld, Refusals) {
                        "cannot weld: an edge would join a vertex to itself");
     }
     {  // two quads rolled on themselves: 0-1 and 2-1 would both become 0-1
-        Mesh mesh = test::mesh_from_faces(
-            {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}},
-            {{0, 1, 4, 3}, {1, 2, 5, 4}});
+        Mesh mesh = test::quad_strip(2);
         expect_refused(mesh, edge(mesh, 0, 3), edge(mesh, 2, 5),
                        "cannot weld: two edges would join the same vertices");
     }
     {  // three quads: welding 0-1 to 5-6 merges 1 with 6 and 0 with 5, and 1-5 doubles 0-1
-        Mesh mesh = test::mesh_from_faces({{0, 0, 0},
-                                           {1, 0, 0},
-                                           {2, 0, 0},
-                                           {3, 0, 0},
-                                           {0, 1, 0},
-                                           {1, 1, 0},
-                                           {2, 1, 0},
-                                           {3, 1, 0}},
-                                          {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}});
+        Mesh mesh = test::quad_strip(3);
         expect_refused(mesh, edge(mesh, 0, 1), edge(mesh, 5, 6),
                        "cannot weld: two edges would join the same vertices");
     }

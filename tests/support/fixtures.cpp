@@ -27,6 +27,34 @@ Mesh two_triangles() {
     return mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
 }
 
+Mesh quad_cube() {
+    return mesh_from_faces(
+        {{-1, -1, -1},
+         {1, -1, -1},
+         {1, 1, -1},
+         {-1, 1, -1},
+         {-1, -1, 1},
+         {1, -1, 1},
+         {1, 1, 1},
+         {-1, 1, 1}},
+        {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
+}
+
+Mesh quad_strip(int n) {
+    std::vector<Vec3> positions;
+    for (int row = 0; row < 2; ++row) {
+        for (int i = 0; i <= n; ++i) {
+            positions.push_back({static_cast<double>(i), static_cast<double>(row), 0.0});
+        }
+    }
+    std::vector<std::vector<std::uint32_t>> faces;
+    const auto top = static_cast<std::uint32_t>(n + 1);
+    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
+        faces.push_back({i, i + 1, top + i + 1, top + i});
+    }
+    return mesh_from_faces(positions, faces);
+}
+
 Mesh one_ring(int n) {
     std::vector<Vec3> positions{{0, 0, 0}};
     std::vector<std::vector<std::uint32_t>> faces;

@@ -29,6 +29,15 @@ PolygonSoup soup_from_faces(const std::vector<Vec3>& positions,
 ///     0 ----- 1      faces (0,1,2) and (0,2,3)
 Mesh two_triangles();
 
+/// The cube [-1,1]³ as six quads; vertex (x, y, z) corners numbered 0-3 at z = -1 and 4-7
+/// at z = 1, counter-clockwise seen from +z: faces (0,3,2,1), (4,5,6,7), (0,1,5,4),
+/// (1,2,6,5), (2,3,7,6), (3,0,4,7).
+Mesh quad_cube();
+
+/// `n` unit quads in a row in the z = 0 plane: vertices 0..n at y = 0, n+1..2n+1 at y = 1,
+/// faces (i, i+1, n+2+i, n+1+i).
+Mesh quad_strip(int n);
+
 /// Vertex 0 at the origin surrounded by `n` triangles (a closed one-ring fan whose rim is
 /// the boundary): n + 1 vertices.
 Mesh one_ring(int n);
