@@ -82,8 +82,9 @@ int run(const Options& options) {
         scene.show_curve = options.curve;
     } else {
         lap("load");
+        ElementRef result;
         if (!options.ops.empty()) {
-            ops::apply_steps(mesh, ops::parse(options.ops));
+            result = ops::apply_steps(mesh, ops::parse(options.ops));
             lap("ops");
         }
         if (options.features.value_or(!is_surface)) {
@@ -92,7 +93,12 @@ int run(const Options& options) {
         scene.mesh = &mesh;
         scene.patches = patches;
         scene.show_nets = options.net && is_surface;
-        if (!options.select.empty()) {
+        if (options.select == "result") {
+            if (result.is_none()) {
+                throw UsageError("--select result: the last op of --ops selects nothing");
+            }
+            scene.selected = result;
+        } else if (!options.select.empty()) {
             scene.selected = parse_selection(mesh, options.select);
         }
     }

@@ -141,8 +141,9 @@ int parse_options(int argc, char** argv, Options& o) {
         ->type_name("y|z|file")
         ->check(CLI::IsMember({"y", "z", "file"}));
     app.add_option("--select", o.select,
-                   "highlight a vertex, the edge A-B, the halfedge A->B, a face")
-        ->option_text("v:I|e:A-B|h:A-B|f:I");
+                   "highlight a vertex, the edge A-B, the halfedge A->B, a face, or what the "
+                   "last step of --ops made (result)")
+        ->option_text("v:I|e:A-B|h:A-B|f:I|result");
     app.add_flag_callback(
         "--features", [&o] { o.features = true; },
         "boundary (red) and crease (green) edges: on by default for mesh "

@@ -1,12 +1,15 @@
 // Reading, naming and running steps of the edit language; the verbs are in verbs.cpp.
 // The grammar (docs/cli.md):
-//   list := step (',' step)*
-//   step := VERB                      (Shape::None, Shape::Levels)
-//         | VERB ':' INDEX '-' INDEX  (Shape::Edge)
-//         | VERB ':' COUNT            (Shape::Levels, COUNT from 1 to 12)
+//   list    := step (',' step)*
+//   step    := VERB (':' target (':' amounts)?)?
+//   target  := 'v' INDEX | 'f' INDEX | INDEX '-' INDEX ('+' INDEX '-' INDEX)? | COUNT
+//   amounts := NUMBER (',' NUMBER)*
+// A list item that starts like a number ("0.9", "-1") is the next amount of the step before
+// it, so `extrude:f7:0.2,0.9,flip:1-2` is two steps.
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 #include "meshedit/ops/ops.h"
 
@@ -25,11 +28,35 @@ std::string_view trim(std::string_view s) {
 
 // Strict unsigned parse: digits only, the whole string, no overflow.
 bool parse_index(std::string_view s, std::uint32_t& out) {
+    if (s.empty() || s.front() < '0' || s.front() > '9') {
+        return false;
+    }
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc() && end == s.data() + s.size();
+}
+
+// "A-B" into its two ends.
+bool parse_edge(std::string_view s, std::uint32_t& a, std::uint32_t& b) {
+    const auto dash = s.find('-');
+    return dash != std::string_view::npos && parse_index(s.substr(0, dash), a) &&
+           parse_index(s.substr(dash + 1), b);
+}
+
+// A whole-string number; non-finite values parse, and the operations refuse them by name.
+bool parse_amount(std::string_view s, double& out) {
+    if (!s.empty() && s.front() == '+') {
+        s.remove_prefix(1);
+    }
     if (s.empty()) {
         return false;
     }
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
     return ec == std::errc() && end == s.data() + s.size();
+}
+
+bool starts_like_number(std::string_view s) {
+    return !s.empty() && (std::isdigit(static_cast<unsigned char>(s.front())) != 0 ||
+                          s.front() == '-' || s.front() == '+' || s.front() == '.');
 }
 
 // 12 levels multiply the face count by 4^12 ≈ 1.7e7: more is never intended.
@@ -40,12 +67,152 @@ std::string expected_verbs() {
     const auto all = verbs();
     for (std::size_t i = 0; i < all.size(); ++i) {
         out += i == 0 ? "" : (i + 1 == all.size() ? " or " : ", ");
-        out += all[i].syntax;
+        out += all[i].name;
     }
     return out;
 }
 
+// What the verb's argument may be, in words: "vI (a vertex index) or A-B (an edge by its
+// two vertex indices)".
+std::string argument_words(const Verb& verb) {
+    std::vector<std::string> parts;
+    if ((verb.takes & kVertexArg) != 0) {
+        parts.emplace_back("vI (a vertex index)");
+    }
+    if ((verb.takes & kEdgeArg) != 0) {
+        parts.emplace_back("A-B (an edge by its two vertex indices)");
+    }
+    if ((verb.takes & kFaceArg) != 0) {
+        parts.emplace_back("fI (a face index)");
+    }
+    if ((verb.takes & kEdgePair) != 0) {
+        parts.emplace_back("A-B+C-D (two edges by their vertex indices)");
+    }
+    if ((verb.takes & kLevels) != 0) {
+        parts.emplace_back("K from 1 to " + std::to_string(kMaxLevels));
+    }
+    std::string out;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        out += i == 0 ? "" : (i + 1 == parts.size() ? " or " : ", ");
+        out += parts[i];
+    }
+    return out;
+}
+
+[[noreturn]] void bad(const std::string& text, const std::string& why) {
+    throw SyntaxError("bad op '" + text + "': " + why);
+}
+
+// The target part of a step ("v12", "3-4", "0-1+5-6", "2").
+void parse_target(std::string_view arg, Step& step) {
+    const Verb& verb = *step.verb;
+    const std::string expected =
+        "expected " + std::string(verb.syntax) + " with " + argument_words(verb);
+    if (!arg.empty() && (arg.front() == 'v' || arg.front() == 'f')) {
+        step.target = arg.front() == 'v' ? Target::Vertex : Target::Face;
+        if (!parse_index(arg.substr(1), step.a)) {
+            bad(step.text, expected);
+        }
+    } else if (const auto plus = arg.find('+'); plus != std::string_view::npos) {
+        step.target = Target::EdgePair;
+        if (!parse_edge(arg.substr(0, plus), step.a, step.b) ||
+            !parse_edge(arg.substr(plus + 1), step.c, step.d)) {
+            bad(step.text, expected);
+        }
+    } else if (arg.find('-') != std::string_view::npos) {
+        step.target = Target::Edge;
+        if (!parse_edge(arg, step.a, step.b)) {
+            bad(step.text, expected);
+        }
+    } else {
+        std::uint32_t k = 0;
+        if ((verb.takes & kLevels) == 0 || !parse_index(arg, k) || k < 1 || k > kMaxLevels) {
+            bad(step.text, expected);
+        }
+        step.levels = static_cast<int>(k);
+        return;
+    }
+    if (!verb.accepts(step.target)) {
+        bad(step.text, expected);
+    }
+    if ((step.target == Target::Edge || step.target == Target::EdgePair) && step.a == step.b) {
+        bad(step.text, "an edge needs two different vertices");
+    }
+    if (step.target == Target::EdgePair && step.c == step.d) {
+        bad(step.text, "an edge needs two different vertices");
+    }
+}
+
+void parse_amounts(std::string_view list, Step& step) {
+    const Verb& verb = *step.verb;
+    std::size_t count = 0;
+    std::size_t start = 0;
+    while (start <= list.size()) {
+        const std::size_t comma = std::min(list.find(',', start), list.size());
+        if (count == verb.max_amounts) {
+            bad(step.text, std::string(verb.name) + " takes at most " +
+                               std::to_string(verb.max_amounts) + " amounts (" +
+                               std::string(verb.syntax) + ")");
+        }
+        if (!parse_amount(trim(list.substr(start, comma - start)), step.amounts[count])) {
+            bad(step.text, "expected numbers after the element (" + std::string(verb.syntax) + ")");
+        }
+        ++count;
+        start = comma + 1;
+    }
+    if (count < verb.min_amounts) {
+        bad(step.text, "expected " + std::string(verb.syntax));
+    }
+}
+
+// Writes an amount so that it reads back as the same double.
+std::string amount_text(double x) {
+    char buffer[32];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return std::string(buffer, ec == std::errc() ? end : buffer);
+}
+
+[[noreturn]] void missing(const Step& step, const char* kind, std::uint32_t index, std::size_t have,
+                          const char* kinds) {
+    throw OpError(step.text + ": no " + kind + " " + std::to_string(index) + " (the mesh has " +
+                      std::to_string(have) + " " + kinds + ")",
+                  false);
+}
+
+Vertex live_vertex(const Mesh& mesh, const Step& step, std::uint32_t v) {
+    if (v >= mesh.vertices_size() || mesh.is_deleted(Vertex(v))) {
+        missing(step, "vertex", v, mesh.n_vertices(), "vertices");
+    }
+    return Vertex(v);
+}
+
+Edge edge_between(const Mesh& mesh, const Step& step, std::uint32_t a, std::uint32_t b) {
+    const Edge e = mesh.find_edge(live_vertex(mesh, step, a), live_vertex(mesh, step, b));
+    if (!e.is_valid()) {
+        throw OpError(step.text + ": no edge joins vertices " + std::to_string(a) + " and " +
+                          std::to_string(b),
+                      false);
+    }
+    return e;
+}
+
 }  // namespace
+
+bool Verb::accepts(Target target) const {
+    switch (target) {
+        case Target::None:
+            return (takes & (kWholeMesh | kLevels)) != 0;
+        case Target::Vertex:
+            return (takes & kVertexArg) != 0;
+        case Target::Edge:
+            return (takes & kEdgeArg) != 0;
+        case Target::Face:
+            return (takes & kFaceArg) != 0;
+        case Target::EdgePair:
+            return (takes & kEdgePair) != 0;
+    }
+    return false;
+}
 
 const Verb* find_verb(std::string_view name) {
     for (const Verb& verb : verbs()) {
@@ -60,51 +227,40 @@ Step parse_step(std::string_view item) {
     const std::string text(item);
     const auto colon = item.find(':');
     const std::string_view name = item.substr(0, colon);
-    const bool has_arg = colon != std::string_view::npos;
-    const std::string_view arg = has_arg ? item.substr(colon + 1) : std::string_view();
     const Verb* verb = find_verb(name);
     if (verb == nullptr) {
-        throw SyntaxError("unknown op '" + text + "' (expected " + expected_verbs() + ")");
+        throw SyntaxError("unknown op '" + text + "' (the verbs are " + expected_verbs() + ")");
     }
     Step step;
     step.verb = verb;
     step.text = text;
-    switch (verb->shape) {
-        case Shape::None:
-            if (has_arg) {
-                throw SyntaxError("bad op '" + text + "': " + std::string(name) +
-                                  " takes no argument");
-            }
-            break;
-        case Shape::Edge: {
-            const auto dash = arg.find('-');
-            if (!has_arg || dash == std::string_view::npos ||
-                !parse_index(arg.substr(0, dash), step.a) ||
-                !parse_index(arg.substr(dash + 1), step.b)) {
-                throw SyntaxError("bad op '" + text + "': expected " + std::string(name) +
-                                  ":A-B with two vertex indices");
-            }
-            if (step.a == step.b) {
-                throw SyntaxError("bad op '" + text + "': an edge needs two different vertices");
-            }
-            break;
+    step.amounts = verb->defaults;
+    if (colon == std::string_view::npos) {
+        if (!verb->accepts(Target::None)) {
+            bad(text, "expected " + std::string(verb->syntax) + " with " + argument_words(*verb));
         }
-        case Shape::Levels:
-            if (has_arg) {
-                std::uint32_t k = 0;
-                if (!parse_index(arg, k) || k < 1 || k > kMaxLevels) {
-                    throw SyntaxError("bad op '" + text + "': expected " + std::string(name) +
-                                      ":K with K from 1 to " + std::to_string(kMaxLevels));
-                }
-                step.levels = static_cast<int>(k);
+    } else if ((verb->takes & ~kWholeMesh) == 0) {
+        bad(text, std::string(name) + " takes no argument");
+    } else {
+        std::string_view arg = item.substr(colon + 1);
+        const auto second = arg.find(':');
+        if (second != std::string_view::npos) {
+            if (verb->max_amounts == 0) {
+                bad(text,
+                    std::string(name) + " takes no amounts (" + std::string(verb->syntax) + ")");
             }
-            break;
+            parse_amounts(arg.substr(second + 1), step);
+            arg = arg.substr(0, second);
+        } else if (verb->min_amounts > 0) {
+            bad(text, "expected " + std::string(verb->syntax));
+        }
+        parse_target(arg, step);
     }
     return step;
 }
 
 std::vector<Step> parse(std::string_view list) {
-    std::vector<Step> steps;
+    std::vector<std::string> items;
     std::size_t start = 0;
     while (start <= list.size()) {
         const std::size_t comma = std::min(list.find(',', start), list.size());
@@ -112,44 +268,102 @@ std::vector<Step> parse(std::string_view list) {
         if (item.empty()) {
             throw SyntaxError("empty op in --ops list '" + std::string(list) + "'");
         }
-        steps.push_back(parse_step(item));
+        if (starts_like_number(item) && !items.empty()) {
+            items.back() += ',';
+            items.back() += item;
+        } else {
+            items.emplace_back(item);
+        }
         start = comma + 1;
+    }
+    std::vector<Step> steps;
+    steps.reserve(items.size());
+    for (const std::string& item : items) {
+        steps.push_back(parse_step(item));
     }
     return steps;
 }
 
-Step make_step(std::string_view name, const Mesh& mesh, Edge e) {
+Step make_step(std::string_view name, const Mesh& mesh, const ElementRef& target,
+               std::span<const double> amounts, const ElementRef& second) {
     Step step;
     step.verb = find_verb(name);
     MESHEDIT_ASSERT(step.verb != nullptr);
-    step.text = std::string(name);
-    if (step.verb->shape == Shape::Edge) {
-        step.a = mesh.vertex(e, 0).idx();
-        step.b = mesh.vertex(e, 1).idx();
-        // Appended piecewise: `":" + string` trips a GCC 12 -Wrestrict false positive.
-        step.text += ':';
-        step.text += std::to_string(step.a);
-        step.text += '-';
-        step.text += std::to_string(step.b);
+    step.amounts = step.verb->defaults;
+    std::string text(name);
+    const auto edge_text = [&](Edge e, std::uint32_t& a, std::uint32_t& b) {
+        a = mesh.vertex(e, 0).idx();
+        b = mesh.vertex(e, 1).idx();
+        return std::to_string(a) + "-" + std::to_string(b);
+    };
+    // Appended piecewise: `":" + string` trips a GCC 12 -Wrestrict false positive.
+    switch (target.kind) {
+        case ElementRef::Kind::None:
+            step.target = Target::None;
+            break;
+        case ElementRef::Kind::Vertex:
+            step.target = Target::Vertex;
+            step.a = target.index;
+            text += ":v";
+            text += std::to_string(step.a);
+            break;
+        case ElementRef::Kind::Face:
+            step.target = Target::Face;
+            step.a = target.index;
+            text += ":f";
+            text += std::to_string(step.a);
+            break;
+        case ElementRef::Kind::Edge:
+        case ElementRef::Kind::Halfedge: {
+            const Edge e = target.kind == ElementRef::Kind::Edge
+                               ? Edge(target.index)
+                               : Mesh::edge(Halfedge(target.index));
+            step.target = Target::Edge;
+            text += ':';
+            text += edge_text(e, step.a, step.b);
+            if (second.kind == ElementRef::Kind::Edge) {
+                step.target = Target::EdgePair;
+                text += '+';
+                text += edge_text(Edge(second.index), step.c, step.d);
+            }
+            break;
+        }
     }
+    MESHEDIT_ASSERT(step.verb->accepts(step.target));
+    MESHEDIT_ASSERT(amounts.size() <= step.verb->max_amounts);
+    for (std::size_t i = 0; i < amounts.size(); ++i) {
+        step.amounts[i] = amounts[i];
+    }
+    // Every amount is written (defaults too) so the text says exactly what ran.
+    for (std::size_t i = 0; i < step.verb->max_amounts; ++i) {
+        text += i == 0 ? ':' : ',';
+        text += amount_text(step.amounts[i]);
+    }
+    step.text = std::move(text);
     return step;
 }
 
+Vertex named_vertex(const Mesh& mesh, const Step& step) {
+    MESHEDIT_ASSERT(step.target == Target::Vertex);
+    return live_vertex(mesh, step, step.a);
+}
+
 Edge named_edge(const Mesh& mesh, const Step& step) {
-    for (const std::uint32_t v : {step.a, step.b}) {
-        if (v >= mesh.vertices_size() || mesh.is_deleted(Vertex(v))) {
-            throw OpError(step.text + ": no vertex " + std::to_string(v) + " (the mesh has " +
-                              std::to_string(mesh.n_vertices()) + " vertices)",
-                          false);
-        }
+    MESHEDIT_ASSERT(step.target == Target::Edge || step.target == Target::EdgePair);
+    return edge_between(mesh, step, step.a, step.b);
+}
+
+Edge named_second_edge(const Mesh& mesh, const Step& step) {
+    MESHEDIT_ASSERT(step.target == Target::EdgePair);
+    return edge_between(mesh, step, step.c, step.d);
+}
+
+Face named_face(const Mesh& mesh, const Step& step) {
+    MESHEDIT_ASSERT(step.target == Target::Face);
+    if (step.a >= mesh.faces_size() || mesh.is_deleted(Face(step.a))) {
+        missing(step, "face", step.a, mesh.n_faces(), "faces");
     }
-    const Edge e = mesh.find_edge(Vertex(step.a), Vertex(step.b));
-    if (!e.is_valid()) {
-        throw OpError(step.text + ": no edge joins vertices " + std::to_string(step.a) + " and " +
-                          std::to_string(step.b),
-                      false);
-    }
-    return e;
+    return Face(step.a);
 }
 
 StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options) {
@@ -159,12 +373,12 @@ StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options) {
     return step.verb->run(mesh, step, options);
 }
 
-void apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOptions& options) {
+ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOptions& options) {
     // Every Loop level of the list must fit before any work is done (the local steps barely
     // change the size); each step is checked again when it runs.
     int levels = 0;
     for (const Step& step : steps) {
-        if (step.verb->shape == Shape::Levels && step.verb->name == "loop") {
+        if (step.verb->name == "loop") {
             levels += step.levels;
             if (const LoopPlan plan = plan_loop(mesh, levels); !plan.ok()) {
                 throw OpError(step.text + " refused: " + plan.refusal, true);
@@ -184,6 +398,7 @@ void apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOptions&
         total += cost[i];
     }
     double done = 0.0;
+    ElementRef last;
     for (std::size_t i = 0; i < steps.size(); ++i) {
         RunOptions run;
         run.weights = options.weights;
@@ -193,6 +408,7 @@ void apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOptions&
             };
         }
         const StepResult result = run_step(mesh, steps[i], run);
+        last = result.selected;
         done += cost[i];
         if (options.progress && total > 0.0) {
             options.progress(std::min(1.0, done / total));
@@ -203,6 +419,7 @@ void apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOptions&
             }
         }
     }
+    return last;
 }
 
 std::string syntax_list() {

@@ -3,6 +3,7 @@
 // the operations themselves, with their predicates and diagrams, are in src/core.
 
 #include <array>
+#include <charconv>
 #include <string>
 
 #include "meshedit/core/attributes.h"
@@ -17,6 +18,13 @@ std::string idx(std::uint32_t i) {
     return std::to_string(i);
 }
 
+// An amount as the language writes it (shortest form that reads back the same).
+std::string amount(double x) {
+    char buffer[32];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return std::string(buffer, ec == std::errc() ? end : buffer);
+}
+
 // The result of a local step: the element it documents and a sentence.
 StepResult local(ElementRef selected, std::string message, bool topology = true) {
     StepResult result;
@@ -26,10 +34,14 @@ StepResult local(ElementRef selected, std::string message, bool topology = true)
     return result;
 }
 
+std::string why(OpStatus status) {
+    return std::string(status.reason());
+}
+
 // ------------------------------------------------------------------ local operations
 
 std::string check_flip(const Mesh& mesh, const Step& step) {
-    return std::string(is_flip_ok(mesh, named_edge(mesh, step)).reason());
+    return why(is_flip_ok(mesh, named_edge(mesh, step)));
 }
 StepResult run_flip(Mesh& mesh, const Step& step, const RunOptions&) {
     const Edge e = named_edge(mesh, step);
@@ -39,7 +51,7 @@ StepResult run_flip(Mesh& mesh, const Step& step, const RunOptions&) {
 }
 
 std::string check_split(const Mesh& mesh, const Step& step) {
-    return std::string(is_split_ok(mesh, named_edge(mesh, step)).reason());
+    return why(is_split_ok(mesh, named_edge(mesh, step)));
 }
 StepResult run_split(Mesh& mesh, const Step& step, const RunOptions&) {
     const Edge e = named_edge(mesh, step);
@@ -48,14 +60,145 @@ StepResult run_split(Mesh& mesh, const Step& step, const RunOptions&) {
                  "split edge " + idx(e.idx()) + ": new vertex " + idx(m.idx()));
 }
 
+std::string check_bisect(const Mesh& mesh, const Step& step) {
+    return why(is_bisect_ok(mesh, named_edge(mesh, step)));
+}
+StepResult run_bisect(Mesh& mesh, const Step& step, const RunOptions&) {
+    const Edge e = named_edge(mesh, step);
+    const Vertex m = *bisect(mesh, e);
+    return local(ElementRef::vertex(m),
+                 "bisected edge " + idx(e.idx()) + ": new vertex " + idx(m.idx()));
+}
+
 std::string check_collapse(const Mesh& mesh, const Step& step) {
-    return std::string(is_collapse_ok(mesh, named_edge(mesh, step)).reason());
+    if (step.target == Target::Face) {
+        return why(is_collapse_face_ok(mesh, named_face(mesh, step)));
+    }
+    return why(is_collapse_ok(mesh, named_edge(mesh, step)));
 }
 StepResult run_collapse(Mesh& mesh, const Step& step, const RunOptions&) {
+    if (step.target == Target::Face) {
+        const Face f = named_face(mesh, step);
+        const Vertex v = *collapse_face(mesh, f);
+        return local(ElementRef::vertex(v),
+                     "collapsed face " + idx(f.idx()) + " into vertex " + idx(v.idx()));
+    }
     const Edge e = named_edge(mesh, step);
     const Vertex v = *collapse(mesh, e);
     return local(ElementRef::vertex(v),
                  "collapsed edge " + idx(e.idx()) + " into vertex " + idx(v.idx()));
+}
+
+std::string check_dissolve(const Mesh& mesh, const Step& step) {
+    if (step.target == Target::Vertex) {
+        return why(is_dissolve_vertex_ok(mesh, named_vertex(mesh, step)));
+    }
+    return why(is_dissolve_edge_ok(mesh, named_edge(mesh, step)));
+}
+StepResult run_dissolve(Mesh& mesh, const Step& step, const RunOptions&) {
+    if (step.target == Target::Vertex) {
+        const Vertex v = named_vertex(mesh, step);
+        const Face f = *dissolve_vertex(mesh, v);
+        return local(ElementRef::face(f), "dissolved vertex " + idx(v.idx()) + " into face " +
+                                              idx(f.idx()) + " (" +
+                                              std::to_string(mesh.valence(f)) + " corners)");
+    }
+    const Edge e = named_edge(mesh, step);
+    const Face f = *dissolve_edge(mesh, e);
+    if (!f.is_valid()) {
+        return local({}, "dissolved boundary edge " + idx(e.idx()) + ": its face joined the hole");
+    }
+    return local(ElementRef::face(f), "dissolved edge " + idx(e.idx()) + " into face " +
+                                          idx(f.idx()) + " (" + std::to_string(mesh.valence(f)) +
+                                          " corners)");
+}
+
+std::string check_make_boundary(const Mesh& mesh, const Step& step) {
+    return why(is_make_boundary_ok(mesh, named_face(mesh, step)));
+}
+StepResult run_make_boundary(Mesh& mesh, const Step& step, const RunOptions&) {
+    const Face f = named_face(mesh, step);
+    const Halfedge h = *make_boundary(mesh, f);
+    return local(h.is_valid() ? ElementRef::edge(Mesh::edge(h)) : ElementRef{},
+                 "face " + idx(f.idx()) + " is now a hole");
+}
+
+// The hole is named by one of its edges; its boundary halfedge is the one without a face.
+Halfedge hole_side(const Mesh& mesh, Edge e) {
+    const Halfedge h = mesh.halfedge(e, 0);
+    return mesh.is_boundary(h) ? h : mesh.halfedge(e, 1);
+}
+std::string check_fill(const Mesh& mesh, const Step& step) {
+    const Edge e = named_edge(mesh, step);
+    if (!mesh.is_boundary(e)) {
+        return "cannot fill: the edge is not on a hole (pick a boundary edge)";
+    }
+    return why(is_fill_hole_ok(mesh, hole_side(mesh, e)));
+}
+StepResult run_fill(Mesh& mesh, const Step& step, const RunOptions&) {
+    const Face f = *fill_hole(mesh, hole_side(mesh, named_edge(mesh, step)));
+    return local(ElementRef::face(f), "filled the hole with face " + idx(f.idx()) + " (" +
+                                          std::to_string(mesh.valence(f)) + " corners)");
+}
+
+std::string check_weld(const Mesh& mesh, const Step& step) {
+    return why(is_weld_ok(mesh, named_edge(mesh, step), named_second_edge(mesh, step)));
+}
+StepResult run_weld(Mesh& mesh, const Step& step, const RunOptions&) {
+    const Edge e1 = named_edge(mesh, step);
+    const Edge e2 = named_second_edge(mesh, step);
+    weld(mesh, e1, e2);
+    return local(ElementRef::edge(e1), "welded edge " + idx(e2.idx()) + " onto edge " +
+                                           idx(e1.idx()) + ": " +
+                                           describe(mesh, ElementRef::edge(e1)));
+}
+
+std::string check_poke(const Mesh& mesh, const Step& step) {
+    return why(is_poke_ok(mesh, named_face(mesh, step)));
+}
+StepResult run_poke(Mesh& mesh, const Step& step, const RunOptions&) {
+    const Face f = named_face(mesh, step);
+    const std::size_t n = mesh.valence(f);
+    const Vertex c = *poke(mesh, f);
+    return local(ElementRef::vertex(c), "poked face " + idx(f.idx()) + ": vertex " + idx(c.idx()) +
+                                            " in a fan of " + std::to_string(n) + " triangles");
+}
+
+std::string check_extrude(const Mesh& mesh, const Step& step) {
+    return why(is_extrude_ok(mesh, named_face(mesh, step), step.amounts[0], step.amounts[1]));
+}
+StepResult run_extrude(Mesh& mesh, const Step& step, const RunOptions&) {
+    const Face f = *extrude_face(mesh, named_face(mesh, step), step.amounts[0], step.amounts[1]);
+    return local(ElementRef::face(f), "extruded face " + idx(f.idx()) + " by " +
+                                          amount(step.amounts[0]) + ", shrink " +
+                                          amount(step.amounts[1]));
+}
+
+std::string check_inset(const Mesh& mesh, const Step& step) {
+    return why(is_inset_ok(mesh, named_face(mesh, step), step.amounts[0]));
+}
+StepResult run_inset(Mesh& mesh, const Step& step, const RunOptions&) {
+    const Face f = *inset_face(mesh, named_face(mesh, step), step.amounts[0]);
+    return local(ElementRef::face(f),
+                 "inset face " + idx(f.idx()) + ", shrink " + amount(step.amounts[0]));
+}
+
+std::string check_bevel(const Mesh& mesh, const Step& step) {
+    if (step.target == Target::Vertex) {
+        return why(is_bevel_vertex_ok(mesh, named_vertex(mesh, step), step.amounts[0]));
+    }
+    return why(is_bevel_edge_ok(mesh, named_edge(mesh, step), step.amounts[0]));
+}
+StepResult run_bevel(Mesh& mesh, const Step& step, const RunOptions&) {
+    const double t = step.amounts[0];
+    const bool vertex = step.target == Target::Vertex;
+    const std::string what =
+        vertex ? "vertex " + idx(step.a) : "edge " + idx(named_edge(mesh, step).idx());
+    const Face f = vertex ? *bevel_vertex(mesh, named_vertex(mesh, step), t)
+                          : *bevel_edge(mesh, named_edge(mesh, step), t);
+    return local(ElementRef::face(f), "bevelled " + what + " at " + amount(t) + ": face " +
+                                          idx(f.idx()) + " (" + std::to_string(mesh.valence(f)) +
+                                          " corners)");
 }
 
 // Boundary edges may be marked too: harmless, Loop treats them as sharp anyway, and the
@@ -76,72 +219,153 @@ StepResult run_crease(Mesh& mesh, const Step& step, const RunOptions&) {
 
 // ------------------------------------------------------------------ whole-mesh operations
 
+std::size_t non_triangles(const Mesh& mesh) {
+    std::size_t n = 0;
+    for (const Face f : mesh.faces()) {
+        n += mesh.valence(f) != 3 ? 1 : 0;
+    }
+    return n;
+}
+
+// Loop is defined on triangles; rather than cut polygons the user did not ask to cut, it
+// says so and names the step that does (the core's loop_subdivide() still triangulates).
 std::string check_loop(const Mesh& mesh, const Step& step) {
     if (mesh.n_faces() == 0) {
         return "cannot subdivide: the mesh has no faces";
+    }
+    if (const std::size_t n = non_triangles(mesh); n > 0) {
+        return "cannot subdivide: Loop needs triangles and " + std::to_string(n) + " of the " +
+               std::to_string(mesh.n_faces()) +
+               " faces are polygons (triangulate them first: the `triangulate` step, Ctrl+T "
+               "in the viewer)";
     }
     return plan_loop(mesh, step.levels).refusal;
 }
 StepResult run_loop(Mesh& mesh, const Step& step, const RunOptions& options) {
     StepResult result;
     result.renumbers = true;
-    std::size_t triangulated = 0;
     for (int level = 0; level < step.levels; ++level) {
         LoopOptions loop;
         loop.weights = options.weights;
         if (options.progress) {
             loop.progress = [&](double f) { options.progress((level + f) / step.levels); };
         }
-        triangulated += loop_subdivide(mesh, loop).triangulated_faces;
+        loop_subdivide(mesh, loop);
     }
     result.message = "Loop: " + std::to_string(mesh.n_faces()) + " faces";
-    if (triangulated > 0) {
-        result.message +=
-            " (triangulated " + std::to_string(triangulated) + " non-triangle faces first)";
-        result.notices.push_back("triangulated " + std::to_string(triangulated) +
-                                 " non-triangle faces before subdividing");
+    return result;
+}
+
+std::string check_triangulate(const Mesh& mesh, const Step& step) {
+    if (step.target == Target::Face) {
+        return why(is_triangulate_ok(mesh, named_face(mesh, step)));
+    }
+    return {};
+}
+StepResult run_triangulate(Mesh& mesh, const Step& step, const RunOptions&) {
+    if (step.target == Target::Face) {
+        const Face f = named_face(mesh, step);
+        const std::size_t n = mesh.valence(f);
+        triangulate(mesh, f);
+        return local(ElementRef::face(f), n == 3 ? "face " + idx(f.idx()) + " is a triangle already"
+                                                 : "cut face " + idx(f.idx()) + " into " +
+                                                       std::to_string(n - 2) + " triangles");
+    }
+    const std::size_t n = triangulate(mesh);
+    StepResult result;
+    const std::size_t left = non_triangles(mesh);
+    result.message = n == 0 && left == 0 ? "every face is a triangle already"
+                                         : "triangulated " + std::to_string(n) + " faces";
+    if (left > 0) {
+        // A polygon whose every fan would repeat an existing edge (rare: a face folded onto
+        // its neighbours) stays whole rather than make the mesh invalid.
+        result.notices.push_back(std::to_string(left) +
+                                 " polygons could not be cut without doubling an edge");
+        result.message += "; " + result.notices.back();
     }
     return result;
 }
 
-std::string check_triangulate(const Mesh&, const Step&) {
+std::string check_flip_orientation(const Mesh&, const Step&) {
     return {};
 }
-StepResult run_triangulate(Mesh& mesh, const Step&, const RunOptions&) {
-    const std::size_t n = triangulate(mesh);
+StepResult run_flip_orientation(Mesh& mesh, const Step&, const RunOptions&) {
+    flip_orientation(mesh);
     StepResult result;
-    result.message = n == 0 ? "every face is a triangle already"
-                            : "triangulated " + std::to_string(n) + " faces";
-    if (n > 0) {
-        result.notices.push_back("triangulated " + std::to_string(n) + " faces");
-    }
+    result.message = "reversed the orientation of all " + std::to_string(mesh.n_faces()) +
+                     " faces (normals now point the other way)";
     return result;
 }
+
+constexpr std::array<double, kMaxAmounts> kNoDefaults{};
 
 // clang-format off
 constexpr std::array kVerbs{
-    Verb{"flip", Shape::Edge, "flip:A-B",
+    Verb{"flip", kEdgeArg, 0, 0, kNoDefaults, "flip:A-B",
          "flips the interior edge A-B: it turns inside its two faces to join the corners "
          "after its ends (triangles stay triangles, polygons keep their sides)",
          "flip the selected edge", check_flip, run_flip},
-    Verb{"split", Shape::Edge, "split:A-B",
+    Verb{"split", kEdgeArg, 0, 0, kNoDefaults, "split:A-B",
          "splits A-B at its midpoint and divides the triangles beside it (a polygon only "
          "gains the vertex); the new vertex gets the next free index (`V` before the split)",
          "split the selected edge", check_split, run_split},
-    Verb{"collapse", Shape::Edge, "collapse:A-B",
-         "collapses A-B to its midpoint; the smaller index survives, the other is deleted "
-         "(indices are not renumbered until the file is written)",
-         "collapse the selected edge", check_collapse, run_collapse},
-    Verb{"crease", Shape::Edge, "crease:A-B",
+    Verb{"bisect", kEdgeArg, 0, 0, kNoDefaults, "bisect:A-B",
+         "inserts a vertex at the midpoint of A-B without dividing any face (each face beside "
+         "it gains a corner); the new vertex gets index `V`",
+         "bisect the selected edge (a midpoint vertex, no new edges across faces)",
+         check_bisect, run_bisect},
+    Verb{"collapse", kEdgeArg | kFaceArg, 0, 0, kNoDefaults, "collapse:A-B, collapse:fI",
+         "collapses A-B to its midpoint (the smaller index survives, the other is deleted), "
+         "or face I to the average of its corners (its smallest-index corner survives); "
+         "indices are not renumbered until the file is written",
+         "collapse the selected edge or face", check_collapse, run_collapse},
+    Verb{"dissolve", kVertexArg | kEdgeArg, 0, 0, kNoDefaults, "dissolve:vI, dissolve:A-B",
+         "removes vertex I and merges the faces around it into one, or removes A-B and merges "
+         "its two faces (a boundary edge's face joins the hole)",
+         "dissolve the selected vertices and edges (faces: make them holes)",
+         check_dissolve, run_dissolve},
+    Verb{"make_boundary", kFaceArg, 0, 0, kNoDefaults, "make_boundary:fI",
+         "deletes face I, leaving a hole (merged with holes beside it)",
+         "delete the selected faces, leaving holes", check_make_boundary, run_make_boundary},
+    Verb{"fill", kEdgeArg, 0, 0, kNoDefaults, "fill:A-B",
+         "fills the hole that boundary edge A-B borders with one polygon",
+         "fill the hole beside the selected boundary edge with one face", check_fill, run_fill},
+    Verb{"weld", kEdgePair, 0, 0, kNoDefaults, "weld:A-B+C-D",
+         "glues boundary edges A-B and C-D into one interior edge: A and B stay, each moved to "
+         "the midpoint of itself and the end of C-D it meets (the faces' orientation decides "
+         "which)",
+         "weld the two selected boundary edges", check_weld, run_weld},
+    Verb{"poke", kFaceArg, 0, 0, kNoDefaults, "poke:fI",
+         "adds a vertex at the average of face I's corners and joins it to each corner (a fan "
+         "of triangles; Scotty3D's inset vertex)",
+         "poke the selected face (a centre vertex and a fan of triangles)", check_poke, run_poke},
+    Verb{"extrude", kFaceArg, 2, 1, kNoDefaults, "extrude:fI:H, extrude:fI:H,S",
+         "surrounds face I with a ring of quads and moves it H model units along its normal, "
+         "shrunk S of the way to its centre (S below 1, default 0)",
+         "extrude the selected face (drag: height up/down, shrink left/right)",
+         check_extrude, run_extrude},
+    Verb{"inset", kFaceArg, 1, 1, kNoDefaults, "inset:fI:S",
+         "a ring of quads inside face I, whose inner face is shrunk S of the way to its "
+         "centre (S below 1)",
+         "inset the selected face (drag: the amount)", check_inset, run_inset},
+    Verb{"bevel", kVertexArg | kEdgeArg, 1, 1, kNoDefaults, "bevel:vI:T, bevel:A-B:T",
+         "replaces vertex I or edge A-B with a face whose corners sit a fraction T (0 to below "
+         "1) along each edge leaving it",
+         "bevel the selected vertex or edge (drag: the amount)", check_bevel, run_bevel},
+    Verb{"crease", kEdgeArg, 0, 0, kNoDefaults, "crease:A-B",
          "toggles the `e:crease` mark of A-B (kept by COLLADA, used by Loop)",
          "toggle crease on the selected edge", check_crease, run_crease},
-    Verb{"loop", Shape::Levels, "loop, loop:K",
-         "K levels (default 1) of Loop subdivision (Warren weights); old vertices keep their "
-         "indices, the vertex on old edge `e` gets index `V + e`",
+    Verb{"loop", kWholeMesh | kLevels, 0, 0, kNoDefaults, "loop, loop:K",
+         "K levels (default 1) of Loop subdivision (Warren weights) of a triangle mesh; old "
+         "vertices keep their indices, the vertex on old edge `e` gets index `V + e`",
          "Loop-subdivide the mesh", check_loop, run_loop},
-    Verb{"triangulate", Shape::None, "triangulate",
-         "triangulates every non-triangle face",
+    Verb{"triangulate", kWholeMesh | kFaceArg, 0, 0, kNoDefaults, "triangulate, triangulate:fI",
+         "cuts every polygon (or face I) into triangles by diagonals inside it",
          "triangulate every polygon", check_triangulate, run_triangulate},
+    Verb{"flip_orientation", kWholeMesh, 0, 0, kNoDefaults, "flip_orientation",
+         "reverses every face, so normals point the other way",
+         "reverse the orientation of every face", check_flip_orientation,
+         run_flip_orientation},
 };
 // clang-format on
 

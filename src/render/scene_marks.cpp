@@ -13,6 +13,9 @@ void add_scene_marks(const SceneContent& scene, const OverlayStyle& style, Overl
         if (scene.hovered != scene.selected) {
             add_element_highlight(mesh, scene.hovered, style.hovered, style, out);
         }
+        for (const ElementRef& e : scene.also_selected) {
+            add_element_highlight(mesh, e, style.selected, style, out);
+        }
         add_element_highlight(mesh, scene.selected, style.selected, style, out);
         return;
     }

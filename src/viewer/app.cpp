@@ -204,7 +204,67 @@ void App::on_key(int key, int action, int mods) {
     if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard) {
         return;
     }
+    const bool was_modal = editor_.modal() != Modal::None;
     apply(editor_.press(static_cast<Key>(key), static_cast<unsigned>(mods)));
+    if (!was_modal && editor_.modal() != Modal::None) {
+        start_modal();
+    }
+}
+
+void App::start_modal() {
+    modal_from_ = cursor_pixels();
+    const auto box = editor_.selection_bounds();
+    modal_center_ = box ? (box->first + box->second) * 0.5 : Vec3{};
+    const glm::dvec4 c =
+        clip_of_world() * glm::dvec4(modal_center_.x, modal_center_.y, modal_center_.z, 1.0);
+    const glm::ivec2 size = framebuffer_size();
+    modal_center_px_ = {(c.x / c.w * 0.5 + 0.5) * size.x, (0.5 - c.y / c.w * 0.5) * size.y};
+    modal_depth_ = c.z / c.w;
+}
+
+glm::dmat4 App::clip_of_world() const {
+    return glm::dmat4(camera_.projection(aspect())) * glm::dmat4(camera_.view());
+}
+
+Vec3 App::world_at(glm::dvec2 p, double ndc_z) const {
+    const glm::ivec2 size = framebuffer_size();
+    const glm::dvec4 ndc(2.0 * p.x / size.x - 1.0, 1.0 - 2.0 * p.y / size.y, ndc_z, 1.0);
+    const glm::dvec4 world = glm::inverse(clip_of_world()) * ndc;
+    return {world.x / world.w, world.y / world.w, world.z / world.w};
+}
+
+void App::update_modal() {
+    const glm::dvec2 p(cursor_pixels());
+    ModalInput in;
+    in.dx = p.x - modal_from_.x;
+    in.dy = modal_from_.y - p.y;
+    const Vec3 from = world_at(modal_from_, modal_depth_);
+    in.offset = world_at(p, modal_depth_) - from;
+    in.pixel = norm(world_at(modal_from_ + glm::dvec2(1.0, 0.0), modal_depth_) - from);
+    const glm::dvec2 a = modal_from_ - modal_center_px_;
+    const glm::dvec2 b = p - modal_center_px_;
+    in.angle = std::atan2(-b.y, b.x) - std::atan2(-a.y, a.x);
+    in.scale = glm::length(b) / std::max(glm::length(a), 1.0);
+    const glm::vec3 eye = camera_.eye();
+    in.toward_viewer = normalize(Vec3{eye.x, eye.y, eye.z} - modal_center_);
+    apply(editor_.modal_input(in));
+}
+
+void App::frame_selection() {
+    const auto box = editor_.selection_bounds();
+    if (!box) {
+        return;
+    }
+    const Vec3 c = (box->first + box->second) * 0.5;
+    const double r = std::max(0.5 * norm(box->second - box->first), 0.02 * scene_radius_);
+    camera_.target = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
+    if (camera_.orthographic) {
+        camera_.ortho_height = static_cast<float>(3.0 * r);
+    } else {
+        const double half_fov = glm::radians(camera_.fov_y_deg) / 2.0;
+        camera_.distance = static_cast<float>(1.5 * r / std::sin(half_fov));
+    }
+    update_camera_planes();
 }
 
 void App::on_mouse_button(int button, int action, int mods) {
@@ -215,11 +275,31 @@ void App::on_mouse_button(int button, int action, int mods) {
         (ImGui::GetIO().WantCaptureMouse || panels_.contains(glm::vec2(cursor_)))) {
         return;
     }
+    if (editor_.modal() != Modal::None) {
+        // An interactive edit: a left click applies it, a right click cancels it.
+        if (action == GLFW_PRESS && button == GLFW_MOUSE_BUTTON_LEFT) {
+            apply(editor_.confirm_modal());
+        } else if (action == GLFW_PRESS && button == GLFW_MOUSE_BUTTON_RIGHT) {
+            apply(editor_.cancel_modal());
+        }
+        drag_ = DragMode::None;
+        swallow_release_ = true;
+        return;
+    }
+    if (action == GLFW_RELEASE && swallow_release_) {
+        swallow_release_ = false;
+        return;
+    }
     if (action == GLFW_PRESS) {
         press_at_ = cursor_;
-        if (button == GLFW_MOUSE_BUTTON_MIDDLE ||
-            (button == GLFW_MOUSE_BUTTON_LEFT && (mods & GLFW_MOD_SHIFT))) {
+        press_button_ = button;
+        press_shift_ = (mods & GLFW_MOD_SHIFT) != 0;
+        if (button == GLFW_MOUSE_BUTTON_MIDDLE) {
             drag_ = DragMode::Pan;
+            return;
+        }
+        if (button == GLFW_MOUSE_BUTTON_RIGHT || press_shift_) {
+            drag_ = DragMode::Pending;  // right: orbit once it moves; Shift: pan, or a click
             return;
         }
         if (button != GLFW_MOUSE_BUTTON_LEFT) {
@@ -245,7 +325,8 @@ void App::on_mouse_button(int button, int action, int mods) {
         apply(outcome);
     } else if (drag_ == DragMode::Pending && button == GLFW_MOUSE_BUTTON_LEFT) {
         const ElementRef hit = pick_at_cursor();
-        Outcome outcome = editor_.select(hit);
+        Outcome outcome =
+            press_shift_ && mesh_mode() ? editor_.toggle_select(hit) : editor_.select(hit);
         if (outcome.message.empty()) {
             outcome.message = describe(editor_.mesh(), hit);
         }
@@ -261,6 +342,10 @@ void App::on_cursor(double x, double y) {
     cursor_moved_ = true;
     last_cursor_time_ = glfwGetTime();
     const glm::vec2 delta(cursor_ - previous);
+    if (editor_.modal() != Modal::None) {
+        update_modal();
+        return;
+    }
     switch (drag_) {
         case DragMode::None:
             return;  // hover is updated once per frame in run()
@@ -268,7 +353,7 @@ void App::on_cursor(double x, double y) {
             if (glm::length(cursor_ - press_at_) < kClickSlopPixels) {
                 return;
             }
-            if (!mesh_mode()) {
+            if (!mesh_mode() || (press_shift_ && press_button_ == GLFW_MOUSE_BUTTON_LEFT)) {
                 drag_ = DragMode::Pan;  // curves are 2D: dragging empty paper pans
                 return;
             }
@@ -388,6 +473,9 @@ void App::apply(const Outcome& outcome) {
     if (c & kResetCamera) {
         reset_camera();
     }
+    if (c & kFrameSelection) {
+        frame_selection();
+    }
     if (c & kScreenshot) {
         write_screenshot();
     }
@@ -431,6 +519,7 @@ void App::rebuild_overlay(bool features_changed) {
         scene.show_curve = view.show_curve;
     }
     scene.selected = editor_.selection();
+    scene.also_selected = editor_.also_selected();
     scene.hovered = editor_.hover();
     add_scene_marks(scene, style, batch);
     scene_->overlay().upload(batch);

@@ -59,6 +59,16 @@ private:
     /// control nets or the curve, hover and selection highlights.
     void rebuild_overlay(bool features_changed = false);
     void reset_camera();
+    /// Centres the camera on the selection, close enough that it fills about a third of the
+    /// view.
+    void frame_selection();
+    /// An interactive edit began (Editor::begin_modal): remember where the cursor and the
+    /// selection's centre are. update_modal() feeds the cursor's motion since then.
+    void start_modal();
+    void update_modal();
+    glm::dmat4 clip_of_world() const;
+    /// The world point at framebuffer pixel `p` (double precision) at depth `ndc_z`.
+    Vec3 world_at(glm::dvec2 p, double ndc_z) const;
     void update_camera_planes();
 
     /// The element under the cursor (ID pass for meshes, nearest control point for curves).
@@ -106,6 +116,14 @@ private:
     double last_frame_ms_ = 0.0;
     double last_pick_ms_ = 0.0;
     bool quit_ = false;
+
+    int press_button_ = 0;             ///< the button of the press a Pending drag started with
+    bool press_shift_ = false;         ///< Shift was held: a click toggles, a drag pans
+    bool swallow_release_ = false;     ///< the press ended an interactive edit
+    glm::dvec2 modal_from_{0.0};       ///< framebuffer pixels where the interactive edit began
+    glm::dvec2 modal_center_px_{0.0};  ///< the selection's centre on screen then
+    double modal_depth_ = 0.0;         ///< and its normalised device depth
+    Vec3 modal_center_;
 };
 
 }  // namespace meshedit::viewer

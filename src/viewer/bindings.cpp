@@ -26,9 +26,29 @@ constexpr std::array kTable{
     // the verb's own (src/ops/verbs.cpp).
     Binding{key_of('F'), kNoMods, kMeshModes, edit("flip"), "F", {}},
     Binding{key_of('S'), kNoMods, kMeshModes, edit("split"), "S", {}},
+    Binding{key_of('S'), kShift, kMeshModes, edit("bisect"), "Shift+S", {}},
     Binding{key_of('C'), kNoMods, kMeshModes, edit("collapse"), "C", {}},
+    Binding{Key::Delete, kNoMods, kMeshModes, {Command::Delete}, "Delete", "dissolve the selected vertices and edges, make the selected faces holes"},
+    Binding{Key::Delete, kShift, kMeshModes, edit("make_boundary"), "Shift+Delete", {}},
+    Binding{key_of('F'), kShift, kMeshModes, edit("fill"), "Shift+F", {}},
+    Binding{key_of('J'), kNoMods, kMeshModes, edit("weld"), "J", {}},
+    Binding{key_of('P'), kShift, kMeshModes, edit("poke"), "Shift+P", {}},
+    Binding{key_of('X'), kNoMods, kMeshModes, interactive(Modal::Extrude), "X", "extrude the selected faces: drag up/down for height, left/right for shrink"},
+    Binding{key_of('I'), kShift, kMeshModes, interactive(Modal::Inset), "Shift+I", "inset the selected faces: drag for the amount"},
+    Binding{key_of('B'), kCtrl, kMeshModes, interactive(Modal::Bevel), "Ctrl+B", "bevel the selected vertices or edges: drag for the amount"},
+    Binding{key_of('M'), kNoMods, kMeshModes, interactive(Modal::Move), "M", "move the selection in the screen plane (X/Y/Z lock an axis)"},
+    Binding{key_of('R'), kNoMods, kMeshModes, interactive(Modal::Rotate), "R", "rotate the selection about its centre (X/Y/Z: about that axis)"},
+    Binding{key_of('S'), kAlt, kMeshModes, interactive(Modal::Scale), "Alt+S", "scale the selection about its centre (X/Y/Z: along that axis)"},
+    Binding{key_of('T'), kCtrl, kMeshModes, edit("triangulate"), "Ctrl+T", {}},
+    Binding{key_of('N'), kShift, kMeshModes, edit("flip_orientation"), "Shift+N", {}},
     Binding{key_of('L'), kNoMods, kMeshModes, edit("loop"), "L / U", {}},
     Binding{key_of('U'), kNoMods, kMeshModes, edit("loop"), "L / U", {}},
+    // Selecting.
+    Binding{key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}, "Ctrl+A", "select every element of the selected kind (faces if none)"},
+    Binding{key_of('A'), kAlt, kMeshModes, {Command::SelectNone}, "Alt+A", "select nothing"},
+    Binding{key_of('L'), kShift, kMeshModes, {Command::SelectLoop}, "Shift+L", "select the hole beside the selected boundary edge"},
+    Binding{Key::Period, kNoMods, kMeshModes, {Command::FrameSelection}, ". / keypad .", "frame the selection (centre the camera on it)"},
+    Binding{Key::KeypadDecimal, kNoMods, kMeshModes, {Command::FrameSelection}, ". / keypad .", "frame the selection (centre the camera on it)"},
     // Navigation.
     Binding{key_of('N'), kNoMods, kMeshModes, {Command::Next}, "N", "selected halfedge → next"},
     Binding{key_of('T'), kNoMods, kMeshModes, {Command::Twin}, "T", "selected halfedge → twin"},
@@ -87,9 +107,10 @@ constexpr std::array kTable{
 };
 
 // The mouse as each mode handles it (App::on_mouse_button, on_cursor, on_scroll).
-const std::array<HelpRow, 10> kMouseRows{{
+const std::array<HelpRow, 13> kMouseRows{{
     {"left-click", "select the element under the cursor (vertex near a corner, edge near an edge, halfedge just inside it, else face)", "mesh, surface"},
-    {"left-drag on empty space", "orbit (turntable about the up axis; O: trackball)", "mesh, surface"},
+    {"Shift+left-click", "add the element under the cursor to the selection, or remove it", "mesh, surface"},
+    {"left-drag on empty space / right-drag", "orbit (turntable about the up axis; O: trackball)", "mesh, surface"},
     {"left-drag on a vertex", "move it in the screen plane", "mesh, surface"},
     {"wheel", "zoom to the cursor", "mesh, surface"},
     {"left-click", "select the control point under the cursor", "curve"},
@@ -98,6 +119,8 @@ const std::array<HelpRow, 10> kMouseRows{{
     {"wheel", "change t by 0.01 a step", "curve"},
     {"middle-drag / Shift+left-drag", "pan", ""},
     {"drop a file", "open it", ""},
+    {"during X, Shift+I, Ctrl+B, M, R, Alt+S", "move the mouse to set the amount; type a number (digits . - , Backspace) to set it exactly; X/Y/Z lock an axis", "mesh, surface"},
+    {"Enter / left-click, Esc / right-click", "apply the interactive edit (one undo step) / cancel it (the mesh as it was)", "mesh, surface"},
 }};
 // clang-format on
 

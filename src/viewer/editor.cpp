@@ -28,6 +28,9 @@ Editor::Editor(HistoryLimits limits) : history_(limits) {}
 // ---------------------------------------------------------------------------- commands
 
 Outcome Editor::press(Key key, unsigned mods) {
+    if (std::optional<Outcome> taken = modal_key(key, mods)) {
+        return *taken;
+    }
     const std::optional<Action> action = lookup(key, mods, doc_.mode);
     if (!action) {
         return {};
@@ -37,6 +40,13 @@ Outcome Editor::press(Key key, unsigned mods) {
 
 Outcome Editor::run(Action action) {
     const Command c = action.command;
+    if (modal_.kind != Modal::None) {
+        // A key the interactive edit does not take (modal_key) applies it first, as in
+        // Blender.
+        if (Outcome confirmed = confirm_modal(); confirmed.refused) {
+            return confirmed;
+        }
+    }
     if (c != Command::Escape && c != Command::Quit) {
         quit_armed_ = false;
     }
@@ -52,6 +62,14 @@ Outcome Editor::run(Action action) {
     switch (c) {
         case Command::Edit:
             return edit_mesh(action.verb);
+        case Command::Interactive:
+            return begin_modal(static_cast<Modal>(action.argument));
+        case Command::Delete:
+        case Command::SelectAll:
+        case Command::SelectNone:
+        case Command::SelectLoop:
+        case Command::FrameSelection:
+            return run_selection(c);
         case Command::Next:
         case Command::Twin:
         case Command::ToHalfedge:
@@ -80,9 +98,8 @@ Outcome Editor::run(Action action) {
         case Command::Open:
             return {kAskOpenPath, ""};
         case Command::Escape:
-            if (!doc_.selection.is_none()) {
-                doc_.selection = {};
-                return {kSelection, "selection cleared"};
+            if (!doc_.selection.is_none() || !doc_.also_selected.empty()) {
+                return select_none();
             }
             return quit();
         case Command::Quit:
@@ -174,6 +191,7 @@ Outcome Editor::edit(const std::function<std::string()>& check,
     replace_armed_ = false;
     if (edited.select) {
         doc_.selection = *edited.select;
+        doc_.also_selected.clear();
     }
     if ((edited.changes & kTopology) != 0) {
         hover_ = {};
@@ -193,6 +211,7 @@ void Editor::snapshot() {
 
 Outcome Editor::undo() {
     end_drag();
+    cancel_modal();
     if (!history_.undo(doc_)) {
         return refused("nothing to undo");
     }
@@ -206,6 +225,7 @@ Outcome Editor::undo() {
 
 Outcome Editor::redo() {
     end_drag();
+    cancel_modal();
     if (!history_.redo(doc_)) {
         return refused("nothing to redo");
     }

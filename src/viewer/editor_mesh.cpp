@@ -1,44 +1,109 @@
 // The editor's mesh edits: every key that changes the mesh runs a verb of the edit language
-// (meshedit/ops/ops.h) through the edit funnel, on the selected edge or the whole mesh.
+// (meshedit/ops/ops.h) through the edit funnel, on the selected elements or the whole mesh.
+
+#include <stdexcept>
 
 #include "meshedit/ops/ops.h"
 #include "meshedit/viewer/editor.h"
+#include "selection_steps.h"
 
 namespace meshedit::viewer {
+
+namespace {
+
+// The edit's result selected: the last thing made active, the others with it.
+void select_made(Document& doc, const std::vector<ElementRef>& made) {
+    doc.selection = made.empty() ? ElementRef{} : made.back();
+    doc.also_selected.assign(made.begin(), made.end() - (made.empty() ? 0 : 1));
+}
+
+}  // namespace
 
 Outcome Editor::edit_mesh(std::string_view name) {
     const ops::Verb* verb = ops::find_verb(name);
     if (verb == nullptr) {
         return refused("no such edit: '" + std::string(name) + "'");
     }
-    const Mesh& mesh = doc_.mesh;
-    Edge e;
-    if (verb->shape == ops::Shape::Edge) {
-        // A selected halfedge stands for its edge, as in CS184.
-        const ElementRef& s = doc_.selection;
-        if (s.kind == ElementRef::Kind::Edge && is_live(mesh, s)) {
-            e = Edge(s.index);
-        } else if (s.kind == ElementRef::Kind::Halfedge && is_live(mesh, s)) {
-            e = Mesh::edge(Halfedge(s.index));
-        } else {
-            return refused("select an edge first (click near an edge)");
-        }
+    if (verb->accepts(ops::Target::None)) {
+        const ops::Step step = ops::make_step(name, doc_.mesh);
+        return edit([&] { return verb->check(doc_.mesh, step); },
+                    [&](Document& doc) {
+                        const ops::StepResult result = verb->run(doc.mesh, step, {});
+                        Edited edited;
+                        edited.message = result.message;
+                        edited.changes = kTopology | kSelection;
+                        if (result.renumbers && doc.selection.kind != ElementRef::Kind::Vertex) {
+                            edited.select = ElementRef{};  // only vertices keep their numbers
+                        } else if (result.renumbers) {
+                            doc.also_selected.clear();
+                        }
+                        return edited;
+                    });
     }
-    const ops::Step step = ops::make_step(name, mesh, e);
-    return edit([&] { return verb->check(doc_.mesh, step); },
-                [&](Document& doc) {
-                    const ops::StepResult result = verb->run(doc.mesh, step, {});
-                    Edited edited;
-                    edited.message = result.message;
-                    edited.changes =
-                        result.topology ? kTopology | kSelection : kSelection | kDisplay;
-                    if (!result.selected.is_none()) {
-                        edited.select = result.selected;
-                    } else if (result.renumbers && doc.selection.kind != ElementRef::Kind::Vertex) {
-                        edited.select = ElementRef{};  // only vertices keep their numbers
-                    }
-                    return edited;
-                });
+    // Amount verbs run from a key as drags (begin_modal); here with their defaults.
+    std::string hint;
+    const std::vector<ops::Step> steps =
+        steps_for_selection(doc_.mesh, *verb, selected(), {}, hint);
+    if (steps.empty()) {
+        return refused(hint);
+    }
+    const bool topology = verb->name != "crease";
+    return edit(
+        [&]() -> std::string {
+            if (steps.size() > 1) {
+                return {};  // each is checked as it comes; apply() refuses if none ran
+            }
+            try {
+                return verb->check(doc_.mesh, steps.front());
+            } catch (const ops::OpError& e) {
+                return e.what();
+            }
+        },
+        [&](Document& doc) {
+            const StepsRun run = run_steps(doc.mesh, steps);
+            if (run.ran == 0) {
+                throw std::runtime_error(run.first_refusal);
+            }
+            select_made(doc, run.made);
+            Edited edited;
+            edited.message = run.message;
+            edited.changes = topology ? kTopology | kSelection : kSelection | kDisplay;
+            return edited;
+        });
+}
+
+Outcome Editor::delete_selection() {
+    std::vector<ops::Step> steps;
+    std::string hint;
+    for (const char* name : {"dissolve", "make_boundary"}) {
+        const std::vector<ops::Step> some =
+            steps_for_selection(doc_.mesh, *ops::find_verb(name), selected(), {}, hint);
+        steps.insert(steps.end(), some.begin(), some.end());
+    }
+    if (steps.empty()) {
+        return refused("select vertices, edges or faces to delete first");
+    }
+    return edit(
+        [&]() -> std::string {
+            return steps.size() == 1 ? steps.front().verb->check(doc_.mesh, steps.front())
+                                     : std::string();
+        },
+        [&](Document& doc) {
+            const StepsRun run = run_steps(doc.mesh, steps);
+            if (run.ran == 0) {
+                throw std::runtime_error(run.first_refusal);
+            }
+            select_made(doc, run.made);
+            Edited edited;
+            edited.message =
+                steps.size() == 1
+                    ? run.message
+                    : "deleted " + std::to_string(run.ran) + " of " + std::to_string(steps.size()) +
+                          " elements" +
+                          (run.refused > 0 ? " (first refusal: " + run.first_refusal + ")" : "");
+            edited.changes = kTopology | kSelection;
+            return edited;
+        });
 }
 
 void Editor::compact() {
@@ -48,6 +113,13 @@ void Editor::compact() {
     GarbageCollectionMap map;
     doc_.mesh.garbage_collection(&map);
     doc_.selection = remap(doc_.selection, map);
+    std::vector<ElementRef> also;
+    for (const ElementRef& e : doc_.also_selected) {
+        if (const ElementRef r = remap(e, map); !r.is_none() && r != doc_.selection) {
+            also.push_back(r);
+        }
+    }
+    doc_.also_selected = std::move(also);
     hover_ = {};
 }
 

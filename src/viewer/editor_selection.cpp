@@ -2,7 +2,9 @@
 // dragging the selected vertex or control point.
 
 #include "meshedit/viewer/editor.h"
+#include "selection_steps.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -41,11 +43,176 @@ Outcome Editor::select(ElementRef element) {
         ok = is_live(doc_.mesh, element);
     }
     doc_.selection = ok ? element : ElementRef{};
+    doc_.also_selected.clear();
     if (doc_.mode == Mode::Curve) {
         return {kSelection, ok ? "control point " + std::to_string(element.index)
                                : std::string("nothing selected")};
     }
     return {kSelection, describe(doc_.mesh, doc_.selection)};
+}
+
+Outcome Editor::toggle_select(ElementRef element) {
+    if (doc_.mode == Mode::Curve || !is_live(doc_.mesh, element)) {
+        return select(element);
+    }
+    auto& also = doc_.also_selected;
+    if (element == doc_.selection) {
+        // Deselecting the active element makes the one added before it active.
+        doc_.selection = also.empty() ? ElementRef{} : also.back();
+        if (!also.empty()) {
+            also.pop_back();
+        }
+        return {kSelection, "deselected " + describe(doc_.mesh, element) + count_text()};
+    }
+    if (const auto it = std::find(also.begin(), also.end(), element); it != also.end()) {
+        also.erase(it);
+        return {kSelection, "deselected " + describe(doc_.mesh, element) + count_text()};
+    }
+    if (!doc_.selection.is_none()) {
+        also.push_back(doc_.selection);
+    }
+    doc_.selection = element;
+    return {kSelection, describe(doc_.mesh, element) + count_text()};
+}
+
+std::string Editor::count_text() const {
+    const std::size_t n = doc_.also_selected.size() + (doc_.selection.is_none() ? 0 : 1);
+    return n > 1 ? " (" + std::to_string(n) + " selected)" : "";
+}
+
+Outcome Editor::select_all() {
+    if (doc_.mode == Mode::Curve) {
+        return refused("select all is for meshes");
+    }
+    const Mesh& mesh = doc_.mesh;
+    Kind kind = doc_.selection.is_none() ? Kind::Face : doc_.selection.kind;
+    if (kind == Kind::Halfedge) {
+        kind = Kind::Edge;
+    }
+    std::vector<ElementRef> all;
+    const auto add_live = [&](std::size_t n, auto make, auto deleted) {
+        all.reserve(n);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            if (!deleted(i)) {
+                all.push_back(make(i));
+            }
+        }
+    };
+    switch (kind) {
+        case Kind::Vertex:
+            add_live(
+                mesh.vertices_size(), [](std::uint32_t i) { return ElementRef::vertex(Vertex(i)); },
+                [&](std::uint32_t i) { return mesh.is_deleted(Vertex(i)); });
+            break;
+        case Kind::Edge:
+            add_live(
+                mesh.edges_size(), [](std::uint32_t i) { return ElementRef::edge(Edge(i)); },
+                [&](std::uint32_t i) { return mesh.is_deleted(Edge(i)); });
+            break;
+        default:
+            add_live(
+                mesh.faces_size(), [](std::uint32_t i) { return ElementRef::face(Face(i)); },
+                [&](std::uint32_t i) { return mesh.is_deleted(Face(i)); });
+            break;
+    }
+    if (all.empty()) {
+        return refused("nothing to select");
+    }
+    doc_.selection = all.back();
+    all.pop_back();
+    doc_.also_selected = std::move(all);
+    const char* noun = kind == Kind::Vertex ? " vertices"
+                       : kind == Kind::Edge ? " edges"
+                                            : " faces";
+    return {kSelection, "selected all " + std::to_string(doc_.also_selected.size() + 1) + noun};
+}
+
+Outcome Editor::select_none() {
+    doc_.selection = {};
+    doc_.also_selected.clear();
+    return {kSelection, "selection cleared"};
+}
+
+Outcome Editor::select_boundary_loop() {
+    const Mesh& mesh = doc_.mesh;
+    const ElementRef& s = doc_.selection;
+    Halfedge h;
+    if (is_live(mesh, s) && (s.kind == Kind::Edge || s.kind == Kind::Halfedge)) {
+        const Edge e = s.kind == Kind::Edge ? Edge(s.index) : Mesh::edge(Halfedge(s.index));
+        for (int side = 0; side < 2; ++side) {
+            if (mesh.is_boundary(mesh.halfedge(e, side))) {
+                h = mesh.halfedge(e, side);
+            }
+        }
+    }
+    if (!h.is_valid()) {
+        return refused("select a boundary edge first (one drawn red), then press Shift+L");
+    }
+    std::vector<ElementRef> loop;
+    Halfedge g = h;
+    do {
+        loop.push_back(ElementRef::edge(Mesh::edge(g)));
+        g = mesh.next(g);
+    } while (g != h && loop.size() <= mesh.halfedges_size());
+    doc_.selection = loop.front();
+    doc_.also_selected.assign(loop.begin() + 1, loop.end());
+    return {kSelection, "selected the " + std::to_string(loop.size()) + " edges of a hole"};
+}
+
+std::vector<ElementRef> Editor::selected() const {
+    std::vector<ElementRef> out;
+    const auto live = [&](const ElementRef& e) {
+        return doc_.mode != Mode::Curve && is_live(doc_.mesh, e);
+    };
+    // Active last, as Shift+click adds: the verbs' "made" lists keep that order.
+    for (const ElementRef& e : doc_.also_selected) {
+        if (live(e)) {
+            out.push_back(e);
+        }
+    }
+    if (live(doc_.selection)) {
+        out.push_back(doc_.selection);
+    }
+    return out;
+}
+
+std::optional<std::pair<Vec3, Vec3>> Editor::selection_bounds() const {
+    if (doc_.mode == Mode::Curve) {
+        return std::nullopt;
+    }
+    std::optional<std::pair<Vec3, Vec3>> box;
+    for (const std::uint32_t v : selected_vertices(doc_.mesh, selected())) {
+        const Vec3& p = doc_.mesh.position(Vertex(v));
+        if (!box) {
+            box = std::pair{p, p};
+        }
+        box->first = {std::min(box->first.x, p.x), std::min(box->first.y, p.y),
+                      std::min(box->first.z, p.z)};
+        box->second = {std::max(box->second.x, p.x), std::max(box->second.y, p.y),
+                       std::max(box->second.z, p.z)};
+    }
+    return box;
+}
+
+Outcome Editor::run_selection(Command command) {
+    switch (command) {
+        case Command::SelectAll:
+            return select_all();
+        case Command::SelectNone:
+            return select_none();
+        case Command::SelectLoop:
+            return select_boundary_loop();
+        case Command::FrameSelection:
+            if (!selection_bounds()) {
+                return refused("select something to frame first");
+            }
+            return {kFrameSelection, "framed the selection (Space resets the camera)"};
+        case Command::Delete:
+            return delete_selection();
+        default:
+            break;
+    }
+    return {};
 }
 
 bool Editor::begin_drag() {

@@ -25,6 +25,7 @@ std::size_t Document::bytes() const {
         n += p.control_points.capacity() * sizeof(Vec3);
     }
     n += curve.control_points.capacity() * sizeof(Vec3);
+    n += also_selected.capacity() * sizeof(ElementRef);
     return n;
 }
 

@@ -375,12 +375,23 @@ TEST(CliSubdivide, TwoLevelsGiveTheLoopCounts) {
     EXPECT_EQ(j["euler_characteristic"], 2);
 }
 
-TEST(CliSubdivide, QuadsAreTriangulatedWithANote) {
+// Loop is for triangles: quads are refused with their count and the way out, nothing is
+// written; `triangulate` first makes it run.
+TEST(CliSubdivide, QuadsAreRefusedUntilTriangulated) {
     TempDir tmp;
-    const RunResult r = run_meshedit({"subdivide", (repo_root() / "dae/quadball.dae").string(),
-                                      (tmp / "out.obj").string(), "-n", "2", "--weights", "loop"});
+    const RunResult refused =
+        run_meshedit({"subdivide", (repo_root() / "dae/quadball.dae").string(),
+                      (tmp / "out.obj").string(), "-n", "2", "--weights", "loop"});
+    EXPECT_EQ(refused.exit_code, 1);
+    EXPECT_NE(refused.err.find("quadball.dae: loop:2 refused: cannot subdivide: Loop needs "
+                               "triangles and 96 of the 96 faces are polygons (triangulate "
+                               "them first"),
+              std::string::npos)
+        << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(tmp / "out.obj"));
+    const RunResult r = run_meshedit({"convert", (repo_root() / "dae/quadball.dae").string(),
+                                      (tmp / "out.obj").string(), "--ops", "triangulate,loop:2"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.err.find("meshedit: note: "), std::string::npos) << r.err;
     // Triangulated: 98/288/192 → 386/1152/768 → 1538/4608/3072.
     const Json j = info_json(tmp / "out.obj");
     EXPECT_EQ(j["vertices"], 1538);

@@ -27,27 +27,77 @@ TEST(OpsLanguage, ParsesEveryShape) {
     const auto steps = parse("flip:0-6, split:12-3,loop,loop:3 ,triangulate,crease:1-2");
     ASSERT_EQ(steps.size(), 6u);
     EXPECT_EQ(steps[0].verb->name, "flip");
+    EXPECT_EQ(steps[0].target, Target::Edge);
     EXPECT_EQ(steps[0].a, 0u);
     EXPECT_EQ(steps[0].b, 6u);
     EXPECT_EQ(steps[1].text, "split:12-3");
     EXPECT_EQ(steps[2].levels, 1);
     EXPECT_EQ(steps[3].levels, 3);
-    EXPECT_EQ(steps[4].verb->shape, Shape::None);
+    EXPECT_EQ(steps[4].target, Target::None);
     EXPECT_EQ(steps[5].verb->name, "crease");
+}
+
+// Vertices as vI, faces as fI, two edges as A-B+C-D, amounts after a second colon; a list
+// item that starts like a number is the step before it continued.
+TEST(OpsLanguage, ParsesElementsAndAmounts) {
+    const auto steps = parse(
+        "dissolve:v12,extrude:f7:0.2, 0.9,weld:0-1+5-6,bevel:3-4:0.25,inset:f0:-0.5,"
+        "extrude:f2:1e-3,collapse:f4,triangulate:f1");
+    ASSERT_EQ(steps.size(), 8u);
+    EXPECT_EQ(steps[0].target, Target::Vertex);
+    EXPECT_EQ(steps[0].a, 12u);
+    EXPECT_EQ(steps[1].target, Target::Face);
+    EXPECT_EQ(steps[1].a, 7u);
+    EXPECT_EQ(steps[1].amounts[0], 0.2);
+    EXPECT_EQ(steps[1].amounts[1], 0.9);
+    EXPECT_EQ(steps[1].text, "extrude:f7:0.2,0.9");
+    EXPECT_EQ(steps[2].target, Target::EdgePair);
+    EXPECT_EQ(steps[2].a, 0u);
+    EXPECT_EQ(steps[2].b, 1u);
+    EXPECT_EQ(steps[2].c, 5u);
+    EXPECT_EQ(steps[2].d, 6u);
+    EXPECT_EQ(steps[3].target, Target::Edge);
+    EXPECT_EQ(steps[3].amounts[0], 0.25);
+    EXPECT_EQ(steps[4].amounts[0], -0.5);
+    EXPECT_EQ(steps[5].amounts[0], 1e-3);
+    EXPECT_EQ(steps[5].amounts[1], 0.0);  // shrink defaults to 0
+    EXPECT_EQ(steps[6].target, Target::Face);
+    EXPECT_EQ(steps[7].verb->name, "triangulate");
+    EXPECT_EQ(steps[7].target, Target::Face);
 }
 
 TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
     EXPECT_EQ(syntax_error("twist:0-1"),
-              "unknown op 'twist:0-1' (expected flip:A-B, split:A-B, collapse:A-B, crease:A-B, "
-              "loop, loop:K or triangulate)");
-    EXPECT_EQ(syntax_error("flip:0"), "bad op 'flip:0': expected flip:A-B with two vertex indices");
+              "unknown op 'twist:0-1' (the verbs are flip, split, bisect, collapse, dissolve, "
+              "make_boundary, fill, weld, poke, extrude, inset, bevel, crease, loop, "
+              "triangulate or flip_orientation)");
+    EXPECT_EQ(syntax_error("flip:0"),
+              "bad op 'flip:0': expected flip:A-B with A-B (an edge by its two vertex indices)");
     EXPECT_EQ(syntax_error("flip:3-3"), "bad op 'flip:3-3': an edge needs two different vertices");
     EXPECT_EQ(syntax_error("flip:0-99999999999"),
-              "bad op 'flip:0-99999999999': expected flip:A-B with two vertex indices");
-    EXPECT_EQ(syntax_error("loop:0"), "bad op 'loop:0': expected loop:K with K from 1 to 12");
-    EXPECT_EQ(syntax_error("loop:13"), "bad op 'loop:13': expected loop:K with K from 1 to 12");
-    EXPECT_EQ(syntax_error("triangulate:2"),
-              "bad op 'triangulate:2': triangulate takes no argument");
+              "bad op 'flip:0-99999999999': expected flip:A-B with A-B (an edge by its two "
+              "vertex indices)");
+    EXPECT_EQ(syntax_error("flip:v3"),
+              "bad op 'flip:v3': expected flip:A-B with A-B (an edge by its two vertex indices)");
+    EXPECT_EQ(syntax_error("dissolve:f3"),
+              "bad op 'dissolve:f3': expected dissolve:vI, dissolve:A-B with vI (a vertex "
+              "index) or A-B (an edge by its two vertex indices)");
+    EXPECT_EQ(syntax_error("extrude:f3"),
+              "bad op 'extrude:f3': expected extrude:fI:H, extrude:fI:H,S");
+    EXPECT_EQ(syntax_error("extrude:f3:0.1,0.2,0.3"),
+              "bad op 'extrude:f3:0.1,0.2,0.3': extrude takes at most 2 amounts "
+              "(extrude:fI:H, extrude:fI:H,S)");
+    EXPECT_EQ(syntax_error("bevel:v3:x"),
+              "bad op 'bevel:v3:x': expected numbers after the element (bevel:vI:T, bevel:A-B:T)");
+    EXPECT_EQ(syntax_error("flip:1-2:0.5"),
+              "bad op 'flip:1-2:0.5': flip takes no amounts (flip:A-B)");
+    EXPECT_EQ(syntax_error("weld:1-2+3-3"),
+              "bad op 'weld:1-2+3-3': an edge needs two different vertices");
+    EXPECT_EQ(syntax_error("loop:0"), "bad op 'loop:0': expected loop, loop:K with K from 1 to 12");
+    EXPECT_EQ(syntax_error("loop:13"),
+              "bad op 'loop:13': expected loop, loop:K with K from 1 to 12");
+    EXPECT_EQ(syntax_error("flip_orientation:2"),
+              "bad op 'flip_orientation:2': flip_orientation takes no argument");
     EXPECT_EQ(syntax_error("flip:0-6,,loop"), "empty op in --ops list 'flip:0-6,,loop'");
     EXPECT_EQ(syntax_error(""), "empty op in --ops list ''");
 }
@@ -56,13 +106,38 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
 TEST(OpsLanguage, MakeStepNamesAnEdgeByItsEnds) {
     const Mesh cube = shapes::cube();
     const Edge e(5);
-    const Step step = make_step("split", cube, e);
+    const Step step = make_step("split", cube, ElementRef::edge(e));
     EXPECT_EQ(step.text, "split:" + std::to_string(cube.vertex(e, 0).idx()) + "-" +
                              std::to_string(cube.vertex(e, 1).idx()));
     const Step again = parse_step(step.text);
     EXPECT_EQ(again.verb, step.verb);
     EXPECT_EQ(named_edge(cube, again), e);
     EXPECT_EQ(make_step("loop", cube).text, "loop");
+}
+
+// Every element kind and amount the viewer can hand over is written so it reads back as the
+// same step (amounts to the last bit).
+TEST(OpsLanguage, MakeStepRoundTripsEveryKind) {
+    const Mesh cube = shapes::cube();
+    const double third = 1.0 / 3.0;
+    const Step extrude =
+        make_step("extrude", cube, ElementRef::face(Face(4)), std::vector<double>{third, 0.1});
+    EXPECT_EQ(extrude.text, "extrude:f4:0.3333333333333333,0.1");
+    const Step back = parse_step(extrude.text);
+    EXPECT_EQ(back.amounts, extrude.amounts);
+    EXPECT_EQ(back.a, 4u);
+    EXPECT_EQ(make_step("extrude", cube, ElementRef::face(Face(4)), std::vector<double>{0.5}).text,
+              "extrude:f4:0.5,0");
+    EXPECT_EQ(make_step("dissolve", cube, ElementRef::vertex(Vertex(3))).text, "dissolve:v3");
+    const Halfedge h(7);
+    const Step from_halfedge =
+        make_step("bevel", cube, ElementRef::halfedge(h), std::vector<double>{0.25});
+    EXPECT_EQ(named_edge(cube, parse_step(from_halfedge.text)), Mesh::edge(h));
+    const Step weld =
+        make_step("weld", cube, ElementRef::edge(Edge(0)), {}, ElementRef::edge(Edge(9)));
+    const Step weld_back = parse_step(weld.text);
+    EXPECT_EQ(named_edge(cube, weld_back), Edge(0));
+    EXPECT_EQ(named_second_edge(cube, weld_back), Edge(9));
 }
 
 TEST(OpsLanguage, StepsRunTheCoreOperations) {
@@ -96,6 +171,48 @@ TEST(OpsLanguage, RefusalsAndMissingElementsAreTold) {
         EXPECT_FALSE(e.refused());
         EXPECT_STREQ(e.what(), "collapse:0-99: no vertex 99 (the mesh has 9 vertices)");
     }
+    try {
+        apply_steps(grid, parse("poke:f8"));
+        FAIL() << "a missing face was found";
+    } catch (const OpError& e) {
+        EXPECT_FALSE(e.refused());
+        EXPECT_STREQ(e.what(), "poke:f8: no face 8 (the mesh has 8 faces)");
+    }
+    // Absurd amounts are the operation's to refuse, by name, with the mesh untouched.
+    const Mesh before = grid;
+    for (const char* list : {"extrude:f0:nan", "extrude:f0:0.1,1", "inset:f0:1e300", "bevel:v4:1",
+                             "bevel:v4:-0.1", "inset:f0:inf"}) {
+        SCOPED_TRACE(list);
+        try {
+            apply_steps(grid, parse(list));
+            FAIL() << "ran";
+        } catch (const OpError& e) {
+            EXPECT_TRUE(e.refused());
+        } catch (const SyntaxError& e) {
+            EXPECT_NE(std::string(e.what()).find("bad op"), std::string::npos);
+        }
+        EXPECT_TRUE(test::identical(grid, before));
+    }
+}
+
+// Loop refuses polygons, counting them and naming the step that makes it possible.
+TEST(OpsLanguage, LoopRefusesPolygonsAndSaysWhy) {
+    Mesh mesh = shapes::quad_sphere(1);
+    const Mesh before = mesh;
+    try {
+        apply_steps(mesh, parse("loop"));
+        FAIL() << "Loop ran on quads";
+    } catch (const OpError& e) {
+        EXPECT_TRUE(e.refused());
+        EXPECT_STREQ(e.what(),
+                     "loop refused: cannot subdivide: Loop needs triangles and 6 of the 6 faces "
+                     "are polygons (triangulate them first: the `triangulate` step, Ctrl+T in "
+                     "the viewer)");
+    }
+    EXPECT_TRUE(test::identical(mesh, before));
+    apply_steps(mesh, parse("triangulate,loop"));
+    EXPECT_EQ(mesh.n_faces(), 48u);
+    EXPECT_VALID(mesh);
 }
 
 // A list whose Loop levels cannot fit is refused before any step runs.

@@ -41,6 +41,26 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('E'), 0, kMeshModes, {Command::ToEdge}},
             {key_of('G'), 0, kMeshModes, {Command::ToFace}},
             {key_of('K'), 0, kMeshModes, edit("crease")},
+            // The local operations of polygon meshes (docs/spec.md §4).
+            {key_of('S'), kShift, kMeshModes, edit("bisect")},
+            {Key::Delete, 0, kMeshModes, {Command::Delete}},
+            {Key::Delete, kShift, kMeshModes, edit("make_boundary")},
+            {key_of('F'), kShift, kMeshModes, edit("fill")},
+            {key_of('J'), 0, kMeshModes, edit("weld")},
+            {key_of('P'), kShift, kMeshModes, edit("poke")},
+            {key_of('X'), 0, kMeshModes, interactive(Modal::Extrude)},
+            {key_of('I'), kShift, kMeshModes, interactive(Modal::Inset)},
+            {key_of('B'), kCtrl, kMeshModes, interactive(Modal::Bevel)},
+            {key_of('M'), 0, kMeshModes, interactive(Modal::Move)},
+            {key_of('R'), 0, kMeshModes, interactive(Modal::Rotate)},
+            {key_of('S'), kAlt, kMeshModes, interactive(Modal::Scale)},
+            {key_of('T'), kCtrl, kMeshModes, edit("triangulate")},
+            {key_of('N'), kShift, kMeshModes, edit("flip_orientation")},
+            {key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}},
+            {key_of('A'), kAlt, kMeshModes, {Command::SelectNone}},
+            {key_of('L'), kShift, kMeshModes, {Command::SelectLoop}},
+            {Key::Period, 0, kMeshModes, {Command::FrameSelection}},
+            {Key::KeypadDecimal, 0, kMeshModes, {Command::FrameSelection}},
             {key_of('Q'), 0, kMeshModes, {Command::ToggleSmooth}},
             {key_of('W'), 0, kMeshModes, {Command::ToggleWireframe}},
             {key_of('I'), 0, kAllModes, {Command::ToggleInfo}},
@@ -238,7 +258,7 @@ TEST(Bindings, HelpRowsMergeByLabelAndHelp) {
     EXPECT_EQ(find("F", "mesh, surface")->action, "flip the selected edge");
     // Key rows come first, then the mouse rows.
     const auto mouse = mouse_rows();
-    ASSERT_EQ(mouse.size(), 10u);
+    ASSERT_EQ(mouse.size(), 13u);
     ASSERT_GE(rows.size(), mouse.size());
     for (std::size_t i = 0; i < mouse.size(); ++i) {
         EXPECT_EQ(rows[rows.size() - mouse.size() + i].keys, mouse[i].keys);

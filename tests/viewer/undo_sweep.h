@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -40,15 +41,42 @@ inline ::testing::AssertionResult same_document(const Document& actual, const Do
     return ::testing::AssertionSuccess();
 }
 
-/// The direct core operation on a copy, as the editor must have done it.
-inline Mesh apply_directly(const Mesh& before, std::string_view verb, Edge e) {
+/// The direct core operation on a copy, as the editor must have done it on the selected
+/// element `s` (a halfedge standing for its edge) with `amounts`.
+inline Mesh apply_directly(const Mesh& before, std::string_view verb, const ElementRef& s,
+                           std::array<double, 2> amounts = {}) {
     Mesh m = before;
+    const bool edge = s.kind == Kind::Edge || s.kind == Kind::Halfedge;
+    const Edge e = !edge                  ? Edge()
+                   : s.kind == Kind::Edge ? Edge(s.index)
+                                          : Mesh::edge(Halfedge(s.index));
+    const Vertex v = s.kind == Kind::Vertex ? Vertex(s.index) : Vertex();
+    const Face f = s.kind == Kind::Face ? Face(s.index) : Face();
     if (verb == "flip") {
         EXPECT_TRUE(flip(m, e));
     } else if (verb == "split") {
         EXPECT_TRUE(split(m, e));
+    } else if (verb == "bisect") {
+        EXPECT_TRUE(bisect(m, e));
     } else if (verb == "collapse") {
-        EXPECT_TRUE(collapse(m, e));
+        EXPECT_TRUE(f.is_valid() ? collapse_face(m, f).ok() : collapse(m, e).ok());
+    } else if (verb == "dissolve") {
+        EXPECT_TRUE(v.is_valid() ? dissolve_vertex(m, v).ok() : dissolve_edge(m, e).ok());
+    } else if (verb == "make_boundary") {
+        EXPECT_TRUE(make_boundary(m, f));
+    } else if (verb == "poke") {
+        EXPECT_TRUE(poke(m, f));
+    } else if (verb == "extrude") {
+        EXPECT_TRUE(extrude_face(m, f, amounts[0], amounts[1]));
+    } else if (verb == "inset") {
+        EXPECT_TRUE(inset_face(m, f, amounts[0]));
+    } else if (verb == "bevel") {
+        EXPECT_TRUE(v.is_valid() ? bevel_vertex(m, v, amounts[0]).ok()
+                                 : bevel_edge(m, e, amounts[0]).ok());
+    } else if (verb == "triangulate") {
+        triangulate(m);
+    } else if (verb == "flip_orientation") {
+        flip_orientation(m);
     } else if (verb == "crease") {
         auto crease = m.property<Edge, std::uint8_t>(kCreaseProperty, 0);
         crease[e] = crease[e] != 0 ? 0 : 1;
@@ -113,6 +141,7 @@ public:
     std::size_t undos() const { return undos_; }
     std::size_t loops() const { return loops_; }
     std::size_t drags() const { return drags_; }
+    std::size_t modals() const { return modals_; }
 
 private:
     int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
@@ -156,15 +185,61 @@ private:
             return;
         }
         ASSERT_NE(ed_.document().revision, before.revision);
-        Edge e;
-        if (verb != "loop") {
-            ASSERT_TRUE(s.kind == Kind::Edge || s.kind == Kind::Halfedge);
-            e = s.kind == Kind::Edge ? Edge(s.index) : Mesh::edge(Halfedge(s.index));
-        }
-        ASSERT_TRUE(test::identical(ed_.mesh(), apply_directly(before.mesh, verb, e)))
+        ASSERT_TRUE(test::identical(ed_.mesh(), apply_directly(before.mesh, verb, s)))
             << verb << " at step " << step_;
         record_edit(before);
         loops_ += verb == "loop";
+    }
+
+    /// An interactive edit on the selection: mouse motion, then a typed amount; confirmed
+    /// (one undo step equal to the core operation with the typed amount) or cancelled (the
+    /// document bit for bit as before).
+    void modal_op() {
+        random_select();
+        const Document before = ed_.document();
+        const ElementRef s = before.selection;
+        const int which = uniform(0, 2);
+        const Modal kinds[] = {Modal::Extrude, Modal::Inset, Modal::Bevel};
+        const char* verbs[] = {"extrude", "inset", "bevel"};
+        const Outcome began = ed_.begin_modal(kinds[which]);
+        if (began.refused) {
+            ++refusals_;
+            ASSERT_TRUE(same_document(ed_.document(), before)) << began.message;
+            return;
+        }
+        ModalInput in;
+        in.dx = uniform(-200, 200);
+        in.dy = uniform(-200, 200);
+        in.pixel = 0.01;
+        ed_.modal_input(in);
+        const std::string typed[] = {"0.25", "0.1", "0.5"};
+        const std::string amount = typed[uniform(0, 2)];
+        for (char c : amount) {
+            ed_.modal_type(c);
+        }
+        std::array<double, 2> amounts{std::stod(amount), 0.0};
+        if (which == 0 && uniform(0, 1) == 0) {
+            for (char c : std::string(",0.5")) {
+                ed_.modal_type(c);
+            }
+            amounts[1] = 0.5;
+        }
+        if (uniform(0, 3) == 0) {
+            ed_.cancel_modal();
+            ASSERT_TRUE(same_document(ed_.document(), before)) << "cancelled at step " << step_;
+            return;
+        }
+        const Outcome out = ed_.confirm_modal();
+        if (out.refused) {
+            ++refusals_;
+            ASSERT_TRUE(same_document(ed_.document(), before)) << out.message;
+            return;
+        }
+        ASSERT_TRUE(
+            test::identical(ed_.mesh(), apply_directly(before.mesh, verbs[which], s, amounts)))
+            << verbs[which] << " at step " << step_;
+        record_edit(before);
+        ++modals_;
     }
 
     void drag() {
@@ -230,12 +305,19 @@ private:
 
     void one_command() {
         const int roll = uniform(0, 99);
-        if (roll < 40) {
+        if (roll < 30) {
             random_select();
             const std::string_view ops[] = {"flip", "split", "collapse", "crease"};
             // Collapse a little more often than split, so the mesh does not only grow.
             const int pick = uniform(0, 9);
             mesh_op(ops[pick < 3 ? 0 : pick < 5 ? 1 : pick < 9 ? 2 : 3]);
+        } else if (roll < 36) {
+            random_select();
+            const std::string_view ops[] = {"bisect",      "dissolve",    "make_boundary",   "poke",
+                                            "triangulate", "triangulate", "flip_orientation"};
+            mesh_op(ops[uniform(0, 6)]);
+        } else if (roll < 40) {
+            modal_op();
         } else if (roll < 44) {
             if (ed_.mesh().n_faces() < 200) {
                 mesh_op("loop");
@@ -267,6 +349,7 @@ private:
     std::size_t undos_ = 0;
     std::size_t loops_ = 0;
     std::size_t drags_ = 0;
+    std::size_t modals_ = 0;
 };
 
 }  // namespace meshedit::viewer

@@ -20,6 +20,7 @@ TEST(UndoSweep, ThousandRandomCommandsUndoBitForBit) {
     EXPECT_GT(sweep.undos(), 50u);
     EXPECT_GE(sweep.loops(), 2u);
     EXPECT_GT(sweep.drags(), 20u);
+    EXPECT_GT(sweep.modals(), 10u);
     sweep.unwind_and_replay();
 }
 

@@ -1,14 +1,16 @@
 #pragma once
 /// \file
-/// The edit language: named steps such as `flip:3-4`, `split:0-1`, `loop:2`, written as a
-/// comma list after `--ops` (`meshedit convert`, `meshedit render`, `meshedit-make-samples`)
-/// and run by the viewer for its keys, so that every program edits through the same code.
+/// The edit language: named steps such as `flip:3-4`, `dissolve:v12`, `extrude:f7:0.2,0.9`,
+/// `weld:0-1+5-6`, `loop:2`, written as a comma list after `--ops` (`meshedit convert`, `meshedit
+/// render`, `meshedit-make-samples`) and run by the viewer for its keys, so that every program
+/// edits through the same code.
 ///
 /// One table, verbs(), holds each verb's name, argument shape, help texts and functions; the
 /// parser, `--help`, the table in docs/cli.md (checked by a test) and the viewer's key help
 /// all come from it. Adding an operation to the language is adding a row (see
 /// docs/contributing.md).
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -23,22 +25,36 @@
 
 namespace meshedit::ops {
 
-/// How a verb's argument is written.
-enum class Shape {
-    None,    ///< `triangulate`
-    Edge,    ///< `flip:A-B`: an edge, by the vertex indices of its two ends
-    Levels,  ///< `loop` or `loop:K` (K from 1 to 12)
+/// What a step's argument names; a verb accepts one or more (Verb::takes, a mask of these).
+enum Arg : unsigned {
+    kWholeMesh = 1u << 0,  ///< no argument: `triangulate`
+    kLevels = 1u << 1,     ///< `loop:K` (K from 1 to 12)
+    kVertexArg = 1u << 2,  ///< `dissolve:v12`: a vertex by its index
+    kEdgeArg = 1u << 3,    ///< `flip:A-B`: an edge by the indices of its two ends
+    kFaceArg = 1u << 4,    ///< `extrude:f7`: a face by its index
+    kEdgePair = 1u << 5,   ///< `weld:A-B+C-D`: two edges
 };
+
+/// The element kind a step names.
+enum class Target { None, Vertex, Edge, Face, EdgePair };
 
 struct Verb;
 
-/// One parsed step: a verb and its argument.
+/// At most this many numbers follow a step's element (`extrude:f7:0.2,0.9`).
+inline constexpr std::size_t kMaxAmounts = 2;
+
+/// One parsed step: a verb, the element it names and its amounts.
 struct Step {
     const Verb* verb = nullptr;
-    std::uint32_t a = 0;  ///< Shape::Edge: first end
-    std::uint32_t b = 0;  ///< Shape::Edge: second end
-    int levels = 1;       ///< Shape::Levels
-    std::string text;     ///< the step as written ("flip:3-4"), for messages
+    Target target = Target::None;
+    std::uint32_t a = 0;  ///< Edge, EdgePair: first end; Vertex, Face: the index
+    std::uint32_t b = 0;  ///< Edge, EdgePair: second end
+    std::uint32_t c = 0;  ///< EdgePair: the second edge's ends
+    std::uint32_t d = 0;
+    int levels = 1;  ///< kLevels
+    /// The amounts (height, shrink, t): as written, the verb's defaults after them.
+    std::array<double, kMaxAmounts> amounts{};
+    std::string text;  ///< the step as written ("flip:3-4"), for messages
 };
 
 /// What a step did.
@@ -66,8 +82,13 @@ struct RunOptions {
 
 /// A row of the table.
 struct Verb {
-    std::string_view name;    ///< "flip"
-    Shape shape;              ///< how its argument is written
+    std::string_view name;  ///< "flip"
+    unsigned takes;         ///< what its argument may name: a mask of Arg
+    /// How many amounts may follow the element (0 to kMaxAmounts), how many must, and the
+    /// values of those left out.
+    std::uint8_t max_amounts = 0;
+    std::uint8_t min_amounts = 0;
+    std::array<double, kMaxAmounts> defaults{};
     std::string_view syntax;  ///< "flip:A-B"
     std::string_view help;    ///< for `--help` and docs/cli.md
     /// For the viewer's key table, as the step applies to the selection or the whole mesh
@@ -78,6 +99,8 @@ struct Verb {
     std::string (*check)(const Mesh& mesh, const Step& step);
     /// Runs the step. \pre check() returned empty.
     StepResult (*run)(Mesh& mesh, const Step& step, const RunOptions& options);
+
+    bool accepts(Target target) const;
 };
 
 /// Every verb, in the order `--help` and the docs list them.
@@ -109,12 +132,20 @@ Step parse_step(std::string_view text);
 /// Parses a comma list. \throws SyntaxError naming the offending item.
 std::vector<Step> parse(std::string_view list);
 
-/// The step `verb` on edge `e` of `mesh` (named by its ends, as the language names it), or
-/// on the whole mesh for verbs of other shapes. \pre `verb` exists.
-Step make_step(std::string_view verb, const Mesh& mesh, Edge e = Edge());
+/// The step `verb` on `target` (a vertex, edge or face of `mesh`; none for whole-mesh verbs;
+/// `second` the other edge of a weld) with `amounts` (fewer than the verb takes: its
+/// defaults), written as the language writes it, so that its text parses back to the same
+/// step. \pre `verb` exists and accepts the target.
+Step make_step(std::string_view verb, const Mesh& mesh, const ElementRef& target = {},
+               std::span<const double> amounts = {}, const ElementRef& second = {});
 
-/// The edge a Shape::Edge step names. \throws OpError (not a refusal) if there is none.
+/// The elements a step names. \throws OpError (not a refusal) if the mesh has no such
+/// element (a vertex or face index out of range or deleted, no edge between two vertices).
+Vertex named_vertex(const Mesh& mesh, const Step& step);
 Edge named_edge(const Mesh& mesh, const Step& step);
+Face named_face(const Mesh& mesh, const Step& step);
+/// A weld's second edge (C-D).
+Edge named_second_edge(const Mesh& mesh, const Step& step);
 
 /// Runs one step: check(), then run(). \throws OpError with "<step> refused: <reason>".
 StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options = {});
@@ -134,7 +165,9 @@ struct ApplyOptions {
 /// vertices keep their indices). Loop levels are checked against plan_loop() before any step
 /// runs. \throws OpError; steps before the failing one stay applied (callers write nothing
 /// on error).
-void apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOptions& options = {});
+/// \return what the last step selected (its StepResult::selected): the result to show.
+ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps,
+                       const ApplyOptions& options = {});
 
 /// "flip:A-B split:A-B …" for a one-line usage.
 std::string syntax_list();

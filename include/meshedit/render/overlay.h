@@ -136,6 +136,8 @@ struct SceneContent {
     /// Mesh elements, or a curve's control points as Vertex refs.
     ElementRef selected;
     ElementRef hovered;
+    /// Meshes: elements selected besides `selected` (drawn alike).
+    std::span<const ElementRef> also_selected;
 };
 
 /// Everything the overlay shows besides feature edges: control nets, the hovered and the

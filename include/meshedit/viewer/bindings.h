@@ -29,11 +29,25 @@ constexpr ModeMask mode_bit(Mode mode) {
     return mode == Mode::Mesh ? kMeshMode : mode == Mode::Surface ? kSurfaceMode : kCurveMode;
 }
 
+/// The interactive edits: a key starts one, the mouse (or typed numbers) sets its amount
+/// live, and it ends confirmed (one undo step) or cancelled (the document as it was, bit for
+/// bit). Editor::begin_modal().
+enum class Modal { None, Extrude, Inset, Bevel, Move, Rotate, Scale };
+
 /// Everything a key can ask for.
 enum class Command {
     /// An edit of the mesh: the verb of the edit language (meshedit/ops/ops.h) named by
     /// Action::verb, applied to the selection (edge verbs) or the whole mesh.
     Edit,
+    /// An interactive edit; argument: the Modal, as an int.
+    Interactive,
+    /// Dissolves the selected vertices and edges, makes the selected faces holes.
+    Delete,
+    // Selecting.
+    SelectAll,
+    SelectNone,
+    SelectLoop,      ///< the hole beside the selected boundary edge
+    FrameSelection,  ///< the camera centres on the selection
     // Moving the selection through the connectivity.
     Next,
     Twin,
@@ -84,6 +98,10 @@ struct Action {
 /// The action that runs the edit-language verb `verb` ("flip").
 constexpr Action edit(std::string_view verb) {
     return {Command::Edit, 0, verb};
+}
+/// The action that starts an interactive edit.
+constexpr Action interactive(Modal kind) {
+    return {Command::Interactive, static_cast<int>(kind), {}};
 }
 
 struct Binding {

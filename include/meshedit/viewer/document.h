@@ -29,8 +29,11 @@ struct Document {
     std::vector<BezierPatch> patches;  ///< Surface mode
     int density = 8;                   ///< Surface mode: quads per patch side
     BezierCurve curve;                 ///< Curve mode
-    ElementRef selection;              ///< Curve mode: Vertex = control point index
-    std::uint64_t revision = 0;        ///< identifies the content; new on every edit
+    ElementRef selection;              ///< the active element; Curve mode: Vertex = control point
+    /// Mesh and Surface modes: elements selected besides the active one (Shift+click, Ctrl+A,
+    /// a boundary loop), in the order they were added; never holds `selection`.
+    std::vector<ElementRef> also_selected;
+    std::uint64_t revision = 0;  ///< identifies the content; new on every edit
 
     /// Bytes this document holds (for the history budget).
     std::size_t bytes() const;

@@ -4,6 +4,7 @@
 /// display toggles and every key command. The window (src/viewer/app.cpp) turns input into
 /// calls here and reads back what to redraw; unit tests drive the same calls directly.
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -35,8 +36,20 @@ enum Change : unsigned {
     kAskSavePath = 1u << 7,  ///< the window should ask for a path, then call save_as()
     kAskOpenPath = 1u << 8,  ///< the window should ask for a path, then call open()
     kQuit = 1u << 9,
-    kDocument = 1u << 10,  ///< a different document (open, undo/redo): reframe nothing,
-                           ///< re-upload everything
+    kDocument = 1u << 10,        ///< a different document (open, undo/redo): reframe nothing,
+                                 ///< re-upload everything
+    kFrameSelection = 1u << 11,  ///< the camera should centre on selection_bounds()
+};
+
+/// What the window measured since the interactive edit began.
+struct ModalInput {
+    double dx = 0.0;     ///< cursor motion in pixels, right positive
+    double dy = 0.0;     ///< cursor motion in pixels, up positive
+    double pixel = 0.0;  ///< world size of a pixel at the selection's depth
+    Vec3 offset;         ///< the cursor's world motion in the screen plane through the centre
+    double angle = 0.0;  ///< radians the cursor turned about the centre on screen, anticlockwise
+    double scale = 1.0;  ///< the cursor's distance from the centre on screen, now / at the start
+    Vec3 toward_viewer;  ///< unit vector from the selection's centre toward the eye
 };
 
 /// The result of a command: what changed, and a status line for the user (empty when there
@@ -123,15 +136,59 @@ public:
 
     // ---------------------------------------------------------- mesh edits (editor_mesh.cpp)
 
-    /// Runs the edit-language verb `verb` ("flip") on the selected edge (edge verbs; a
-    /// selected halfedge stands for its edge, as in CS184) or on the whole mesh.
+    /// Runs the edit-language verb `verb` ("flip"): a whole-mesh verb on the mesh; an element
+    /// verb on every selected element it accepts (a selected halfedge stands for its edge, as
+    /// in CS184), one after another in one undo step, skipping those an earlier one removed;
+    /// `weld` on the two selected edges. Refused, with the first reason, when none can run.
     Outcome edit_mesh(std::string_view verb);
+    /// Delete (Scotty3D's): dissolves the selected vertices and edges and makes the selected
+    /// faces holes, in one undo step.
+    Outcome delete_selection();
+
+    // ------------------------------------------------- interactive edits (editor_modal.cpp)
+
+    /// Starts an interactive edit on the selection: extrude or inset the selected faces, bevel
+    /// the selected vertices or edges, move, rotate or scale the selected elements' vertices.
+    /// Refused (nothing starts) when the selection has nothing it applies to.
+    Outcome begin_modal(Modal kind);
+    Modal modal() const { return modal_.kind; }
+    /// During an interactive edit, the keys it takes: Enter confirms, Esc cancels, digits
+    /// . - , Backspace type the amount, X Y Z lock an axis (move, rotate, scale). nullopt
+    /// for any other key (press() then confirms the edit and runs the key, as Blender does).
+    std::optional<Outcome> modal_key(Key key, unsigned mods);
+    /// Sets the amount from the mouse (ignored after a number was typed).
+    Outcome modal_input(const ModalInput& input);
+    /// A typed character: digits, '.', '-', ',' (extrude: height,shrink) or '\b' (erase); the
+    /// typed number replaces the mouse's amount.
+    Outcome modal_type(char c);
+    /// Move, rotate, scale: lock to world axis 0, 1, 2 (X, Y, Z); the same axis again unlocks.
+    Outcome modal_axis(int axis);
+    /// Keeps the edit as one undo step (Enter, left click).
+    Outcome confirm_modal();
+    /// Puts the document back as it was before begin_modal() (Esc, right click).
+    Outcome cancel_modal();
+    /// "extrude height 0.25, shrink 0.1 — Enter/click to apply, Esc/right-click to cancel".
+    std::string modal_status() const;
 
     // ------------------------------------------------ selection, drags (editor_selection.cpp)
 
     /// Selection and hover from picking (ElementRef of the mesh, or in Curve mode a Vertex
     /// ref whose index is a control point). Invalid or deleted elements select nothing.
+    /// Replaces the whole selection.
     Outcome select(ElementRef element);
+    /// Shift+click: adds `element` to the selection as the active element, or removes it if
+    /// it is selected already.
+    Outcome toggle_select(ElementRef element);
+    /// Ctrl+A: every live element of the active element's kind (faces if nothing is
+    /// selected). Alt+A: nothing.
+    Outcome select_all();
+    Outcome select_none();
+    /// Selects every edge of the hole the selected boundary edge (or halfedge) borders.
+    Outcome select_boundary_loop();
+    /// The active element first, then the others; none deleted.
+    std::vector<ElementRef> selected() const;
+    /// The box around the selected elements' vertices (for framing), or none.
+    std::optional<std::pair<Vec3, Vec3>> selection_bounds() const;
     void set_hover(ElementRef element) { hover_ = element; }
 
     /// Dragging the selected vertex (or control point): begin records one undo step,
@@ -156,6 +213,7 @@ public:
     const Mesh& mesh() const { return doc_.mesh; }
     Mode mode() const { return doc_.mode; }
     const ElementRef& selection() const { return doc_.selection; }
+    const std::vector<ElementRef>& also_selected() const { return doc_.also_selected; }
     const ElementRef& hover() const { return hover_; }
     ViewState& view() { return view_; }
     const ViewState& view() const { return view_; }
@@ -193,7 +251,30 @@ private:
     /// Garbage-collects the mesh, remapping the selection, when it has deleted elements.
     void compact();
 
+    /// The interactive edit under way (kind None: none).
+    struct ModalState {
+        Modal kind = Modal::None;
+        Document base;                        ///< the document before it
+        std::vector<ElementRef> targets;      ///< Extrude, Inset, Bevel: the elements
+        std::vector<std::uint32_t> vertices;  ///< Move, Rotate, Scale: the vertices moved
+        Vec3 center;                          ///< Rotate, Scale: the pivot
+        /// The amounts now: extrude height and shrink; inset shrink; bevel t; rotate degrees;
+        /// scale factor.
+        std::array<double, 2> amounts{};
+        Vec3 offset;          ///< Move: the offset now
+        Vec3 rotation_axis;   ///< Rotate: the unit axis now
+        std::string typed;    ///< digits typed so far
+        int axis = -1;        ///< the locked axis, or −1
+        ModalInput last;      ///< the last mouse input
+        std::string refusal;  ///< why the amounts now cannot apply, or empty
+    };
+    /// Runs the modal edit with its amounts on a copy of its base.
+    Outcome apply_modal();
+
+    /// " (3 selected)" when more than one element is selected.
+    std::string count_text() const;
     Outcome run_navigation(Command command);
+    Outcome run_selection(Command command);
     Outcome run_curve(Action action);
     Outcome run_surface(Command command);
     Outcome run_display(Action action);
@@ -210,6 +291,7 @@ private:
     std::filesystem::path path_;
     std::uint64_t saved_revision_ = 0;
     std::uint64_t next_revision_ = 1;
+    ModalState modal_;
     bool dragging_ = false;
     bool drag_moved_ = false;
     Vec3 drag_from_;  ///< where the dragged point was before the drag

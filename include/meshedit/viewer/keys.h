@@ -11,7 +11,9 @@ namespace meshedit::viewer {
 enum class Key : int {
     Unknown = -1,
     Space = 32,
+    Comma = 44,
     Minus = 45,  ///< '-'
+    Period = 46,
     Slash = 47,  ///< '/' ('?' is Shift+Slash)
     Num0 = 48,   ///< '0' … '9' are Num0 + d
     Equal = 61,  ///< '=' ('+' is Shift+Equal)
@@ -19,9 +21,14 @@ enum class Key : int {
     LeftBracket = 91,
     RightBracket = 93,
     Escape = 256,
+    Enter = 257,
+    Backspace = 259,
+    Delete = 261,
     F1 = 290,
+    KeypadDecimal = 330,
     KeypadSubtract = 333,
     KeypadAdd = 334,
+    KeypadEnter = 335,
 };
 
 /// The key for a letter 'A'…'Z' or a digit '0'…'9'.

@@ -1,0 +1,381 @@
+// The editor's interactive edits (editor.h, Modal): extrude, inset and bevel re-run their verb
+// on a copy of the document as it was whenever the amount changes; move, rotate and scale set
+// the selected vertices from their positions as they were. Confirming pushes that document as
+// one undo step; cancelling puts it back.
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "meshedit/ops/ops.h"
+#include "meshedit/viewer/editor.h"
+#include "selection_steps.h"
+
+namespace meshedit::viewer {
+
+namespace {
+
+// A drag of this many pixels sets a unitless amount (shrink, t) to 1.
+constexpr double kPixelsPerUnit = 300.0;
+// Unitless amounts stop short of 1, where the new face would be a point.
+constexpr double kMaxFraction = 0.95;
+constexpr double kPi = 3.14159265358979323846;
+
+const char* verb_of(Modal kind) {
+    switch (kind) {
+        case Modal::Extrude:
+            return "extrude";
+        case Modal::Inset:
+            return "inset";
+        case Modal::Bevel:
+            return "bevel";
+        default:
+            return nullptr;
+    }
+}
+
+const char* name_of(Modal kind) {
+    switch (kind) {
+        case Modal::Move:
+            return "move";
+        case Modal::Rotate:
+            return "rotate";
+        case Modal::Scale:
+            return "scale";
+        default:
+            return verb_of(kind);
+    }
+}
+
+Vec3 unit_axis(int axis) {
+    Vec3 a;
+    a[axis] = 1.0;
+    return a;
+}
+
+// "0.25,0.1" as typed, into up to two numbers; an unfinished number ("-", "") counts as 0.
+std::array<double, 2> typed_numbers(const std::string& typed, std::size_t& count) {
+    std::array<double, 2> out{};
+    count = 0;
+    std::size_t start = 0;
+    while (start <= typed.size() && count < out.size()) {
+        const std::size_t comma = std::min(typed.find(',', start), typed.size());
+        const char* first = typed.data() + start;
+        double value = 0.0;
+        std::from_chars(first, typed.data() + comma, value);
+        out[count++] = value;
+        start = comma + 1;
+    }
+    return out;
+}
+
+// Rodrigues: `p` turned `radians` about the unit `axis` through `center`.
+Vec3 rotated(const Vec3& p, const Vec3& center, const Vec3& axis, double radians) {
+    const Vec3 v = p - center;
+    const double c = std::cos(radians);
+    const double s = std::sin(radians);
+    return center + v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
+}
+
+std::string number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", x);
+    return text;
+}
+
+}  // namespace
+
+Outcome Editor::begin_modal(Modal kind) {
+    if (modal_.kind != Modal::None) {
+        cancel_modal();
+    }
+    if (doc_.mode == Mode::Curve || kind == Modal::None) {
+        return refused("interactive edits are for meshes");
+    }
+    const std::vector<ElementRef> sel = selected();
+    ModalState m;
+    m.kind = kind;
+    if (const char* verb = verb_of(kind)) {
+        std::string hint;
+        const ops::Verb& v = *ops::find_verb(verb);
+        if (steps_for_selection(doc_.mesh, v, sel, {}, hint).empty()) {
+            return refused(hint);
+        }
+        m.targets = sel;
+    } else {
+        m.vertices = selected_vertices(doc_.mesh, sel);
+        if (m.vertices.empty()) {
+            return refused(std::string("select something to ") + name_of(kind) + " first");
+        }
+        for (const std::uint32_t v : m.vertices) {
+            m.center += doc_.mesh.position(Vertex(v));
+        }
+        m.center /= static_cast<double>(m.vertices.size());
+        m.amounts = {kind == Modal::Scale ? 1.0 : 0.0, 0.0};
+    }
+    m.base = doc_;
+    end_drag();
+    modal_ = std::move(m);
+    return apply_modal();
+}
+
+std::optional<Outcome> Editor::modal_key(Key key, unsigned mods) {
+    if (modal_.kind == Modal::None) {
+        return std::nullopt;
+    }
+    const int k = static_cast<int>(key);
+    const int digit0 = static_cast<int>(Key::Num0);
+    const int keypad0 = 320;  // GLFW_KEY_KP_0
+    if ((mods & (kCtrl | kAlt)) != 0) {
+        return std::nullopt;
+    }
+    switch (key) {
+        case Key::Enter:
+        case Key::KeypadEnter:
+            return confirm_modal();
+        case Key::Escape:
+            return cancel_modal();
+        case Key::Backspace:
+            return modal_type('\b');
+        case Key::Period:
+        case Key::KeypadDecimal:
+            return modal_type('.');
+        case Key::Minus:
+        case Key::KeypadSubtract:
+            return modal_type('-');
+        case Key::Comma:
+            return modal_type(',');
+        default:
+            break;
+    }
+    if (k >= digit0 && k <= digit0 + 9 && mods == kNoMods) {
+        return modal_type(static_cast<char>('0' + k - digit0));
+    }
+    if (k >= keypad0 && k <= keypad0 + 9) {
+        return modal_type(static_cast<char>('0' + k - keypad0));
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        if (key == key_of(static_cast<char>('X' + axis)) && mods == kNoMods &&
+            modal_.kind >= Modal::Move) {
+            return modal_axis(axis);
+        }
+    }
+    return std::nullopt;
+}
+
+Outcome Editor::modal_input(const ModalInput& in) {
+    if (modal_.kind == Modal::None) {
+        return {};
+    }
+    modal_.last = in;
+    if (!modal_.typed.empty()) {
+        return {};
+    }
+    const double along = std::hypot(in.dx, in.dy) / kPixelsPerUnit;
+    switch (modal_.kind) {
+        case Modal::Extrude:
+            modal_.amounts = {in.dy * in.pixel,
+                              std::clamp(in.dx / kPixelsPerUnit, -kMaxFraction, kMaxFraction)};
+            break;
+        case Modal::Inset:
+        case Modal::Bevel:
+            modal_.amounts[0] = std::min(along, kMaxFraction);
+            break;
+        case Modal::Move:
+            modal_.offset = in.offset;
+            if (modal_.axis >= 0) {
+                const Vec3 a = unit_axis(modal_.axis);
+                modal_.offset = a * dot(in.offset, a);
+            }
+            break;
+        case Modal::Rotate:
+            modal_.amounts[0] = in.angle * 180.0 / kPi;
+            break;
+        case Modal::Scale:
+            modal_.amounts[0] = in.scale;
+            break;
+        case Modal::None:
+            break;
+    }
+    return apply_modal();
+}
+
+Outcome Editor::modal_type(char c) {
+    if (modal_.kind == Modal::None) {
+        return {};
+    }
+    if (c == '\b') {
+        if (!modal_.typed.empty()) {
+            modal_.typed.pop_back();
+        }
+    } else if ((c >= '0' && c <= '9') || c == '.' || c == '-' ||
+               (c == ',' && modal_.kind == Modal::Extrude)) {
+        modal_.typed += c;
+    } else if (c != '\0') {  // '\0': re-apply what is typed (an axis changed)
+        return {};
+    }
+    if (modal_.typed.empty()) {
+        return modal_input(modal_.last);  // back to the mouse's amount
+    }
+    std::size_t count = 0;
+    const std::array<double, 2> typed = typed_numbers(modal_.typed, count);
+    switch (modal_.kind) {
+        case Modal::Extrude:
+            modal_.amounts = {typed[0], count > 1 ? typed[1] : 0.0};
+            break;
+        case Modal::Move:
+            // A typed distance goes along the locked axis (X when none is), as in Blender.
+            modal_.offset = unit_axis(std::max(modal_.axis, 0)) * typed[0];
+            break;
+        default:
+            modal_.amounts[0] = typed[0];
+            break;
+    }
+    return apply_modal();
+}
+
+Outcome Editor::modal_axis(int axis) {
+    if (modal_.kind != Modal::Move && modal_.kind != Modal::Rotate && modal_.kind != Modal::Scale) {
+        return {};
+    }
+    modal_.axis = modal_.axis == axis ? -1 : axis;
+    return modal_.typed.empty() ? modal_input(modal_.last) : modal_type('\0');
+}
+
+Outcome Editor::apply_modal() {
+    ModalState& m = modal_;
+    m.refusal.clear();
+    if (const char* verb = verb_of(m.kind)) {
+        Document doc = m.base;
+        std::string hint;
+        const ops::Verb& v = *ops::find_verb(verb);
+        const std::size_t n = v.max_amounts;
+        const std::vector<ops::Step> steps = steps_for_selection(
+            doc.mesh, v, m.targets, std::span<const double>(m.amounts.data(), n), hint);
+        const StepsRun run = run_steps(doc.mesh, steps);
+        if (run.ran == 0) {
+            m.refusal = run.first_refusal;
+            doc = m.base;
+        } else {
+            doc.selection = run.made.empty() ? ElementRef{} : run.made.back();
+            doc.also_selected.assign(run.made.begin(), run.made.end() - (run.made.empty() ? 0 : 1));
+        }
+        doc_ = std::move(doc);
+        compact();
+        hover_ = {};
+        return {kTopology | kSelection, modal_status()};
+    }
+    const Mesh& base = m.base.mesh;
+    if (m.kind == Modal::Rotate) {
+        m.rotation_axis = m.axis >= 0 ? unit_axis(m.axis) : m.last.toward_viewer;
+        if (!(sqrnorm(m.rotation_axis) > 0.0)) {
+            m.rotation_axis = unit_axis(2);  // no view yet (tests): about Z
+        }
+    }
+    for (const std::uint32_t i : m.vertices) {
+        const Vec3& p = base.position(Vertex(i));
+        Vec3 q = p;
+        switch (m.kind) {
+            case Modal::Move:
+                q = p + m.offset;
+                break;
+            case Modal::Rotate:
+                q = rotated(p, m.center, m.rotation_axis, m.amounts[0] * kPi / 180.0);
+                break;
+            case Modal::Scale:
+                if (m.axis >= 0) {
+                    q[m.axis] = m.center[m.axis] + (p[m.axis] - m.center[m.axis]) * m.amounts[0];
+                } else {
+                    q = m.center + (p - m.center) * m.amounts[0];
+                }
+                break;
+            default:
+                break;
+        }
+        if (!is_finite(q)) {
+            m.refusal = "the amount gives non-finite positions";
+            q = p;
+        }
+        doc_.mesh.position(Vertex(i)) = q;
+    }
+    return {kGeometry | kSelection, modal_status()};
+}
+
+Outcome Editor::confirm_modal() {
+    if (modal_.kind == Modal::None) {
+        return {};
+    }
+    ModalState m = std::move(modal_);
+    modal_ = {};
+    if (!m.refusal.empty()) {
+        doc_ = std::move(m.base);
+        return {kTopology | kSelection, std::string(name_of(m.kind)) + " not applied: " + m.refusal,
+                true};
+    }
+    const bool unchanged =
+        verb_of(m.kind) == nullptr &&
+        std::all_of(m.vertices.begin(), m.vertices.end(), [&](std::uint32_t v) {
+            return doc_.mesh.position(Vertex(v)) == m.base.mesh.position(Vertex(v));
+        });
+    if (unchanged) {
+        return {kSelection, "nothing moved"};
+    }
+    const std::string what = std::string(name_of(m.kind)) + " applied (Ctrl+Z undoes it)";
+    history_.push(std::move(m.base));
+    doc_.revision = next_revision_++;
+    quit_armed_ = false;
+    replace_armed_ = false;
+    return {verb_of(m.kind) != nullptr ? kTopology | kSelection : kGeometry | kSelection, what};
+}
+
+Outcome Editor::cancel_modal() {
+    if (modal_.kind == Modal::None) {
+        return {};
+    }
+    const Modal kind = modal_.kind;
+    doc_ = std::move(modal_.base);
+    modal_ = {};
+    hover_ = {};
+    return {kTopology | kSelection, std::string(name_of(kind)) + " cancelled"};
+}
+
+std::string Editor::modal_status() const {
+    const ModalState& m = modal_;
+    std::string out = name_of(m.kind);
+    switch (m.kind) {
+        case Modal::Extrude:
+            out += " height " + number(m.amounts[0]) + ", shrink " + number(m.amounts[1]);
+            break;
+        case Modal::Inset:
+            out += " shrink " + number(m.amounts[0]);
+            break;
+        case Modal::Bevel:
+            out += " t " + number(m.amounts[0]);
+            break;
+        case Modal::Move:
+            out += " by (" + number(m.offset.x) + ", " + number(m.offset.y) + ", " +
+                   number(m.offset.z) + ")";
+            break;
+        case Modal::Rotate:
+            out += " " + number(m.amounts[0]) + "°";
+            break;
+        case Modal::Scale:
+            out += " ×" + number(m.amounts[0]);
+            break;
+        case Modal::None:
+            return {};
+    }
+    if (m.axis >= 0) {
+        out += std::string(" along ") + "XYZ"[m.axis];
+    }
+    if (!m.typed.empty()) {
+        out += " (typed " + m.typed + ")";
+    }
+    if (!m.refusal.empty()) {
+        out += " — refused: " + m.refusal;
+    }
+    return out + " — Enter or click applies, Esc or right-click cancels";
+}
+
+}  // namespace meshedit::viewer

@@ -1,0 +1,39 @@
+#pragma once
+// Private: the steps of the edit language a verb makes of the selection, and running them one
+// after another (editor_mesh.cpp for keys, editor_modal.cpp for drags).
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "meshedit/core/element_ref.h"
+#include "meshedit/ops/ops.h"
+
+namespace meshedit::viewer {
+
+/// The steps of `verb` on the selected elements it accepts, in selection order (a halfedge
+/// stands for its edge); for weld the one step on the two selected edges. Empty when the
+/// selection has nothing the verb takes; then `hint` says what to select.
+std::vector<ops::Step> steps_for_selection(const Mesh& mesh, const ops::Verb& verb,
+                                           const std::vector<ElementRef>& selected,
+                                           std::span<const double> amounts, std::string& hint);
+
+/// The vertices of the selected elements (a face's corners, an edge's ends), each once, in
+/// increasing order.
+std::vector<std::uint32_t> selected_vertices(const Mesh& mesh,
+                                             const std::vector<ElementRef>& selected);
+
+/// What running a list of steps did.
+struct StepsRun {
+    std::size_t ran = 0;
+    std::size_t refused = 0;       ///< refused, or naming an element an earlier step removed
+    std::string first_refusal;     ///< "dissolve:v3 refused: cannot dissolve: …"
+    std::vector<ElementRef> made;  ///< each step's result, where it has one
+    std::string message;           ///< for the status line
+};
+
+/// Runs each step whose check passes, in order, on `mesh`; a step that names an element an
+/// earlier one removed counts as refused.
+StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps);
+
+}  // namespace meshedit::viewer
