@@ -35,6 +35,13 @@ struct GoldenCase {
 // Small enough to keep every PNG far under 100 KB, large enough to see facets and arrows.
 const char* const kSize = "384x288";
 
+// A polygon-mesh case: `ops` on the quad ball, the result selected.
+GoldenCase poly(const std::string& name, const std::string& ops) {
+    return {"poly_" + name,
+            "dae/quadball.dae",
+            {"--ops", ops, "--select", "result", "--flat", "--wireframe"}};
+}
+
 // The table. Names group by subject (prefix) so the gallery and a --gtest_filter read well.
 const std::vector<GoldenCase>& golden_cases() {
     static const std::vector<GoldenCase> cases = {
@@ -94,6 +101,38 @@ const std::vector<GoldenCase>& golden_cases() {
         {"select_face",
          "dae/icosahedron.dae",
          {"--select", "f:0", "--wireframe", "--camera", "-45,35"}},
+        // Polygon meshes and their local operations (docs/halfedge.md): the quad ball, face
+        // 75 = 85-22-23-88 facing the camera, each result selected (--select result). The
+        // wireframe shows polygon edges, not the display's diagonals.
+        {"poly_input", "dae/quadball.dae", {"--flat", "--wireframe"}},
+        poly("extrude", "extrude:f75:0.4,0.3"),
+        poly("extrude_mid_drag", "extrude:f75:0.15,0.1"),
+        poly("inset", "inset:f75:0.4"),
+        poly("bevel_vertex", "bevel:v85:0.4"),
+        poly("bevel_mid_drag", "bevel:v85:0.2"),
+        poly("bevel_edge", "bevel:85-88:0.3"),
+        poly("poke", "poke:f75"),
+        poly("collapse_face", "collapse:f75"),
+        poly("collapse_edge", "collapse:85-88"),
+        poly("dissolve_edge", "dissolve:85-88"),
+        poly("dissolve_vertex", "dissolve:v85"),
+        poly("bisect", "bisect:85-88"),
+        poly("flip", "flip:85-88"),
+        poly("split", "split:85-88"),
+        poly("make_boundary", "make_boundary:f75"),
+        poly("fill", "make_boundary:f75,fill:85-22"),
+        // Weld: a six-sided hole, then its two edges at vertex 22 zipped into one.
+        {"poly_weld_before",
+         "dae/quadball.dae",
+         {"--ops", "make_boundary:f75,make_boundary:f74", "--select", "e:22-23", "--flat",
+          "--wireframe"}},
+        poly("weld", "make_boundary:f75,make_boundary:f74,weld:85-22+22-23"),
+        {"poly_triangulate", "dae/quadball.dae", {"--ops", "triangulate", "--flat", "--wireframe"}},
+        // Normals as colour: reversed faces point inward, so each shows the colour of the
+        // opposite side of the ball.
+        {"poly_flip_orientation",
+         "dae/quadball.dae",
+         {"--ops", "flip_orientation", "--shading", "0", "--flat", "--wireframe"}},
         // de Casteljau: every level of the degree-5 curve at t = 0.5, then t = 0.25.
         {"curve6_level0", "bez/curve6.bzc", {"--level", "0", "--t", "0.5"}},
         {"curve6_level1", "bez/curve6.bzc", {"--level", "1", "--t", "0.5"}},
