@@ -1,7 +1,9 @@
 // `meshedit info FILE [--json] [--density N]`: counts, topology, bounding box, repairs.
 
 #include <cstdio>
+#include <map>
 #include <memory>
+
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -139,6 +141,25 @@ std::size_t count_creases(const Mesh& mesh) {
     return n;
 }
 
+// How many faces have each number of corners, in increasing order of corners.
+std::map<std::size_t, std::size_t> face_degrees(const Mesh& mesh) {
+    std::map<std::size_t, std::size_t> count;
+    for (const Face f : mesh.faces()) {
+        ++count[mesh.valence(f)];
+    }
+    return count;
+}
+
+// "3: 12, 4: 90, 6: 2" (corners: faces).
+std::string degrees_text(const std::map<std::size_t, std::size_t>& degrees) {
+    std::string out;
+    for (const auto& [corners, faces] : degrees) {
+        out += (out.empty() ? "" : ", ") + std::to_string(corners) +
+               " corners: " + std::to_string(faces);
+    }
+    return out.empty() ? "none" : out;
+}
+
 // Everything `meshedit info` prints about `path`.
 int info(const std::filesystem::path& path, bool json, int density) {
     ReadOptions options;
@@ -154,6 +175,7 @@ int info(const std::filesystem::path& path, bool json, int density) {
     const std::vector<std::string> repairs = lines_of(input.repairs.summary());
     const BoundingBox box = mesh.bounds();
     const bool bez = input.kind == DocumentKind::Surface;
+    const std::map<std::size_t, std::size_t> degrees = face_degrees(mesh);
 
     if (json) {
         Json j;
@@ -167,6 +189,11 @@ int info(const std::filesystem::path& path, bool json, int density) {
         j["edges"] = stats.edges;
         j["faces"] = stats.faces;
         j["triangle_mesh"] = mesh.is_triangle_mesh();
+        Json histogram = Json::object();
+        for (const auto& [corners, faces] : degrees) {
+            histogram[std::to_string(corners)] = faces;
+        }
+        j["face_degrees"] = std::move(histogram);
         j["boundary_loops"] = stats.boundary_loops;
         j["components"] = stats.components;
         j["euler_characteristic"] = stats.euler_characteristic;
@@ -201,6 +228,7 @@ int info(const std::filesystem::path& path, bool json, int density) {
     print_row("edges", std::to_string(stats.edges));
     print_row("faces", std::to_string(stats.faces) +
                            (mesh.is_triangle_mesh() ? " (all triangles)" : " (polygons)"));
+    print_row("face degrees", degrees_text(degrees));
     print_row("boundary loops", std::to_string(stats.boundary_loops));
     print_row("components", std::to_string(stats.components));
     print_row("Euler characteristic", std::to_string(stats.euler_characteristic));

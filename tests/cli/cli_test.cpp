@@ -87,6 +87,24 @@ TEST(CliInfo, JsonCountsOfEverySample) {
     }
 }
 
+// The face-degree histogram: a poke turns one quad into four triangles, a dissolve merges two
+// quads into a hexagon.
+TEST(CliInfo, FaceDegreeHistogram) {
+    TempDir tmp;
+    const RunResult r =
+        run_meshedit({"convert", (repo_root() / "dae/quadball.dae").string(),
+                      (tmp / "out.dae").string(), "--ops", "poke:f3,dissolve:85-88"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(info_json(repo_root() / "dae/quadball.dae")["face_degrees"],
+              Json::parse(R"({"4": 96})"));
+    EXPECT_EQ(info_json(tmp / "out.dae")["face_degrees"],
+              Json::parse(R"({"3": 4, "4": 93, "6": 1})"));
+    const RunResult text = run_meshedit({"info", (tmp / "out.dae").string()});
+    EXPECT_NE(text.out.find("face degrees:          3 corners: 4, 4 corners: 93, 6 corners: 1"),
+              std::string::npos)
+        << text.out;
+}
+
 TEST(CliInfo, BoundingBoxOfCube) {
     const Json j = info_json(repo_root() / "dae/cube.dae");
     EXPECT_EQ(j["bbox"]["min"], Json::parse("[-1, -1, -1]"));
