@@ -1,0 +1,198 @@
+// The editor's polygon operations: several selected elements (Shift+click, Ctrl+A, a hole),
+// Delete, weld, and the interactive edits (extrude, bevel, move) confirmed, typed or
+// cancelled. Each edit equals the core operations run directly; a cancel leaves the document
+// bit for bit as it was, with no undo step.
+
+#include <gtest/gtest.h>
+
+#include "meshedit/core/local_ops.h"
+#include "support/fixtures.h"
+#include "support/mesh_compare.h"
+#include "viewer/editor_test_util.h"
+
+namespace meshedit::viewer {
+namespace {
+
+void type(Editor& ed, const std::string& text) {
+    for (char c : text) {
+        ed.modal_type(c);
+    }
+}
+
+// Shift+click adds, a second Shift+click on the same element removes it again.
+TEST(EditorPolygons, ShiftClickTogglesElements) {
+    Editor ed = editor_with(test::quad_cube());
+    ed.select(ElementRef::face(Face(0)));
+    ed.toggle_select(ElementRef::face(Face(2)));
+    ed.toggle_select(ElementRef::edge(Edge(3)));
+    EXPECT_EQ(ed.selected().size(), 3u);
+    EXPECT_EQ(ed.selection(), ElementRef::edge(Edge(3)));
+    ed.toggle_select(ElementRef::face(Face(2)));
+    EXPECT_EQ(ed.selected(),
+              (std::vector<ElementRef>{ElementRef::face(Face(0)), ElementRef::edge(Edge(3))}));
+    ed.toggle_select(ElementRef::edge(Edge(3)));  // the active one: the one before it takes over
+    EXPECT_EQ(ed.selected(), std::vector<ElementRef>{ElementRef::face(Face(0))});
+    EXPECT_EQ(ed.press(key_of('A'), kCtrl).message, "selected all 6 faces");
+    EXPECT_EQ(ed.selected().size(), 6u);
+    EXPECT_EQ(ed.press(key_of('A'), kAlt).message, "selection cleared");
+    EXPECT_TRUE(ed.selected().empty());
+}
+
+// Delete on two faces of the cube makes both holes in one undo step, as make_boundary twice.
+TEST(EditorPolygons, DeleteActsOnEverySelectedElementInOneStep) {
+    const Mesh cube = test::quad_cube();
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::face(Face(0)));
+    ed.toggle_select(ElementRef::face(Face(1)));
+    ed.toggle_select(ElementRef::vertex(Vertex(2)));  // on face 0: dissolved first
+    const Outcome out = ed.press(Key::Delete, 0);
+    ASSERT_FALSE(out.refused) << out.message;
+    Mesh expected = cube;
+    ASSERT_TRUE(dissolve_vertex(expected, Vertex(2)));
+    // Face 0 merged into the face dissolve_vertex returns; the steps name faces by index.
+    if (!expected.is_deleted(Face(0))) {
+        ASSERT_TRUE(make_boundary(expected, Face(0)));
+    }
+    ASSERT_TRUE(make_boundary(expected, Face(1)));
+    expected.garbage_collection();
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    EXPECT_VALID(ed.mesh());
+    EXPECT_EQ(ed.history().undo_steps(), 1u);
+    ed.run({Command::Undo});
+    EXPECT_TRUE(test::identical(ed.mesh(), cube));
+}
+
+// J welds the two selected boundary edges: the active one onto the one selected before it.
+// The ends of a strip of three quads meet: a ring.
+TEST(EditorPolygons, WeldTheTwoSelectedEdges) {
+    const Mesh strip = test::quad_strip(3);
+    Editor ed = editor_with(strip);
+    const Edge left = edge_of(strip, 0, 4);
+    const Edge right = edge_of(strip, 3, 7);
+    ed.press(key_of('J'), 0);
+    EXPECT_EQ(ed.press(key_of('J'), 0).message,
+              "select two boundary edges first (click one, Shift+click the other)");
+    ed.select(ElementRef::edge(left));
+    ed.toggle_select(ElementRef::edge(right));
+    const Outcome out = ed.press(key_of('J'), 0);
+    ASSERT_FALSE(out.refused) << out.message;
+    Mesh expected = strip;
+    ASSERT_TRUE(weld(expected, right, left));
+    expected.garbage_collection();
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    EXPECT_VALID(ed.mesh());
+}
+
+// Shift+L on a boundary edge selects its hole.
+TEST(EditorPolygons, ShiftLSelectsTheHole) {
+    Editor ed = editor_with(test::quad_strip(3));
+    EXPECT_TRUE(ed.press(key_of('L'), kShift).refused);
+    ed.select(ElementRef::edge(edge_of(ed.mesh(), 0, 1)));
+    EXPECT_EQ(ed.press(key_of('L'), kShift).message, "selected the 8 edges of a hole");
+    EXPECT_EQ(ed.selected().size(), 8u);
+}
+
+// Extrude with a drag and then a typed amount: the typed numbers win; Enter keeps it as one
+// undo step equal to extrude_face; Esc after a drag restores the document bit for bit.
+TEST(EditorPolygons, ExtrudeTypedConfirmedOrCancelled) {
+    const Mesh cube = test::quad_cube();
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::face(Face(1)));
+    ASSERT_FALSE(ed.press(key_of('X'), 0).refused);
+    EXPECT_EQ(ed.modal(), Modal::Extrude);
+    ModalInput in;
+    in.dy = 40;
+    in.pixel = 0.01;
+    ed.modal_input(in);
+    EXPECT_EQ(ed.mesh().n_faces(), 10u);  // live: the ring is there during the drag
+    ed.press(Key::Escape, 0);
+    EXPECT_EQ(ed.modal(), Modal::None);
+    EXPECT_TRUE(test::identical(ed.mesh(), cube));
+    EXPECT_EQ(ed.history().undo_steps(), 0u);
+    EXPECT_FALSE(ed.dirty());
+
+    ed.press(key_of('X'), 0);
+    ed.modal_input(in);
+    type(ed, "0.5,0.25");
+    EXPECT_NE(ed.modal_status().find("height 0.5, shrink 0.25"), std::string::npos)
+        << ed.modal_status();
+    ASSERT_FALSE(ed.press(Key::Enter, 0).refused);
+    Mesh expected = cube;
+    ASSERT_TRUE(extrude_face(expected, Face(1), 0.5, 0.25));
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    EXPECT_EQ(ed.selection(), ElementRef::face(Face(1)));
+    EXPECT_EQ(ed.history().undo_steps(), 1u);
+    ed.run({Command::Undo});
+    EXPECT_TRUE(test::identical(ed.mesh(), cube));
+}
+
+// A refused amount (shrink 1) applies nothing and says why.
+TEST(EditorPolygons, RefusedAmountIsNotApplied) {
+    const Mesh cube = test::quad_cube();
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::vertex(Vertex(0)));
+    ed.press(key_of('B'), kCtrl);
+    type(ed, "1");
+    EXPECT_NE(ed.modal_status().find("refused: cannot bevel"), std::string::npos);
+    EXPECT_TRUE(test::identical(ed.mesh(), cube));
+    const Outcome out = ed.press(Key::Enter, 0);
+    EXPECT_TRUE(out.refused);
+    EXPECT_TRUE(test::identical(ed.mesh(), cube));
+    EXPECT_EQ(ed.history().undo_steps(), 0u);
+}
+
+// M, Y, 2: the selected face's corners move 2 along +Y; R and Alt+S turn and scale about the
+// centre; Esc puts them back.
+TEST(EditorPolygons, MoveRotateScaleTheSelection) {
+    const Mesh cube = test::quad_cube();
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::face(Face(1)));  // (4,5,6,7) at z = 1
+    ed.press(key_of('M'), 0);
+    ed.press(key_of('Y'), 0);
+    ed.press(key_of('2'), 0);
+    ASSERT_FALSE(ed.press(Key::Enter, 0).refused);
+    for (std::uint32_t v = 0; v < 8; ++v) {
+        const Vec3 want = cube.position(Vertex(v)) + Vec3{0.0, v >= 4 ? 2.0 : 0.0, 0.0};
+        EXPECT_EQ(ed.mesh().position(Vertex(v)), want) << v;
+    }
+    ed.run({Command::Undo});
+    ed.select(ElementRef::face(Face(1)));
+    ed.press(key_of('S'), kAlt);
+    ed.press(key_of('0'), 0);
+    ed.press(Key::Period, 0);
+    ed.press(key_of('5'), 0);
+    ed.press(Key::Enter, 0);
+    EXPECT_EQ(ed.mesh().position(Vertex(4)), (Vec3{-0.5, -0.5, 1.0}));
+    ed.run({Command::Undo});
+    ed.select(ElementRef::face(Face(1)));
+    ed.press(key_of('R'), 0);
+    ed.press(key_of('Z'), 0);
+    ed.press(key_of('9'), 0);
+    ed.press(key_of('0'), 0);
+    ed.press(Key::Enter, 0);
+    const Vec3 p = ed.mesh().position(Vertex(4));  // (−1, −1, 1) a quarter turn about z
+    EXPECT_NEAR(p.x, 1.0, 1e-12);
+    EXPECT_NEAR(p.y, -1.0, 1e-12);
+    EXPECT_EQ(p.z, 1.0);
+    ed.run({Command::Undo});
+    ed.select(ElementRef::face(Face(1)));
+    ed.press(key_of('M'), 0);
+    ed.press(key_of('3'), 0);
+    ed.press(Key::Escape, 0);
+    EXPECT_TRUE(test::identical(ed.mesh(), cube));
+}
+
+// Loop on polygons is refused with the reason; Ctrl+T triangulates, then Loop runs.
+TEST(EditorPolygons, LoopNeedsTriangulateFirst) {
+    Editor ed = editor_with(test::quad_cube());
+    const Outcome refused = ed.press(key_of('L'), 0);
+    EXPECT_TRUE(refused.refused);
+    EXPECT_NE(refused.message.find("6 of the 6 faces are polygons"), std::string::npos);
+    EXPECT_NE(refused.message.find("Ctrl+T"), std::string::npos);
+    EXPECT_EQ(ed.press(key_of('T'), kCtrl).message, "triangulated 6 faces");
+    EXPECT_FALSE(ed.press(key_of('L'), 0).refused);
+    EXPECT_EQ(ed.mesh().n_faces(), 48u);
+}
+
+}  // namespace
+}  // namespace meshedit::viewer
