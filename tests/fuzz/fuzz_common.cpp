@@ -15,6 +15,7 @@
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
+#include "meshedit/ops/ops.h"
 
 namespace meshedit::fuzz {
 namespace {
@@ -47,30 +48,74 @@ void check_valid(const Mesh& mesh, const char* after) {
     }
 }
 
+// A random live element of `kind`, or none (deleted slots are skipped, not retried: the
+// fuzzer varies the seed).
+ElementRef random_element(const Mesh& mesh, ElementRef::Kind kind, std::uint64_t seed) {
+    using Kind = ElementRef::Kind;
+    const std::size_t size = kind == Kind::Vertex ? mesh.vertices_size()
+                             : kind == Kind::Edge ? mesh.edges_size()
+                                                  : mesh.faces_size();
+    if (size == 0) {
+        return {};
+    }
+    const ElementRef e{kind, static_cast<std::uint32_t>(seed % size)};
+    return is_live(mesh, e) ? e : ElementRef{};
+}
+
+// One verb of the edit language, chosen from the whole table, on a random element of a kind
+// it accepts, with random amounts (some absurd): a refusal must leave the mesh as it was, a
+// step that runs must leave it valid.
 void one_local_op(Mesh& mesh, std::uint64_t seed) {
-    if (mesh.n_edges() == 0) {
-        return;
+    using Kind = ElementRef::Kind;
+    const auto all = ops::verbs();
+    const ops::Verb& verb = all[seed % all.size()];
+    if (verb.name == "loop") {
+        return;  // run below, on small meshes only
     }
-    const Edge e(static_cast<std::uint32_t>((seed >> 8) % mesh.edges_size()));
-    if (mesh.is_deleted(e)) {
-        return;
+    seed >>= 5;
+    std::vector<Kind> kinds;
+    if ((verb.takes & ops::kVertexArg) != 0) {
+        kinds.push_back(Kind::Vertex);
     }
+    if ((verb.takes & (ops::kEdgeArg | ops::kEdgePair)) != 0) {
+        kinds.push_back(Kind::Edge);
+    }
+    if ((verb.takes & ops::kFaceArg) != 0) {
+        kinds.push_back(Kind::Face);
+    }
+    ElementRef target;
+    ElementRef second;
+    if (!verb.accepts(ops::Target::None) || (seed & 1) != 0) {
+        if (kinds.empty()) {
+            return;
+        }
+        target = random_element(mesh, kinds[(seed >> 1) % kinds.size()], seed >> 3);
+        if (target.is_none()) {
+            return;
+        }
+        if ((verb.takes & ops::kEdgePair) != 0) {
+            second = random_element(mesh, Kind::Edge, seed >> 23);
+            if (second.is_none() || second == target) {
+                return;
+            }
+        }
+    }
+    // Amounts in [-0.5, 1.5): below 0, inside and beyond the ranges the ops accept.
+    const std::vector<double> amounts{static_cast<double>((seed >> 33) % 200) / 100.0 - 0.5,
+                                      static_cast<double>((seed >> 41) % 200) / 100.0 - 0.5};
+    const ops::Step step = ops::make_step(
+        verb.name, mesh, target, std::span<const double>(amounts.data(), verb.max_amounts), second);
     const Mesh before = mesh;
-    const int op = static_cast<int>(seed % 3);
-    const OpStatus ok = op == 0   ? is_flip_ok(mesh, e)
-                        : op == 1 ? is_split_ok(mesh, e)
-                                  : is_collapse_ok(mesh, e);
-    const bool done = op == 0   ? flip(mesh, e).ok()
-                      : op == 1 ? split(mesh, e).ok()
-                                : collapse(mesh, e).ok();
-    check(done == static_cast<bool>(ok), "an op disagrees with its predicate");
-    if (!done) {
+    try {
+        ops::run_step(mesh, step);
+    } catch (const ops::OpError& e) {
+        check(e.refused(), "a live element was reported missing");
         check(faces_of(mesh) == faces_of(before) &&
-                  mesh.position_vector().size() == before.position_vector().size(),
+                  mesh.position_vector() == before.position_vector(),
               "a refused op changed the mesh");
         return;
     }
-    check_valid(mesh, op == 0 ? "flip" : op == 1 ? "split" : "collapse");
+    check_valid(mesh, std::string(verb.name).c_str());
 }
 
 void round_trip(const Mesh& mesh) {
