@@ -50,9 +50,18 @@ DEFAULT_CONFIGS = {
         (f"build_{shape}_{size}", "meshedit")
         for shape in ("fan_hub_first", "polygon") for size in ("100k", "300k", "1m")
     ] + [("build_torus_1m", "meshedit")],
+    "bench_local_ops": [("dissolves_collapses_1e6_quad100k", "meshedit")]
+    + [(f"local_ops_mix_{size}", "meshedit") for size in ("10k", "100k", "1m", "4m")]
+    + [(f"local_op_{op}_{size}", "meshedit") for op in ("dissolve_edge", "dissolve_vertex",
+                                                        "collapse_edge", "collapse_face")
+       for size in ("10k", "100k", "1m")]
+    + [(f"extrude_all_faces_{size}", "meshedit") for size in ("10k", "100k", "1m")],
 }
-PROGRAMS = ["bench_loop", "bench_ops", "bench_io_draw", "bench_build"]
+PROGRAMS = ["bench_loop", "bench_ops", "bench_io_draw", "bench_build", "bench_local_ops"]
 BUILD_SIZES = ("100k", "300k", "1m")
+# bench_local_ops (issue 16): no anchor, no target; the cost per op at each size, side by side.
+LOCAL_OPS = ("dissolve_edge", "dissolve_vertex", "collapse_edge", "collapse_face")
+LOCAL_OPS_SIZES = ("10k", "100k", "1m", "4m")
 # MeshEdit again with its huge-page hint off, for reference (not an anchor): what the hint is
 # worth on this machine. Only where memory is allocated in the timed region.
 NO_HUGE_PAGES = "meshedit_no_huge_pages"
@@ -78,6 +87,9 @@ JOB_TITLES = {
        "faces in one pairing bucket; 333 s for 1M before issue 14)" for n in BUILD_SIZES},
     **{f"build_polygon_{n}": f"Build one polygon of {n} corners (the repeated-corner check; "
        "208 s for 1M before issue 14)" for n in BUILD_SIZES},
+    "dissolves_collapses_1e6_quad100k": "1,000,000 random dissolves and collapses "
+    "(dissolve_edge, dissolve_vertex, collapse, collapse_face) on the 100k-face quad-dominant "
+    "torus; a fresh copy, untimed, whenever it falls below half its faces",
     "draw_1m_triangles": "Headless draw of a 1M-triangle torus at 1280×800 (OSMesa); MeshEdit's "
     "smooth Blinn-Phong renderer (which culls back faces of closed outward meshes) vs a trivial "
     "shader over the same vertex buffer (`bare`), and the trivial shader with back faces culled "
@@ -89,6 +101,11 @@ def log(message):
     print(f"run_bench: {message}", file=sys.stderr, flush=True)
 
 
+def size_label(size):
+    """A size in a job name as the report writes it: 10k stays, 1m becomes 1M."""
+    return size[:-1] + "M" if size.endswith("m") else size
+
+
 def job_title(job):
     if job in JOB_TITLES:
         return JOB_TITLES[job]
@@ -98,6 +115,19 @@ def job_title(job):
     m = re.fullmatch(r"loop_real_(.+)_levels_(\d+)", job)
     if m:
         return f"Loop subdivision, {m.group(2)} level(s), real mesh {m.group(1)}"
+    m = re.fullmatch(r"local_ops_mix_(\w+)", job)
+    if m:
+        return (f"100,000 random dissolves and collapses (the four-op mix) on the "
+                f"{size_label(m.group(1))}-face quad-dominant torus, a fresh copy (untimed) "
+                "after every faces/10 attempts")
+    m = re.fullmatch(r"local_op_(\w+)_(\d+[km])", job)
+    if m:
+        return (f"100,000 random {m.group(1)} attempts on the {size_label(m.group(2))}-face "
+                "quad-dominant torus, a fresh copy (untimed) after every faces/10 attempts")
+    m = re.fullmatch(r"extrude_all_faces_(\w+)", job)
+    if m:
+        return (f"extrude_face on every face of the {size_label(m.group(1))}-face "
+                "quad-dominant torus")
     return job
 
 
@@ -482,6 +512,58 @@ def targets_table(jobs):
     return lines
 
 
+def local_ops_table(jobs):
+    """bench_local_ops (issue 16): ns per attempted op (per face for extrude) at each size, and
+    the growth from the smallest to the largest size measured. No anchor, no target."""
+    def ns(job, key):
+        me = ok_results(jobs.get(job, [])).get("meshedit", {})
+        return me.get(key)
+
+    rows = [("the four-op mix", "local_ops_mix_{}", "ns_per_attempt")]
+    rows += [(f"`{op}`", f"local_op_{op}_{{}}", "ns_per_attempt") for op in LOCAL_OPS]
+    rows += [("`extrude_face`, every face (ns per face)", "extrude_all_faces_{}", "ns_per_face")]
+    if not any(ns(pattern.format(size), key) is not None
+               for _, pattern, key in rows for size in LOCAL_OPS_SIZES):
+        return []
+    head = " | ".join(size_label(n) for n in LOCAL_OPS_SIZES)
+    lines = [
+        "## Local operations in bulk (issue 16)",
+        "",
+        "MeshEdit only: no anchor does these in bulk, so there is no target ratio. Median ns per "
+        "attempted op (refusals included: each op checks its predicate first) on a closed "
+        "quad-dominant torus (one quad in ten cut into two triangles), random live elements, "
+        "`std::mt19937` draws inside the timed region; the mesh is replaced by a fresh copy "
+        "(untimed) after every faces/10 attempts, so every size sees the same relative wear. "
+        "A local op's cost must not grow with the mesh: it rises only while the mesh outgrows "
+        "the caches (`Mesh::bytes()` is 0.9 MB at 10k faces, 9 MB at 100k, 90 MB at 1M, 360 MB "
+        "at 4M) and levels off past the last cache level: the 4M / 1M column is the flatness "
+        "check. Extrude appends in index order and stays cache-friendly at every size.",
+        "",
+        f"| op | {head} | 1M / 10k | 4M / 1M |",
+        "|---|" + "---:|" * (len(LOCAL_OPS_SIZES) + 2),
+    ]
+
+    def growth(a, b):
+        return f"× {b / a:.2f}" if a and b else "–"
+
+    for label, pattern, key in rows:
+        values = dict((size, ns(pattern.format(size), key)) for size in LOCAL_OPS_SIZES)
+        cells = ["–" if v is None else f"{v:,.0f}" for v in values.values()]
+        lines.append(f"| {label} | {' | '.join(cells)} | {growth(values['10k'], values['1m'])} "
+                     f"| {growth(values['1m'], values['4m'])} |")
+    big = ok_results(jobs.get("dissolves_collapses_1e6_quad100k", [])).get("meshedit")
+    lines.append("")
+    if big:
+        lines.append(
+            f"1,000,000 random dissolves and collapses on the 100k mesh (a fresh copy whenever "
+            f"it falls below half its faces): {big['median_ms']:,.0f} ms median, "
+            f"**{big.get('ns_per_attempt', 0):,.0f} ns per attempt**, "
+            f"{big.get('ns_per_applied', 0):,.0f} ns per applied op "
+            f"({fmt_num(big.get('applied'))} applied, {fmt_num(big.get('refused'))} refused).")
+        lines.append("")
+    return lines
+
+
 def render(args, records, notes, jobs_info, machine, started, wall):
     jobs = by_job(records)
     lines = [
@@ -532,6 +614,7 @@ def render(args, records, notes, jobs_info, machine, started, wall):
     if notes:
         lines += ["Notes on this run:", ""] + [f"- {n}" for n in notes] + [""]
     lines += ["## Targets (issue 6)", ""] + targets_table(jobs) + [""]
+    lines += local_ops_table(jobs)
     lines += ["## Results per job", ""]
     for job, rows in jobs.items():
         lines += job_table(job, rows, jobs_info.get(job, []))
