@@ -327,20 +327,13 @@ int main(int argc, char** argv) {
         }
         return 0;
     }
-    std::string job, impl;
-    int runs = 5;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string key = argv[i];
-        if (key == "--job") {
-            job = argv[i + 1];
-        } else if (key == "--impl") {
-            impl = argv[i + 1];
-        } else if (key == "--runs") {
-            runs = std::atoi(argv[i + 1]);
-        } else {
-            return usage();
-        }
+    mb::JobArgs args;
+    if (!mb::parse_job_args(argc, argv, args)) {
+        return usage();
     }
+    const std::string& job = args.job;
+    const std::string& impl = args.impl;
+    const int runs = args.runs;
     const auto it =
         std::find_if(all.begin(), all.end(), [&](const auto& j) { return j.first == job; });
     if (it == all.end() || impl != "meshedit" || runs < 1) {

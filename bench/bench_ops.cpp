@@ -332,21 +332,13 @@ int usage() {
 
 int main(int argc, char** argv) {
     meshedit::bench::take_common_flags(argc, argv);
-    std::string job;
-    std::string impl;
-    int runs = 5;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string key = argv[i];
-        if (key == "--job") {
-            job = argv[i + 1];
-        } else if (key == "--impl") {
-            impl = argv[i + 1];
-        } else if (key == "--runs") {
-            runs = std::atoi(argv[i + 1]);
-        } else {
-            return usage();
-        }
+    meshedit::bench::JobArgs args;
+    if (!meshedit::bench::parse_job_args(argc, argv, args)) {
+        return usage();
     }
+    const std::string& job = args.job;
+    const std::string& impl = args.impl;
+    const int runs = args.runs;
     const bool job_ok = job == "flips_1e6" || job == "splits_1e6" || job == "normals_6p4m";
     const bool impl_ok = impl == "meshedit" || impl == "openmesh" || impl == "cgal";
     if (!job_ok || !impl_ok || runs < 1) {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <map>
@@ -42,6 +43,29 @@ inline void take_common_flags(int& argc, char** argv) {
         argv[out++] = argv[i];
     }
     argc = out;
+}
+
+/// `--job JOB --impl IMPL [--runs N]` (after take_common_flags()), as every program but
+/// bench_loop and bench_io_draw takes them; false on anything else (print the usage).
+struct JobArgs {
+    std::string job;
+    std::string impl;
+    int runs = 5;
+};
+inline bool parse_job_args(int argc, char** argv, JobArgs& out) {
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string key = argv[i];
+        if (key == "--job") {
+            out.job = argv[i + 1];
+        } else if (key == "--impl") {
+            out.impl = argv[i + 1];
+        } else if (key == "--runs") {
+            out.runs = std::atoi(argv[i + 1]);
+        } else {
+            return false;
+        }
+    }
+    return out.runs >= 1;
 }
 
 /// Milliseconds of each of `runs` calls of `body`; `setup` runs before each call, untimed.

@@ -165,13 +165,6 @@ void parse_amounts(std::string_view list, Step& step) {
     }
 }
 
-// Writes an amount so that it reads back as the same double.
-std::string amount_text(double x) {
-    char buffer[32];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return std::string(buffer, ec == std::errc() ? end : buffer);
-}
-
 [[noreturn]] void missing(const Step& step, const char* kind, std::uint32_t index, std::size_t have,
                           const char* kinds) {
     throw OpError(step.text + ": no " + kind + " " + std::to_string(index) + " (the mesh has " +
@@ -197,6 +190,12 @@ Edge edge_between(const Mesh& mesh, const Step& step, std::uint32_t a, std::uint
 }
 
 }  // namespace
+
+std::string amount_text(double x) {
+    char buffer[32];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return std::string(buffer, ec == std::errc() ? end : buffer);
+}
 
 bool Verb::accepts(Target target) const {
     switch (target) {

@@ -3,7 +3,6 @@
 // the operations themselves, with their predicates and diagrams, are in src/core.
 
 #include <array>
-#include <charconv>
 #include <string>
 
 #include "meshedit/core/attributes.h"
@@ -16,13 +15,6 @@ namespace {
 
 std::string idx(std::uint32_t i) {
     return std::to_string(i);
-}
-
-// An amount as the language writes it (shortest form that reads back the same).
-std::string amount(double x) {
-    char buffer[32];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return std::string(buffer, ec == std::errc() ? end : buffer);
 }
 
 // The result of a local step: the element it documents and a sentence.
@@ -170,8 +162,8 @@ std::string check_extrude(const Mesh& mesh, const Step& step) {
 StepResult run_extrude(Mesh& mesh, const Step& step, const RunOptions&) {
     const Face f = *extrude_face(mesh, named_face(mesh, step), step.amounts[0], step.amounts[1]);
     return local(ElementRef::face(f), "extruded face " + idx(f.idx()) + " by " +
-                                          amount(step.amounts[0]) + ", shrink " +
-                                          amount(step.amounts[1]));
+                                          amount_text(step.amounts[0]) + ", shrink " +
+                                          amount_text(step.amounts[1]));
 }
 
 std::string check_inset(const Mesh& mesh, const Step& step) {
@@ -180,7 +172,7 @@ std::string check_inset(const Mesh& mesh, const Step& step) {
 StepResult run_inset(Mesh& mesh, const Step& step, const RunOptions&) {
     const Face f = *inset_face(mesh, named_face(mesh, step), step.amounts[0]);
     return local(ElementRef::face(f),
-                 "inset face " + idx(f.idx()) + ", shrink " + amount(step.amounts[0]));
+                 "inset face " + idx(f.idx()) + ", shrink " + amount_text(step.amounts[0]));
 }
 
 std::string check_bevel(const Mesh& mesh, const Step& step) {
@@ -196,7 +188,7 @@ StepResult run_bevel(Mesh& mesh, const Step& step, const RunOptions&) {
         vertex ? "vertex " + idx(step.a) : "edge " + idx(named_edge(mesh, step).idx());
     const Face f = vertex ? *bevel_vertex(mesh, named_vertex(mesh, step), t)
                           : *bevel_edge(mesh, named_edge(mesh, step), t);
-    return local(ElementRef::face(f), "bevelled " + what + " at " + amount(t) + ": face " +
+    return local(ElementRef::face(f), "bevelled " + what + " at " + amount_text(t) + ": face " +
                                           idx(f.idx()) + " (" + std::to_string(mesh.valence(f)) +
                                           " corners)");
 }

@@ -9,16 +9,6 @@
 
 namespace meshedit::viewer {
 
-namespace {
-
-// The edit's result selected: the last thing made active, the others with it.
-void select_made(Document& doc, const std::vector<ElementRef>& made) {
-    doc.selection = made.empty() ? ElementRef{} : made.back();
-    doc.also_selected.assign(made.begin(), made.end() - (made.empty() ? 0 : 1));
-}
-
-}  // namespace
-
 Outcome Editor::edit_mesh(std::string_view name) {
     const ops::Verb* verb = ops::find_verb(name);
     if (verb == nullptr) {
@@ -47,29 +37,7 @@ Outcome Editor::edit_mesh(std::string_view name) {
     if (steps.empty()) {
         return refused(hint);
     }
-    const bool topology = verb->name != "crease";
-    return edit(
-        [&]() -> std::string {
-            if (steps.size() > 1) {
-                return {};  // each is checked as it comes; apply() refuses if none ran
-            }
-            try {
-                return verb->check(doc_.mesh, steps.front());
-            } catch (const ops::OpError& e) {
-                return e.what();
-            }
-        },
-        [&](Document& doc) {
-            const StepsRun run = run_steps(doc.mesh, steps);
-            if (run.ran == 0) {
-                throw std::runtime_error(run.first_refusal);
-            }
-            select_made(doc, run.made);
-            Edited edited;
-            edited.message = run.message;
-            edited.changes = topology ? kTopology | kSelection : kSelection | kDisplay;
-            return edited;
-        });
+    return edit_steps(steps, verb->name, verb->name != "crease");
 }
 
 Outcome Editor::delete_selection() {
@@ -83,25 +51,31 @@ Outcome Editor::delete_selection() {
     if (steps.empty()) {
         return refused("select vertices, edges or faces to delete first");
     }
+    return edit_steps(steps, "delete", true);
+}
+
+Outcome Editor::edit_steps(const std::vector<ops::Step>& steps, std::string_view what,
+                           bool topology) {
     return edit(
         [&]() -> std::string {
-            return steps.size() == 1 ? steps.front().verb->check(doc_.mesh, steps.front())
-                                     : std::string();
+            if (steps.size() > 1) {
+                return {};  // each is checked as it comes; apply() refuses if none ran
+            }
+            try {
+                return steps.front().verb->check(doc_.mesh, steps.front());
+            } catch (const ops::OpError& e) {
+                return e.what();
+            }
         },
         [&](Document& doc) {
-            const StepsRun run = run_steps(doc.mesh, steps);
+            const StepsRun run = run_steps(doc.mesh, steps, what);
             if (run.ran == 0) {
                 throw std::runtime_error(run.first_refusal);
             }
             select_made(doc, run.made);
             Edited edited;
-            edited.message =
-                steps.size() == 1
-                    ? run.message
-                    : "deleted " + std::to_string(run.ran) + " of " + std::to_string(steps.size()) +
-                          " elements" +
-                          (run.refused > 0 ? " (first refusal: " + run.first_refusal + ")" : "");
-            edited.changes = kTopology | kSelection;
+            edited.message = run.message;
+            edited.changes = topology ? kTopology | kSelection : kSelection | kDisplay;
             return edited;
         });
 }

@@ -253,13 +253,12 @@ Outcome Editor::apply_modal() {
         const std::size_t n = v.max_amounts;
         const std::vector<ops::Step> steps = steps_for_selection(
             doc.mesh, v, m.targets, std::span<const double>(m.amounts.data(), n), hint);
-        const StepsRun run = run_steps(doc.mesh, steps);
+        const StepsRun run = run_steps(doc.mesh, steps, verb);
         if (run.ran == 0) {
             m.refusal = run.first_refusal;
             doc = m.base;
         } else {
-            doc.selection = run.made.empty() ? ElementRef{} : run.made.back();
-            doc.also_selected.assign(run.made.begin(), run.made.end() - (run.made.empty() ? 0 : 1));
+            select_made(doc, run.made);
         }
         doc_ = std::move(doc);
         compact();

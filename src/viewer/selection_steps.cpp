@@ -117,7 +117,7 @@ std::vector<std::uint32_t> selected_vertices(const Mesh& mesh,
     return out;
 }
 
-StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps) {
+StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps, std::string_view what) {
     StepsRun run;
     std::string last_message;
     for (const ops::Step& step : steps) {
@@ -143,14 +143,23 @@ StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps) {
     if (run.ran == 1 && run.refused == 0) {
         run.message = std::move(last_message);
     } else if (run.ran > 0) {
-        run.message = std::string(steps.front().verb->name) + ": " + std::to_string(run.ran) +
-                      " of " + std::to_string(steps.size()) + " done";
+        run.message = std::string(what) + ": " + std::to_string(run.ran) + " of " +
+                      std::to_string(steps.size()) + " done";
         if (run.refused > 0) {
             run.message +=
                 " (" + std::to_string(run.refused) + " refused; first: " + run.first_refusal + ")";
         }
     }
     return run;
+}
+
+}  // namespace meshedit::viewer
+
+namespace meshedit::viewer {
+
+void select_made(Document& doc, const std::vector<ElementRef>& made) {
+    doc.selection = made.empty() ? ElementRef{} : made.back();
+    doc.also_selected.assign(made.begin(), made.end() - (made.empty() ? 0 : 1));
 }
 
 }  // namespace meshedit::viewer

@@ -8,6 +8,7 @@
 
 #include "meshedit/core/element_ref.h"
 #include "meshedit/ops/ops.h"
+#include "meshedit/viewer/document.h"
 
 namespace meshedit::viewer {
 
@@ -33,7 +34,11 @@ struct StepsRun {
 };
 
 /// Runs each step whose check passes, in order, on `mesh`; a step that names an element an
-/// earlier one removed counts as refused.
-StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps);
+/// earlier one removed counts as refused. With several steps the message is "`what`: 3 of 4
+/// done (…)".
+StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps, std::string_view what);
+
+/// Selects what the steps made: the last one active, the others with it.
+void select_made(Document& doc, const std::vector<ElementRef>& made);
 
 }  // namespace meshedit::viewer

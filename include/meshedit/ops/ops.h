@@ -169,6 +169,9 @@ struct ApplyOptions {
 ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps,
                        const ApplyOptions& options = {});
 
+/// An amount as the language writes it: the shortest text that reads back as the same double.
+std::string amount_text(double x);
+
 /// "flip:A-B split:A-B …" for a one-line usage.
 std::string syntax_list();
 /// The verbs as `--help` lines: two-space indent, syntax, help.

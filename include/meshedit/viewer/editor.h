@@ -21,6 +21,10 @@
 #include "meshedit/viewer/bindings.h"
 #include "meshedit/viewer/history.h"
 
+namespace meshedit::ops {
+struct Step;
+}
+
 namespace meshedit::viewer {
 
 /// What a command changed, so the window knows what to re-upload or do.
@@ -95,9 +99,12 @@ struct ViewState {
 ///                         of the document goes through
 ///   editor_files.cpp      open, save, save as, the window title
 ///   editor_mesh.cpp       mesh edits: the verbs of the edit language (meshedit/ops/ops.h)
-///                         on the selection or the whole mesh; garbage collection
+///                         on the selection or the whole mesh, Delete; garbage collection
+///                         (the steps a selection makes: selection_steps.cpp)
+///   editor_modal.cpp      interactive edits: extrude, inset, bevel, move, rotate, scale
 ///   editor_curve.cpp      curve and surface commands
-///   editor_selection.cpp  selection, moving it through the connectivity, drags
+///   editor_selection.cpp  selection (several elements, all, a hole, framing), moving it
+///                         through the connectivity, vertex drags
 ///   element_info.cpp      the info panel's rows
 class Editor {
 public:
@@ -271,6 +278,10 @@ private:
     /// Runs the modal edit with its amounts on a copy of its base.
     Outcome apply_modal();
 
+    /// Runs `steps` one after another through the edit funnel as one undo step and selects
+    /// what they made (edit_mesh, delete_selection); refused with the first reason if none
+    /// runs.
+    Outcome edit_steps(const std::vector<ops::Step>& steps, std::string_view what, bool topology);
     /// " (3 selected)" when more than one element is selected.
     std::string count_text() const;
     Outcome run_navigation(Command command);
