@@ -23,6 +23,40 @@ Vec3 newell_normal(const std::vector<Vec3>& corners, const Vec3& centre) {
     return length > 0 && std::isfinite(length) ? n / length : Vec3{0, 0, 0};
 }
 
+// f's corners p[i] = from_vertex(h[i]) in the order of its sides h[i], and their average.
+struct Ring {
+    std::vector<Halfedge> h;
+    std::vector<Vec3> p;
+    Vec3 centre{0, 0, 0};
+};
+Ring ring_of(const Mesh& mesh, Face f) {
+    Ring r;
+    for (const Halfedge side : mesh.halfedges(f)) {
+        r.h.push_back(side);
+        r.p.push_back(mesh.position(mesh.from_vertex(side)));
+    }
+    for (const Vec3& x : r.p) {
+        r.centre += x / static_cast<double>(r.p.size());
+    }
+    return r;
+}
+
+// The inner corner q[i] (the formula above extrude_face()).
+Vec3 inner_corner(const Ring& r, std::size_t i, double shrink, const Vec3& lift) {
+    return r.p[i] + shrink * (r.centre - r.p[i]) + lift;
+}
+
+// Every inner corner and its squared length are finite: huge amounts (a height of 1e308, a
+// shrink of -1e300) would leave corners whose normals and areas overflow.
+bool inner_corners_in_range(const Ring& r, double shrink, const Vec3& lift) {
+    for (std::size_t i = 0; i < r.p.size(); ++i) {
+        if (!std::isfinite(sqrnorm(inner_corner(r, i, shrink, lift)))) {
+            return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 OpStatus is_extrude_ok(const Mesh& mesh, Face f, double height, double shrink) {
@@ -36,18 +70,15 @@ OpStatus is_extrude_ok(const Mesh& mesh, Face f, double height, double shrink) {
     if (shrink >= 1) {
         return OpStatus::refused("cannot extrude: shrink must be below 1 (1 is a point)");
     }
-    if (height != 0) {
-        std::vector<Vec3> corners;
-        Vec3 centre{0, 0, 0};
-        for (const Vertex v : mesh.vertices(f)) {
-            corners.push_back(mesh.position(v));
-        }
-        for (const Vec3& p : corners) {
-            centre += p / static_cast<double>(corners.size());
-        }
-        if (norm(newell_normal(corners, centre)) == 0) {
-            return OpStatus::refused("cannot extrude: the face has no area, so no normal");
-        }
+    const Ring r = ring_of(mesh, f);
+    const Vec3 n = newell_normal(r.p, r.centre);
+    if (height != 0 && norm(n) == 0) {
+        return OpStatus::refused("cannot extrude: the face has no area, so no normal");
+    }
+    if (!inner_corners_in_range(r, shrink, height == 0 ? Vec3{0, 0, 0} : height * n)) {
+        return OpStatus::refused(
+            "cannot extrude: the amounts put corners beyond the range of "
+            "numbers");
     }
     return OpStatus::ok();
 }
@@ -62,6 +93,11 @@ OpStatus is_inset_ok(const Mesh& mesh, Face f, double shrink) {
     }
     if (shrink >= 1) {
         return OpStatus::refused("cannot inset: shrink must be below 1 (1 is a point)");
+    }
+    if (!inner_corners_in_range(ring_of(mesh, f), shrink, Vec3{0, 0, 0})) {
+        return OpStatus::refused(
+            "cannot inset: the amount puts corners beyond the range of "
+            "numbers");
     }
     return OpStatus::ok();
 }
@@ -86,18 +122,10 @@ OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink) {
     if (const OpStatus ok = is_extrude_ok(mesh, f, height, shrink); !ok) {
         return ok;
     }
-    std::vector<Halfedge> h;
-    std::vector<Vec3> p;
-    for (const Halfedge side : mesh.halfedges(f)) {
-        h.push_back(side);
-        p.push_back(mesh.position(mesh.from_vertex(side)));
-    }
+    const Ring r = ring_of(mesh, f);
+    const std::vector<Halfedge>& h = r.h;
     const auto n = static_cast<std::uint32_t>(h.size());
-    Vec3 centre{0, 0, 0};
-    for (const Vec3& x : p) {
-        centre += x / static_cast<double>(n);
-    }
-    const Vec3 lift = height == 0 ? Vec3{0, 0, 0} : height * newell_normal(p, centre);
+    const Vec3 lift = height == 0 ? Vec3{0, 0, 0} : height * newell_normal(r.p, r.centre);
 
     const auto first_v = static_cast<std::uint32_t>(mesh.vertices_size());
     const auto first_e = static_cast<std::uint32_t>(mesh.edges_size());
@@ -109,7 +137,7 @@ OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink) {
     const auto quad = [&](std::uint32_t i) { return Face(first_f + i); };
 
     for (std::uint32_t i = 0; i < n; ++i) {
-        mesh.position(q(i)) = p[i] + shrink * (centre - p[i]) + lift;
+        mesh.position(q(i)) = inner_corner(r, i, shrink, lift);
         mesh.set_vertex(up(i), q(i));
         mesh.set_vertex(Mesh::twin(up(i)), mesh.from_vertex(h[i]));
         mesh.set_vertex(k(i), q(i + 1));

@@ -292,8 +292,8 @@ Outcome Editor::apply_modal() {
             default:
                 break;
         }
-        if (!is_finite(q)) {
-            m.refusal = "the amount gives non-finite positions";
+        if (!std::isfinite(sqrnorm(q))) {  // as extrude: squares (normals, areas) must fit
+            m.refusal = "the amount puts corners beyond the range of numbers";
             q = p;
         }
         doc_.mesh.position(Vertex(i)) = q;

@@ -98,6 +98,15 @@ TEST(Extrude, Refusals) {
     test::expect_refused_by(
         mesh, [](Mesh& m) { return inset_face(m, Face(0), 2.0); },
         "cannot inset: shrink must be below 1 (1 is a point)");
+    // Finite but absurd: corners whose squared length (so every normal and area) overflows.
+    test::expect_refused_by(
+        mesh, [](Mesh& m) { return extrude_face(m, Face(0), 1e308, 0.0); },
+        "cannot extrude: the amounts put corners beyond the range of numbers");
+    test::expect_refused_by(
+        mesh, [](Mesh& m) { return inset_face(m, Face(0), -1e300); },
+        "cannot inset: the amount puts corners beyond the range of numbers");
+    ASSERT_TRUE(extrude_face(mesh, Face(0), 1e100, 0.0)) << "large, but its squares fit";
+    ASSERT_VALID(mesh);
     Mesh flat = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 1, 2}});
     test::expect_refused_by(
         flat, [](Mesh& m) { return extrude_face(m, Face(0), 1.0, 0.0); },

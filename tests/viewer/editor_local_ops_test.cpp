@@ -180,6 +180,15 @@ TEST(EditorPolygons, MoveRotateScaleTheSelection) {
     ed.press(key_of('3'), 0);
     ed.press(Key::Escape, 0);
     EXPECT_TRUE(test::identical(ed.mesh(), cube));
+    // A scale of 1e300 would overflow every normal: refused, nothing applied.
+    ed.select(ElementRef::face(Face(1)));
+    ed.press(key_of('S'), kAlt);
+    type(ed, "1" + std::string(300, '0'));  // typed digits only: 10^300
+    EXPECT_NE(ed.modal_status().find("refused: the amount puts corners beyond the range"),
+              std::string::npos)
+        << ed.modal_status();
+    EXPECT_TRUE(ed.press(Key::Enter, 0).refused);
+    EXPECT_TRUE(test::identical(ed.mesh(), cube));
 }
 
 // Loop on polygons is refused with the reason; Ctrl+T triangulates, then Loop runs.
