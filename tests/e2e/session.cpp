@@ -383,6 +383,11 @@ void ViewerWindow::click(int x, int y) const {
     xdotool({"click", "1"});
 }
 
+void ViewerWindow::shift_click(int x, int y) const {
+    move_to(x, y);
+    xdotool({"keydown", "shift", "click", "1", "keyup", "shift"});
+}
+
 bool ViewerWindow::capture(const fs::path& png) const {
     static const std::string import = find_program("import");
     const RunResult r = run_program(import, {"-window", id_, "png:" + png.string()}, 30.0);

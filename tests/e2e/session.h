@@ -122,6 +122,8 @@ public:
     void move_to(int x, int y) const;
     /// move_to(x, y), then a left click (press and release without moving).
     void click(int x, int y) const;
+    /// move_to(x, y), then a left click with Shift held (adds to the selection).
+    void shift_click(int x, int y) const;
     /// The window as a person sees it (panels included), via `import -window ID`.
     bool capture(const std::filesystem::path& png) const;
 
