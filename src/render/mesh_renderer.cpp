@@ -9,6 +9,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "display_fan.h"
 #include "gl.h"
 #include "meshedit/core/normals.h"
 
@@ -95,10 +96,8 @@ void MeshRenderer::upload(const Mesh& mesh) {
     pick_table_.clear();
     for (Face f : mesh.faces()) {
         const Halfedge h0 = mesh.halfedge(f);
-        const Vertex c0 = mesh.from_vertex(h0);
         const std::size_t n = mesh.valence(f);
-        Halfedge h = mesh.next(h0);
-        for (std::size_t i = 1; i + 1 < n; ++i, h = mesh.next(h)) {
+        for_each_fan_triangle(mesh, f, [&](std::size_t i, Vertex c0, Halfedge h) {
             triangle_corners_.push_back(c0.idx());
             triangle_corners_.push_back(mesh.from_vertex(h).idx());
             triangle_corners_.push_back(mesh.to_vertex(h).idx());
@@ -110,7 +109,7 @@ void MeshRenderer::upload(const Mesh& mesh) {
             pick_table_.insert(pick_table_.end(),
                                {f.idx(), c0.idx(), mesh.from_vertex(h).idx(),
                                 mesh.to_vertex(h).idx(), side0, side1, side2, 0u});
-        }
+        });
     }
     triangle_count_ = triangle_faces_.size();
     fill_geometry(mesh);

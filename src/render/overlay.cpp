@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "display_fan.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/normals.h"
 
@@ -104,14 +105,12 @@ void add_face_tint(const Mesh& m, Face f, const Color& color, const OverlayStyle
     Color tint = color;
     tint[3] = style.face_tint_alpha;
 
-    // Fan from the first corner: exact for the convex faces meshes here have.
-    std::vector<Vec3> corners;
-    for (Vertex v : m.vertices(f)) {
-        corners.push_back(m.position(v) + lift);
-    }
-    for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
-        out.triangles.push_back({corners[0], corners[i], corners[i + 1], tint});
-    }
+    // The surface's own triangles, lifted: on a non-planar polygon any other cut would
+    // cross the surface and hide part of the tint.
+    for_each_fan_triangle(m, f, [&](std::size_t, Vertex c0, Halfedge h) {
+        out.triangles.push_back({m.position(c0) + lift, m.position(m.from_vertex(h)) + lift,
+                                 m.position(m.to_vertex(h)) + lift, tint});
+    });
 }
 
 }  // namespace
