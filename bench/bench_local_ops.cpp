@@ -16,6 +16,10 @@
 //       after every faces/10 attempts, so that every size sees the same relative wear. 4M is
 //       past the last cache level: a local op's cost rises while the mesh outgrows the caches
 //       and levels off after, where a cost growing with the mesh would keep growing.
+//   local_ops_window_{10k,100k,1m,4m}  the mix rows, with elements drawn from a window of
+//       1000 faces' worth of indices that slides 2 faces per attempt (the torus numbers every
+//       kind row by row, so the window is a band of the surface): the working set no longer
+//       grows with the mesh, so what remains is the operations' own cost, which must be flat.
 //   local_op_{dissolve_edge,dissolve_vertex,collapse_edge,collapse_face}_{10k,100k,1m}  one
 //       op alone, as the mix rows.
 //   extrude_all_faces_{10k,100k,1m}  extrude_face on every face of a fresh copy (height half a
@@ -102,7 +106,11 @@ struct Job {
     std::vector<Op> ops;         // drawn uniformly
     std::uint64_t attempts = 0;  // kMix
     std::uint64_t batch = 0;     // attempts per fresh copy; 0: only when below half the faces
+    std::uint64_t window = 0;    // faces in the sliding window of indices; 0: the whole mesh
 };
+
+constexpr std::uint64_t kWindowFaces = 1000;
+constexpr std::uint64_t kWindowStep = 2;  // faces the window slides per attempt
 
 constexpr const char* kMixText =
     "op drawn uniformly from dissolve_edge, dissolve_vertex, collapse (edge) and collapse_face";
@@ -122,6 +130,10 @@ std::vector<std::pair<std::string, Job>> jobs() {
     }
     out.push_back(
         {"local_ops_mix_4m", {Job::kMix, kBeyondCaches, mix, 100'000, batch(kBeyondCaches)}});
+    for (const Size& s : {kSizes[0], kSizes[1], kSizes[2], kBeyondCaches}) {
+        out.push_back({std::string("local_ops_window_") + s.name,
+                       {Job::kMix, s, mix, 100'000, batch(s), kWindowFaces}});
+    }
     for (int op = 0; op < kOps; ++op) {
         for (const Size& s : kSizes) {
             out.push_back({std::string("local_op_") + kOpNames[op] + "_" + s.name,
@@ -147,6 +159,12 @@ std::string describe(const Job& job) {
                ", on a random live element; a fresh copy (untimed) whenever the mesh falls "
                "below half its faces";
     }
+    if (job.window > 0) {
+        return std::to_string(job.attempts) + " attempts, " + what + ", on random live " +
+               "elements of a window of " + std::to_string(job.window) + " faces' worth of " +
+               "indices sliding " + std::to_string(kWindowStep) + " faces per attempt; a " +
+               "fresh copy (untimed) after every faces/10 attempts";
+    }
     return std::to_string(job.attempts) + " attempts, " + what + ", " + kBatchText;
 }
 
@@ -154,8 +172,27 @@ std::uint32_t pick(std::mt19937& rng, std::size_t n) {
     return std::uint32_t((std::uint64_t(rng()) * n) >> 32);
 }
 
+// Where elements are drawn from: every index, or `width` faces' worth of indices from face
+// `base` on, scaled to each kind's array.
+struct Window {
+    std::uint64_t base = 0;
+    std::uint64_t width = 0;  // 0: every index
+};
+
 template <class H>
-H random_live(const Mesh& mesh, std::mt19937& rng, std::size_t size) {
+H random_live(const Mesh& mesh, std::mt19937& rng, std::size_t size, const Window& window) {
+    if (window.width > 0) {
+        const std::size_t faces = mesh.faces_size();
+        const std::size_t start = window.base * size / faces;
+        const std::size_t width = std::max<std::size_t>(1, window.width * size / faces);
+        for (int tries = 0; tries < 1000; ++tries) {
+            const H h(std::uint32_t((start + pick(rng, width)) % size));
+            if (!mesh.is_deleted(h)) {
+                return h;
+            }
+        }
+        // The window is used up (never seen at these rates): anywhere then.
+    }
     for (;;) {
         const H h(pick(rng, size));
         if (!mesh.is_deleted(h)) {
@@ -164,16 +201,17 @@ H random_live(const Mesh& mesh, std::mt19937& rng, std::size_t size) {
     }
 }
 
-bool attempt(Mesh& mesh, Op op, std::mt19937& rng) {
+bool attempt(Mesh& mesh, Op op, std::mt19937& rng, const Window& w) {
     switch (op) {
         case kDissolveEdge:
-            return dissolve_edge(mesh, random_live<Edge>(mesh, rng, mesh.edges_size())).ok();
+            return dissolve_edge(mesh, random_live<Edge>(mesh, rng, mesh.edges_size(), w)).ok();
         case kDissolveVertex:
-            return dissolve_vertex(mesh, random_live<Vertex>(mesh, rng, mesh.vertices_size())).ok();
+            return dissolve_vertex(mesh, random_live<Vertex>(mesh, rng, mesh.vertices_size(), w))
+                .ok();
         case kCollapseEdge:
-            return collapse(mesh, random_live<Edge>(mesh, rng, mesh.edges_size())).ok();
+            return collapse(mesh, random_live<Edge>(mesh, rng, mesh.edges_size(), w)).ok();
         default:
-            return collapse_face(mesh, random_live<Face>(mesh, rng, mesh.faces_size())).ok();
+            return collapse_face(mesh, random_live<Face>(mesh, rng, mesh.faces_size(), w)).ok();
     }
 }
 
@@ -207,11 +245,13 @@ double run_mix(const std::string& name, const Job& job, const Mesh& pristine, Me
     const std::size_t n_ops = job.ops.size();
     double ms = 0;
     std::uint64_t in_batch = 0;
+    Window window{0, job.window};
     auto t0 = Clock::now();
     for (std::uint64_t i = 0; i < job.attempts; ++i) {
         const Op op = n_ops == 1 ? job.ops[0] : job.ops[pick(rng, n_ops)];
         ++tally.attempted[op];
-        tally.applied[op] += attempt(mesh, op, rng) ? 1 : 0;
+        tally.applied[op] += attempt(mesh, op, rng, window) ? 1 : 0;
+        window.base = (window.base + kWindowStep) % mesh.faces_size();
         if (++in_batch == job.batch || mesh.n_faces() < half) {
             if (i + 1 == job.attempts) {
                 break;  // the last mesh: validated by the caller
@@ -223,6 +263,7 @@ double run_mix(const std::string& name, const Job& job, const Mesh& pristine, Me
             mesh = pristine;
             ++tally.copies;
             in_batch = 0;
+            window.base = 0;
             t0 = Clock::now();
         }
     }

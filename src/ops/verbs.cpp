@@ -26,6 +26,12 @@ StepResult local(ElementRef selected, std::string message, bool topology = true)
     return result;
 }
 
+// The result of an op that deletes elements is named by its size, not its index: the viewer
+// renumbers after every edit, so an index in its status line would name another element.
+std::string corners(const Mesh& mesh, Face f) {
+    return std::to_string(mesh.valence(f)) + " corners";
+}
+
 std::string why(OpStatus status) {
     return std::string(status.reason());
 }
@@ -91,18 +97,18 @@ StepResult run_dissolve(Mesh& mesh, const Step& step, const RunOptions&) {
     if (step.target == Target::Vertex) {
         const Vertex v = named_vertex(mesh, step);
         const Face f = *dissolve_vertex(mesh, v);
-        return local(ElementRef::face(f), "dissolved vertex " + idx(v.idx()) + " into face " +
-                                              idx(f.idx()) + " (" +
-                                              std::to_string(mesh.valence(f)) + " corners)");
+        return local(ElementRef::face(f), "dissolved vertex " + idx(v.idx()) +
+                                              ": its faces are one face of " + corners(mesh, f) +
+                                              " (selected)");
     }
     const Edge e = named_edge(mesh, step);
     const Face f = *dissolve_edge(mesh, e);
     if (!f.is_valid()) {
         return local({}, "dissolved boundary edge " + idx(e.idx()) + ": its face joined the hole");
     }
-    return local(ElementRef::face(f), "dissolved edge " + idx(e.idx()) + " into face " +
-                                          idx(f.idx()) + " (" + std::to_string(mesh.valence(f)) +
-                                          " corners)");
+    return local(ElementRef::face(f), "dissolved edge " + idx(e.idx()) +
+                                          ": its faces are one face of " + corners(mesh, f) +
+                                          " (selected)");
 }
 
 std::string check_make_boundary(const Mesh& mesh, const Step& step) {
@@ -140,9 +146,8 @@ StepResult run_weld(Mesh& mesh, const Step& step, const RunOptions&) {
     const Edge e1 = named_edge(mesh, step);
     const Edge e2 = named_second_edge(mesh, step);
     weld(mesh, e1, e2);
-    return local(ElementRef::edge(e1), "welded edge " + idx(e2.idx()) + " onto edge " +
-                                           idx(e1.idx()) + ": " +
-                                           describe(mesh, ElementRef::edge(e1)));
+    return local(ElementRef::edge(e1), "welded edges " + idx(e2.idx()) + " and " + idx(e1.idx()) +
+                                           " into one edge (selected)");
 }
 
 std::string check_poke(const Mesh& mesh, const Step& step) {
@@ -188,9 +193,8 @@ StepResult run_bevel(Mesh& mesh, const Step& step, const RunOptions&) {
         vertex ? "vertex " + idx(step.a) : "edge " + idx(named_edge(mesh, step).idx());
     const Face f = vertex ? *bevel_vertex(mesh, named_vertex(mesh, step), t)
                           : *bevel_edge(mesh, named_edge(mesh, step), t);
-    return local(ElementRef::face(f), "bevelled " + what + " at " + amount_text(t) + ": face " +
-                                          idx(f.idx()) + " (" + std::to_string(mesh.valence(f)) +
-                                          " corners)");
+    return local(ElementRef::face(f), "bevelled " + what + " at " + amount_text(t) +
+                                          ": a new face of " + corners(mesh, f) + " (selected)");
 }
 
 // Boundary edges may be marked too: harmless, Loop treats them as sharp anyway, and the
