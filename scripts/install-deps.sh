@@ -23,13 +23,14 @@ packages=(
     assimp-utils assimp-testmodels
     libosmesa6-dev libgl-dev libglm-dev libopenimageio-dev openimageio-tools
     libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri
+    libosd-dev
     fonts-dejavu-core xvfb xdotool imagemagick x11-utils
 )
 if [ "$fuzz" -eq 1 ]; then
     packages+=(clang libclang-rt-14-dev)
 fi
 if [ "$bench" -eq 1 ]; then
-    packages+=(libopenmesh-dev libosd-dev libcgal-dev libcgal-demo libassimp-dev linux-perf)
+    packages+=(libopenmesh-dev libcgal-dev libcgal-demo libassimp-dev linux-perf)
 fi
 
 missing=()

@@ -133,10 +133,12 @@ Command add_subdivide(CLI::App& meshedit) {
         std::filesystem::path in, out;
         int levels = 0;
         std::string weights = "warren";
+        std::string scheme = "loop";
         int density = 8;
     };
     auto s = std::make_shared<Settings>();
-    CLI::App* app = meshedit.add_subcommand("subdivide", "Loop subdivision, K levels");
+    CLI::App* app =
+        meshedit.add_subcommand("subdivide", "Loop, Catmull-Clark or linear subdivision, K levels");
     app->add_option("IN", s->in, "the input file")->required();
     app->add_option("OUT", s->out, "the output file")->required();
     app->add_option("-n", s->levels, "number of levels, 0 to 12 (required)")
@@ -148,14 +150,23 @@ Command add_subdivide(CLI::App& meshedit) {
                     "CS184); loop: Loop's original weights")
         ->type_name("W")
         ->check(CLI::IsMember({"warren", "loop"}));
+    app->add_option("--scheme", s->scheme,
+                    "loop (the default: triangles only), catmull-clark (any polygons, "
+                    "OpenSubdiv's Catmark rules) or linear (Catmull-Clark's faces, no "
+                    "smoothing)")
+        ->type_name("S")
+        ->check(CLI::IsMember({"loop", "catmull-clark", "linear"}));
     add_density_option(*app, s->density);
     app->footer(
-        "Loop-subdivides IN K times (every triangle becomes four each time) and writes OUT.\n"
-        "Non-triangle faces are triangulated first, with a note. Boundary and crease edges\n"
-        "(\"e:crease\", stored in MeshEdit's COLLADA <extra>) stay sharp.\n"
+        "Subdivides IN K times and writes OUT. Loop turns every triangle into four each\n"
+        "time and refuses polygons (triangulate first: `meshedit convert --ops triangulate`).\n"
+        "Catmull-Clark and linear turn a face of k corners into k quads, then every quad into\n"
+        "four. Boundary and crease edges (\"e:crease\", stored in MeshEdit's COLLADA <extra>)\n"
+        "stay sharp; docs/subdivision.md has the rules.\n"
         "\n"
-        "Example:\n"
+        "Examples:\n"
         "  meshedit subdivide dae/cube.dae cube2.dae -n 2\n"
+        "  meshedit subdivide dae/quadball.dae smooth.dae -n 2 --scheme catmull-clark\n"
         "\n"
         "Exit status: 0 ok, 1 a level that does not fit, 2 bad usage, bad input or an\n"
         "unwritable output.");
@@ -166,7 +177,10 @@ Command add_subdivide(CLI::App& meshedit) {
                 LoadedDocument input = load_surface(s->in, s->density);
                 print_load_messages(input);
                 if (s->levels > 0) {
-                    const ops::Step loop = ops::parse_step("loop:" + std::to_string(s->levels));
+                    const std::string verb = s->scheme == "catmull-clark" ? "catmull_clark"
+                                             : s->scheme == "linear"      ? "linear"
+                                                                          : "loop";
+                    const ops::Step loop = ops::parse_step(verb + ":" + std::to_string(s->levels));
                     ProgressBar bar("subdivide");
                     try {
                         ops::apply_steps(input.mesh, {loop}, apply_options(bar, weights));

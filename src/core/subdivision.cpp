@@ -57,67 +57,18 @@
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
 #include "parallel.h"
+#include "refine_util.h"
 
 namespace meshedit {
 namespace {
 
 using loop_rules::Progress;
+using refine::chunked;
+using refine::release;
+using refine::sized;
+using refine::u32;
 
-// Below this many faces everything runs on the calling thread.
-constexpr std::size_t kParallelFaces = 100'000;
-// Elements per chunk of work handed to a thread (small enough to balance two threads on a
-// 100,000-face mesh), and at least this many between two progress reports.
-constexpr std::size_t kChunk = std::size_t{1} << 14;
-constexpr std::size_t kReportEvery = std::size_t{1} << 16;
-
-// Runs body(begin, end) over [0, n) in chunks on `threads` threads, reporting a fraction
-// that goes from `lo` to `hi` from the calling thread.
-template <class Body>
-void chunked(std::size_t n, unsigned threads, Progress& progress, double lo, double hi,
-             const Body& body) {
-    std::size_t reported = 0;
-    parallel::for_chunks(n, kChunk, threads, body, [&](std::size_t done) {
-        if (done - reported >= kReportEvery) {
-            reported = done;
-            progress(lo + (hi - lo) * static_cast<double>(done) / static_cast<double>(n));
-        }
-    });
-    progress(hi);
-}
-
-// Moves the contents out of a property array, leaving it empty (and unallocated).
-template <class A>
-A take(A& v) {
-    A out;
-    out.swap(v);
-    return out;
-}
-
-constexpr std::uint32_t u32(std::size_t i) {
-    return static_cast<std::uint32_t>(i);
-}
-
-// The old mesh's connectivity, moved out of the mesh before the new arrays are allocated.
-// Each array is freed as soon as no later pass reads it (see loop_subdivide).
-struct OldMesh {
-    memory::Array<Halfedge> next;
-    memory::Array<Vertex> to;
-    memory::Array<Face> face;
-    memory::Array<Halfedge> face_halfedge;
-    memory::Array<Halfedge> vertex_halfedge;
-    memory::Array<std::uint8_t> crease;  // empty when the mesh has no crease flags
-
-    bool is_sharp(std::size_t e) const {
-        const bool boundary = !face[2 * e].is_valid() || !face[2 * e + 1].is_valid();
-        return loop_rules::is_sharp(boundary, crease.empty() ? 0 : crease[e]);
-    }
-};
-
-// Frees an array's storage now (clear() keeps it).
-template <class A>
-void release(A& v) {
-    A().swap(v);
-}
+using refine::OldMesh;
 
 // New positions. Edge points: one pass over the edges. Vertex points: one pass over the
 // vertices, each gathering its neighbour sum, valence and sharp edges from its old one-ring
@@ -178,30 +129,6 @@ void loop_positions(memory::Array<Vec3>& out, const OldMesh& old, const memory::
     });
 }
 
-// Loop's points are convex combinations of old points, but the sums inside them (A + B, a
-// vertex's neighbours) are not, and overflow near the top of the double range. A mesh whose
-// largest coordinate exceeds 2^990 (a sum of 2^32 of them still fits) is subdivided at a
-// power-of-two scale and scaled back, which changes no bit of any other mesh's result.
-// Returns the exponent to scale by, 0 for every ordinary mesh.
-int overflow_exponent(const memory::Array<Vec3>& p) {
-    double largest = 0.0;
-    for (const Vec3& q : p) {
-        largest = std::max({largest, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
-    }
-    if (!(largest > std::ldexp(1.0, 990))) {
-        return 0;
-    }
-    int exponent = 0;
-    std::frexp(largest, &exponent);
-    return exponent;
-}
-
-void scale_by_power_of_two(memory::Array<Vec3>& p, int exponent) {
-    for (Vec3& q : p) {
-        q = Vec3{std::ldexp(q.x, exponent), std::ldexp(q.y, exponent), std::ldexp(q.z, exponent)};
-    }
-}
-
 // The connectivity of the refined mesh, one array at a time, so that each old array is freed
 // before the next new one is allocated and the peak memory stays near the result's own size
 // (the old mesh is a quarter of it). Each pass writes every element of its array once, by
@@ -228,18 +155,12 @@ public:
         write_next_and_face_anchors();
         release(old_.next);
         release(old_.face_halfedge);
-        write_prev();
+        refine::write_prev_from_next(mesh_, threads_, progress_, 0.75, 0.9);
         write_vertex_anchors();
         release(old_.vertex_halfedge);
     }
 
 private:
-    // `a`, resized to `n` elements that the pass that follows writes, every one of them.
-    template <class A>
-    static A& sized(A& a, std::size_t n) {
-        a.resize_for_overwrite(n);
-        return a;
-    }
     std::size_t new_nh() const { return 2 * (2 * ne_ + 3 * nf_); }
 
     // Halfedge 2I_i of old face f (the inner edge cutting off corner i, corner side).
@@ -358,18 +279,6 @@ private:
             });
     }
 
-    // prev is the inverse of next: every halfedge is the next of exactly one, so chunks of
-    // halfedges write disjoint entries.
-    void write_prev() {
-        auto& prev = sized(MeshArrays::prev(mesh_), new_nh());
-        const memory::Array<Halfedge>& next = MeshArrays::next(mesh_);
-        chunked(new_nh(), threads_, progress_, 0.75, 0.9, [&](std::size_t begin, std::size_t end) {
-            for (std::size_t x = begin; x < end; ++x) {
-                prev[next[x].idx()] = Halfedge(u32(x));
-            }
-        });
-    }
-
     // Vertex anchors, keeping the boundary-anchor rule: an old vertex's first(h) is on the
     // boundary iff h was; m_e leaves along second() of e's boundary halfedge, if any. Old h
     // was a boundary halfedge iff the new 2h has no face.
@@ -416,8 +325,8 @@ OpStatus is_loop_ok(const Mesh& mesh) {
     return OpStatus::ok();
 }
 
-LoopPlan plan_loop(const Mesh& mesh, int levels) {
-    LoopPlan plan;
+SubdivisionPlan plan_loop(const Mesh& mesh, int levels) {
+    SubdivisionPlan plan;
     if (const OpStatus ok = is_loop_ok(mesh); !ok) {
         plan.refusal = ok.reason();
         return plan;
@@ -438,17 +347,7 @@ LoopPlan plan_loop(const Mesh& mesh, int levels) {
         v += e;
         e = 2.0 * e + 3.0 * f;
         f *= 4.0;
-        plan.vertices = v, plan.edges = e, plan.faces = f;
-        plan.bytes = 4.0 * per_face * f;
-        const std::string what = "cannot subdivide: level " + std::to_string(level) + " (" +
-                                 std::to_string(static_cast<unsigned long long>(f)) + " faces) ";
-        if (2.0 * e >= static_cast<double>(kInvalidIndex) ||
-            v >= static_cast<double>(kInvalidIndex)) {
-            plan.refusal = what + "would exceed the 2^32 - 1 elements 32-bit handles can number";
-            return plan;
-        }
-        if (const auto over = over_budget(plan.bytes)) {
-            plan.refusal = what + *over;
+        if (!refine::plan_level(plan, level, v, e, f, per_face)) {
             return plan;
         }
     }
@@ -471,54 +370,23 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
     }
 
     try {
-        // Move the old connectivity out of the mesh (the arrays are left empty). prev is not
-        // needed: the new prev is the inverse of the new next.
+        // Move the old connectivity out of the mesh. prev is not needed: the new prev is the
+        // inverse of the new next.
         OldMesh old;
-        old.next = take(MeshArrays::next(mesh));
-        release(MeshArrays::prev(mesh));
-        old.to = take(MeshArrays::to_vertex(mesh));
-        old.face = take(MeshArrays::face(mesh));
-        old.face_halfedge = take(MeshArrays::face_halfedge(mesh));
-        old.vertex_halfedge = take(MeshArrays::vertex_halfedge(mesh));
-        EdgeProperty<std::uint8_t> crease = loop_rules::crease_property(mesh);
-        if (crease) {
-            old.crease = take(crease.vector());
-        }
-
-        // Shrinking the edge, halfedge and face arrays to 0 resets every user property on
-        // them to its default (their old values would describe the wrong elements), and
-        // frees their storage.
-        mesh.resize(nv, 0, 0);
-        release(MeshArrays::edge_deleted(mesh));
-        release(MeshArrays::face_deleted(mesh));
-        const unsigned threads = parallel::thread_count(nf, kParallelFaces, options.max_threads);
+        EdgeProperty<std::uint8_t> crease = refine::take_connectivity(mesh, old, false);
+        const unsigned threads =
+            parallel::thread_count(nf, refine::kParallelFaces, options.max_threads);
         progress(0.1);
 
         // Positions first: the old ones are freed before any connectivity is allocated.
-        {
-            memory::Array<Vec3> position;
-            position.resize_for_overwrite(new_nv);  // loop_positions writes every point
-            const int exponent = overflow_exponent(mesh.position_vector());
-            if (exponent != 0) {
-                scale_by_power_of_two(mesh.position_vector(), -exponent);
-            }
-            loop_positions(position, old, mesh.position_vector(), options.weights, threads,
-                           progress);
-            if (exponent != 0) {
-                scale_by_power_of_two(position, exponent);
-            }
-            mesh.position_vector().swap(position);
-        }
+        refine::replace_positions(
+            mesh, new_nv, [&](memory::Array<Vec3>& out, const memory::Array<Vec3>& p) {
+                loop_positions(out, old, p, options.weights, threads, progress);
+            });
         LoopConnectivity(mesh, old, nv, threads, progress).run();
 
         // Both children of a crease edge stay creases; inner edges are not creases.
-        if (crease) {
-            memory::Array<std::uint8_t>& flags = crease.vector();
-            flags.assign(new_ne, 0);
-            for (std::size_t g = 0; g < 2 * ne; ++g) {
-                flags[g] = old.crease[g / 2];
-            }
-        }
+        refine::give_crease_halves(crease, old, new_ne);
         // Sizes what is left (deletion flags, user properties) to the new counts.
         mesh.resize(new_nv, new_ne, new_nf);
     } catch (...) {

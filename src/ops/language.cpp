@@ -373,24 +373,26 @@ StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options) {
 }
 
 ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOptions& options) {
-    // Every Loop level of the list must fit before any work is done (the local steps barely
-    // change the size); each step is checked again when it runs.
+    // Every subdivision level of the list must fit before any work is done (the local steps
+    // barely change the size; each level of any scheme about quadruples the faces, so the
+    // levels so far are planned with the step's own scheme); each step is checked again
+    // when it runs.
     int levels = 0;
     for (const Step& step : steps) {
-        if (step.verb->name == "loop") {
+        if (step.verb->plan != nullptr) {
             levels += step.levels;
-            if (const LoopPlan plan = plan_loop(mesh, levels); !plan.ok()) {
+            if (const SubdivisionPlan plan = step.verb->plan(mesh, levels); !plan.ok()) {
                 throw OpError(step.text + " refused: " + plan.refusal, true);
             }
         }
     }
-    // Progress is weighted by face count: each Loop level costs about as much as the faces
-    // it starts from, and the local steps cost nothing in comparison.
+    // Progress is weighted by face count: each subdivision level costs about as much as the
+    // faces it starts from, and the local steps cost nothing in comparison.
     std::vector<double> cost(steps.size(), 0.0);
     double total = 0.0;
     double faces = static_cast<double>(mesh.n_faces());
     for (std::size_t i = 0; i < steps.size(); ++i) {
-        for (int level = 0; steps[i].verb->name == "loop" && level < steps[i].levels; ++level) {
+        for (int level = 0; steps[i].verb->plan != nullptr && level < steps[i].levels; ++level) {
             cost[i] += faces;
             faces *= 4.0;
         }

@@ -7,6 +7,7 @@
 
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/ops/ops.h"
 
@@ -252,6 +253,35 @@ StepResult run_loop(Mesh& mesh, const Step& step, const RunOptions& options) {
     return result;
 }
 
+std::string check_quads(const Mesh& mesh, const Step& step) {
+    if (mesh.n_faces() == 0) {
+        return "cannot subdivide: the mesh has no faces";
+    }
+    return plan_quad_subdivision(mesh, step.levels).refusal;
+}
+StepResult run_quads(Mesh& mesh, const Step& step, const RunOptions& options, QuadScheme scheme) {
+    StepResult result;
+    result.renumbers = true;
+    for (int level = 0; level < step.levels; ++level) {
+        QuadSubdivisionOptions quads;
+        quads.scheme = scheme;
+        if (options.progress) {
+            quads.progress = [&](double f) { options.progress((level + f) / step.levels); };
+        }
+        quad_subdivide(mesh, quads);
+    }
+    result.message =
+        std::string(scheme == QuadScheme::Linear ? "linear subdivision" : "Catmull-Clark") + ": " +
+        std::to_string(mesh.n_faces()) + " quads";
+    return result;
+}
+StepResult run_catmull_clark(Mesh& mesh, const Step& step, const RunOptions& options) {
+    return run_quads(mesh, step, options, QuadScheme::CatmullClark);
+}
+StepResult run_linear(Mesh& mesh, const Step& step, const RunOptions& options) {
+    return run_quads(mesh, step, options, QuadScheme::Linear);
+}
+
 std::string check_triangulate(const Mesh& mesh, const Step& step) {
     if (step.target == Target::Face) {
         return why(is_triangulate_ok(mesh, named_face(mesh, step)));
@@ -354,7 +384,20 @@ constexpr std::array kVerbs{
     Verb{"loop", kWholeMesh | kLevels, 0, 0, kNoDefaults, "loop, loop:K",
          "K levels (default 1) of Loop subdivision (Warren weights) of a triangle mesh; old "
          "vertices keep their indices, the vertex on old edge `e` gets index `V + e`",
-         "Loop-subdivide the mesh", check_loop, run_loop},
+         "Loop-subdivide the mesh", check_loop, run_loop, plan_loop},
+    Verb{"catmull_clark", kWholeMesh | kLevels, 0, 0, kNoDefaults,
+         "catmull_clark, catmull_clark:K",
+         "K levels (default 1) of Catmull-Clark subdivision (OpenSubdiv's Catmark rules, "
+         "creases and boundaries sharp) of any polygon mesh: every face of k corners becomes k "
+         "quads; old vertices keep their indices, edge `e`'s point is `V + e`, face `f`'s "
+         "`V + E + f`",
+         "Catmull-Clark-subdivide the mesh (any polygons; quads come out)", check_quads,
+         run_catmull_clark, plan_quad_subdivision},
+    Verb{"linear", kWholeMesh | kLevels, 0, 0, kNoDefaults, "linear, linear:K",
+         "K levels (default 1) of linear subdivision: the faces of Catmull-Clark, the points "
+         "at centroids and midpoints, the surface unchanged",
+         "subdivide into quads without smoothing (linear)", check_quads, run_linear,
+         plan_quad_subdivision},
     Verb{"triangulate", kWholeMesh | kFaceArg, 0, 0, kNoDefaults, "triangulate, triangulate:fI",
          "cuts every polygon (or face I) into triangles by diagonals inside it",
          "triangulate every polygon", check_triangulate, run_triangulate},

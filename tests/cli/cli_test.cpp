@@ -429,6 +429,40 @@ TEST(CliSubdivide, CreasesSplitAndStayCreases) {
     EXPECT_NEAR(j["bbox"]["max"][1].get<double>(), 1.0, 1e-12);
 }
 
+// --scheme catmull-clark takes polygons: quadball's 96 quads → 384 → 1536; the same as the
+// --ops verb; linear keeps every old vertex where it was (the bounding box of a ball
+// shrinks under Catmull-Clark, not under linear).
+TEST(CliSubdivide, CatmullClarkAndLinearSchemes) {
+    TempDir tmp;
+    const std::string in = (repo_root() / "dae/quadball.dae").string();
+    const RunResult cc = run_meshedit(
+        {"subdivide", in, (tmp / "cc.dae").string(), "-n", "2", "--scheme", "catmull-clark"});
+    ASSERT_EQ(cc.exit_code, 0) << cc.err;
+    const Json j = info_json(tmp / "cc.dae");
+    // 98/192/96 → 386/768/384 → 1538/3072/1536.
+    EXPECT_EQ(j["vertices"], 1538);
+    EXPECT_EQ(j["edges"], 3072);
+    EXPECT_EQ(j["faces"], 1536);
+    EXPECT_LT(j["bbox"]["max"][0].get<double>(), 0.99);
+    const RunResult ops =
+        run_meshedit({"convert", in, (tmp / "ops.dae").string(), "--ops", "catmull_clark:2"});
+    ASSERT_EQ(ops.exit_code, 0) << ops.err;
+    EXPECT_EQ(canonical_faces(read_mesh(tmp / "cc.dae").mesh),
+              canonical_faces(read_mesh(tmp / "ops.dae").mesh));
+
+    const RunResult linear = run_meshedit(
+        {"subdivide", in, (tmp / "linear.dae").string(), "-n", "1", "--scheme", "linear"});
+    ASSERT_EQ(linear.exit_code, 0) << linear.err;
+    const Json l = info_json(tmp / "linear.dae");
+    EXPECT_EQ(l["faces"], 384);
+    EXPECT_EQ(l["bbox"]["max"][0].get<double>(), 1.0);
+    EXPECT_EQ(l["bbox"]["min"][1].get<double>(), -1.0);
+
+    const RunResult bad = run_meshedit(
+        {"subdivide", in, (tmp / "x.dae").string(), "-n", "1", "--scheme", "butterfly"});
+    EXPECT_EQ(bad.exit_code, 2);
+}
+
 TEST(CliSubdivide, WarrenAndLoopWeightsDiffer) {
     TempDir tmp;
     const auto in = (repo_root() / "dae/icosahedron.dae").string();

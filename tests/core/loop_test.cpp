@@ -15,15 +15,21 @@
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
+#include "subdivision_test_util.h"
 #include "support/fixtures.h"
 #include "support/mesh_compare.h"
 
 namespace meshedit {
 namespace {
 
-using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
-
-constexpr double kTol = 1e-12;
+using test::crease_pairs;
+using test::creased_cube;
+using test::expect_same_result;
+using test::is_crease;
+using test::kTol;
+using test::mark_crease;
+using test::near;
+using test::Pairs;
 
 // Subdivides a copy `levels` times with the fast or the classic path, validating each level.
 Mesh subdivided(Mesh mesh, int levels, bool classic = false, LoopWeights w = LoopWeights::Warren) {
@@ -53,45 +59,6 @@ long euler(const Mesh& m) {
            static_cast<long>(m.n_faces());
 }
 
-// Crease edges as sorted vertex pairs.
-Pairs crease_pairs(const Mesh& mesh) {
-    Pairs out;
-    const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
-    if (!crease) {
-        return out;
-    }
-    for (Edge e : mesh.edges()) {
-        if (crease[e] != 0) {
-            const std::uint32_t a = mesh.vertex(e, 0).idx();
-            const std::uint32_t b = mesh.vertex(e, 1).idx();
-            out.emplace_back(std::min(a, b), std::max(a, b));
-        }
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-void mark_crease(Mesh& mesh, std::uint32_t a, std::uint32_t b) {
-    const Edge e = mesh.find_edge(Vertex(a), Vertex(b));
-    ASSERT_TRUE(e.is_valid()) << a << "-" << b;
-    mesh.property<Edge, std::uint8_t>(kCreaseProperty, 0)[e] = 1;
-}
-
-bool is_crease(const Mesh& mesh, std::uint32_t a, std::uint32_t b) {
-    const Edge e = mesh.find_edge(Vertex(a), Vertex(b));
-    const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
-    return e.is_valid() && crease && crease[e] != 0;
-}
-
-::testing::AssertionResult near(const Vec3& actual, const Vec3& expected, double tol = kTol) {
-    if (distance(actual, expected) <= tol) {
-        return ::testing::AssertionSuccess();
-    }
-    return ::testing::AssertionFailure()
-           << "(" << actual.x << ", " << actual.y << ", " << actual.z << ") != expected ("
-           << expected.x << ", " << expected.y << ", " << expected.z << ")";
-}
-
 Vec3 pos(const Mesh& mesh, std::uint32_t v) {
     return mesh.position(Vertex(v));
 }
@@ -101,21 +68,6 @@ std::uint32_t edge_vertex(const Mesh& before, std::uint32_t a, std::uint32_t b) 
     const Edge e = before.find_edge(Vertex(a), Vertex(b));
     EXPECT_TRUE(e.is_valid()) << a << "-" << b;
     return static_cast<std::uint32_t>(before.vertices_size()) + e.idx();
-}
-
-// The fast path and the classic reference agree: same faces by vertex index, same positions
-// per index, same crease edges.
-void expect_same_result(const Mesh& fast, const Mesh& classic) {
-    ASSERT_EQ(fast.n_vertices(), classic.n_vertices());
-    ASSERT_EQ(fast.n_edges(), classic.n_edges());
-    ASSERT_EQ(fast.n_faces(), classic.n_faces());
-    EXPECT_EQ(test::canonical_faces(fast), test::canonical_faces(classic));
-    for (Vertex v : fast.vertices()) {
-        ASSERT_TRUE(near(fast.position(v), classic.position(v))) << "vertex " << v.idx();
-    }
-    EXPECT_EQ(crease_pairs(fast), crease_pairs(classic));
-    EXPECT_EQ(fast.has_property<Edge>(kCreaseProperty),
-              classic.has_property<Edge>(kCreaseProperty));
 }
 
 // Two meshes with different vertex numbering describe the same surface: each vertex of
@@ -154,23 +106,6 @@ void expect_same_surface(const Mesh& a, const Mesh& b) {
     }
     std::sort(creases.begin(), creases.end());
     EXPECT_EQ(creases, crease_pairs(b));
-}
-
-// Marks the bottom square (z = -1: 0-1-3-2) and the three cube edges at vertex 7 of
-// shapes::cube() as creases. Vertex i sits at ((i&1) ? 1 : -1, (i&2) ? 1 : -1, (i&4) ? 1 : -1):
-//
-//          6 ------- 7*         * corner (3 creases: 7-3, 7-5, 7-6)
-//         /|        /|          0, 1, 2: on exactly 2 creases (bottom loop)
-//        4 ------- 5 |          3: corner (1-3, 3-2, 3-7)
-//        | 2 ======|=3*         5, 6: darts (1 crease); 4: no crease
-//        |//       |//
-//        0 ======= 1            (= and // : bottom-loop creases)
-Mesh creased_cube() {
-    Mesh mesh = shapes::cube();
-    for (auto [a, b] : Pairs{{0, 1}, {1, 3}, {3, 2}, {2, 0}, {7, 3}, {7, 5}, {7, 6}}) {
-        mark_crease(mesh, a, b);
-    }
-    return mesh;
 }
 
 // ----------------------------------------------------------------- counts and layout

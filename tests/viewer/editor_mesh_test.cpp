@@ -10,6 +10,7 @@
 #include <string>
 
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/io/io.h"
@@ -261,6 +262,35 @@ TEST(Editor, LoopKeepsTheSelectedVertex) {
 
     Editor empty = editor_with(Mesh());
     EXPECT_TRUE(empty.press(key_of('L'), 0).refused);
+}
+
+// Shift+C is Catmull-Clark and Ctrl+L linear subdivision, on polygons too: one undo step
+// each, the selected vertex kept, the result as the core computes it.
+TEST(Editor, CatmullClarkAndLinearKeys) {
+    const Mesh cube = test::quad_cube();
+    Mesh expected = cube;
+    quad_subdivide(expected);
+
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::vertex(Vertex(2)));
+    const Outcome out = ed.press(key_of('C'), kShift);
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(out.message, "Catmull-Clark: 24 quads");
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    EXPECT_EQ(ed.selection(), ElementRef::vertex(Vertex(2)));
+
+    QuadSubdivisionOptions linear;
+    linear.scheme = QuadScheme::Linear;
+    quad_subdivide(expected, linear);
+    EXPECT_EQ(ed.press(key_of('L'), kCtrl).message, "linear subdivision: 96 quads");
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    EXPECT_EQ(ed.history().undo_steps(), 2u);
+    ed.run({Command::Undo});
+    ed.run({Command::Undo});
+    EXPECT_TRUE(test::identical(ed.mesh(), cube));
+
+    Editor empty = editor_with(Mesh());
+    EXPECT_TRUE(empty.press(key_of('C'), kShift).refused);
 }
 
 }  // namespace

@@ -42,20 +42,21 @@ struct LoopReport {
 /// may not have (docs/halfedge.md, `multi-edge`). O(F).
 OpStatus is_loop_ok(const Mesh& mesh);
 
-/// What `levels` levels of Loop would make of `mesh`, and whether they may run: the one
-/// "does it fit" answer every caller (the editor, `--ops loop:K`, `meshedit subdivide`) asks
-/// before subdividing.
-struct LoopPlan {
-    /// Element counts after the last level (non-triangles triangulated first).
+/// What `levels` levels of a subdivision scheme would make of a mesh, and whether they may
+/// run: the one "does it fit" answer every caller (the editor, `--ops loop:K`, `meshedit
+/// subdivide`) asks before subdividing (plan_loop() here, plan_quad_subdivision() in
+/// quad_subdivision.h).
+struct SubdivisionPlan {
+    /// Element counts after the last level (for Loop: non-triangles triangulated first).
     double vertices = 0, edges = 0, faces = 0;
     /// Estimated peak memory in bytes: the last level's arrays four times over (the level's
     /// own temporaries, an undo snapshot or a writer's copy, normals, file buffers).
     double bytes = 0;
-    /// Empty when Loop may run; else why not, as "cannot subdivide: level 3 would …".
+    /// Empty when the levels may run; else why not, as "cannot subdivide: level 3 would …".
     std::string refusal;
     bool ok() const { return refusal.empty(); }
 };
-LoopPlan plan_loop(const Mesh& mesh, int levels = 1);
+SubdivisionPlan plan_loop(const Mesh& mesh, int levels = 1);
 
 /// One level of Loop subdivision: every triangle becomes four.
 ///

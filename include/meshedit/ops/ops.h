@@ -99,6 +99,9 @@ struct Verb {
     std::string (*check)(const Mesh& mesh, const Step& step);
     /// Runs the step. \pre check() returned empty.
     StepResult (*run)(Mesh& mesh, const Step& step, const RunOptions& options);
+    /// For subdivision verbs (kLevels): what K levels would make and whether they fit, asked
+    /// for a whole list before any step runs; null for the others.
+    SubdivisionPlan (*plan)(const Mesh& mesh, int levels) = nullptr;
 
     bool accepts(Target target) const;
 };
