@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Installs every Debian package MeshEdit needs to build and test; with --bench also the
-# benchmark anchors (OpenMesh, OpenSubdiv, CGAL and its demo meshes, Assimp) and perf, which
-# only `make bench` needs; with --fuzz clang and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs dpkg queries
+# Installs every Debian package MeshEdit needs to build and test (OpenSubdiv is the tests'
+# subdivision oracle); with --bench also the other benchmark anchors (OpenMesh, CGAL and its
+# demo meshes, Assimp) and perf, which only `make bench` needs; with --fuzz clang and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs dpkg queries
 # (well under a second).
 set -euo pipefail
 

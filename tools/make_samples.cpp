@@ -167,6 +167,7 @@ int main(int argc, char** argv) {
         save(shapes::icosahedron(), dae / "icosahedron.dae");
         save(shapes::torus(24, 12), dae / "torus.dae");
         save(shapes::quad_sphere(4), dae / "quadball.dae");
+        save(shapes::quad_sphere(1), dae / "quadcube.dae");
         save(bowl(24, 6), dae / "bowl.dae");
         save(creased_cylinder(16, 2), dae / "creased.dae");
         // The default density (8 quads per patch side) keeps the file small (~0.3 MB).

@@ -49,6 +49,7 @@ const SampleCounts kSamples[] = {
     {"dae/icosahedron.dae", 12, 30, 20, 0, 1, 2, 0, 0},
     {"dae/torus.dae", 288, 864, 576, 0, 1, 0, 1, 0},
     {"dae/quadball.dae", 98, 192, 96, 0, 1, 2, 0, 0},
+    {"dae/quadcube.dae", 8, 12, 6, 0, 1, 2, 0, 0},
     {"dae/bowl.dae", 145, 408, 264, 1, 1, 1, 0, 0},
     {"dae/creased.dae", 50, 144, 96, 0, 1, 2, 0, 32},
     {"dae/teapot.dae", 2082, 6112, 4032, 6, 4, 2, 0, 0},

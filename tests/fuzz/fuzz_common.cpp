@@ -13,6 +13,7 @@
 #include "meshedit/core/budget.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/ops/ops.h"
@@ -69,8 +70,8 @@ void one_local_op(Mesh& mesh, std::uint64_t seed) {
     using Kind = ElementRef::Kind;
     const auto all = ops::verbs();
     const ops::Verb& verb = all[seed % all.size()];
-    if (verb.name == "loop") {
-        return;  // run below, on small meshes only
+    if (verb.plan != nullptr) {
+        return;  // subdivision: run below, on small meshes only
     }
     seed >>= 5;
     std::vector<Kind> kinds;
@@ -187,8 +188,13 @@ void exercise(Mesh mesh, std::uint64_t seed) {
     }
     round_trip(mesh);
     if (is_loop_ok(mesh) && plan_loop(mesh).ok()) {
-        loop_subdivide(mesh);
-        check_valid(mesh, "Loop");
+        Mesh loop = mesh;
+        loop_subdivide(loop);
+        check_valid(loop, "Loop");
+    }
+    if (plan_quad_subdivision(mesh).ok()) {
+        quad_subdivide(mesh);
+        check_valid(mesh, "Catmull-Clark");
     }
 }
 

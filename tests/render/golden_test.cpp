@@ -79,6 +79,21 @@ const std::vector<GoldenCase>& golden_cases() {
         {"creased_input", "dae/creased.dae", {"--wireframe"}},
         {"creased_loop3", "dae/creased.dae", {"--ops", "loop:3"}},
         {"bowl_loop2", "dae/bowl.dae", {"--ops", "loop:2", "--camera", "30,35"}},
+        // Catmull-Clark and linear subdivision of polygons (docs/subdivision.md): the quad
+        // cube's levels; linear keeps the cube; creases on the quad cube's top square and one
+        // vertical edge (vertex 3 = (+,+,+) a corner, 2 below it a dart); the creased
+        // cylinder; the quad ball.
+        {"cc_cube_input", "dae/quadcube.dae", {"--flat", "--wireframe"}},
+        {"cc_cube1", "dae/quadcube.dae", {"--ops", "catmull_clark:1", "--wireframe"}},
+        {"cc_cube2", "dae/quadcube.dae", {"--ops", "catmull_clark:2", "--wireframe"}},
+        {"cc_cube3", "dae/quadcube.dae", {"--ops", "catmull_clark:3", "--wireframe"}},
+        {"linear_cube2", "dae/quadcube.dae", {"--ops", "linear:2", "--flat", "--wireframe"}},
+        {"cc_creased_cube",
+         "dae/quadcube.dae",
+         {"--ops", "crease:6-7,crease:7-3,crease:3-1,crease:1-6,crease:3-2,catmull_clark:3",
+          "--wireframe"}},
+        {"cc_creased", "dae/creased.dae", {"--ops", "catmull_clark:2", "--wireframe"}},
+        {"cc_quadball", "dae/quadball.dae", {"--ops", "catmull_clark:2", "--wireframe"}},
         // One selection of each element type. Vertex 0 = (−0.53, 0.85, 0) and 1 = (0.53, 0.85,
         // 0) share the faces (0,5,1) on +z and (0,1,7) on −z: each camera looks straight at
         // its element (az = atan2(x, z), el = asin(y)), so nothing sits on the silhouette.

@@ -164,9 +164,9 @@ struct ApplyOptions {
 
 /// Runs `steps` in order. Vertex indices name the mesh as it is before each step: a split's
 /// new vertex is appended (index = vertices_size() before the split), a collapse deletes the
-/// larger end without renumbering, and loop renumbers as loop_subdivide() documents (old
-/// vertices keep their indices). Loop levels are checked against plan_loop() before any step
-/// runs. \throws OpError; steps before the failing one stay applied (callers write nothing
+/// larger end without renumbering, and the subdivision verbs renumber as loop_subdivide()
+/// and quad_subdivide() document (old vertices keep their indices). Their levels are checked
+/// against the verbs' plans (plan_loop(), plan_quad_subdivision()) before any step runs. \throws OpError; steps before the failing one stay applied (callers write nothing
 /// on error).
 /// \return what the last step selected (its StepResult::selected): the result to show.
 ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps,
