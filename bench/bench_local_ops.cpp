@@ -44,6 +44,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench_shapes.h"
 #include "bench_util.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/local_ops.h"
@@ -71,34 +72,6 @@ struct Size {
 constexpr Size kSizes[] = {{"10k", 130, 70}, {"100k", 455, 200}, {"1m", 1300, 700}};
 // The mix once more at 4M faces: past the last cache level, where a local op's cost levels off.
 constexpr Size kBeyondCaches = {"4m", 2600, 1400};
-
-// The m × n quad torus; quad (i, j) is cut into two triangles when (i + 3j) % 10 == 0.
-Mesh quad_torus(int m, int n) {
-    PolygonSoup soup;
-    soup.positions.reserve(std::size_t(m) * n);
-    for (int i = 0; i < m; ++i) {
-        const double u = 2.0 * M_PI * i / m;
-        for (int j = 0; j < n; ++j) {
-            const double v = 2.0 * M_PI * j / n;
-            const double rho = 1.0 + 0.4 * std::cos(v);
-            soup.positions.push_back({rho * std::cos(u), rho * std::sin(u), 0.4 * std::sin(v)});
-        }
-    }
-    const auto id = [&](int i, int j) { return std::uint32_t((i % m) * n + (j % n)); };
-    for (int i = 0; i < m; ++i) {
-        for (int j = 0; j < n; ++j) {  // (u, then v) order is outward, as shapes::torus
-            const std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1),
-                                d = id(i, j + 1);
-            if ((i + 3 * j) % 10 == 0) {
-                soup.add_face({a, b, c});
-                soup.add_face({a, c, d});
-            } else {
-                soup.add_face({a, b, c, d});
-            }
-        }
-    }
-    return build_mesh(soup);
-}
 
 struct Job {
     enum Kind { kMix, kExtrude } kind;
@@ -272,7 +245,7 @@ double run_mix(const std::string& name, const Job& job, const Mesh& pristine, Me
 }
 
 int run_mix_job(const std::string& name, const Job& job, int runs) {
-    const Mesh pristine = quad_torus(job.size.m, job.size.n);
+    const Mesh pristine = mb::quad_torus(job.size.m, job.size.n, true);
     Mesh mesh;
     std::vector<double> ms;
     Tally first;
@@ -316,7 +289,7 @@ int run_mix_job(const std::string& name, const Job& job, int runs) {
 }
 
 int run_extrude_job(const std::string& name, const Job& job, int runs) {
-    const Mesh pristine = quad_torus(job.size.m, job.size.n);
+    const Mesh pristine = mb::quad_torus(job.size.m, job.size.n, true);
     const auto n_faces = static_cast<std::uint32_t>(pristine.faces_size());
     std::size_t sides = 0;
     for (const Face f : pristine.faces()) {

@@ -75,6 +75,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using meshedit::Vec3;
+using meshedit::bench::current_rss_mb;
+using meshedit::bench::mem_available_mb;
+using meshedit::bench::OsdPoint;
 using meshedit::bench::print_result;
 using meshedit::bench::time_runs;
 
@@ -88,32 +91,6 @@ struct Input {
     std::vector<Vec3> positions;
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
-
-double current_rss_mb() {
-    long pages = 0;
-    long resident = 0;
-    if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
-        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) {
-            resident = 0;
-        }
-        std::fclose(f);
-    }
-    return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) /
-           (1024.0 * 1024.0);
-}
-
-double mem_available_mb() {
-    std::ifstream in("/proc/meminfo");
-    std::string key;
-    double kib = 0;
-    std::string unit;
-    while (in >> key >> kib >> unit) {
-        if (key == "MemAvailable:") {
-            return kib / 1024.0;
-        }
-    }
-    return 0;
-}
 
 /// Triangles of a soup of triangles (anything else is an error: all inputs here are triangles).
 Input input_from_soup(const meshedit::PolygonSoup& soup) {
@@ -356,19 +333,6 @@ Outcome run_cgal(const Input& in, int levels, int runs, const std::function<void
     out.vertices_out = static_cast<double>(mesh.number_of_vertices());
     return out;
 }
-
-/// Primvar for PrimvarRefiner::Interpolate.
-struct OsdPoint {
-    double x = 0;
-    double y = 0;
-    double z = 0;
-    void Clear(void* = nullptr) { x = y = z = 0; }
-    void AddWithWeight(const OsdPoint& p, float w) {
-        x += w * p.x;
-        y += w * p.y;
-        z += w * p.z;
-    }
-};
 
 Outcome run_opensubdiv(const Input& in, int levels, int runs, bool full_topology,
                        const std::function<void()>& before_copy) {

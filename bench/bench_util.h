@@ -5,12 +5,14 @@
 
 #include <malloc.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <string>
@@ -103,6 +105,47 @@ inline double peak_rss_mb() {
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
+
+/// Resident set size of this process now, in MiB (/proc/self/statm).
+inline double current_rss_mb() {
+    long pages = 0;
+    long resident = 0;
+    if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) {
+            resident = 0;
+        }
+        std::fclose(f);
+    }
+    return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) /
+           (1024.0 * 1024.0);
+}
+
+/// MemAvailable of /proc/meminfo in MiB (0 if unknown): jobs that may not fit are skipped.
+inline double mem_available_mb() {
+    std::ifstream in("/proc/meminfo");
+    std::string key;
+    double kib = 0;
+    std::string unit;
+    while (in >> key >> kib >> unit) {
+        if (key == "MemAvailable:") {
+            return kib / 1024.0;
+        }
+    }
+    return 0;
+}
+
+/// A point for OpenSubdiv's PrimvarRefiner::Interpolate (double coordinates).
+struct OsdPoint {
+    double x = 0;
+    double y = 0;
+    double z = 0;
+    void Clear(void* = nullptr) { x = y = z = 0; }
+    void AddWithWeight(const OsdPoint& p, float w) {
+        x += w * p.x;
+        y += w * p.y;
+        z += w * p.z;
+    }
+};
 
 /// Prints `RESULT {"job": …, "impl": …, "runs": n, "min_ms": …, "median_ms": …, extras}`.
 inline void print_result(const std::string& job, const std::string& impl,

@@ -57,8 +57,14 @@ DEFAULT_CONFIGS = {
                                                         "collapse_edge", "collapse_face")
        for size in ("10k", "100k", "1m")]
     + [(f"extrude_all_faces_{size}", "meshedit") for size in ("10k", "100k", "1m")],
+    "bench_catmark": [
+        (job, impl)
+        for job in ["cc_1m_1level"] + [f"cc_100k_levels_{k}" for k in range(1, 4)]
+        for impl in ("meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full")
+    ],
 }
-PROGRAMS = ["bench_loop", "bench_ops", "bench_io_draw", "bench_build", "bench_local_ops"]
+PROGRAMS = ["bench_loop", "bench_catmark", "bench_ops", "bench_io_draw", "bench_build",
+            "bench_local_ops"]
 BUILD_SIZES = ("100k", "300k", "1m")
 # bench_local_ops (issue 16): no anchor, no target; the cost per op at each size, side by side.
 LOCAL_OPS = ("dissolve_edge", "dissolve_vertex", "collapse_edge", "collapse_face")
@@ -73,6 +79,9 @@ PREPARE = {"bench_io_draw": ["--generate"]}
 
 JOB_TITLES = {
     "loop_1m_1level": "Loop subdivision, 1 level, 1M-face torus (→ 4M faces)",
+    "cc_1m_1level": "Catmull-Clark, 1 level, a closed torus of 1M quads (→ 4M quads)",
+    **{f"cc_100k_levels_{k}": f"Catmull-Clark, {k} level(s), a closed torus of 99,825 faces "
+       "(one quad in ten cut into two triangles)" for k in range(1, 4)},
     "flips_1e6": "1,000,000 random edge flips on the 100k torus",
     "splits_1e6": "1,000,000 random edge splits on the 100k torus",
     "normals_6p4m": "Area-weighted vertex normals, 6.4M faces "
@@ -395,6 +404,33 @@ def job_table(job, rows, info):
     return lines
 
 
+def subdivision_target_rows(jobs, scheme, big_job, levels_job, levels, big_what, levels_what):
+    """The two "≤ 1/3 of the fastest anchor" rows of a subdivision scheme: one level of the
+    big mesh, and every level of the 100k mesh (met only if every level is measured and
+    met)."""
+    rows = []
+    _, _, fastest, r = ratio_info(jobs.get(big_job, []))
+    rows.append((f"{scheme}, 1 level, {big_what}", "≤ 1/3 of the fastest anchor",
+                 f"{r:.3f} of {fastest}" if r is not None else
+                 f"not measured ({big_job}: MeshEdit or anchors missing)",
+                 "n/a" if r is None else ("yes" if r <= 1 / 3 else "no")))
+    parts, worst, missing = [], None, []
+    for k in levels:
+        _, _, fastest, r = ratio_info(jobs.get(levels_job.format(k), []))
+        if r is None:
+            missing.append(str(k))
+            continue
+        parts.append(f"L{k}: {r:.3f} of {fastest}")
+        worst = r if worst is None else max(worst, r)
+    if missing:
+        parts.append(f"levels {', '.join(missing)} not measured")
+    met = "n/a" if worst is None else ("yes" if worst <= 1 / 3 and not missing else
+                                       ("no" if worst > 1 / 3 else "partly measured"))
+    rows.append((f"{scheme}, levels {levels[0]}–{levels[-1]} on {levels_what}",
+                 "≤ 1/3 of the fastest anchor", "; ".join(parts) or "not measured", met))
+    return rows
+
+
 def targets_table(jobs):
     rows = []
 
@@ -408,31 +444,12 @@ def targets_table(jobs):
         statuses = sorted({r["status"] for r in rows_ if "median_ms" not in r})
         return f"not measured ({what}; {'; '.join(statuses) or 'missing impl'})"
 
-    # Loop, 1 level, 1M.
-    me, ratios, fastest, r = ratio_info(jobs.get("loop_1m_1level", []))
-    if r is not None:
-        rows.append(("Loop, 1 level, 1M → 4M faces", "≤ 1/3 of the fastest anchor",
-                     f"{r:.3f} of {fastest}", "yes" if r <= 1 / 3 else "no"))
-    else:
-        rows.append(("Loop, 1 level, 1M → 4M faces", "≤ 1/3 of the fastest anchor",
-                     not_measured("loop_1m_1level", "MeshEdit or anchors missing"), "n/a"))
-    # Loop, levels 1–4 on 100k.
-    parts, worst, missing = [], None, []
-    for k in range(1, 5):
-        job = f"loop_100k_levels_{k}"
-        _, _, fastest, r = ratio_info(jobs.get(job, []))
-        if r is None:
-            missing.append(str(k))
-            continue
-        parts.append(f"L{k}: {r:.3f} of {fastest}")
-        worst = r if worst is None else max(worst, r)
-    if missing:
-        parts.append(f"levels {', '.join(missing)} not measured")
-    measured = "; ".join(parts)
-    met = "n/a" if worst is None else ("yes" if worst <= 1 / 3 and not missing else
-                                       ("no" if worst > 1 / 3 else "partly measured"))
-    rows.append(("Loop, levels 1–4 on 100k faces", "≤ 1/3 of the fastest anchor",
-                 measured or "not measured", met))
+    # Loop, 1 level of 1M, levels 1–4 on 100k.
+    rows += subdivision_target_rows(jobs, "Loop", "loop_1m_1level", "loop_100k_levels_{}",
+                                    range(1, 5), "1M → 4M faces", "100k faces")
+    # Catmull-Clark (issue 17): 1 level of 1M quads, levels 1–3 on 100k mixed faces.
+    rows += subdivision_target_rows(jobs, "Catmull-Clark", "cc_1m_1level", "cc_100k_levels_{}",
+                                    range(1, 4), "1M quads → 4M", "100k mixed faces")
     # Bytes per face after Loop: the first Loop job where MeshEdit and CGAL both report it.
     loop_jobs = ["loop_1m_1level"] + sorted(j for j in jobs if j.startswith("loop_") and
                                             j != "loop_1m_1level")

@@ -340,8 +340,10 @@ void quad_subdivide(Mesh& mesh, const QuadSubdivisionOptions& options) {
     try {
         OldMesh old;
         EdgeProperty<std::uint8_t> crease = refine::take_connectivity(mesh, old, true);
+        // Threads from 100,000 faces out (the result has C <= 2E faces), as Loop's from
+        // 100,000 in: a level of either writes about as much per output face.
         const unsigned threads =
-            parallel::thread_count(nf, refine::kParallelFaces, options.max_threads);
+            parallel::thread_count(nh, refine::kParallelFaces, options.max_threads);
 
         QuadRefinement refinement(mesh, old, nv, threads, progress);
         const std::size_t corners = refinement.number_corners();

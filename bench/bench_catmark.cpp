@@ -1,0 +1,335 @@
+// Catmull-Clark subdivision: MeshEdit against OpenSubdiv Far (Catmark), OpenMesh
+// CatmullClarkT and CGAL CatmullClark_subdivision.
+//
+//     bench_catmark --job cc_1m_1level --impl cgal [--runs 5]
+//     bench_catmark --list        (prints every "job impl" pair, one a line)
+//
+// Jobs: cc_1m_1level (a closed torus of 1000 × 1000 quads, 1M faces → 4M), cc_100k_levels_K
+// (K = 1..3: a closed torus of 330 × 275 quads with one quad in ten cut into two triangles,
+// 99,825 mixed faces; cumulative time from the input). Impls: meshedit, openmesh, cgal,
+// opensubdiv_min, opensubdiv_full.
+//
+// Every implementation is built from the same positions and polygons (bench_shapes.h). The
+// copy of the input is made in time_runs' untimed setup, which also frees the previous
+// result; the timed body is the subdivision only:
+//   meshedit         quad_subdivide() K times on a copy of the Mesh (the complete editable
+//                    halfedge mesh, double positions);
+//   openmesh         CatmullClarkT<PolyMesh> (default traits: float positions),
+//                    operator()(mesh, K), its prepare/cleanup included;
+//   cgal             Subdivision_method_3::CatmullClark_subdivision(number_of_iterations(K))
+//                    on Surface_mesh<Simple_cartesian<double>::Point_3>;
+//   opensubdiv_*     TopologyRefinerFactory<TopologyDescriptor>::Create (SCHEME_CATMARK,
+//                    VTX_BOUNDARY_EDGE_ONLY), RefineUniform(K) (default options, or
+//                    fullTopologyInLastLevel), the vertex buffer of all levels and
+//                    PrimvarRefiner::Interpolate of the double positions level by level.
+// Memory extras as bench_loop's: peak_rss_mb, rss_before_mb, bytes_per_face (peak − before,
+// per output face), bytes_per_face_retained.
+
+#include <malloc.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
+
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bench_shapes.h"
+#include "bench_util.h"
+#include "meshedit/core/build.h"
+#include "meshedit/core/quad_subdivision.h"
+
+namespace {
+
+namespace mb = meshedit::bench;
+using meshedit::PolygonSoup;
+using meshedit::Vec3;
+
+const char* const kImpls[] = {"meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full"};
+
+struct Job {
+    std::string name;
+    int m, n;
+    bool mixed;
+    int levels;
+};
+
+std::vector<Job> all_jobs() {
+    std::vector<Job> jobs{{"cc_1m_1level", 1000, 1000, false, 1}};
+    for (int k = 1; k <= 3; ++k) {
+        jobs.push_back({"cc_100k_levels_" + std::to_string(k), 330, 275, true, k});
+    }
+    return jobs;
+}
+
+// The polygons of a soup, one at a time: corners(f) is a pointer and a count.
+template <class Fn>
+void for_each_polygon(const PolygonSoup& soup, const Fn& fn) {
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        fn(&soup.indices[soup.face_offsets[f]], soup.face_offsets[f + 1] - soup.face_offsets[f]);
+    }
+}
+
+struct Outcome {
+    std::vector<double> ms;
+    double faces_out = 0;
+    double vertices_out = 0;
+    double rss_after_mb = 0;
+    std::map<std::string, double> extra;
+};
+
+using Setup = std::function<void()>;
+
+Outcome run_meshedit(const PolygonSoup& soup, int levels, int runs, const Setup& before_copy) {
+    const meshedit::Mesh input = meshedit::build_mesh(soup);
+    meshedit::Mesh mesh;
+    Outcome out;
+    out.ms = mb::time_runs(
+        runs,
+        [&] {
+            mesh = meshedit::Mesh();
+            before_copy();
+            mesh = input;
+        },
+        [&] {
+            for (int i = 0; i < levels; ++i) {
+                meshedit::quad_subdivide(mesh);
+            }
+        });
+    out.rss_after_mb = mb::current_rss_mb();
+    out.faces_out = static_cast<double>(mesh.n_faces());
+    out.vertices_out = static_cast<double>(mesh.n_vertices());
+    out.extra["bytes_per_face_exact"] = static_cast<double>(mesh.bytes()) / out.faces_out;
+    return out;
+}
+
+using OMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
+
+Outcome run_openmesh(const PolygonSoup& soup, int levels, int runs, const Setup& before_copy) {
+    OMesh input;
+    std::vector<OMesh::VertexHandle> vh;
+    for (const Vec3& p : soup.positions) {
+        vh.push_back(input.add_vertex(OMesh::Point(static_cast<float>(p.x), static_cast<float>(p.y),
+                                                   static_cast<float>(p.z))));
+    }
+    std::vector<OMesh::VertexHandle> face;
+    for_each_polygon(soup, [&](const std::uint32_t* c, std::size_t k) {
+        face.clear();
+        for (std::size_t i = 0; i < k; ++i) {
+            face.push_back(vh[c[i]]);
+        }
+        input.add_face(face);
+    });
+    OMesh mesh;
+    Outcome out;
+    out.ms = mb::time_runs(
+        runs,
+        [&] {
+            mesh = OMesh();
+            before_copy();
+            mesh = input;
+        },
+        [&] {
+            OpenMesh::Subdivider::Uniform::CatmullClarkT<OMesh> catmull_clark;
+            catmull_clark(mesh, static_cast<std::size_t>(levels));
+        });
+    out.rss_after_mb = mb::current_rss_mb();
+    out.faces_out = static_cast<double>(mesh.n_faces());
+    out.vertices_out = static_cast<double>(mesh.n_vertices());
+    return out;
+}
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using CMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+Outcome run_cgal(const PolygonSoup& soup, int levels, int runs, const Setup& before_copy) {
+    CMesh input;
+    std::vector<CMesh::Vertex_index> vh;
+    for (const Vec3& p : soup.positions) {
+        vh.push_back(input.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
+    }
+    std::vector<CMesh::Vertex_index> face;
+    for_each_polygon(soup, [&](const std::uint32_t* c, std::size_t k) {
+        face.clear();
+        for (std::size_t i = 0; i < k; ++i) {
+            face.push_back(vh[c[i]]);
+        }
+        input.add_face(face);
+    });
+    CMesh mesh;
+    Outcome out;
+    out.ms = mb::time_runs(
+        runs,
+        [&] {
+            mesh = CMesh();
+            before_copy();
+            mesh = input;
+        },
+        [&] {
+            CGAL::Subdivision_method_3::CatmullClark_subdivision(
+                mesh, CGAL::parameters::number_of_iterations(levels));
+        });
+    out.rss_after_mb = mb::current_rss_mb();
+    out.faces_out = static_cast<double>(mesh.number_of_faces());
+    out.vertices_out = static_cast<double>(mesh.number_of_vertices());
+    return out;
+}
+
+Outcome run_opensubdiv(const PolygonSoup& soup, int levels, int runs, bool full_topology,
+                       const Setup& before_copy) {
+    namespace Far = OpenSubdiv::Far;
+    namespace Sdc = OpenSubdiv::Sdc;
+    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+    std::vector<int> sizes;
+    for_each_polygon(
+        soup, [&](const std::uint32_t*, std::size_t k) { sizes.push_back(static_cast<int>(k)); });
+    const std::vector<int> corners(soup.indices.begin(), soup.indices.end());
+    Far::TopologyDescriptor desc;
+    desc.numVertices = static_cast<int>(soup.positions.size());
+    desc.numFaces = static_cast<int>(sizes.size());
+    desc.numVertsPerFace = sizes.data();
+    desc.vertIndicesPerFace = corners.data();
+    Sdc::Options sdc;
+    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+
+    std::unique_ptr<Far::TopologyRefiner> refiner;
+    std::vector<mb::OsdPoint> points;
+    Outcome out;
+    out.ms = mb::time_runs(
+        runs,
+        [&] {
+            refiner.reset();
+            points = std::vector<mb::OsdPoint>();
+            before_copy();
+        },
+        [&] {
+            refiner.reset(Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+            Far::TopologyRefiner::UniformOptions options(levels);
+            options.fullTopologyInLastLevel = full_topology;
+            refiner->RefineUniform(options);
+            points.resize(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
+            for (std::size_t i = 0; i < soup.positions.size(); ++i) {
+                points[i] = {soup.positions[i].x, soup.positions[i].y, soup.positions[i].z};
+            }
+            Far::PrimvarRefiner primvar(*refiner);
+            mb::OsdPoint* src = points.data();
+            for (int level = 1; level <= levels; ++level) {
+                mb::OsdPoint* dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+                primvar.Interpolate(level, src, dst);
+                src = dst;
+            }
+        });
+    out.rss_after_mb = mb::current_rss_mb();
+    out.faces_out = refiner->GetLevel(levels).GetNumFaces();
+    out.vertices_out = refiner->GetLevel(levels).GetNumVertices();
+    return out;
+}
+
+int usage() {
+    std::fprintf(stderr,
+                 "usage: bench_catmark --job JOB --impl IMPL [--runs N]\n"
+                 "       bench_catmark --list\n");
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    mb::take_common_flags(argc, argv);
+    if (argc == 2 && std::string(argv[1]) == "--list") {
+        for (const Job& job : all_jobs()) {
+            for (const char* impl : kImpls) {
+                std::printf("%s %s\n", job.name.c_str(), impl);
+            }
+        }
+        return 0;
+    }
+    mb::JobArgs args;
+    if (!mb::parse_job_args(argc, argv, args)) {
+        return usage();
+    }
+    std::optional<Job> job;
+    for (const Job& j : all_jobs()) {
+        if (j.name == args.job) {
+            job = j;
+        }
+    }
+    bool known_impl = false;
+    for (const char* name : kImpls) {
+        known_impl = known_impl || args.impl == name;
+    }
+    if (!job || !known_impl || args.runs < 1) {
+        return usage();
+    }
+    const std::string& impl = args.impl;
+    try {
+        const PolygonSoup soup = mb::quad_torus_soup(job->m, job->n, job->mixed);
+        const double faces_in = static_cast<double>(soup.n_faces());
+        // The first level makes one quad per face corner, every later one four per quad.
+        double faces_expected = static_cast<double>(soup.indices.size());
+        for (int k = 1; k < job->levels; ++k) {
+            faces_expected *= 4;
+        }
+        // Rough upper bound of a run's peak (bench_loop measured 70–230 bytes per face).
+        const double bound_mb =
+            faces_expected * (impl == "openmesh" || impl == "cgal" ? 500.0 : 400.0) / 1048576.0;
+        const double available_mb = mb::mem_available_mb();
+        if (available_mb > 0 && bound_mb > 0.8 * available_mb) {
+            std::printf("NOTE %s %s skipped: may need up to %.0f MiB, %.0f MiB available\n",
+                        job->name.c_str(), impl.c_str(), bound_mb, available_mb);
+            mb::print_result(job->name, impl, {0.0}, {{"skipped", 1}, {"faces_in", faces_in}});
+            return 0;
+        }
+        double rss_before = -1;
+        const Setup before_copy = [&] {
+            if (rss_before < 0) {
+                malloc_trim(0);
+                rss_before = mb::current_rss_mb();
+            }
+        };
+        Outcome out;
+        if (impl == "meshedit") {
+            out = run_meshedit(soup, job->levels, args.runs, before_copy);
+        } else if (impl == "openmesh") {
+            out = run_openmesh(soup, job->levels, args.runs, before_copy);
+        } else if (impl == "cgal") {
+            out = run_cgal(soup, job->levels, args.runs, before_copy);
+        } else {
+            out = run_opensubdiv(soup, job->levels, args.runs, impl == "opensubdiv_full",
+                                 before_copy);
+        }
+        if (out.faces_out != faces_expected) {
+            std::printf("NOTE %s %s: faces_out %.0f, expected %.0f\n", job->name.c_str(),
+                        impl.c_str(), out.faces_out, faces_expected);
+        }
+        const double peak = mb::peak_rss_mb();
+        const double mib = 1024.0 * 1024.0;
+        std::map<std::string, double> extra = out.extra;
+        extra["faces_in"] = faces_in;
+        extra["faces_out"] = out.faces_out;
+        extra["vertices_out"] = out.vertices_out;
+        extra["levels"] = job->levels;
+        extra["peak_rss_mb"] = peak;
+        extra["rss_before_mb"] = rss_before;
+        extra["bytes_per_face"] = (peak - rss_before) * mib / out.faces_out;
+        extra["bytes_per_face_retained"] = (out.rss_after_mb - rss_before) * mib / out.faces_out;
+        mb::print_result(job->name, impl, out.ms, extra);
+    } catch (const std::exception& e) {
+        std::printf("NOTE %s %s failed: %s\n", args.job.c_str(), impl.c_str(), e.what());
+        mb::print_result(args.job, impl, {0.0}, {{"skipped", 1}});
+        return 1;
+    }
+    return 0;
+}
