@@ -25,14 +25,9 @@
 // Memory extras as bench_loop's: peak_rss_mb, rss_before_mb, bytes_per_face (peak − before,
 // per output face), bytes_per_face_retained.
 
-#include <malloc.h>
-
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
-#include <opensubdiv/far/primvarRefiner.h>
-#include <opensubdiv/far/topologyDescriptor.h>
-#include <opensubdiv/far/topologyRefinerFactory.h>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 
@@ -47,6 +42,7 @@
 #include <vector>
 
 #include "bench_shapes.h"
+#include "bench_subdivision.h"
 #include "bench_util.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/quad_subdivision.h"
@@ -82,15 +78,8 @@ void for_each_polygon(const PolygonSoup& soup, const Fn& fn) {
     }
 }
 
-struct Outcome {
-    std::vector<double> ms;
-    double faces_out = 0;
-    double vertices_out = 0;
-    double rss_after_mb = 0;
-    std::map<std::string, double> extra;
-};
-
-using Setup = std::function<void()>;
+using mb::Outcome;
+using Setup = mb::BeforeCopy;
 
 Outcome run_meshedit(const PolygonSoup& soup, int levels, int runs, const Setup& before_copy) {
     const meshedit::Mesh input = meshedit::build_mesh(soup);
@@ -187,56 +176,6 @@ Outcome run_cgal(const PolygonSoup& soup, int levels, int runs, const Setup& bef
     return out;
 }
 
-Outcome run_opensubdiv(const PolygonSoup& soup, int levels, int runs, bool full_topology,
-                       const Setup& before_copy) {
-    namespace Far = OpenSubdiv::Far;
-    namespace Sdc = OpenSubdiv::Sdc;
-    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-    std::vector<int> sizes;
-    for_each_polygon(
-        soup, [&](const std::uint32_t*, std::size_t k) { sizes.push_back(static_cast<int>(k)); });
-    const std::vector<int> corners(soup.indices.begin(), soup.indices.end());
-    Far::TopologyDescriptor desc;
-    desc.numVertices = static_cast<int>(soup.positions.size());
-    desc.numFaces = static_cast<int>(sizes.size());
-    desc.numVertsPerFace = sizes.data();
-    desc.vertIndicesPerFace = corners.data();
-    Sdc::Options sdc;
-    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-
-    std::unique_ptr<Far::TopologyRefiner> refiner;
-    std::vector<mb::OsdPoint> points;
-    Outcome out;
-    out.ms = mb::time_runs(
-        runs,
-        [&] {
-            refiner.reset();
-            points = std::vector<mb::OsdPoint>();
-            before_copy();
-        },
-        [&] {
-            refiner.reset(Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
-            Far::TopologyRefiner::UniformOptions options(levels);
-            options.fullTopologyInLastLevel = full_topology;
-            refiner->RefineUniform(options);
-            points.resize(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
-            for (std::size_t i = 0; i < soup.positions.size(); ++i) {
-                points[i] = {soup.positions[i].x, soup.positions[i].y, soup.positions[i].z};
-            }
-            Far::PrimvarRefiner primvar(*refiner);
-            mb::OsdPoint* src = points.data();
-            for (int level = 1; level <= levels; ++level) {
-                mb::OsdPoint* dst = src + refiner->GetLevel(level - 1).GetNumVertices();
-                primvar.Interpolate(level, src, dst);
-                src = dst;
-            }
-        });
-    out.rss_after_mb = mb::current_rss_mb();
-    out.faces_out = refiner->GetLevel(levels).GetNumFaces();
-    out.vertices_out = refiner->GetLevel(levels).GetNumVertices();
-    return out;
-}
-
 int usage() {
     std::fprintf(stderr,
                  "usage: bench_catmark --job JOB --impl IMPL [--runs N]\n"
@@ -274,62 +213,32 @@ int main(int argc, char** argv) {
         return usage();
     }
     const std::string& impl = args.impl;
-    try {
-        const PolygonSoup soup = mb::quad_torus_soup(job->m, job->n, job->mixed);
-        const double faces_in = static_cast<double>(soup.n_faces());
-        // The first level makes one quad per face corner, every later one four per quad.
-        double faces_expected = static_cast<double>(soup.indices.size());
-        for (int k = 1; k < job->levels; ++k) {
-            faces_expected *= 4;
-        }
-        // Rough upper bound of a run's peak (bench_loop measured 70–230 bytes per face).
-        const double bound_mb =
-            faces_expected * (impl == "openmesh" || impl == "cgal" ? 500.0 : 400.0) / 1048576.0;
-        const double available_mb = mb::mem_available_mb();
-        if (available_mb > 0 && bound_mb > 0.8 * available_mb) {
-            std::printf("NOTE %s %s skipped: may need up to %.0f MiB, %.0f MiB available\n",
-                        job->name.c_str(), impl.c_str(), bound_mb, available_mb);
-            mb::print_result(job->name, impl, {0.0}, {{"skipped", 1}, {"faces_in", faces_in}});
-            return 0;
-        }
-        double rss_before = -1;
-        const Setup before_copy = [&] {
-            if (rss_before < 0) {
-                malloc_trim(0);
-                rss_before = mb::current_rss_mb();
-            }
-        };
-        Outcome out;
-        if (impl == "meshedit") {
-            out = run_meshedit(soup, job->levels, args.runs, before_copy);
-        } else if (impl == "openmesh") {
-            out = run_openmesh(soup, job->levels, args.runs, before_copy);
-        } else if (impl == "cgal") {
-            out = run_cgal(soup, job->levels, args.runs, before_copy);
-        } else {
-            out = run_opensubdiv(soup, job->levels, args.runs, impl == "opensubdiv_full",
-                                 before_copy);
-        }
-        if (out.faces_out != faces_expected) {
-            std::printf("NOTE %s %s: faces_out %.0f, expected %.0f\n", job->name.c_str(),
-                        impl.c_str(), out.faces_out, faces_expected);
-        }
-        const double peak = mb::peak_rss_mb();
-        const double mib = 1024.0 * 1024.0;
-        std::map<std::string, double> extra = out.extra;
-        extra["faces_in"] = faces_in;
-        extra["faces_out"] = out.faces_out;
-        extra["vertices_out"] = out.vertices_out;
-        extra["levels"] = job->levels;
-        extra["peak_rss_mb"] = peak;
-        extra["rss_before_mb"] = rss_before;
-        extra["bytes_per_face"] = (peak - rss_before) * mib / out.faces_out;
-        extra["bytes_per_face_retained"] = (out.rss_after_mb - rss_before) * mib / out.faces_out;
-        mb::print_result(job->name, impl, out.ms, extra);
-    } catch (const std::exception& e) {
-        std::printf("NOTE %s %s failed: %s\n", args.job.c_str(), impl.c_str(), e.what());
-        mb::print_result(args.job, impl, {0.0}, {{"skipped", 1}});
-        return 1;
+    const PolygonSoup soup = mb::quad_torus_soup(job->m, job->n, job->mixed);
+    // The first level makes one quad per face corner, every later one four per quad.
+    double faces_expected = static_cast<double>(soup.indices.size());
+    for (int k = 1; k < job->levels; ++k) {
+        faces_expected *= 4;
     }
-    return 0;
+    const int levels = job->levels;
+    return mb::run_subdivision_job(
+        job->name, impl, levels, static_cast<double>(soup.n_faces()), faces_expected,
+        [&](const Setup& before_copy) {
+            if (impl == "meshedit") {
+                return run_meshedit(soup, levels, args.runs, before_copy);
+            }
+            if (impl == "openmesh") {
+                return run_openmesh(soup, levels, args.runs, before_copy);
+            }
+            if (impl == "cgal") {
+                return run_cgal(soup, levels, args.runs, before_copy);
+            }
+            std::vector<int> sizes;
+            for_each_polygon(soup, [&](const std::uint32_t*, std::size_t k) {
+                sizes.push_back(static_cast<int>(k));
+            });
+            const std::vector<int> corners(soup.indices.begin(), soup.indices.end());
+            return mb::run_opensubdiv(OpenSubdiv::Sdc::SCHEME_CATMARK, soup.positions, sizes,
+                                      corners, levels, args.runs, impl == "opensubdiv_full",
+                                      before_copy);
+        });
 }

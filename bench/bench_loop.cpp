@@ -65,6 +65,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_subdivision.h"
 #include "bench_util.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/mesh.h"
@@ -218,14 +219,7 @@ Input load_input(const Job& job, const fs::path& data_dir) {
 
 // ------------------------------------------------------------------------------ impls
 
-/// What one implementation run leaves behind, for the extras.
-struct Outcome {
-    std::vector<double> ms;
-    double faces_out = 0;
-    double vertices_out = 0;
-    double rss_after_mb = 0;  // RSS with the last result still alive
-    std::map<std::string, double> extra;
-};
+using meshedit::bench::Outcome;
 
 Outcome run_meshedit(const Input& in, int levels, int runs,
                      const std::function<void()>& before_copy) {
@@ -336,67 +330,19 @@ Outcome run_cgal(const Input& in, int levels, int runs, const std::function<void
 
 Outcome run_opensubdiv(const Input& in, int levels, int runs, bool full_topology,
                        const std::function<void()>& before_copy) {
-    namespace Far = OpenSubdiv::Far;
-    namespace Sdc = OpenSubdiv::Sdc;
-    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-
     // Input preparation (untimed): the descriptor's arrays.
-    const std::vector<int> verts_per_face(in.triangles.size(), 3);
-    std::vector<int> face_verts;
-    face_verts.reserve(3 * in.triangles.size());
+    const std::vector<int> sizes(in.triangles.size(), 3);
+    std::vector<int> corners;
+    corners.reserve(3 * in.triangles.size());
     for (const auto& t : in.triangles) {
-        face_verts.insert(face_verts.end(),
-                          {static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
+        corners.insert(corners.end(),
+                       {static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
     }
-    Far::TopologyDescriptor desc;
-    desc.numVertices = static_cast<int>(in.positions.size());
-    desc.numFaces = static_cast<int>(in.triangles.size());
-    desc.numVertsPerFace = verts_per_face.data();
-    desc.vertIndicesPerFace = face_verts.data();
-    Sdc::Options sdc;
-    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-
-    std::unique_ptr<Far::TopologyRefiner> refiner;
-    std::vector<OsdPoint> points;
-    Outcome out;
-    out.ms = time_runs(
-        runs,
-        [&] {
-            refiner.reset();
-            points = std::vector<OsdPoint>();
-            before_copy();
-        },
-        [&] {
-            refiner.reset(Factory::Create(desc, Factory::Options(Sdc::SCHEME_LOOP, sdc)));
-            Far::TopologyRefiner::UniformOptions options(levels);
-            options.fullTopologyInLastLevel = full_topology;
-            refiner->RefineUniform(options);
-            points.resize(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
-            for (std::size_t i = 0; i < in.positions.size(); ++i) {
-                points[i] = {in.positions[i].x, in.positions[i].y, in.positions[i].z};
-            }
-            Far::PrimvarRefiner primvar(*refiner);
-            OsdPoint* src = points.data();
-            for (int level = 1; level <= levels; ++level) {
-                OsdPoint* dst = src + refiner->GetLevel(level - 1).GetNumVertices();
-                primvar.Interpolate(level, src, dst);
-                src = dst;
-            }
-        });
-    out.rss_after_mb = current_rss_mb();
-    out.faces_out = refiner->GetLevel(levels).GetNumFaces();
-    out.vertices_out = refiner->GetLevel(levels).GetNumVertices();
-    return out;
+    return meshedit::bench::run_opensubdiv(OpenSubdiv::Sdc::SCHEME_LOOP, in.positions, sizes,
+                                           corners, levels, runs, full_topology, before_copy);
 }
 
 // ------------------------------------------------------------------------------ main
-
-/// Rough upper bound of the peak memory of one run, bytes per output face (measured peaks: 70
-/// to 90 for meshedit, openmesh, cgal, 130 for opensubdiv_min and 230 for opensubdiv_full at 4
-/// levels), to skip instead of risking the OOM killer.
-double peak_bytes_per_face_bound(const std::string& impl) {
-    return impl == "openmesh" || impl == "cgal" ? 500.0 : 400.0;
-}
 
 int usage() {
     std::fprintf(stderr,
@@ -449,60 +395,32 @@ int main(int argc, char** argv) {
         return usage();
     }
 
+    Input input;
     try {
-        const Input input = load_input(*job, data_dir);
-        const double faces_in = static_cast<double>(input.triangles.size());
-        double faces_expected = faces_in;
-        for (int k = 0; k < job->levels; ++k) {
-            faces_expected *= 4;
-        }
-        const double bound_mb =
-            faces_expected * peak_bytes_per_face_bound(impl) / (1024.0 * 1024.0);
-        const double available_mb = mem_available_mb();
-        if (available_mb > 0 && bound_mb > 0.8 * available_mb) {
-            std::printf("NOTE %s %s skipped: may need up to %.0f MiB, %.0f MiB available\n",
-                        job->name.c_str(), impl.c_str(), bound_mb, available_mb);
-            print_result(job->name, impl, {0.0}, {{"skipped", 1}, {"faces_in", faces_in}});
-            return 0;
-        }
-
-        double rss_before = -1;
-        const std::function<void()> before_copy = [&] {
-            if (rss_before < 0) {
-                malloc_trim(0);  // freed heap pages of the input preparation would hide the copy
-                rss_before = current_rss_mb();
-            }
-        };
-        Outcome out;
-        if (impl == "meshedit") {
-            out = run_meshedit(input, job->levels, runs, before_copy);
-        } else if (impl == "openmesh") {
-            out = run_openmesh(input, job->levels, runs, before_copy);
-        } else if (impl == "cgal") {
-            out = run_cgal(input, job->levels, runs, before_copy);
-        } else {
-            out = run_opensubdiv(input, job->levels, runs, impl == "opensubdiv_full", before_copy);
-        }
-        const double peak = meshedit::bench::peak_rss_mb();
-        const double mib = 1024.0 * 1024.0;
-        if (out.faces_out != faces_expected) {
-            std::printf("NOTE %s %s: faces_out %.0f, expected %.0f\n", job->name.c_str(),
-                        impl.c_str(), out.faces_out, faces_expected);
-        }
-        std::map<std::string, double> extra = out.extra;
-        extra["faces_in"] = faces_in;
-        extra["faces_out"] = out.faces_out;
-        extra["vertices_out"] = out.vertices_out;
-        extra["levels"] = job->levels;
-        extra["peak_rss_mb"] = peak;
-        extra["rss_before_mb"] = rss_before;
-        extra["bytes_per_face"] = (peak - rss_before) * mib / out.faces_out;
-        extra["bytes_per_face_retained"] = (out.rss_after_mb - rss_before) * mib / out.faces_out;
-        print_result(job->name, impl, out.ms, extra);
+        input = load_input(*job, data_dir);
     } catch (const std::exception& e) {
         std::printf("NOTE %s %s failed: %s\n", job_name.c_str(), impl.c_str(), e.what());
         print_result(job_name, impl, {0.0}, {{"skipped", 1}});
         return 1;
     }
-    return 0;
+    const double faces_in = static_cast<double>(input.triangles.size());
+    double faces_expected = faces_in;
+    for (int k = 0; k < job->levels; ++k) {
+        faces_expected *= 4;
+    }
+    const int levels = job->levels;
+    return meshedit::bench::run_subdivision_job(
+        job->name, impl, levels, faces_in, faces_expected,
+        [&](const std::function<void()>& before_copy) {
+            if (impl == "meshedit") {
+                return run_meshedit(input, levels, runs, before_copy);
+            }
+            if (impl == "openmesh") {
+                return run_openmesh(input, levels, runs, before_copy);
+            }
+            if (impl == "cgal") {
+                return run_cgal(input, levels, runs, before_copy);
+            }
+            return run_opensubdiv(input, levels, runs, impl == "opensubdiv_full", before_copy);
+        });
 }
