@@ -55,6 +55,7 @@ struct Command {
 Command add_info(CLI::App& meshedit);
 Command add_convert(CLI::App& meshedit);
 Command add_subdivide(CLI::App& meshedit);
+Command add_simplify(CLI::App& meshedit);
 Command add_check(CLI::App& meshedit);
 Command add_eval(CLI::App& meshedit);
 

@@ -1,12 +1,15 @@
-// `meshedit convert`, `meshedit subdivide` and `meshedit check`: the commands that load a
-// mesh, maybe change it, and write or judge it.
+// `meshedit convert`, `meshedit subdivide`, `meshedit simplify` and `meshedit check`: the
+// commands that load a mesh, maybe change it, and write or judge it.
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 
 #include "cli.h"
 #include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/simplify.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/io/io.h"
 #include "meshedit/ops/ops.h"
@@ -191,6 +194,78 @@ Command add_subdivide(CLI::App& meshedit) {
                 report_unkept(s->out, write_mesh(input.mesh, s->out));
                 return 0;
             }};
+}
+
+Command add_simplify(CLI::App& meshedit) {
+    struct Settings {
+        std::filesystem::path in, out;
+        std::size_t faces = 0;
+        double ratio = 0.0;
+        double max_error = std::numeric_limits<double>::infinity();
+        int density = 8;
+    };
+    auto s = std::make_shared<Settings>();
+    CLI::App* app = meshedit.add_subcommand("simplify", "QEM simplification to N faces");
+    app->add_option("IN", s->in, "the input file (triangles)")->required();
+    app->add_option("OUT", s->out, "the output file")->required();
+    auto* faces = app->add_option("--faces", s->faces, "keep at most N faces")->type_name("N");
+    auto* ratio = app->add_option("--ratio", s->ratio, "keep about R of the faces, 0 < R < 1")
+                      ->type_name("R");
+    faces->excludes(ratio);
+    app->add_option("--max-error", s->max_error,
+                    "stop before a collapse whose error exceeds E × the bounding-box diagonal "
+                    "(default: no bound)")
+        ->type_name("E")
+        ->check(CLI::NonNegativeNumber);
+    add_density_option(*app, s->density);
+    app->footer(
+        "Simplifies IN by edge collapses, cheapest quadric error first (Garland-Heckbert:\n"
+        "area-weighted plane quadrics, boundaries and creases held, the survivor at the\n"
+        "point of least error, no face turned over), until it has --faces N faces (or --ratio R\n"
+        "of them) or the next collapse would exceed --max-error, and writes OUT.\n"
+        "docs/simplify.md has the details.\n"
+        "\n"
+        "Example:\n"
+        "  meshedit simplify dae/teapot.dae small.dae --ratio 0.1\n"
+        "\n"
+        "Exit status: 0 ok, 1 refused (polygons, a target out of range), 2 bad usage, bad\n"
+        "input or an unwritable output.");
+    return {
+        app, [s, faces, ratio] {
+            if (faces->count() == 0 && ratio->count() == 0) {
+                throw UsageError("simplify: give --faces N or --ratio R");
+            }
+            if (ratio->count() > 0 && !(s->ratio > 0.0 && s->ratio < 1.0)) {
+                throw UsageError("simplify: --ratio must be above 0 and below 1, not " +
+                                 ratio->as<std::string>());
+            }
+            check_mesh_output(s->out);
+            LoadedDocument input = load_surface(s->in, s->density);
+            print_load_messages(input);
+            SimplifyOptions options;
+            options.max_error = s->max_error;
+            options.target_faces =
+                faces->count() > 0
+                    ? s->faces
+                    : static_cast<std::size_t>(std::max(
+                          1.0, std::round(s->ratio * static_cast<double>(input.mesh.n_faces()))));
+            if (const std::string why = check_simplify(input.mesh, options); !why.empty()) {
+                throw ops::OpError(s->in.string() + ": simplify refused: " + why, true);
+            }
+            ProgressBar bar("simplify");
+            options.progress = [&bar](double f) { bar.update(f); };
+            const SimplifyReport report = simplify(input.mesh, options);
+            if (report.stopped_early) {
+                print_notice(s->in.string() + ": stopped at " +
+                             std::to_string(input.mesh.n_faces()) + " faces (" +
+                             (std::isfinite(s->max_error)
+                                  ? "the next collapse exceeds --max-error"
+                                  : "no further collapse keeps the mesh valid and unfolded") +
+                             ")");
+            }
+            report_unkept(s->out, write_mesh(input.mesh, s->out));
+            return 0;
+        }};
 }
 
 Command add_check(CLI::App& meshedit) {

@@ -239,7 +239,10 @@ Step parse_step(std::string_view item) {
             bad(text, "expected " + std::string(verb->syntax) + " with " + argument_words(*verb));
         }
     } else if ((verb->takes & ~kWholeMesh) == 0) {
-        bad(text, std::string(name) + " takes no argument");
+        if (verb->max_amounts == 0) {
+            bad(text, std::string(name) + " takes no argument");
+        }
+        parse_amounts(item.substr(colon + 1), step);  // a whole-mesh verb's amounts: simplify:0.25
     } else {
         std::string_view arg = item.substr(colon + 1);
         const auto second = arg.find(':');

@@ -2,12 +2,15 @@
 // run and described. The functions here only translate between a step and the core's API;
 // the operations themselves, with their predicates and diagrams, are in src/core.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/quad_subdivision.h"
+#include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/ops/ops.h"
 
@@ -282,6 +285,39 @@ StepResult run_linear(Mesh& mesh, const Step& step, const RunOptions& options) {
     return run_quads(mesh, step, options, QuadScheme::Linear);
 }
 
+// simplify:R keeps about R of the faces.
+SimplifyOptions simplify_options(const Mesh& mesh, const Step& step) {
+    SimplifyOptions options;
+    const double kept = std::round(static_cast<double>(mesh.n_faces()) * step.amounts[0]);
+    options.target_faces = static_cast<std::size_t>(std::max(1.0, kept));
+    return options;
+}
+std::string check_simplify_step(const Mesh& mesh, const Step& step) {
+    const double ratio = step.amounts[0];
+    if (!(ratio > 0.0 && ratio < 1.0)) {
+        return "cannot simplify: the ratio of faces to keep must be above 0 and below 1, not " +
+               amount_text(ratio);
+    }
+    return check_simplify(mesh, simplify_options(mesh, step));
+}
+StepResult run_simplify(Mesh& mesh, const Step& step, const RunOptions& options) {
+    SimplifyOptions simplify_with = simplify_options(mesh, step);
+    simplify_with.progress = options.progress;
+    const std::size_t before = mesh.n_faces();
+    const SimplifyReport report = simplify(mesh, simplify_with);
+    StepResult result;
+    result.renumbers = true;
+    result.message = "simplified " + std::to_string(before) + " faces to " +
+                     std::to_string(mesh.n_faces()) + " (" + std::to_string(report.collapses) +
+                     " collapses)";
+    if (report.stopped_early) {
+        result.notices.push_back("stopped at " + std::to_string(mesh.n_faces()) +
+                                 " faces: no further collapse keeps the mesh valid and unfolded");
+        result.message += "; " + result.notices.back();
+    }
+    return result;
+}
+
 std::string check_triangulate(const Mesh& mesh, const Step& step) {
     if (step.target == Target::Face) {
         return why(is_triangulate_ok(mesh, named_face(mesh, step)));
@@ -398,6 +434,11 @@ constexpr std::array kVerbs{
          "at centroids and midpoints, the surface unchanged",
          "subdivide into quads without smoothing (linear)", check_quads, run_linear,
          plan_quad_subdivision},
+    Verb{"simplify", kWholeMesh, 1, 0, {0.5, 0.0}, "simplify, simplify:R",
+         "QEM simplification (Garland-Heckbert) of a triangle mesh to about R of its faces "
+         "(0 < R < 1, default 0.5): edge collapses, cheapest quadric error first, boundaries "
+         "and creases held, no face turned over; indices are renumbered when written",
+         "simplify the mesh to half its faces (QEM)", check_simplify_step, run_simplify},
     Verb{"triangulate", kWholeMesh | kFaceArg, 0, 0, kNoDefaults, "triangulate, triangulate:fI",
          "cuts every polygon (or face I) into triangles by diagonals inside it",
          "triangulate every polygon", check_triangulate, run_triangulate},

@@ -94,6 +94,13 @@ const std::vector<GoldenCase>& golden_cases() {
           "--wireframe"}},
         {"cc_creased", "dae/creased.dae", {"--ops", "catmull_clark:2", "--wireframe"}},
         {"cc_quadball", "dae/quadball.dae", {"--ops", "catmull_clark:2", "--wireframe"}},
+        // QEM simplification (docs/simplify.md): the teapot (4,032 triangles) at 10% and 2.5%;
+        // rims, spout tip and handle keep their shape, flat regions get the big triangles.
+        {"teapot_input_wire", "dae/teapot.dae", {"--flat", "--wireframe"}},
+        {"teapot_simplify10", "dae/teapot.dae", {"--ops", "simplify:0.1", "--flat", "--wireframe"}},
+        {"teapot_simplify2",
+         "dae/teapot.dae",
+         {"--ops", "simplify:0.025", "--flat", "--wireframe"}},
         // One selection of each element type. Vertex 0 = (−0.53, 0.85, 0) and 1 = (0.53, 0.85,
         // 0) share the faces (0,5,1) on +z and (0,1,7) on −z: each camera looks straight at
         // its element (az = atan2(x, z), el = asin(y)), so nothing sits on the silhouette.

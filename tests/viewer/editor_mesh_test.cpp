@@ -12,6 +12,7 @@
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/io/io.h"
 #include "support/fixtures.h"
@@ -291,6 +292,29 @@ TEST(Editor, CatmullClarkAndLinearKeys) {
 
     Editor empty = editor_with(Mesh());
     EXPECT_TRUE(empty.press(key_of('C'), kShift).refused);
+}
+
+// D simplifies to half the faces (QEM), one undo step; polygons are refused with the reason.
+TEST(Editor, DSimplifiesToHalf) {
+    const Mesh ball = shapes::icosphere(3);  // 1,280 triangles
+    Mesh expected = ball;
+    SimplifyOptions half;
+    half.target_faces = 640;
+    simplify(expected, half);
+    expected.garbage_collection();
+
+    Editor ed = editor_with(ball);
+    const Outcome out = ed.press(key_of('D'), 0);
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(out.message.rfind("simplified 1280 faces to 640", 0), 0u) << out.message;
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    ed.run({Command::Undo});
+    EXPECT_TRUE(test::identical(ed.mesh(), ball));
+
+    Editor quads = editor_with(test::quad_cube());
+    const Outcome refused = quads.press(key_of('D'), 0);
+    EXPECT_TRUE(refused.refused);
+    EXPECT_NE(refused.message.find("6 of the 6 faces are polygons"), std::string::npos);
 }
 
 }  // namespace

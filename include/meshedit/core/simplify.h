@@ -1,0 +1,59 @@
+#pragma once
+/// \file
+/// QEM simplification (Garland–Heckbert): edge collapses in order of their quadric error,
+/// each survivor placed where the error is least (docs/simplify.md).
+
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <string>
+
+#include "meshedit/core/mesh.h"
+
+namespace meshedit {
+
+struct SimplifyOptions {
+    /// Stop once the mesh has at most this many faces (at least 1).
+    std::size_t target_faces = 1;
+    /// Stop before a collapse whose error exceeds this, as a fraction of the bounding-box
+    /// diagonal (the error is the root of the area-weighted mean squared distance to the
+    /// planes the quadric holds); infinity: no bound.
+    double max_error = std::numeric_limits<double>::infinity();
+    /// Refuse a collapse that turns the normal of a face that stays by more than this many
+    /// degrees (or makes it degenerate).
+    double max_normal_change_deg = 60.0;
+    /// Called with the fraction done (0…1), non-decreasing, at coarse intervals, last with 1.
+    std::function<void(double)> progress;
+};
+
+/// What simplify() did.
+struct SimplifyReport {
+    std::size_t collapses = 0;
+    /// Candidate collapses skipped: the link condition failed, or a face would flip.
+    std::size_t refused_topology = 0;
+    std::size_t refused_normal = 0;
+    /// The largest error of an applied collapse (same unit as SimplifyOptions::max_error).
+    double largest_error = 0.0;
+    /// True when it stopped at max_error (or ran out of collapses) above target_faces.
+    bool stopped_early = false;
+};
+
+/// Why simplify() cannot run with `options`, or empty: the mesh has polygons (QEM here works
+/// on triangles: triangulate first), no faces, a target of 0 or not below the face count, a
+/// negative or NaN error bound or angle. Pure.
+std::string check_simplify(const Mesh& mesh, const SimplifyOptions& options);
+
+/// Collapses edges, cheapest quadric error first, until the mesh has at most
+/// options.target_faces faces or the next error exceeds options.max_error.
+///
+/// Quadrics: each face contributes its plane's quadric weighted by its area to its three
+/// corners; boundary and crease edges add a plane through the edge perpendicular to its face,
+/// weighted by 1000 × the edge's squared length, so features hold. Each collapse goes through
+/// collapse() (its link condition), moves the survivor to the point that minimises the summed
+/// quadric (a 3 × 3 solve; the best of the two ends and the midpoint when the system is
+/// ill-conditioned), and is refused when a face that stays would turn by more than
+/// max_normal_change_deg. Deleted elements stay tombstoned (garbage collection is the
+/// caller's). \pre check_simplify() returned empty. \post validate(mesh) passes.
+SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options);
+
+}  // namespace meshedit

@@ -1,0 +1,308 @@
+// QEM simplification (Garland–Heckbert 1997), with area-weighted face quadrics, penalty
+// quadrics on boundary and crease edges, optimal placement, and a normal-flip guard.
+//
+// One collapse of edge a-b (collapse() keeps the smaller index, here a):
+//
+//          c                         c
+//        /   \                       |
+//      a ----- b        ==>          a'       a' = argmin (Q_a + Q_b)(x)
+//        \   /                       |        Q_a' = Q_a + Q_b
+//          d                         d
+//
+// Candidates live in a binary heap ordered by cost, each stamped with its edge's version;
+// a collapse bumps the version of every edge around the survivor and pushes it again with the
+// new quadric, so stale entries are recognised and dropped when they surface (no decrease-key).
+
+#include "meshedit/core/simplify.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <queue>
+#include <vector>
+
+#include "meshedit/core/attributes.h"
+#include "meshedit/core/local_ops.h"
+#include "meshedit/core/normals.h"
+#include "meshedit/core/validate.h"
+
+namespace meshedit {
+namespace {
+
+// The weight of a boundary or crease edge's constraint plane, times its squared length: large
+// against the face quadrics (area-weighted), so features move only along themselves.
+constexpr double kFeatureWeight = 1000.0;
+
+// A symmetric 4 × 4 quadric v^T Q v, v = (x, y, z, 1), as its 10 distinct entries, and the
+// face area it gathers (for the error in distance units).
+struct Quadric {
+    double a00 = 0, a01 = 0, a02 = 0, a03 = 0, a11 = 0, a12 = 0, a13 = 0, a22 = 0, a23 = 0, a33 = 0;
+    double area = 0;
+
+    // w · (plane)(plane)^T for the plane n·x + d = 0.
+    void add_plane(const Vec3& n, double d, double w) {
+        a00 += w * n.x * n.x, a01 += w * n.x * n.y, a02 += w * n.x * n.z, a03 += w * n.x * d;
+        a11 += w * n.y * n.y, a12 += w * n.y * n.z, a13 += w * n.y * d;
+        a22 += w * n.z * n.z, a23 += w * n.z * d;
+        a33 += w * d * d;
+    }
+    Quadric operator+(const Quadric& o) const {
+        Quadric q;
+        q.a00 = a00 + o.a00, q.a01 = a01 + o.a01, q.a02 = a02 + o.a02, q.a03 = a03 + o.a03;
+        q.a11 = a11 + o.a11, q.a12 = a12 + o.a12, q.a13 = a13 + o.a13;
+        q.a22 = a22 + o.a22, q.a23 = a23 + o.a23, q.a33 = a33 + o.a33;
+        q.area = area + o.area;
+        return q;
+    }
+    double operator()(const Vec3& p) const {
+        const double x = p.x, y = p.y, z = p.z;
+        return a00 * x * x + 2 * a01 * x * y + 2 * a02 * x * z + 2 * a03 * x + a11 * y * y +
+               2 * a12 * y * z + 2 * a13 * y + a22 * z * z + 2 * a23 * z + a33;
+    }
+    // The minimiser of v^T Q v, when the 3 × 3 system is well conditioned.
+    bool minimiser(Vec3& out) const {
+        const double c00 = a11 * a22 - a12 * a12;
+        const double c01 = a02 * a12 - a01 * a22;
+        const double c02 = a01 * a12 - a02 * a11;
+        const double det = a00 * c00 + a01 * c01 + a02 * c02;
+        const double scale = std::max({a00, a11, a22});
+        if (!(std::abs(det) > 1e-9 * scale * scale * scale)) {
+            return false;
+        }
+        const double c11 = a00 * a22 - a02 * a02;
+        const double c12 = a01 * a02 - a00 * a12;
+        const double c22 = a00 * a11 - a01 * a01;
+        const double inv = -1.0 / det;
+        out = {inv * (c00 * a03 + c01 * a13 + c02 * a23), inv * (c01 * a03 + c11 * a13 + c12 * a23),
+               inv * (c02 * a03 + c12 * a13 + c22 * a23)};
+        return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
+    }
+};
+
+struct Candidate {
+    double cost;
+    std::uint32_t edge;
+    std::uint32_t version;
+    Vec3 position;
+    bool operator>(const Candidate& o) const { return cost > o.cost; }
+};
+
+class Simplifier {
+public:
+    Simplifier(Mesh& mesh, const SimplifyOptions& options)
+        : mesh_(mesh),
+          options_(options),
+          quadric_(mesh.vertices_size()),
+          version_(mesh.edges_size(), 0),
+          cos_limit_(std::cos(options.max_normal_change_deg * M_PI / 180.0)),
+          diagonal_(mesh.bounds().diagonal()) {}
+
+    SimplifyReport run() {
+        gather_quadrics();
+        std::vector<Candidate> all;
+        all.reserve(mesh_.n_edges());
+        for (Edge e : mesh_.edges()) {
+            all.push_back(candidate(e));
+        }
+        heap_ = decltype(heap_)(std::greater<Candidate>(), std::move(all));
+        const std::size_t start = mesh_.n_faces();
+        const double span = static_cast<double>(start - std::min(start, options_.target_faces));
+        while (mesh_.n_faces() > options_.target_faces && !heap_.empty()) {
+            const Candidate c = heap_.top();
+            heap_.pop();
+            const Edge e(c.edge);
+            if (mesh_.is_deleted(e) || version_[c.edge] != c.version) {
+                continue;  // stale: the edge went, or its cost changed since
+            }
+            const double error = error_of(c, e);
+            if (error > options_.max_error) {
+                continue;  // pushed again if a neighbour's collapse changes its cost
+            }
+            if (!is_collapse_ok(mesh_, e)) {
+                ++report_.refused_topology;
+                continue;
+            }
+            if (flips_a_face(e, c.position)) {
+                ++report_.refused_normal;
+                continue;
+            }
+            apply(e, c.position);
+            report_.largest_error = std::max(report_.largest_error, error);
+            if ((++report_.collapses & 4095u) == 0 && options_.progress && span > 0) {
+                options_.progress(static_cast<double>(start - mesh_.n_faces()) / span);
+            }
+        }
+        report_.stopped_early = mesh_.n_faces() > options_.target_faces;
+        if (options_.progress) {
+            options_.progress(1.0);
+        }
+        return report_;
+    }
+
+private:
+    void gather_quadrics() {
+        for (Face f : mesh_.faces()) {
+            const Vec3 twice_area = face_area_vector(mesh_, f);
+            const double length = norm(twice_area);
+            if (!(length > 0.0)) {
+                continue;  // a degenerate face has no plane
+            }
+            const Vec3 n = twice_area * (1.0 / length);
+            const double d = -dot(n, mesh_.position(mesh_.to_vertex(mesh_.halfedge(f))));
+            for (Vertex v : mesh_.vertices(f)) {
+                quadric_[v.idx()].add_plane(n, d, 0.5 * length);
+                quadric_[v.idx()].area += 0.5 * length;
+            }
+        }
+        const auto crease = mesh_.get_property<Edge, std::uint8_t>(kCreaseProperty);
+        for (Edge e : mesh_.edges()) {
+            if (!mesh_.is_boundary(e) && !(crease && crease[e] != 0)) {
+                continue;
+            }
+            const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
+            const Vec3 along = mesh_.position(b) - mesh_.position(a);
+            for (unsigned side = 0; side < 2; ++side) {
+                const Face f = mesh_.face(e, side);
+                if (!f.is_valid()) {
+                    continue;
+                }
+                const Vec3 m = cross(along, face_area_vector(mesh_, f));
+                const double length = norm(m);
+                if (!(length > 0.0)) {
+                    continue;
+                }
+                const Vec3 n = m * (1.0 / length);
+                const double d = -dot(n, mesh_.position(a));
+                const double w = kFeatureWeight * dot(along, along);
+                quadric_[a.idx()].add_plane(n, d, w);
+                quadric_[b.idx()].add_plane(n, d, w);
+            }
+        }
+    }
+
+    // The cheapest place for the survivor of e and its cost.
+    Candidate candidate(Edge e) const {
+        const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
+        const Quadric q = quadric_[a.idx()] + quadric_[b.idx()];
+        const Vec3& pa = mesh_.position(a);
+        const Vec3& pb = mesh_.position(b);
+        Candidate c{0.0, e.idx(), version_[e.idx()], {}};
+        Vec3 best;
+        // The minimiser, unless it lies far from the edge (a nearly singular system that
+        // passed the determinant test): then the best of the ends and the midpoint.
+        if (q.minimiser(best) && distance(best, (pa + pb) * 0.5) <= 2.0 * distance(pa, pb)) {
+            c.position = best;
+            c.cost = q(best);
+            return c;
+        }
+        c.position = pa;
+        c.cost = q(pa);
+        for (const Vec3& p : {pb, (pa + pb) * 0.5}) {
+            if (const double cost = q(p); cost < c.cost) {
+                c.cost = cost;
+                c.position = p;
+            }
+        }
+        return c;
+    }
+
+    // The root of the area-weighted mean squared plane distance, over the bbox diagonal.
+    double error_of(const Candidate& c, Edge e) const {
+        const double area =
+            quadric_[mesh_.vertex(e, 0).idx()].area + quadric_[mesh_.vertex(e, 1).idx()].area;
+        if (!(area > 0.0) || !(diagonal_ > 0.0)) {
+            return 0.0;
+        }
+        return std::sqrt(std::max(0.0, c.cost) / area) / diagonal_;
+    }
+
+    // Whether moving both ends of e to p turns a face that stays by more than the limit.
+    bool flips_a_face(Edge e, const Vec3& p) const {
+        const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
+        for (const Vertex v : {a, b}) {
+            for (Face f : mesh_.faces(v)) {
+                Vec3 corner[3];
+                int i = 0;
+                bool has_both = false;
+                for (Vertex c : mesh_.vertices(f)) {
+                    if (i < 3) {
+                        corner[i++] = (c == a || c == b) ? p : mesh_.position(c);
+                    }
+                    has_both = has_both || (c == (v == a ? b : a));
+                }
+                if (has_both) {
+                    continue;  // one of the triangles beside e: it goes
+                }
+                const Vec3 before = face_area_vector(mesh_, f);
+                const Vec3 after = cross(corner[1] - corner[0], corner[2] - corner[0]);
+                const double scale = norm(before) * norm(after);
+                if (!(scale > 0.0) || dot(before, after) < cos_limit_ * scale) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    void apply(Edge e, const Vec3& p) {
+        const Quadric q = quadric_[mesh_.vertex(e, 0).idx()] + quadric_[mesh_.vertex(e, 1).idx()];
+        const Vertex s = *collapse(mesh_, e);
+        mesh_.position(s) = p;
+        quadric_[s.idx()] = q;
+        for (Edge g : mesh_.edges(s)) {
+            ++version_[g.idx()];
+            heap_.push(candidate(g));
+        }
+    }
+
+    Mesh& mesh_;
+    const SimplifyOptions& options_;
+    std::vector<Quadric> quadric_;
+    std::vector<std::uint32_t> version_;
+    double cos_limit_;
+    double diagonal_;
+    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap_;
+    SimplifyReport report_;
+};
+
+}  // namespace
+
+std::string check_simplify(const Mesh& mesh, const SimplifyOptions& options) {
+    if (mesh.n_faces() == 0) {
+        return "cannot simplify: the mesh has no faces";
+    }
+    std::size_t polygons = 0;
+    for (Face f : mesh.faces()) {
+        polygons += mesh.valence(f) != 3;
+    }
+    if (polygons > 0) {
+        return "cannot simplify: QEM needs triangles and " + std::to_string(polygons) + " of the " +
+               std::to_string(mesh.n_faces()) +
+               " faces are polygons (triangulate them first: the `triangulate` step, Ctrl+T in "
+               "the viewer)";
+    }
+    if (options.target_faces == 0 || options.target_faces >= mesh.n_faces()) {
+        return "cannot simplify: the target must be from 1 to " +
+               std::to_string(mesh.n_faces() - 1) + " faces (the mesh has " +
+               std::to_string(mesh.n_faces()) + "), not " + std::to_string(options.target_faces);
+    }
+    if (!(options.max_error >= 0.0)) {
+        return "cannot simplify: the error bound must be a number of 0 or more";
+    }
+    if (!(options.max_normal_change_deg > 0.0 && options.max_normal_change_deg <= 180.0)) {
+        return "cannot simplify: the normal-change limit must be above 0 and at most 180 degrees";
+    }
+    return {};
+}
+
+SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options) {
+    MESHEDIT_ASSERT(check_simplify(mesh, options).empty());
+    if (options.progress) {
+        options.progress(0.0);
+    }
+    const SimplifyReport report = Simplifier(mesh, options).run();
+    MESHEDIT_ASSERT(!validate(mesh));
+    return report;
+}
+
+}  // namespace meshedit

@@ -1,0 +1,85 @@
+// `meshedit simplify`: the target reached and the file valid; the same mesh as `--ops
+// simplify:R`; refusals (polygons, targets out of range) and bad usage write nothing.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "meshedit/core/validate.h"
+#include "meshedit/io/io.h"
+#include "run.h"
+#include "support/mesh_compare.h"
+
+namespace meshedit::test {
+namespace {
+
+std::string teapot() {
+    return (repo_root() / "dae/teapot.dae").string();
+}
+
+TEST(CliSimplify, RatioReachesItsTargetAndMatchesTheOpsVerb) {
+    TempDir tmp;
+    const RunResult r =
+        run_meshedit({"simplify", teapot(), (tmp / "small.dae").string(), "--ratio", "0.1"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Mesh small = read_mesh(tmp / "small.dae").mesh;
+    EXPECT_LE(small.n_faces(), 403u);  // round(0.1 × 4032)
+    EXPECT_GE(small.n_faces(), 395u);
+    EXPECT_FALSE(validate(small));
+    const RunResult ops =
+        run_meshedit({"convert", teapot(), (tmp / "ops.dae").string(), "--ops", "simplify:0.1"});
+    ASSERT_EQ(ops.exit_code, 0) << ops.err;
+    EXPECT_EQ(canonical_faces(read_mesh(tmp / "ops.dae").mesh), canonical_faces(small));
+}
+
+TEST(CliSimplify, FacesAndErrorBound) {
+    TempDir tmp;
+    const RunResult r =
+        run_meshedit({"simplify", teapot(), (tmp / "a.obj").string(), "--faces", "1000"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_LE(read_mesh(tmp / "a.obj").mesh.n_faces(), 1000u);
+    // A tiny bound stops long before 10 faces, and says so.
+    const RunResult bounded = run_meshedit(
+        {"simplify", teapot(), (tmp / "b.obj").string(), "--faces", "10", "--max-error", "1e-7"});
+    ASSERT_EQ(bounded.exit_code, 0) << bounded.err;
+    EXPECT_NE(bounded.err.find("the next collapse exceeds --max-error"), std::string::npos)
+        << bounded.err;
+    EXPECT_GT(read_mesh(tmp / "b.obj").mesh.n_faces(), 1000u);
+}
+
+TEST(CliSimplify, RefusalsAndBadUsageWriteNothing) {
+    TempDir tmp;
+    const std::string out = (tmp / "x.dae").string();
+    struct Case {
+        std::vector<std::string> args;
+        int exit_code;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {{"simplify", teapot(), out, "--faces", "0"},
+         1,
+         "teapot.dae: simplify refused: cannot simplify: the target must be from 1 to 4031 faces"},
+        {{"simplify", teapot(), out, "--faces", "5000"}, 1, "the mesh has 4032"},
+        {{"simplify", teapot(), out, "--ratio", "2"},
+         2,
+         "simplify: --ratio must be above 0 and below 1, not 2"},
+        {{"simplify", teapot(), out, "--ratio", "0"}, 2, "--ratio must be above 0"},
+        {{"simplify", teapot(), out}, 2, "simplify: give --faces N or --ratio R"},
+        {{"simplify", (repo_root() / "dae/quadball.dae").string(), out, "--ratio", "0.5"},
+         1,
+         "QEM needs triangles and 96 of the 96 faces are polygons"},
+        {{"convert", teapot(), out, "--ops", "simplify:1.5"},
+         1,
+         "the ratio of faces to keep must be above 0 and below 1, not 1.5"},
+    };
+    for (const Case& c : cases) {
+        const RunResult r = run_meshedit(c.args);
+        EXPECT_EQ(r.exit_code, c.exit_code) << c.args.back() << ": " << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out)) << c.message;
+    }
+}
+
+}  // namespace
+}  // namespace meshedit::test
