@@ -9,8 +9,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "display_fan.h"
 #include "gl.h"
+#include "meshedit/core/display_fan.h"
 #include "meshedit/core/normals.h"
 
 namespace meshedit {

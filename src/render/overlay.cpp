@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "display_fan.h"
 #include "meshedit/core/attributes.h"
+#include "meshedit/core/display_fan.h"
 #include "meshedit/core/normals.h"
 
 namespace meshedit {

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
-/// The display triangulation of a polygon face, shared by the surface (MeshRenderer) and the
-/// face tint of the overlay: both must cut a non-planar polygon the same way, or the tint
-/// dips behind the surface.
+/// The display triangulation of a polygon face, shared by the surface (MeshRenderer), the
+/// face tint of the overlay (both must cut a non-planar polygon the same way, or the tint
+/// dips behind the surface) and the closest-point tree (which measures that same surface).
 
 #include "meshedit/core/mesh.h"
 
