@@ -65,6 +65,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_real_meshes.h"
 #include "bench_subdivision.h"
 #include "bench_util.h"
 #include "meshedit/core/build.h"
@@ -83,7 +84,6 @@ using meshedit::bench::print_result;
 using meshedit::bench::time_runs;
 
 const char* const kImpls[] = {"meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full"};
-const char* const kDataTarball = "/usr/share/doc/libcgal-dev/data.tar.gz";
 
 // ------------------------------------------------------------------------------ inputs
 
@@ -115,67 +115,6 @@ Input input_from_soup(const meshedit::PolygonSoup& soup) {
     return in;
 }
 
-meshedit::PolygonSoup read_off(const fs::path& path) {
-    std::ifstream file(path);
-    if (!file) {
-        throw std::runtime_error("cannot open " + path.string());
-    }
-    // Strip comments, then read whitespace-separated tokens.
-    std::stringstream text;
-    std::string line;
-    while (std::getline(file, line)) {
-        text << line.substr(0, line.find('#')) << '\n';
-    }
-    std::string header;
-    text >> header;
-    if (header != "OFF") {
-        throw std::runtime_error(path.string() + ": not an OFF file");
-    }
-    std::size_t nv = 0;
-    std::size_t nf = 0;
-    std::size_t ne = 0;
-    text >> nv >> nf >> ne;
-    meshedit::PolygonSoup soup;
-    soup.positions.resize(nv);
-    for (auto& p : soup.positions) {
-        text >> p.x >> p.y >> p.z;
-    }
-    std::vector<std::uint32_t> corners;
-    for (std::size_t f = 0; f < nf; ++f) {
-        std::size_t n = 0;
-        text >> n;
-        corners.resize(n);
-        for (auto& c : corners) {
-            text >> c;
-        }
-        // Fan-triangulate polygons (the CGAL demo meshes are all triangles).
-        for (std::size_t i = 1; i + 1 < n; ++i) {
-            soup.add_face({corners[0], corners[i], corners[i + 1]});
-        }
-    }
-    if (!text) {
-        throw std::runtime_error(path.string() + ": truncated");
-    }
-    return soup;
-}
-
-/// The .off of `name`, extracted from the CGAL demo tarball into `data_dir` on first use.
-fs::path real_mesh_path(const std::string& name, const fs::path& data_dir) {
-    const std::string member =
-        "data/meshes/" + std::string(name == "bunny" ? "bunny00" : name) + ".off";
-    const fs::path path = data_dir / member;
-    if (!fs::exists(path)) {
-        fs::create_directories(data_dir);
-        const std::string cmd =
-            "tar xzf " + std::string(kDataTarball) + " -C '" + data_dir.string() + "' " + member;
-        if (std::system(cmd.c_str()) != 0 || !fs::exists(path)) {
-            throw std::runtime_error("could not extract " + member + " from " + kDataTarball +
-                                     " (install libcgal-demo)");
-        }
-    }
-    return path;
-}
-
 // ------------------------------------------------------------------------------ jobs
 
 struct Job {
@@ -205,7 +144,8 @@ Input load_input(const Job& job, const fs::path& data_dir) {
     if (job.input == "torus_100k") {
         return input_from_soup(meshedit::to_polygon_soup(meshedit::shapes::torus(250, 200)));
     }
-    const meshedit::PolygonSoup raw = read_off(real_mesh_path(job.input, data_dir));
+    const meshedit::PolygonSoup raw =
+        meshedit::bench::read_off(meshedit::bench::real_mesh_path(job.input, data_dir));
     meshedit::BuildReport report;
     const meshedit::Mesh mesh = meshedit::build_mesh(raw, &report);
     if (report.repaired()) {

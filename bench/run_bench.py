@@ -63,8 +63,9 @@ DEFAULT_CONFIGS = {
         for impl in ("meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full")
     ],
 }
-PROGRAMS = ["bench_loop", "bench_catmark", "bench_ops", "bench_io_draw", "bench_build",
-            "bench_local_ops"]
+PROGRAMS = ["bench_loop", "bench_catmark", "bench_simplify", "bench_ops", "bench_io_draw",
+            "bench_build", "bench_local_ops"]
+QEM_JOBS = ("qem_torus_1m_to_100k", "qem_bunny_1m_to_100k")
 BUILD_SIZES = ("100k", "300k", "1m")
 # bench_local_ops (issue 16): no anchor, no target; the cost per op at each size, side by side.
 LOCAL_OPS = ("dissolve_edge", "dissolve_vertex", "collapse_edge", "collapse_face")
@@ -82,6 +83,11 @@ JOB_TITLES = {
     "cc_1m_1level": "Catmull-Clark, 1 level, a closed torus of 1M quads (→ 4M quads)",
     **{f"cc_100k_levels_{k}": f"Catmull-Clark, {k} level(s), a closed torus of 99,825 faces "
        "(one quad in ten cut into two triangles)" for k in range(1, 4)},
+    "qem_torus_1m_to_100k": "QEM simplification of the 1M-triangle torus to 100,000 faces; "
+    "`hausdorff_pct`: the sampled symmetric Hausdorff distance to the input, % of its "
+    "bounding-box diagonal (the same sampler for every impl)",
+    "qem_bunny_1m_to_100k": "QEM simplification of bunny00 (CGAL's demo data) Loop-subdivided "
+    "twice (1,206,528 triangles) to 100,000 faces; `hausdorff_pct` as above",
     "flips_1e6": "1,000,000 random edge flips on the 100k torus",
     "splits_1e6": "1,000,000 random edge splits on the 100k torus",
     "normals_6p4m": "Area-weighted vertex normals, 6.4M faces "
@@ -431,6 +437,43 @@ def subdivision_target_rows(jobs, scheme, big_job, levels_job, levels, big_what,
     return rows
 
 
+def qem_target_rows(jobs):
+    """Issue 17's QEM targets per input: ≥ 3× faster than OpenMesh and CGAL, ≤ 1.5×
+    meshoptimizer's time, and a Hausdorff distance no worse than the best anchor's."""
+    rows = []
+    for job in QEM_JOBS:
+        res = ok_results(jobs.get(job, []))
+        me = res.get("meshedit")
+        what = job.split("_")[1]
+        if me is None:
+            rows.append((f"QEM 1M → 100k ({what})", "see below", f"not measured ({job})", "n/a"))
+            continue
+        speed = []
+        met = True
+        for anchor, limit in (("openmesh", 1 / 3), ("cgal", 1 / 3), ("meshoptimizer", 1.5)):
+            if anchor in res and res[anchor]["median_ms"] > 0:
+                r = me["median_ms"] / res[anchor]["median_ms"]
+                speed.append(f"{r:.3f} × {anchor}")
+                met = met and r <= limit
+            else:
+                speed.append(f"{anchor} not measured")
+                met = False
+        anchors = {k: v["hausdorff_pct"] for k, v in res.items()
+                   if not is_meshedit(k) and "hausdorff_pct" in v}
+        if anchors and "hausdorff_pct" in me:
+            best = min(anchors, key=anchors.get)
+            quality = (f"Hausdorff {me['hausdorff_pct']:.4f}% vs {anchors[best]:.4f}% "
+                       f"({best}, the best anchor)")
+            met = met and me["hausdorff_pct"] <= anchors[best]
+        else:
+            quality, met = "Hausdorff not measured", False
+        rows.append((f"QEM 1M → 100k ({what})",
+                     "≤ 1/3 of OpenMesh's and CGAL's time, ≤ 1.5 × meshoptimizer's, Hausdorff "
+                     "≤ the best anchor's", "; ".join(speed) + "; " + quality,
+                     "yes" if met else "no"))
+    return rows
+
+
 def targets_table(jobs):
     rows = []
 
@@ -450,6 +493,7 @@ def targets_table(jobs):
     # Catmull-Clark (issue 17): 1 level of 1M quads, levels 1–3 on 100k mixed faces.
     rows += subdivision_target_rows(jobs, "Catmull-Clark", "cc_1m_1level", "cc_100k_levels_{}",
                                     range(1, 4), "1M quads → 4M", "100k mixed faces")
+    rows += qem_target_rows(jobs)
     # Bytes per face after Loop: the first Loop job where MeshEdit and CGAL both report it.
     loop_jobs = ["loop_1m_1level"] + sorted(j for j in jobs if j.startswith("loop_") and
                                             j != "loop_1m_1level")

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian package MeshEdit needs to build and test (OpenSubdiv is the tests'
 # subdivision oracle); with --bench also the other benchmark anchors (OpenMesh, CGAL and its
-# demo meshes, Assimp) and perf, which only `make bench` needs; with --fuzz clang and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs dpkg queries
+# demo meshes and Eigen for its quadric policies, Assimp, meshoptimizer) and perf, which only `make bench` needs; with --fuzz clang and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs dpkg queries
 # (well under a second).
 set -euo pipefail
 
@@ -30,7 +30,7 @@ if [ "$fuzz" -eq 1 ]; then
     packages+=(clang libclang-rt-14-dev)
 fi
 if [ "$bench" -eq 1 ]; then
-    packages+=(libopenmesh-dev libcgal-dev libcgal-demo libassimp-dev linux-perf)
+    packages+=(libopenmesh-dev libcgal-dev libcgal-demo libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf)
 fi
 
 missing=()

@@ -9,20 +9,21 @@
 //        \   /                       |        Q_a' = Q_a + Q_b
 //          d                         d
 //
-// Candidates live in a binary heap ordered by cost, each stamped with its edge's version;
-// a collapse bumps the version of every edge around the survivor and pushes it again with the
-// new quadric, so stale entries are recognised and dropped when they surface (no decrease-key).
+// Candidates live in an indexed 4-ary min-heap of (cost, edge), 8 bytes an entry, with each
+// edge's place in it: a collapse re-keys the edges around the survivor in place and removes
+// the deleted ones, so the heap never holds more than one entry per edge. (A heap of stale
+// entries grew to twice the edges and its cache misses took two thirds of the time.)
 
 #include "meshedit/core/simplify.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <queue>
 #include <vector>
 
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/memory.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/validate.h"
 
@@ -79,12 +80,114 @@ struct Quadric {
     }
 };
 
+// A min-heap of edges keyed by cost, 4 children a node, with the place of every edge in it
+// (kInvalidIndex when absent) so a key can change in place.
+class EdgeHeap {
+public:
+    explicit EdgeHeap(std::size_t edges) : place_(edges, kInvalidIndex) {}
+
+    bool empty() const { return entries_.empty(); }
+    std::uint32_t top() const { return entries_.front().edge; }
+
+    // Builds the heap from every (edge, cost) at once (O(n)).
+    void assign(const std::vector<std::pair<std::uint32_t, float>>& all) {
+        entries_.clear();
+        entries_.reserve(all.size());
+        for (const auto& [edge, cost] : all) {
+            place_[edge] = static_cast<std::uint32_t>(entries_.size());
+            entries_.push_back({cost, edge});
+        }
+        for (std::size_t i = entries_.size(); i-- > 0;) {
+            down(i);
+        }
+    }
+    // Inserts `edge` or changes its cost.
+    void set(std::uint32_t edge, float cost) {
+        const std::uint32_t i = place_[edge];
+        if (i == kInvalidIndex) {
+            entries_.push_back({cost, edge});
+            up(entries_.size() - 1);
+            return;
+        }
+        const float old = entries_[i].cost;
+        entries_[i].cost = cost;
+        if (cost < old) {
+            up(i);
+        } else {
+            down(i);
+        }
+    }
+    void remove(std::uint32_t edge) {
+        const std::uint32_t i = place_[edge];
+        if (i == kInvalidIndex) {
+            return;
+        }
+        place_[edge] = kInvalidIndex;
+        const Entry last = entries_.back();
+        entries_.pop_back();
+        if (i == entries_.size()) {
+            return;
+        }
+        entries_[i] = last;
+        if (i > 0 && last.cost < entries_[(i - 1) / 4].cost) {
+            up(i);
+        } else {
+            down(i);
+        }
+    }
+
+private:
+    struct Entry {
+        float cost;
+        std::uint32_t edge;
+    };
+    void put(std::size_t i, const Entry& e) {
+        entries_[i] = e;
+        place_[e.edge] = static_cast<std::uint32_t>(i);
+    }
+    void up(std::size_t i) {
+        const Entry e = entries_[i];
+        while (i > 0) {
+            const std::size_t parent = (i - 1) / 4;
+            if (!(e.cost < entries_[parent].cost)) {
+                break;
+            }
+            put(i, entries_[parent]);
+            i = parent;
+        }
+        put(i, e);
+    }
+    void down(std::size_t i) {
+        const Entry e = entries_[i];
+        const std::size_t n = entries_.size();
+        for (;;) {
+            const std::size_t first = 4 * i + 1;
+            if (first >= n) {
+                break;
+            }
+            std::size_t best = first;
+            for (std::size_t c = first + 1; c < std::min(first + 4, n); ++c) {
+                if (entries_[c].cost < entries_[best].cost) {
+                    best = c;
+                }
+            }
+            if (!(entries_[best].cost < e.cost)) {
+                break;
+            }
+            put(i, entries_[best]);
+            i = best;
+        }
+        put(i, e);
+    }
+
+    memory::Array<Entry> entries_;  // huge pages: fewer page faults on big meshes
+    memory::Array<std::uint32_t> place_;
+};
+
+// Where an edge's survivor goes and what that costs.
 struct Candidate {
     double cost;
-    std::uint32_t edge;
-    std::uint32_t version;
     Vec3 position;
-    bool operator>(const Candidate& o) const { return cost > o.cost; }
 };
 
 class Simplifier {
@@ -93,30 +196,29 @@ public:
         : mesh_(mesh),
           options_(options),
           quadric_(mesh.vertices_size()),
-          version_(mesh.edges_size(), 0),
+          heap_(mesh.edges_size()),
           cos_limit_(std::cos(options.max_normal_change_deg * M_PI / 180.0)),
           diagonal_(mesh.bounds().diagonal()) {}
 
     SimplifyReport run() {
         gather_quadrics();
-        std::vector<Candidate> all;
+        std::vector<std::pair<std::uint32_t, float>> all;
         all.reserve(mesh_.n_edges());
         for (Edge e : mesh_.edges()) {
-            all.push_back(candidate(e));
+            all.emplace_back(e.idx(), key(candidate(e).cost));
         }
-        heap_ = decltype(heap_)(std::greater<Candidate>(), std::move(all));
+        heap_.assign(all);
         const std::size_t start = mesh_.n_faces();
         const double span = static_cast<double>(start - std::min(start, options_.target_faces));
         while (mesh_.n_faces() > options_.target_faces && !heap_.empty()) {
-            const Candidate c = heap_.top();
-            heap_.pop();
-            const Edge e(c.edge);
-            if (mesh_.is_deleted(e) || version_[c.edge] != c.version) {
-                continue;  // stale: the edge went, or its cost changed since
-            }
+            const Edge e(heap_.top());
+            heap_.remove(e.idx());  // back in when a neighbour's collapse changes its cost
+            // Computed again rather than stored: the quadrics are read here anyway, and a
+            // stored place per edge was one more cache miss per pop.
+            const Candidate c = candidate(e);
             const double error = error_of(c, e);
             if (error > options_.max_error) {
-                continue;  // pushed again if a neighbour's collapse changes its cost
+                continue;
             }
             if (!is_collapse_ok(mesh_, e)) {
                 ++report_.refused_topology;
@@ -186,7 +288,7 @@ private:
         const Quadric q = quadric_[a.idx()] + quadric_[b.idx()];
         const Vec3& pa = mesh_.position(a);
         const Vec3& pb = mesh_.position(b);
-        Candidate c{0.0, e.idx(), version_[e.idx()], {}};
+        Candidate c{0.0, {}};
         Vec3 best;
         // The minimiser, unless it lies far from the edge (a nearly singular system that
         // passed the determinant test): then the best of the ends and the midpoint.
@@ -244,24 +346,34 @@ private:
         return false;
     }
 
+    // The heap orders by a float: plenty to choose the next collapse, half the bytes.
+    static float key(double cost) { return static_cast<float>(std::clamp(cost, 0.0, 3.0e38)); }
+
     void apply(Edge e, const Vec3& p) {
-        const Quadric q = quadric_[mesh_.vertex(e, 0).idx()] + quadric_[mesh_.vertex(e, 1).idx()];
+        const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
+        const Quadric q = quadric_[a.idx()] + quadric_[b.idx()];
+        // The edges that may go (one of each pair the collapse merges): out of the heap
+        // first; those that stay go back in with their new cost below. (Re-keying them in
+        // place sifts most of them down a long way and was 15% slower in all.)
+        for (const Vertex v : {a, b}) {
+            for (Edge g : mesh_.edges(v)) {
+                heap_.remove(g.idx());
+            }
+        }
         const Vertex s = *collapse(mesh_, e);
         mesh_.position(s) = p;
         quadric_[s.idx()] = q;
         for (Edge g : mesh_.edges(s)) {
-            ++version_[g.idx()];
-            heap_.push(candidate(g));
+            heap_.set(g.idx(), key(candidate(g).cost));
         }
     }
 
     Mesh& mesh_;
     const SimplifyOptions& options_;
-    std::vector<Quadric> quadric_;
-    std::vector<std::uint32_t> version_;
+    memory::Array<Quadric> quadric_;
+    EdgeHeap heap_;
     double cos_limit_;
     double diagonal_;
-    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap_;
     SimplifyReport report_;
 };
 

@@ -1,0 +1,319 @@
+// QEM simplification: MeshEdit against meshoptimizer, OpenMesh's Decimater and CGAL's
+// edge_collapse, timed, with the quality of each result measured by the same code.
+//
+//     bench_simplify --job qem_torus_1m_to_100k --impl meshoptimizer [--runs 5] [--data DIR]
+//     bench_simplify --list
+//
+// Jobs: qem_torus_1m_to_100k (torus(1000, 500), 1M triangles → 100k), qem_bunny_1m_to_100k
+// (bunny00.off from libcgal-demo, 75,408 triangles, Loop-subdivided twice: 1.2M → 100k).
+// Impls (the timed body is the simplification only; input copies are untimed):
+//   meshedit       simplify() to 100,000 faces on a copy of the halfedge Mesh (doubles);
+//   meshoptimizer  meshopt_simplify() to 300,000 indices, target_error 1 (no bound), float
+//                  positions, an index buffer in and out (no connectivity kept);
+//   openmesh       DecimaterT + ModQuadricT (no error bound), initialize() and
+//                  decimate_to_faces(0, 100000) on a TriMesh (float positions);
+//   cgal           Surface_mesh_simplification::edge_collapse with GarlandHeckbert_plane_policies
+//                  and a Count_stop_predicate of 150,000 edges (100,000 faces of a closed mesh).
+// OpenMesh and CGAL run at most twice (10–20 s a run here). Quality (untimed, the same code
+// for all): the symmetric Hausdorff distance between input
+// and result, sampled (100,000 points on each surface by area, each measured to the other
+// through TriangleTree), as a percentage of the input's bounding-box diagonal.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+#include <meshoptimizer.h>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bench_real_meshes.h"
+#include "bench_util.h"
+#include "meshedit/core/build.h"
+#include "meshedit/core/closest_point.h"
+#include "meshedit/core/shapes.h"
+#include "meshedit/core/simplify.h"
+#include "meshedit/core/subdivision.h"
+
+namespace {
+
+namespace mb = meshedit::bench;
+namespace fs = std::filesystem;
+using meshedit::Vec3;
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+const char* const kImpls[] = {"meshedit", "meshoptimizer", "openmesh", "cgal"};
+constexpr std::size_t kTargetFaces = 100'000;
+constexpr int kSamples = 100'000;
+
+struct Surface {
+    std::vector<Vec3> points;
+    Triangles triangles;
+};
+
+Surface surface_of(const meshedit::Mesh& mesh) {
+    const meshedit::TriangleTree tree(mesh);
+    return {tree.points(), tree.triangles()};
+}
+
+Surface load_input(const std::string& job, const fs::path& data_dir) {
+    if (job == "qem_torus_1m_to_100k") {
+        return surface_of(meshedit::shapes::torus(1000, 500));
+    }
+    meshedit::Mesh bunny =
+        meshedit::build_mesh(mb::read_off(mb::real_mesh_path("bunny", data_dir)));
+    meshedit::loop_subdivide(bunny);
+    meshedit::loop_subdivide(bunny);
+    return surface_of(bunny);
+}
+
+// ------------------------------------------------------------------------------ quality
+
+// The largest distance from kSamples points on `from` (by area, fixed seed) to `to`.
+double one_sided(const Surface& from, const meshedit::TriangleTree& to) {
+    std::vector<double> cumulative;
+    cumulative.reserve(from.triangles.size());
+    double total = 0.0;
+    for (const auto& t : from.triangles) {
+        const Vec3& a = from.points[t[0]];
+        total += 0.5 * norm(cross(from.points[t[1]] - a, from.points[t[2]] - a));
+        cumulative.push_back(total);
+    }
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst = 0.0;
+    for (int i = 0; i < kSamples; ++i) {
+        const auto at = std::lower_bound(cumulative.begin(), cumulative.end(), unit(rng) * total);
+        const auto& t = from.triangles[std::min<std::size_t>(at - cumulative.begin(),
+                                                             from.triangles.size() - 1)];
+        double r1 = std::sqrt(unit(rng)), r2 = unit(rng);
+        const Vec3 p = from.points[t[0]] * (1 - r1) + from.points[t[1]] * (r1 * (1 - r2)) +
+                       from.points[t[2]] * (r1 * r2);
+        worst = std::max(worst, std::sqrt(to.closest(p).distance_squared));
+    }
+    return worst;
+}
+
+double hausdorff_percent(const Surface& input, const Surface& result) {
+    const meshedit::TriangleTree in_tree(input.points, input.triangles);
+    const meshedit::TriangleTree out_tree(result.points, result.triangles);
+    meshedit::BoundingBox box;
+    for (const Vec3& p : input.points) {
+        box.add(p);
+    }
+    const double d = std::max(one_sided(input, out_tree), one_sided(result, in_tree));
+    return 100.0 * d / box.diagonal();
+}
+
+// ------------------------------------------------------------------------------ impls
+
+struct Outcome {
+    std::vector<double> ms;
+    Surface result;
+};
+
+Outcome run_meshedit(const Surface& in, int runs) {
+    meshedit::PolygonSoup soup;
+    soup.positions = in.points;
+    for (const auto& t : in.triangles) {
+        soup.add_face({t[0], t[1], t[2]});
+    }
+    const meshedit::Mesh input = meshedit::build_mesh(soup);
+    meshedit::Mesh mesh;
+    meshedit::SimplifyOptions options;
+    options.target_faces = kTargetFaces;
+    Outcome out;
+    out.ms = mb::time_runs(
+        runs, [&] { mesh = input; }, [&] { meshedit::simplify(mesh, options); });
+    mesh.garbage_collection();
+    out.result = surface_of(mesh);
+    return out;
+}
+
+Outcome run_meshoptimizer(const Surface& in, int runs) {
+    std::vector<float> positions;
+    for (const Vec3& p : in.points) {
+        positions.insert(positions.end(), {static_cast<float>(p.x), static_cast<float>(p.y),
+                                           static_cast<float>(p.z)});
+    }
+    std::vector<unsigned> indices;
+    for (const auto& t : in.triangles) {
+        indices.insert(indices.end(), t.begin(), t.end());
+    }
+    std::vector<unsigned> result;
+    std::size_t count = 0;
+    Outcome out;
+    out.ms = mb::time_runs(
+        runs, [&] { result.assign(indices.size(), 0); },
+        [&] {
+            count =
+                meshopt_simplify(result.data(), indices.data(), indices.size(), positions.data(),
+                                 in.points.size(), 3 * sizeof(float), 3 * kTargetFaces, 1.0f);
+        });
+    out.result.points = in.points;  // meshoptimizer keeps the vertex buffer; unused ones harmless
+    for (std::size_t i = 0; i + 2 < count; i += 3) {
+        out.result.triangles.push_back({result[i], result[i + 1], result[i + 2]});
+    }
+    return out;
+}
+
+using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+Outcome run_openmesh(const Surface& in, int runs) {
+    OMesh input;
+    std::vector<OMesh::VertexHandle> vh;
+    for (const Vec3& p : in.points) {
+        vh.push_back(input.add_vertex(OMesh::Point(static_cast<float>(p.x), static_cast<float>(p.y),
+                                                   static_cast<float>(p.z))));
+    }
+    for (const auto& t : in.triangles) {
+        input.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
+    }
+    // Status flags requested by the mesh itself: a decimater that requests them releases them
+    // when it goes, and the deleted marks with them.
+    input.request_vertex_status();
+    input.request_edge_status();
+    input.request_halfedge_status();
+    input.request_face_status();
+    OMesh mesh;
+    Outcome out;
+    out.ms = mb::time_runs(
+        runs, [&] { mesh = input; },
+        [&] {
+            OpenMesh::Decimater::DecimaterT<OMesh> decimater(mesh);
+            OpenMesh::Decimater::ModQuadricT<OMesh>::Handle quadric;
+            decimater.add(quadric);
+            decimater.module(quadric).unset_max_err();
+            decimater.initialize();
+            decimater.decimate_to_faces(0, kTargetFaces);
+        });
+    mesh.garbage_collection();
+    for (auto v : mesh.vertices()) {
+        const auto& p = mesh.point(v);
+        out.result.points.push_back({p[0], p[1], p[2]});
+    }
+    for (auto f : mesh.faces()) {
+        std::array<std::uint32_t, 3> t{};
+        int i = 0;
+        for (auto v : mesh.fv_range(f)) {
+            t[i++] = static_cast<std::uint32_t>(v.idx());
+        }
+        out.result.triangles.push_back(t);
+    }
+    return out;
+}
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using CMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+Outcome run_cgal(const Surface& in, int runs) {
+    namespace SMS = CGAL::Surface_mesh_simplification;
+    CMesh input;
+    std::vector<CMesh::Vertex_index> vh;
+    for (const Vec3& p : in.points) {
+        vh.push_back(input.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
+    }
+    for (const auto& t : in.triangles) {
+        input.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
+    }
+    CMesh mesh;
+    Outcome out;
+    out.ms = mb::time_runs(
+        runs, [&] { mesh = input; },
+        [&] {
+            SMS::Count_stop_predicate<CMesh> stop(3 * kTargetFaces / 2);
+            SMS::GarlandHeckbert_plane_policies<CMesh, Kernel> policies(mesh);
+            SMS::edge_collapse(mesh, stop,
+                               CGAL::parameters::get_cost(policies.get_cost())
+                                   .get_placement(policies.get_placement()));
+        });
+    mesh.collect_garbage();
+    for (auto v : mesh.vertices()) {
+        const auto& p = mesh.point(v);
+        out.result.points.push_back({p.x(), p.y(), p.z()});
+    }
+    for (auto f : mesh.faces()) {
+        std::array<std::uint32_t, 3> t{};
+        int i = 0;
+        for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+            t[i++] = static_cast<std::uint32_t>(v.idx());
+        }
+        out.result.triangles.push_back(t);
+    }
+    return out;
+}
+
+int usage() {
+    std::fprintf(stderr,
+                 "usage: bench_simplify --job JOB --impl IMPL [--runs N] [--data DIR]\n"
+                 "       bench_simplify --list\n");
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    mb::take_common_flags(argc, argv);
+    const std::vector<std::string> jobs = {"qem_torus_1m_to_100k", "qem_bunny_1m_to_100k"};
+    std::string job, impl;
+    int runs = 5;
+    fs::path data_dir = fs::canonical("/proc/self/exe").parent_path() / "loop_data";
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const bool has_value = i + 1 < argc;
+        if (arg == "--list") {
+            for (const std::string& j : jobs) {
+                for (const char* name : kImpls) {
+                    std::printf("%s %s\n", j.c_str(), name);
+                }
+            }
+            return 0;
+        } else if (arg == "--job" && has_value) {
+            job = argv[++i];
+        } else if (arg == "--impl" && has_value) {
+            impl = argv[++i];
+        } else if (arg == "--runs" && has_value) {
+            runs = std::atoi(argv[++i]);
+        } else if (arg == "--data" && has_value) {
+            data_dir = argv[++i];
+        } else {
+            return usage();
+        }
+    }
+    const bool known_job = std::find(jobs.begin(), jobs.end(), job) != jobs.end();
+    const bool known_impl =
+        std::any_of(std::begin(kImpls), std::end(kImpls), [&](const char* n) { return impl == n; });
+    if (!known_job || !known_impl || runs < 1) {
+        return usage();
+    }
+    try {
+        const Surface input = load_input(job, data_dir);
+        if (impl == "openmesh" || impl == "cgal") {
+            runs = std::min(runs, 2);  // 10–20 s a run: two keep `make bench` within its budget
+        }
+        const Outcome out = impl == "meshedit"        ? run_meshedit(input, runs)
+                            : impl == "meshoptimizer" ? run_meshoptimizer(input, runs)
+                            : impl == "openmesh"      ? run_openmesh(input, runs)
+                                                      : run_cgal(input, runs);
+        mb::print_result(job, impl, out.ms,
+                         {{"faces_in", static_cast<double>(input.triangles.size())},
+                          {"faces_out", static_cast<double>(out.result.triangles.size())},
+                          {"hausdorff_pct", hausdorff_percent(input, out.result)},
+                          {"peak_rss_mb", mb::peak_rss_mb()}});
+    } catch (const std::exception& e) {
+        std::printf("NOTE %s %s failed: %s\n", job.c_str(), impl.c_str(), e.what());
+        mb::print_result(job, impl, {0.0}, {{"skipped", 1}});
+        return 1;
+    }
+    return 0;
+}
