@@ -56,6 +56,7 @@ Command add_info(CLI::App& meshedit);
 Command add_convert(CLI::App& meshedit);
 Command add_subdivide(CLI::App& meshedit);
 Command add_simplify(CLI::App& meshedit);
+Command add_remesh(CLI::App& meshedit);
 Command add_check(CLI::App& meshedit);
 Command add_eval(CLI::App& meshedit);
 

@@ -85,7 +85,8 @@ int run_builtin(int argc, char** argv) {
     meshedit::command_line::add_memory_budget_option(app);
     app.footer(kMoreCommands);
     const Command commands[] = {add_info(app),     add_convert(app), add_subdivide(app),
-                                add_simplify(app), add_check(app),   add_eval(app)};
+                                add_simplify(app), add_remesh(app),  add_check(app),
+                                add_eval(app)};
     for (const Command& c : commands) {
         c.app->group("Commands");
         c.app->fallthrough();  // --memory-budget after the command name works too
@@ -132,7 +133,8 @@ int dispatch(int argc, char** argv) {
         return 1;
     }
     const bool builtin = command == "info" || command == "convert" || command == "subdivide" ||
-                         command == "simplify" || command == "check" || command == "eval";
+                         command == "simplify" || command == "remesh" || command == "check" ||
+                         command == "eval";
     if (!builtin && !command.empty() && command[0] != '-') {
         exec_external(command, argv);  // a meshedit-COMMAND beside this executable
         if (looks_like_file(command)) {

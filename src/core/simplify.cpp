@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "collapse_guard.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/memory.h"
@@ -224,7 +225,7 @@ public:
                 ++report_.refused_topology;
                 continue;
             }
-            if (flips_a_face(e, c.position)) {
+            if (collapse_turns_a_face(mesh_, e, c.position, cos_limit_)) {
                 ++report_.refused_normal;
                 continue;
             }
@@ -316,34 +317,6 @@ private:
             return 0.0;
         }
         return std::sqrt(std::max(0.0, c.cost) / area) / diagonal_;
-    }
-
-    // Whether moving both ends of e to p turns a face that stays by more than the limit.
-    bool flips_a_face(Edge e, const Vec3& p) const {
-        const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
-        for (const Vertex v : {a, b}) {
-            for (Face f : mesh_.faces(v)) {
-                Vec3 corner[3];
-                int i = 0;
-                bool has_both = false;
-                for (Vertex c : mesh_.vertices(f)) {
-                    if (i < 3) {
-                        corner[i++] = (c == a || c == b) ? p : mesh_.position(c);
-                    }
-                    has_both = has_both || (c == (v == a ? b : a));
-                }
-                if (has_both) {
-                    continue;  // one of the triangles beside e: it goes
-                }
-                const Vec3 before = face_area_vector(mesh_, f);
-                const Vec3 after = cross(corner[1] - corner[0], corner[2] - corner[0]);
-                const double scale = norm(before) * norm(after);
-                if (!(scale > 0.0) || dot(before, after) < cos_limit_ * scale) {
-                    return true;
-                }
-            }
-        }
-        return false;
     }
 
     // The heap orders by a float: plenty to choose the next collapse, half the bytes.

@@ -10,6 +10,7 @@
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/quad_subdivision.h"
+#include "meshedit/core/remesh.h"
 #include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/ops/ops.h"
@@ -318,6 +319,34 @@ StepResult run_simplify(Mesh& mesh, const Step& step, const RunOptions& options)
     return result;
 }
 
+// remesh, remesh:L, remesh:L,N: target length L (0: the mean), N iterations.
+RemeshOptions remesh_options(const Step& step) {
+    RemeshOptions options;
+    options.target_length = step.amounts[0];
+    options.iterations = static_cast<int>(step.amounts[1]);
+    return options;
+}
+std::string check_remesh_step(const Mesh& mesh, const Step& step) {
+    const double n = step.amounts[1];
+    if (!(n >= 1 && n <= 100) || n != std::floor(n)) {
+        return "cannot remesh: iterations must be a whole number from 1 to 100, not " +
+               amount_text(n);
+    }
+    return check_remesh(mesh, remesh_options(step));
+}
+StepResult run_remesh(Mesh& mesh, const Step& step, const RunOptions& options) {
+    RemeshOptions remesh_with = remesh_options(step);
+    remesh_with.progress = options.progress;
+    const RemeshReport report = remesh(mesh, remesh_with);
+    StepResult result;
+    result.renumbers = true;
+    result.message = "remeshed to edge length " + amount_text(report.target_length) + ": " +
+                     std::to_string(mesh.n_faces()) + " faces (" + std::to_string(report.splits) +
+                     " splits, " + std::to_string(report.collapses) + " collapses, " +
+                     std::to_string(report.flips) + " flips)";
+    return result;
+}
+
 std::string check_triangulate(const Mesh& mesh, const Step& step) {
     if (step.target == Target::Face) {
         return why(is_triangulate_ok(mesh, named_face(mesh, step)));
@@ -439,6 +468,11 @@ constexpr std::array kVerbs{
          "(0 < R < 1, default 0.5): edge collapses, cheapest quadric error first, boundaries "
          "and creases held, no face turned over; indices are renumbered when written",
          "simplify the mesh to half its faces (QEM)", check_simplify_step, run_simplify},
+    Verb{"remesh", kWholeMesh, 2, 0, {0.0, 3.0}, "remesh, remesh:L, remesh:L,N",
+         "isotropic remeshing (Botsch-Kobbelt) of a triangle mesh toward edge length L (0 or "
+         "left out: the mean edge length) in N rounds (default 3) of split, collapse, flip, "
+         "tangential smoothing and projection onto the input; boundaries and creases kept",
+         "remesh toward the mean edge length (3 rounds)", check_remesh_step, run_remesh},
     Verb{"triangulate", kWholeMesh | kFaceArg, 0, 0, kNoDefaults, "triangulate, triangulate:fI",
          "cuts every polygon (or face I) into triangles by diagonals inside it",
          "triangulate every polygon", check_triangulate, run_triangulate},

@@ -46,6 +46,7 @@ constexpr std::array kTable{
     Binding{key_of('C'), kShift, kMeshModes, edit("catmull_clark"), "Shift+C", {}},
     Binding{key_of('L'), kCtrl, kMeshModes, edit("linear"), "Ctrl+L", {}},
     Binding{key_of('D'), kNoMods, kMeshModes, edit("simplify"), "D", {}},
+    Binding{key_of('R'), kShift, kMeshModes, edit("remesh"), "Shift+R", {}},
     // Selecting.
     Binding{key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}, "Ctrl+A", "select every element of the selected kind (faces if none)"},
     Binding{key_of('A'), kAlt, kMeshModes, {Command::SelectNone}, "Alt+A", "select nothing"},

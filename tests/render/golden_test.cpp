@@ -101,6 +101,10 @@ const std::vector<GoldenCase>& golden_cases() {
         {"teapot_simplify2",
          "dae/teapot.dae",
          {"--ops", "simplify:0.025", "--flat", "--wireframe"}},
+        // Isotropic remeshing (docs/remesh.md): the patch tessellation's uneven triangles (dense
+        // at the spout and the lid's knob) become even ones of the mean length, then of 0.15.
+        {"teapot_remesh", "dae/teapot.dae", {"--ops", "remesh", "--flat", "--wireframe"}},
+        {"teapot_remesh_015", "dae/teapot.dae", {"--ops", "remesh:0.15", "--flat", "--wireframe"}},
         // One selection of each element type. Vertex 0 = (−0.53, 0.85, 0) and 1 = (0.53, 0.85,
         // 0) share the faces (0,5,1) on +z and (0,1,7) on −z: each camera looks straight at
         // its element (az = atan2(x, z), el = asin(y)), so nothing sits on the silhouette.

@@ -59,6 +59,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('C'), kShift, kMeshModes, edit("catmull_clark")},
             {key_of('L'), kCtrl, kMeshModes, edit("linear")},
             {key_of('D'), 0, kMeshModes, edit("simplify")},
+            {key_of('R'), kShift, kMeshModes, edit("remesh")},
             {key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}},
             {key_of('A'), kAlt, kMeshModes, {Command::SelectNone}},
             {key_of('L'), kShift, kMeshModes, {Command::SelectLoop}},

@@ -11,6 +11,7 @@
 
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/quad_subdivision.h"
+#include "meshedit/core/remesh.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
@@ -315,6 +316,20 @@ TEST(Editor, DSimplifiesToHalf) {
     const Outcome refused = quads.press(key_of('D'), 0);
     EXPECT_TRUE(refused.refused);
     EXPECT_NE(refused.message.find("6 of the 6 faces are polygons"), std::string::npos);
+}
+
+// Shift+R remeshes toward the mean edge length, one undo step.
+TEST(Editor, ShiftRRemeshes) {
+    const Mesh ball = shapes::icosphere(2);
+    Mesh expected = ball;
+    remesh(expected, RemeshOptions{});
+    Editor ed = editor_with(ball);
+    const Outcome out = ed.press(key_of('R'), kShift);
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(out.message.rfind("remeshed to edge length ", 0), 0u) << out.message;
+    EXPECT_TRUE(test::identical(ed.mesh(), expected));
+    ed.run({Command::Undo});
+    EXPECT_TRUE(test::identical(ed.mesh(), ball));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// `meshedit simplify`: the target reached and the file valid; the same mesh as `--ops
-// simplify:R`; refusals (polygons, targets out of range) and bad usage write nothing.
+// `meshedit simplify` and `meshedit remesh`: the target reached and the file valid; the same
+// mesh as the `--ops` verb; refusals (polygons, targets out of range) and bad usage write
+// nothing.
 
 #include <gtest/gtest.h>
 
@@ -78,6 +79,43 @@ TEST(CliSimplify, RefusalsAndBadUsageWriteNothing) {
         EXPECT_EQ(r.exit_code, c.exit_code) << c.args.back() << ": " << r.err;
         EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
         EXPECT_FALSE(std::filesystem::exists(out)) << c.message;
+    }
+}
+
+// Remeshing the teapot to L = 0.15: valid, edges near 0.15 on average, the same mesh as
+// `--ops remesh:0.15`; refusals write nothing.
+TEST(CliRemesh, LengthReachedAndSameAsTheVerb) {
+    TempDir tmp;
+    const RunResult r =
+        run_meshedit({"remesh", teapot(), (tmp / "even.dae").string(), "--length", "0.15"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Mesh even = read_mesh(tmp / "even.dae").mesh;
+    EXPECT_FALSE(validate(even));
+    double sum = 0.0;
+    for (Edge e : even.edges()) {
+        sum += distance(even.position(even.vertex(e, 0)), even.position(even.vertex(e, 1)));
+    }
+    const double mean = sum / static_cast<double>(even.n_edges());
+    EXPECT_GT(mean, 0.12);
+    EXPECT_LT(mean, 0.18);
+    const RunResult ops =
+        run_meshedit({"convert", teapot(), (tmp / "ops.dae").string(), "--ops", "remesh:0.15"});
+    ASSERT_EQ(ops.exit_code, 0) << ops.err;
+    EXPECT_EQ(canonical_faces(read_mesh(tmp / "ops.dae").mesh), canonical_faces(even));
+
+    const std::string out = (tmp / "x.dae").string();
+    for (const auto& [args, message] :
+         std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"remesh", teapot(), out, "--iterations", "0"}, "iterations must be a whole number"},
+             {{"remesh", teapot(), out, "--length", "0.0001"}, "(at most 100,000,000)"},
+             {{"remesh", teapot(), out, "--length", "-1"}, "must be a positive number"},
+             {{"remesh", (repo_root() / "dae/quadball.dae").string(), out},
+              "remeshing needs triangles"},
+         }) {
+        const RunResult bad = run_meshedit(args);
+        EXPECT_EQ(bad.exit_code, 1) << bad.err;
+        EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+        EXPECT_FALSE(std::filesystem::exists(out));
     }
 }
 

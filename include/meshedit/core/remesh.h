@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// Isotropic remeshing (Botsch and Kobbelt 2004): split long edges, collapse short ones,
+/// flip toward valence 6, smooth tangentially and project back onto the input surface, a few
+/// times over, so that every edge approaches one target length (docs/remesh.md).
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "meshedit/core/mesh.h"
+
+namespace meshedit {
+
+struct RemeshOptions {
+    /// The edge length to approach; 0 means the mean edge length of the input.
+    double target_length = 0.0;
+    /// Rounds of split, collapse, flip, smooth and project (1 to 100).
+    int iterations = 3;
+    /// Called with the fraction done (0…1), non-decreasing, last with 1; may be empty.
+    std::function<void(double)> progress;
+};
+
+struct RemeshReport {
+    double target_length = 0.0;  ///< the length used (the mean when 0 was asked for)
+    std::size_t splits = 0, collapses = 0, flips = 0;
+};
+
+/// Why remesh() cannot run, or empty: polygons (triangulate first), no faces, a target
+/// length that is negative, not finite, or so small against the mesh that the result would
+/// not fit (more than about 100 million triangles or the memory budget), iterations out of
+/// 1 to 100. Pure.
+std::string check_remesh(const Mesh& mesh, const RemeshOptions& options);
+
+/// Remeshes in place. Boundary edges and crease edges are features: their vertices move only
+/// along them (features are split at midpoints and collapsed along themselves, never smoothed)
+/// and a vertex on three or more feature edges never moves. Every other vertex is smoothed in
+/// its tangent plane and projected onto the closest point of the input surface (a
+/// TriangleTree of the input as it was). Collapses keep the link condition and turn no face
+/// over; garbage is collected at the end. \pre check_remesh() returned empty.
+/// \post validate(mesh) passes.
+RemeshReport remesh(Mesh& mesh, const RemeshOptions& options);
+
+}  // namespace meshedit

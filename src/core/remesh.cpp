@@ -1,0 +1,315 @@
+// Isotropic remeshing (Botsch and Kobbelt, "A remeshing approach to multiresolution
+// modeling", 2004), with boundaries and creases kept as features.
+//
+// One iteration, L the target length:
+//
+//   split     every edge longer than 4/3 L at its midpoint (until none is left)
+//   collapse  every edge shorter than 4/5 L, unless a new edge would be longer than 4/3 L
+//   flip      every edge whose flip brings the four vertices' valences nearer 6 (4 on the
+//             boundary)
+//   smooth    every free vertex toward its neighbours' centroid, in its tangent plane, then
+//   project   onto the closest point of the input surface
+//
+// Feature edges (boundary, crease) are never flipped. A collapse of an edge with one end on a
+// feature puts the survivor at that end; a collapse along a feature edge puts it at one of
+// the edge's ends (the corner, if one end is a corner: the end of a crease, three or more
+// feature edges, or a turn of more than 30 degrees). Feature vertices are not smoothed.
+// Splits put new feature vertices at midpoints of feature edges, and collapses keep feature
+// vertices where they are, so every feature vertex stays on the input's feature polyline.
+
+#include "meshedit/core/remesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "collapse_guard.h"
+#include "meshedit/core/attributes.h"
+#include "meshedit/core/budget.h"
+#include "meshedit/core/closest_point.h"
+#include "meshedit/core/local_ops.h"
+#include "meshedit/core/normals.h"
+#include "meshedit/core/validate.h"
+
+namespace meshedit {
+namespace {
+
+// A collapse may not turn a face by more than 60 degrees (cos 60° = 0.5), nor a flip.
+constexpr double kCosLimit = 0.5;
+// More than this many passes of splits means the target is absurd for the mesh (each pass
+// halves every long edge): check_remesh() refuses such targets first.
+constexpr int kMaxSplitPasses = 40;
+
+double mean_edge_length(const Mesh& mesh) {
+    double sum = 0.0;
+    for (Edge e : mesh.edges()) {
+        sum += distance(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)));
+    }
+    return mesh.n_edges() > 0 ? sum / static_cast<double>(mesh.n_edges()) : 0.0;
+}
+
+double surface_area(const Mesh& mesh) {
+    double area = 0.0;
+    for (Face f : mesh.faces()) {
+        area += 0.5 * norm(face_area_vector(mesh, f));
+    }
+    return area;
+}
+
+class Remesher {
+public:
+    Remesher(Mesh& mesh, const RemeshOptions& options)
+        : mesh_(mesh),
+          options_(options),
+          input_(mesh),
+          crease_(mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+        report_.target_length =
+            options.target_length > 0.0 ? options.target_length : mean_edge_length(mesh);
+        high_ = 4.0 / 3.0 * report_.target_length;
+        low_ = 4.0 / 5.0 * report_.target_length;
+    }
+
+    RemeshReport run() {
+        const double steps = 4.0 * options_.iterations;
+        double done = 0.0;
+        const auto report = [&] {
+            if (options_.progress) {
+                options_.progress(std::min(1.0, ++done / steps));
+            }
+        };
+        for (int i = 0; i < options_.iterations; ++i) {
+            split_long_edges();
+            report();
+            collapse_short_edges();
+            report();
+            flip_toward_valence_six();
+            report();
+            smooth_and_project();
+            report();
+        }
+        mesh_.garbage_collection();
+        return report_;
+    }
+
+private:
+    bool is_feature(Edge e) const { return mesh_.is_boundary(e) || (crease_ && crease_[e] != 0); }
+    int features_at(Vertex v) const {
+        int n = 0;
+        for (Edge e : mesh_.edges(v)) {
+            n += is_feature(e);
+        }
+        return n;
+    }
+    // A feature vertex that must not move: the end of a crease, three or more feature edges,
+    // or two that turn by more than 30 degrees (a corner of a boundary or a crease).
+    bool is_corner(Vertex v) const {
+        Vec3 dir[2];
+        int n = 0;
+        for (Halfedge h : mesh_.halfedges(v)) {
+            if (is_feature(Mesh::edge(h))) {
+                if (n < 2) {
+                    dir[n] = normalize(mesh_.position(mesh_.to_vertex(h)) - mesh_.position(v));
+                }
+                ++n;
+            }
+        }
+        return n == 1 || n >= 3 || (n == 2 && dot(dir[0], dir[1]) > -0.866);
+    }
+    double length(Edge e) const {
+        return distance(mesh_.position(mesh_.vertex(e, 0)), mesh_.position(mesh_.vertex(e, 1)));
+    }
+
+    void split_long_edges() {
+        for (int pass = 0; pass < kMaxSplitPasses; ++pass) {
+            bool any = false;
+            const std::size_t n = mesh_.edges_size();
+            for (std::size_t i = 0; i < n; ++i) {
+                const Edge e(static_cast<std::uint32_t>(i));
+                if (!mesh_.is_deleted(e) && length(e) > high_ && is_split_ok(mesh_, e)) {
+                    split(mesh_, e);
+                    ++report_.splits;
+                    any = true;
+                }
+            }
+            if (!any) {
+                return;
+            }
+        }
+    }
+
+    void collapse_short_edges() {
+        const std::size_t n = mesh_.edges_size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const Edge e(static_cast<std::uint32_t>(i));
+            if (mesh_.is_deleted(e) || length(e) >= low_) {
+                continue;
+            }
+            const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
+            const int fa = features_at(a), fb = features_at(b);
+            Vec3 p;
+            if (is_feature(e)) {
+                // Along a feature the survivor takes an end's place (a midpoint would leave a
+                // curved feature), the corner's if there is one.
+                const bool ca = is_corner(a), cb = is_corner(b);
+                if (ca && cb) {
+                    continue;
+                }
+                p = cb ? mesh_.position(b) : mesh_.position(a);
+            } else {
+                if (fa > 0 && fb > 0) {
+                    continue;  // a chord between two feature vertices would pinch the surface
+                }
+                p = fa > 0   ? mesh_.position(a)
+                    : fb > 0 ? mesh_.position(b)
+                             : (mesh_.position(a) + mesh_.position(b)) * 0.5;
+            }
+            if (makes_a_long_edge(a, b, p) || !is_collapse_ok(mesh_, e) ||
+                collapse_turns_a_face(mesh_, e, p, kCosLimit)) {
+                continue;
+            }
+            const Vertex s = *collapse(mesh_, e);
+            mesh_.position(s) = p;
+            ++report_.collapses;
+        }
+    }
+
+    bool makes_a_long_edge(Vertex a, Vertex b, const Vec3& p) const {
+        for (const Vertex v : {a, b}) {
+            for (Vertex w : mesh_.vertices(v)) {
+                if (w != a && w != b && distance(p, mesh_.position(w)) > high_) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    int target_valence(Vertex v) const { return mesh_.is_boundary(v) ? 4 : 6; }
+
+    void flip_toward_valence_six() {
+        const std::size_t n = mesh_.edges_size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const Edge e(static_cast<std::uint32_t>(i));
+            if (mesh_.is_deleted(e) || is_feature(e) || !is_flip_ok(mesh_, e)) {
+                continue;
+            }
+            const Halfedge h = mesh_.halfedge(e, 0), t = Mesh::twin(h);
+            const Vertex a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
+            const Vertex c = mesh_.to_vertex(mesh_.next(h)), d = mesh_.to_vertex(mesh_.next(t));
+            const auto off = [&](Vertex v, int change) {
+                const int x = static_cast<int>(mesh_.valence(v)) + change - target_valence(v);
+                return x * x;
+            };
+            const int before = off(a, 0) + off(b, 0) + off(c, 0) + off(d, 0);
+            const int after = off(a, -1) + off(b, -1) + off(c, 1) + off(d, 1);
+            if (after >= before || folds(a, b, c, d)) {
+                continue;
+            }
+            flip(mesh_, e);
+            ++report_.flips;
+        }
+    }
+
+    // Whether the flipped triangles (c, a, d) and (d, b, c) would turn by more than 60° from
+    // the quad's normal (the pair (a, b, c), (b, a, d) before).
+    bool folds(Vertex a, Vertex b, Vertex c, Vertex d) const {
+        const Vec3 &pa = mesh_.position(a), &pb = mesh_.position(b), &pc = mesh_.position(c),
+                   &pd = mesh_.position(d);
+        const Vec3 before = cross(pb - pa, pc - pa) + cross(pa - pb, pd - pb);
+        for (const Vec3 after : {cross(pa - pc, pd - pc), cross(pb - pd, pc - pd)}) {
+            const double scale = norm(before) * norm(after);
+            if (!(scale > 0.0) || dot(before, after) < kCosLimit * scale) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    void smooth_and_project() {
+        compute_vertex_normals(mesh_, normals_);
+        moved_.assign(mesh_.vertices_size(), Vec3{});
+        for (Vertex v : mesh_.vertices()) {
+            const Vec3& p = mesh_.position(v);
+            moved_[v.idx()] = p;
+            if (mesh_.is_isolated(v) || features_at(v) > 0) {
+                continue;
+            }
+            Vec3 centroid;
+            double n = 0;
+            for (Vertex w : mesh_.vertices(v)) {
+                centroid += mesh_.position(w);
+                n += 1;
+            }
+            const Vec3 normal = normals_[v.idx()];
+            Vec3 step = centroid * (1.0 / n) - p;
+            step = step - normal * dot(normal, step);  // tangential only
+            moved_[v.idx()] = input_.closest(p + step).point;
+        }
+        for (Vertex v : mesh_.vertices()) {
+            mesh_.position(v) = moved_[v.idx()];
+        }
+    }
+
+    Mesh& mesh_;
+    const RemeshOptions& options_;
+    const TriangleTree input_;
+    EdgeProperty<std::uint8_t> crease_;
+    double high_ = 0.0, low_ = 0.0;
+    std::vector<Vec3> normals_, moved_;
+    RemeshReport report_;
+};
+
+}  // namespace
+
+std::string check_remesh(const Mesh& mesh, const RemeshOptions& options) {
+    if (mesh.n_faces() == 0) {
+        return "cannot remesh: the mesh has no faces";
+    }
+    std::size_t polygons = 0;
+    for (Face f : mesh.faces()) {
+        polygons += mesh.valence(f) != 3;
+    }
+    if (polygons > 0) {
+        return "cannot remesh: remeshing needs triangles and " + std::to_string(polygons) +
+               " of the " + std::to_string(mesh.n_faces()) +
+               " faces are polygons (triangulate them first: the `triangulate` step, Ctrl+T in "
+               "the viewer)";
+    }
+    if (options.iterations < 1 || options.iterations > 100) {
+        return "cannot remesh: iterations must be from 1 to 100, not " +
+               std::to_string(options.iterations);
+    }
+    if (!(options.target_length >= 0.0) || !std::isfinite(options.target_length)) {
+        return "cannot remesh: the target edge length must be a positive number (0: the mean "
+               "edge length)";
+    }
+    const double length =
+        options.target_length > 0.0 ? options.target_length : mean_edge_length(mesh);
+    // An equilateral triangle of side L has area √3/4 · L².
+    const double triangles = surface_area(mesh) / (std::sqrt(3.0) / 4.0 * length * length);
+    if (!(length > 0.0) || !(triangles < 1e8)) {
+        return "cannot remesh: an edge length of " + std::to_string(length) + " would make about " +
+               std::to_string(static_cast<long long>(triangles)) +
+               " triangles (at most 100,000,000)";
+    }
+    if (const auto over = over_budget(triangles * 200.0)) {
+        return "cannot remesh: an edge length of " + std::to_string(length) + " " + *over;
+    }
+    return {};
+}
+
+RemeshReport remesh(Mesh& mesh, const RemeshOptions& options) {
+    MESHEDIT_ASSERT(check_remesh(mesh, options).empty());
+    if (options.progress) {
+        options.progress(0.0);
+    }
+    if (mesh.has_garbage()) {
+        mesh.garbage_collection();
+    }
+    const RemeshReport report = Remesher(mesh, options).run();
+    MESHEDIT_ASSERT(!validate(mesh));
+    return report;
+}
+
+}  // namespace meshedit
