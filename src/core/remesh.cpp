@@ -31,6 +31,7 @@
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/validate.h"
+#include "triangles_only.h"
 
 namespace meshedit {
 namespace {
@@ -263,18 +264,8 @@ private:
 }  // namespace
 
 std::string check_remesh(const Mesh& mesh, const RemeshOptions& options) {
-    if (mesh.n_faces() == 0) {
-        return "cannot remesh: the mesh has no faces";
-    }
-    std::size_t polygons = 0;
-    for (Face f : mesh.faces()) {
-        polygons += mesh.valence(f) != 3;
-    }
-    if (polygons > 0) {
-        return "cannot remesh: remeshing needs triangles and " + std::to_string(polygons) +
-               " of the " + std::to_string(mesh.n_faces()) +
-               " faces are polygons (triangulate them first: the `triangulate` step, Ctrl+T in "
-               "the viewer)";
+    if (std::string why = refuse_unless_triangles(mesh, "remesh", "remeshing"); !why.empty()) {
+        return why;
     }
     if (options.iterations < 1 || options.iterations > 100) {
         return "cannot remesh: iterations must be from 1 to 100, not " +

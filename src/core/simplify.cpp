@@ -27,6 +27,7 @@
 #include "meshedit/core/memory.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/validate.h"
+#include "triangles_only.h"
 
 namespace meshedit {
 namespace {
@@ -353,18 +354,8 @@ private:
 }  // namespace
 
 std::string check_simplify(const Mesh& mesh, const SimplifyOptions& options) {
-    if (mesh.n_faces() == 0) {
-        return "cannot simplify: the mesh has no faces";
-    }
-    std::size_t polygons = 0;
-    for (Face f : mesh.faces()) {
-        polygons += mesh.valence(f) != 3;
-    }
-    if (polygons > 0) {
-        return "cannot simplify: QEM needs triangles and " + std::to_string(polygons) + " of the " +
-               std::to_string(mesh.n_faces()) +
-               " faces are polygons (triangulate them first: the `triangulate` step, Ctrl+T in "
-               "the viewer)";
+    if (std::string why = refuse_unless_triangles(mesh, "simplify", "QEM"); !why.empty()) {
+        return why;
     }
     if (options.target_faces == 0 || options.target_faces >= mesh.n_faces()) {
         return "cannot simplify: the target must be from 1 to " +
