@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_quality.h"
 #include "bench_real_meshes.h"
 #include "bench_util.h"
 #include "meshedit/core/build.h"
@@ -48,23 +49,14 @@
 namespace {
 
 namespace mb = meshedit::bench;
+using mb::Surface;
+using mb::surface_of;
 namespace fs = std::filesystem;
 using meshedit::Vec3;
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
 const char* const kImpls[] = {"meshedit", "meshoptimizer", "openmesh", "cgal"};
 constexpr std::size_t kTargetFaces = 100'000;
-constexpr int kSamples = 100'000;
-
-struct Surface {
-    std::vector<Vec3> points;
-    Triangles triangles;
-};
-
-Surface surface_of(const meshedit::Mesh& mesh) {
-    const meshedit::TriangleTree tree(mesh);
-    return {tree.points(), tree.triangles()};
-}
 
 Surface load_input(const std::string& job, const fs::path& data_dir) {
     if (job == "qem_torus_1m_to_100k") {
@@ -75,44 +67,6 @@ Surface load_input(const std::string& job, const fs::path& data_dir) {
     meshedit::loop_subdivide(bunny);
     meshedit::loop_subdivide(bunny);
     return surface_of(bunny);
-}
-
-// ------------------------------------------------------------------------------ quality
-
-// The largest distance from kSamples points on `from` (by area, fixed seed) to `to`.
-double one_sided(const Surface& from, const meshedit::TriangleTree& to) {
-    std::vector<double> cumulative;
-    cumulative.reserve(from.triangles.size());
-    double total = 0.0;
-    for (const auto& t : from.triangles) {
-        const Vec3& a = from.points[t[0]];
-        total += 0.5 * norm(cross(from.points[t[1]] - a, from.points[t[2]] - a));
-        cumulative.push_back(total);
-    }
-    std::mt19937 rng(17);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    double worst = 0.0;
-    for (int i = 0; i < kSamples; ++i) {
-        const auto at = std::lower_bound(cumulative.begin(), cumulative.end(), unit(rng) * total);
-        const auto& t = from.triangles[std::min<std::size_t>(at - cumulative.begin(),
-                                                             from.triangles.size() - 1)];
-        double r1 = std::sqrt(unit(rng)), r2 = unit(rng);
-        const Vec3 p = from.points[t[0]] * (1 - r1) + from.points[t[1]] * (r1 * (1 - r2)) +
-                       from.points[t[2]] * (r1 * r2);
-        worst = std::max(worst, std::sqrt(to.closest(p).distance_squared));
-    }
-    return worst;
-}
-
-double hausdorff_percent(const Surface& input, const Surface& result) {
-    const meshedit::TriangleTree in_tree(input.points, input.triangles);
-    const meshedit::TriangleTree out_tree(result.points, result.triangles);
-    meshedit::BoundingBox box;
-    for (const Vec3& p : input.points) {
-        box.add(p);
-    }
-    const double d = std::max(one_sided(input, out_tree), one_sided(result, in_tree));
-    return 100.0 * d / box.diagonal();
 }
 
 // ------------------------------------------------------------------------------ impls
@@ -308,7 +262,7 @@ int main(int argc, char** argv) {
         mb::print_result(job, impl, out.ms,
                          {{"faces_in", static_cast<double>(input.triangles.size())},
                           {"faces_out", static_cast<double>(out.result.triangles.size())},
-                          {"hausdorff_pct", hausdorff_percent(input, out.result)},
+                          {"hausdorff_pct", mb::hausdorff_percent(input, out.result)},
                           {"peak_rss_mb", mb::peak_rss_mb()}});
     } catch (const std::exception& e) {
         std::printf("NOTE %s %s failed: %s\n", job.c_str(), impl.c_str(), e.what());

@@ -63,8 +63,8 @@ DEFAULT_CONFIGS = {
         for impl in ("meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full")
     ],
 }
-PROGRAMS = ["bench_loop", "bench_catmark", "bench_simplify", "bench_ops", "bench_io_draw",
-            "bench_build", "bench_local_ops"]
+PROGRAMS = ["bench_loop", "bench_catmark", "bench_simplify", "bench_remesh", "bench_ops",
+            "bench_io_draw", "bench_build", "bench_local_ops"]
 QEM_JOBS = ("qem_torus_1m_to_100k", "qem_bunny_1m_to_100k")
 BUILD_SIZES = ("100k", "300k", "1m")
 # bench_local_ops (issue 16): no anchor, no target; the cost per op at each size, side by side.
@@ -86,6 +86,10 @@ JOB_TITLES = {
     "qem_torus_1m_to_100k": "QEM simplification of the 1M-triangle torus to 100,000 faces; "
     "`hausdorff_pct`: the sampled symmetric Hausdorff distance to the input, % of its "
     "bounding-box diagonal (the same sampler for every impl)",
+    "remesh_armadillo_208k": "Isotropic remeshing of armadillo (CGAL's demo data) "
+    "Loop-subdivided once (208,000 triangles), L = its mean edge length, 3 iterations; "
+    "`min_angle_deg`, `length_spread` (stddev / mean of the edge lengths) and `hausdorff_pct` "
+    "by the same code for both",
     "qem_bunny_1m_to_100k": "QEM simplification of bunny00 (CGAL's demo data) Loop-subdivided "
     "twice (1,206,528 triangles) to 100,000 faces; `hausdorff_pct` as above",
     "flips_1e6": "1,000,000 random edge flips on the 100k torus",
@@ -474,6 +478,27 @@ def qem_target_rows(jobs):
     return rows
 
 
+def remesh_target_rows(jobs):
+    """Issue 17's remeshing target: ≥ 3× faster than CGAL with min angle, edge-length spread
+    and Hausdorff distance no worse."""
+    res = ok_results(jobs.get("remesh_armadillo_208k", []))
+    me, cgal = res.get("meshedit"), res.get("cgal")
+    label = "isotropic remeshing, 3 iterations, 208k-face scan"
+    target = "≤ 1/3 of CGAL's time; min angle, length spread, Hausdorff no worse"
+    if me is None or cgal is None or not cgal["median_ms"] > 0:
+        return [(label, target, "not measured (remesh_armadillo_208k)", "n/a")]
+    r = me["median_ms"] / cgal["median_ms"]
+    checks = [r <= 1 / 3,
+              me.get("min_angle_deg", 0) >= cgal.get("min_angle_deg", 180),
+              me.get("length_spread", 1e9) <= cgal.get("length_spread", 0),
+              me.get("hausdorff_pct", 1e9) <= cgal.get("hausdorff_pct", 0)]
+    measured = (f"{r:.3f} of CGAL; min angle {me.get('min_angle_deg', 0):.2f}° vs "
+                f"{cgal.get('min_angle_deg', 0):.2f}°; spread {me.get('length_spread', 0):.3f} "
+                f"vs {cgal.get('length_spread', 0):.3f}; Hausdorff "
+                f"{me.get('hausdorff_pct', 0):.4f}% vs {cgal.get('hausdorff_pct', 0):.4f}%")
+    return [(label, target, measured, "yes" if all(checks) else "no")]
+
+
 def targets_table(jobs):
     rows = []
 
@@ -494,6 +519,7 @@ def targets_table(jobs):
     rows += subdivision_target_rows(jobs, "Catmull-Clark", "cc_1m_1level", "cc_100k_levels_{}",
                                     range(1, 4), "1M quads → 4M", "100k mixed faces")
     rows += qem_target_rows(jobs)
+    rows += remesh_target_rows(jobs)
     # Bytes per face after Loop: the first Loop job where MeshEdit and CGAL both report it.
     loop_jobs = ["loop_1m_1level"] + sorted(j for j in jobs if j.startswith("loop_") and
                                             j != "loop_1m_1level")

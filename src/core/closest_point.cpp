@@ -151,9 +151,15 @@ std::uint32_t TriangleTree::build_range(std::uint32_t begin, std::uint32_t end,
     return self;
 }
 
-TriangleTree::Hit TriangleTree::closest(const Vec3& p) const {
+TriangleTree::Hit TriangleTree::closest(const Vec3& p, std::uint32_t hint) const {
     Hit best;
     best.distance_squared = std::numeric_limits<double>::infinity();
+    if (hint < triangles_.size()) {
+        const auto& tri = triangles_[hint];
+        const Vec3 q =
+            closest_point_on_triangle(p, points_[tri[0]], points_[tri[1]], points_[tri[2]]);
+        best = {q, length_squared(p - q), hint};
+    }
     std::uint32_t stack[64];
     int top = 0;
     stack[top++] = 0;

@@ -29,8 +29,10 @@ public:
         double distance_squared = 0.0;
         std::uint32_t triangle = 0;  ///< index into the triangles given (or the fans' order)
     };
-    /// The closest point of the surface to p. \pre !empty().
-    Hit closest(const Vec3& p) const;
+    /// The closest point of the surface to p. \pre !empty(). A `hint` triangle (one near p,
+    /// such as the last answer for a point that moved a little) bounds the search from the
+    /// start; any index works, kInvalidIndex means none.
+    Hit closest(const Vec3& p, std::uint32_t hint = kInvalidIndex) const;
 
     bool empty() const { return triangles_.empty(); }
     const std::vector<Vec3>& points() const { return points_; }
