@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "meshedit/core/attributes.h"
@@ -340,7 +341,9 @@ StepResult run_remesh(Mesh& mesh, const Step& step, const RunOptions& options) {
     const RemeshReport report = remesh(mesh, remesh_with);
     StepResult result;
     result.renumbers = true;
-    result.message = "remeshed to edge length " + amount_text(report.target_length) + ": " +
+    char length[32];
+    std::snprintf(length, sizeof length, "%.4g", report.target_length);
+    result.message = "remeshed to edge length " + std::string(length) + ": " +
                      std::to_string(mesh.n_faces()) + " faces (" + std::to_string(report.splits) +
                      " splits, " + std::to_string(report.collapses) + " collapses, " +
                      std::to_string(report.flips) + " flips)";

@@ -2,6 +2,7 @@
 // (meshedit/ops/ops.h) through the edit funnel, on the selected elements or the whole mesh.
 
 #include <stdexcept>
+#include <vector>
 
 #include "meshedit/ops/ops.h"
 #include "meshedit/viewer/editor.h"
@@ -15,7 +16,14 @@ Outcome Editor::edit_mesh(std::string_view name) {
         return refused("no such edit: '" + std::string(name) + "'");
     }
     if (verb->accepts(ops::Target::None)) {
-        const ops::Step step = ops::make_step(name, doc_.mesh);
+        // Whole-mesh verbs with amounts take them from the tool settings (the info panel).
+        std::vector<double> amounts;
+        if (name == "simplify") {
+            amounts = {tools_.simplify_ratio};
+        } else if (name == "remesh") {
+            amounts = {tools_.remesh_length, static_cast<double>(tools_.remesh_iterations)};
+        }
+        const ops::Step step = ops::make_step(name, doc_.mesh, ElementRef{}, amounts);
         return edit([&] { return verb->check(doc_.mesh, step); },
                     [&](Document& doc) {
                         const ops::StepResult result = verb->run(doc.mesh, step, {});

@@ -172,6 +172,40 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
         ImGui::Text("%d × %d px", stats.width, stats.height);
     }
 
+    if (doc.mode != Mode::Curve && ImGui::CollapsingHeader("Global operations")) {
+        ToolSettings& tools = editor.tools();
+        float ratio = static_cast<float>(tools.simplify_ratio);
+        if (ImGui::SliderFloat("keep", &ratio, 0.01f, 0.99f, "%.2f of the faces")) {
+            tools.simplify_ratio = ratio;
+        }
+        if (ImGui::Button("simplify (D)")) {
+            requests.action = edit("simplify");
+        }
+        float length = static_cast<float>(tools.remesh_length);
+        if (ImGui::InputFloat("length", &length, 0.0f, 0.0f, "%.4g") && length >= 0.0f) {
+            tools.remesh_length = length;
+        }
+        ImGui::TextDisabled("0: the mean edge length");
+        ImGui::SliderInt("rounds", &tools.remesh_iterations, 1, 20);
+        if (ImGui::Button("remesh (Shift+R)")) {
+            requests.action = edit("remesh");
+        }
+        if (ImGui::Button("Catmull-Clark (Shift+C)")) {
+            requests.action = edit("catmull_clark");
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Loop (L)")) {
+            requests.action = edit("loop");
+        }
+        if (ImGui::Button("linear (Ctrl+L)")) {
+            requests.action = edit("linear");
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("triangulate (Ctrl+T)")) {
+            requests.action = edit("triangulate");
+        }
+    }
+
     if (doc.mode != Mode::Curve && ImGui::CollapsingHeader("Shading")) {
         RenderOptions& render = editor.view().render;
         bool changed = false;

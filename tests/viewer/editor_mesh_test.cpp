@@ -332,5 +332,30 @@ TEST(Editor, ShiftRRemeshes) {
     EXPECT_TRUE(test::identical(ed.mesh(), ball));
 }
 
+// The tool settings (the panel's "Global operations") set D's ratio and Shift+R's length and
+// rounds.
+TEST(Editor, ToolSettingsSetTheAmounts) {
+    const Mesh ball = shapes::icosphere(3);  // 1,280 triangles
+    Editor ed = editor_with(ball);
+    ed.tools().simplify_ratio = 0.25;
+    ASSERT_FALSE(ed.press(key_of('D'), 0).refused);
+    EXPECT_EQ(ed.mesh().n_faces(), 320u);
+
+    Editor remeshing = editor_with(ball);
+    remeshing.tools().remesh_length = 0.3;
+    remeshing.tools().remesh_iterations = 2;
+    Mesh expected = ball;
+    RemeshOptions options;
+    options.target_length = 0.3;
+    options.iterations = 2;
+    remesh(expected, options);
+    const Outcome out = remeshing.press(key_of('R'), kShift);
+    EXPECT_EQ(out.message.rfind("remeshed to edge length 0.3:", 0), 0u) << out.message;
+    EXPECT_TRUE(test::identical(remeshing.mesh(), expected));
+
+    remeshing.tools().remesh_iterations = 0;
+    EXPECT_TRUE(remeshing.press(key_of('R'), kShift).refused);
+}
+
 }  // namespace
 }  // namespace meshedit::viewer

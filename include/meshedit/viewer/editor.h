@@ -92,6 +92,14 @@ struct ViewState {
     bool trackball = false;  ///< free rotation instead of the turntable (O toggles)
 };
 
+/// The parameters of the whole-mesh operations the keys run (the info panel's "Global
+/// operations" section sets them): not part of the document, not undone.
+struct ToolSettings {
+    double simplify_ratio = 0.5;  ///< D keeps about this share of the faces (0 < r < 1)
+    double remesh_length = 0.0;   ///< Shift+R's target edge length; 0: the mean
+    int remesh_iterations = 3;    ///< Shift+R's rounds (1 to 100)
+};
+
 /// The viewer's logic: one class, its members spread over files by responsibility.
 ///
 ///   editor.cpp            run() and press(): dispatch through the key table; display
@@ -224,6 +232,8 @@ public:
     const ElementRef& hover() const { return hover_; }
     ViewState& view() { return view_; }
     const ViewState& view() const { return view_; }
+    ToolSettings& tools() { return tools_; }
+    const ToolSettings& tools() const { return tools_; }
     const History& history() const { return history_; }
     const std::filesystem::path& path() const { return path_; }
     /// Unsaved changes: the content differs from what was last opened or saved (undoing
@@ -298,6 +308,7 @@ private:
     Document doc_;
     History history_;
     ViewState view_;
+    ToolSettings tools_;
     ElementRef hover_;
     std::filesystem::path path_;
     std::uint64_t saved_revision_ = 0;
