@@ -250,6 +250,20 @@ void App::update_modal() {
     apply(editor_.modal_input(in));
 }
 
+void App::frame_mesh() {
+    // As reset_camera() frames, into the free part of the window, but from where the camera
+    // looks now.
+    if (!mesh_mode() || camera_.orthographic || editor_.mesh().n_vertices() == 0) {
+        return;
+    }
+    const glm::ivec2 size = framebuffer_size();
+    camera_.frame_mesh(editor_.mesh(),
+                       static_cast<float>(size.x - covered_pixels()) / static_cast<float>(size.y));
+    scene_center_ = camera_.target;
+    scene_radius_ = camera_.scene_radius;
+    update_camera_planes();
+}
+
 void App::frame_selection() {
     const auto box = editor_.selection_bounds();
     if (!box) {
@@ -475,6 +489,9 @@ void App::apply(const Outcome& outcome) {
     }
     if (c & kFrameSelection) {
         frame_selection();
+    }
+    if (c & kFrameMesh) {
+        frame_mesh();
     }
     if (c & kScreenshot) {
         write_screenshot();

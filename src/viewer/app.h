@@ -62,6 +62,9 @@ private:
     /// Centres the camera on the selection, close enough that it fills about a third of the
     /// view.
     void frame_selection();
+    /// Frames the whole mesh as reset_camera() does, keeping the viewing angle (after a
+    /// whole-mesh operation, which may shrink or grow the shape).
+    void frame_mesh();
     /// An interactive edit began (Editor::begin_modal): remember where the cursor and the
     /// selection's centre are. update_modal() feeds the cursor's motion since then.
     void start_modal();

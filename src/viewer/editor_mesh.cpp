@@ -29,7 +29,8 @@ Outcome Editor::edit_mesh(std::string_view name) {
                         const ops::StepResult result = verb->run(doc.mesh, step, {});
                         Edited edited;
                         edited.message = result.message;
-                        edited.changes = kTopology | kSelection;
+                        // A whole-mesh operation may shrink or grow the shape: frame it.
+                        edited.changes = kTopology | kSelection | kFrameMesh;
                         if (result.renumbers && doc.selection.kind != ElementRef::Kind::Vertex) {
                             edited.select = ElementRef{};  // only vertices keep their numbers
                         } else if (result.renumbers) {

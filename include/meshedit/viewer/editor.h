@@ -43,6 +43,7 @@ enum Change : unsigned {
     kDocument = 1u << 10,        ///< a different document (open, undo/redo): reframe nothing,
                                  ///< re-upload everything
     kFrameSelection = 1u << 11,  ///< the camera should centre on selection_bounds()
+    kFrameMesh = 1u << 12,       ///< the camera should frame the whole mesh, keeping its angle
 };
 
 /// What the window measured since the interactive edit began.
