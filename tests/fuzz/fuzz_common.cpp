@@ -13,7 +13,10 @@
 #include "meshedit/core/budget.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/quad_subdivision.h"
+#include "meshedit/core/remesh.h"
+#include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/ops/ops.h"
@@ -70,8 +73,8 @@ void one_local_op(Mesh& mesh, std::uint64_t seed) {
     using Kind = ElementRef::Kind;
     const auto all = ops::verbs();
     const ops::Verb& verb = all[seed % all.size()];
-    if (verb.plan != nullptr) {
-        return;  // subdivision: run below, on small meshes only
+    if (verb.plan != nullptr || verb.name == "simplify" || verb.name == "remesh") {
+        return;  // whole-mesh algorithms: run below, on small meshes, with sane amounts
     }
     seed >>= 5;
     std::vector<Kind> kinds;
@@ -191,6 +194,31 @@ void exercise(Mesh mesh, std::uint64_t seed) {
         Mesh loop = mesh;
         loop_subdivide(loop);
         check_valid(loop, "Loop");
+    }
+    SimplifyOptions half;
+    half.target_faces = std::max<std::size_t>(1, mesh.n_faces() / 2);
+    if (check_simplify(mesh, half).empty()) {
+        Mesh simplified = mesh;
+        simplify(simplified, half);
+        check_valid(simplified, "simplify");
+    }
+    // Remeshing at the mean length; not when that would make thousands of times more
+    // triangles (one huge face among tiny ones), which is valid but slow.
+    RemeshOptions once;
+    once.iterations = 1;
+    double area = 0.0, length = 0.0;
+    for (Face f : mesh.faces()) {
+        area += 0.5 * norm(face_area_vector(mesh, f));
+    }
+    for (Edge e : mesh.edges()) {
+        length += distance(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)));
+    }
+    length /= static_cast<double>(std::max<std::size_t>(1, mesh.n_edges()));
+    const bool modest = length > 0.0 && area / (0.43 * length * length) < 20.0 * kSmallFaces;
+    if (modest && check_remesh(mesh, once).empty()) {
+        Mesh remeshed = mesh;
+        remesh(remeshed, once);
+        check_valid(remeshed, "remesh");
     }
     if (plan_quad_subdivision(mesh).ok()) {
         quad_subdivide(mesh);
