@@ -91,7 +91,7 @@ JOB_TITLES = {
     "`min_angle_deg`, `length_spread` (stddev / mean of the edge lengths) and `hausdorff_pct` "
     "by the same code for both",
     "qem_bunny_1m_to_100k": "QEM simplification of bunny00 (CGAL's demo data) Loop-subdivided "
-    "twice (1,206,528 triangles) to 100,000 faces; `hausdorff_pct` as above",
+    "twice (1,206,530 triangles) to 100,000 faces; `hausdorff_pct` as above",
     "flips_1e6": "1,000,000 random edge flips on the 100k torus",
     "splits_1e6": "1,000,000 random edge splits on the 100k torus",
     "normals_6p4m": "Area-weighted vertex normals, 6.4M faces "
