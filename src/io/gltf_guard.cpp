@@ -68,7 +68,7 @@ void check_json_depth(std::string_view bytes, bool binary, const std::string& fi
 }
 
 ConfinedFiles::ConfinedFiles(const std::optional<fs::path>& given, std::size_t max_bytes)
-    : max_bytes_(max_bytes), no_files_(!given) {
+    : no_files_(!given), max_bytes_(max_bytes) {
     const fs::path folder = given.value_or(fs::path());
     std::error_code ec;
     root_ =
