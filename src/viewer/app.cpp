@@ -71,6 +71,8 @@ void load_ui_font(float scale) {
 
 App::App(const ViewerOptions& options) {
     editor_.view().up = options.up;
+    editor_.set_progress_hook(
+        [this](std::string_view verb, double fraction) { show_progress(verb, fraction); });
     glfwSetErrorCallback([](int code, const char* text) {
         std::fprintf(stderr, "meshedit: GLFW error %d: %s\n", code, text);
     });
@@ -466,6 +468,7 @@ void App::open_file(const std::filesystem::path& path) {
 
 void App::apply(const Outcome& outcome) {
     redraw_frames_ = kSettleFrames;
+    progress_started_ = -1.0;  // the next operation's progress starts afresh
     if (!outcome.message.empty()) {
         set_status(outcome.message, outcome.refused);
     }
@@ -736,6 +739,29 @@ void App::draw_frame() {
     if (requests.action) {
         apply(editor_.run(*requests.action));
     }
+}
+
+void App::show_progress(std::string_view verb, double fraction) {
+    const double now = glfwGetTime();
+    if (fraction <= 0.0 || progress_started_ < 0.0) {
+        progress_started_ = now;  // a new operation
+        progress_drawn_ = now;
+    }
+    if (now - progress_started_ < 0.3 || now - progress_drawn_ < 0.1) {
+        return;
+    }
+    progress_drawn_ = now;
+    const glm::ivec2 size = framebuffer_size();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, size.x, size.y);
+    draw_scene(size.x, size.y);  // the GPU still holds the mesh as it was
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    panels_.draw_progress(std::string(verb), fraction, now - progress_started_);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    glfwSwapBuffers(window_);
 }
 
 void App::write_screenshot() {

@@ -65,6 +65,10 @@ private:
     /// Frames the whole mesh as reset_camera() does, keeping the viewing angle (after a
     /// whole-mesh operation, which may shrink or grow the shape).
     void frame_mesh();
+    /// The editor's progress hook: from 0.3 s into a whole-mesh operation on, at most ten
+    /// times a second, draws the 3D view as it was and a progress bar (nothing that reads the
+    /// half-built document; no event handling).
+    void show_progress(std::string_view verb, double fraction);
     /// An interactive edit began (Editor::begin_modal): remember where the cursor and the
     /// selection's centre are. update_modal() feeds the cursor's motion since then.
     void start_modal();
@@ -117,6 +121,8 @@ private:
     double last_cursor_time_ = 0.0;  ///< glfwGetTime() of the last cursor motion
     int redraw_frames_ = 3;          ///< frames still to draw (ImGui settles over a few)
     double last_frame_ms_ = 0.0;
+    double progress_started_ = -1.0;  ///< glfwGetTime() when the running operation began
+    double progress_drawn_ = 0.0;     ///< glfwGetTime() of the last progress frame
     double last_pick_ms_ = 0.0;
     bool quit_ = false;
 

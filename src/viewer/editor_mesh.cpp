@@ -26,7 +26,11 @@ Outcome Editor::edit_mesh(std::string_view name) {
         const ops::Step step = ops::make_step(name, doc_.mesh, ElementRef{}, amounts);
         return edit([&] { return verb->check(doc_.mesh, step); },
                     [&](Document& doc) {
-                        const ops::StepResult result = verb->run(doc.mesh, step, {});
+                        ops::RunOptions run;
+                        if (progress_hook_) {
+                            run.progress = [&](double f) { progress_hook_(name, f); };
+                        }
+                        const ops::StepResult result = verb->run(doc.mesh, step, run);
                         Edited edited;
                         edited.message = result.message;
                         // A whole-mesh operation may shrink or grow the shape: frame it.

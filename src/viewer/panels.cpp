@@ -329,6 +329,19 @@ void Panels::draw_help(Mode mode) {
     ImGui::End();
 }
 
+void Panels::draw_progress(const std::string& verb, double fraction, double seconds) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(
+        ImVec2(viewport->WorkPos.x + 8, viewport->WorkPos.y + viewport->WorkSize.y - 8),
+        ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.7f);
+    if (ImGui::Begin("status", nullptr, kOverlayFlags)) {
+        ImGui::Text("%s: %.0f%% (%.1f s)", verb.c_str(), 100.0 * fraction, seconds);
+        ImGui::ProgressBar(static_cast<float>(fraction), ImVec2(240.0f * scale_, 0.0f), "");
+    }
+    ImGui::End();
+}
+
 void Panels::draw_status(const Editor& editor, const std::string& status, bool status_error) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(

@@ -48,6 +48,10 @@ public:
     void submit_prompt() { submit_ = true; }
     void cancel_prompt() { cancel_ = true; }
 
+    /// The status line's place during a long whole-mesh operation: "verb: 42% (3.1 s)" and a
+    /// bar. Reads nothing of the document.
+    void draw_progress(const std::string& verb, double fraction, double seconds);
+
     /// True if `point` (window coordinates) lies on a panel drawn in the last frame.
     bool contains(glm::vec2 point) const;
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -355,6 +356,21 @@ TEST(Editor, ToolSettingsSetTheAmounts) {
 
     remeshing.tools().remesh_iterations = 0;
     EXPECT_TRUE(remeshing.press(key_of('R'), kShift).refused);
+}
+
+// A whole-mesh operation reports its progress through the hook: its verb, from 0 up to 1.
+TEST(Editor, ProgressHookSeesTheOperationRise) {
+    Editor ed = editor_with(shapes::icosphere(3));
+    std::vector<double> seen;
+    ed.set_progress_hook([&](std::string_view verb, double f) {
+        EXPECT_EQ(verb, "remesh");
+        seen.push_back(f);
+    });
+    ASSERT_FALSE(ed.press(key_of('R'), kShift).refused);
+    ASSERT_GE(seen.size(), 2u);
+    EXPECT_EQ(seen.front(), 0.0);
+    EXPECT_EQ(seen.back(), 1.0);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
 }
 
 }  // namespace

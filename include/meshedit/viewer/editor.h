@@ -235,6 +235,11 @@ public:
     const ViewState& view() const { return view_; }
     ToolSettings& tools() { return tools_; }
     const ToolSettings& tools() const { return tools_; }
+    /// Called during a whole-mesh operation with its verb and the fraction done (0…1, coarse
+    /// intervals), so the window can show progress; it must not touch the document, which is
+    /// half built at that moment.
+    using ProgressHook = std::function<void(std::string_view verb, double fraction)>;
+    void set_progress_hook(ProgressHook hook) { progress_hook_ = std::move(hook); }
     const History& history() const { return history_; }
     const std::filesystem::path& path() const { return path_; }
     /// Unsaved changes: the content differs from what was last opened or saved (undoing
@@ -310,6 +315,7 @@ private:
     History history_;
     ViewState view_;
     ToolSettings tools_;
+    ProgressHook progress_hook_;
     ElementRef hover_;
     std::filesystem::path path_;
     std::uint64_t saved_revision_ = 0;
