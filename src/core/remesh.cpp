@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <vector>
 
 #include "collapse_guard.h"
@@ -33,6 +34,7 @@
 #include "meshedit/core/validate.h"
 #include "parallel.h"
 #include "triangles_only.h"
+#include "unit_scale.h"
 
 namespace meshedit {
 namespace {
@@ -46,18 +48,26 @@ constexpr int kMaxSplitPasses = 40;
 constexpr std::size_t kParallelVertices = 50'000;
 constexpr std::size_t kChunk = 4096;
 
-double mean_edge_length(const Mesh& mesh) {
+// Both in the units of the mesh scaled by 2^exponent (unit_scale.h), so that huge or tiny
+// coordinates neither overflow nor underflow when squared.
+double mean_edge_length(const Mesh& mesh, int exponent = 0) {
     double sum = 0.0;
     for (Edge e : mesh.edges()) {
-        sum += distance(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)));
+        sum += distance(scaled_point(mesh.position(mesh.vertex(e, 0)), exponent),
+                        scaled_point(mesh.position(mesh.vertex(e, 1)), exponent));
     }
     return mesh.n_edges() > 0 ? sum / static_cast<double>(mesh.n_edges()) : 0.0;
 }
 
-double surface_area(const Mesh& mesh) {
+double surface_area(const Mesh& mesh, int exponent) {
     double area = 0.0;
     for (Face f : mesh.faces()) {
-        area += 0.5 * norm(face_area_vector(mesh, f));
+        Vec3 c[3];
+        int i = 0;
+        for (Vertex v : mesh.vertices(f)) {
+            c[i++] = scaled_point(mesh.position(v), exponent);
+        }
+        area += 0.5 * norm(cross(c[1] - c[0], c[2] - c[0]));
     }
     return area;
 }
@@ -301,17 +311,23 @@ std::string check_remesh(const Mesh& mesh, const RemeshOptions& options) {
         return "cannot remesh: the target edge length must be a positive number (0: the mean "
                "edge length)";
     }
-    const double length =
-        options.target_length > 0.0 ? options.target_length : mean_edge_length(mesh);
+    // In the scaled units remesh() works in.
+    const int exponent = -unit_exponent(mesh);
+    const double length = options.target_length > 0.0 ? std::ldexp(options.target_length, exponent)
+                                                      : mean_edge_length(mesh, exponent);
     // An equilateral triangle of side L has area √3/4 · L².
-    const double triangles = surface_area(mesh) / (std::sqrt(3.0) / 4.0 * length * length);
+    const double triangles =
+        surface_area(mesh, exponent) / (std::sqrt(3.0) / 4.0 * length * length);
+    char shown[32];
+    std::snprintf(shown, sizeof shown, "%.4g", std::ldexp(length, -exponent));
     if (!(length > 0.0) || !(triangles < 1e8)) {
-        return "cannot remesh: an edge length of " + std::to_string(length) + " would make about " +
-               std::to_string(static_cast<long long>(triangles)) +
-               " triangles (at most 100,000,000)";
+        const std::string count =
+            triangles < 1e18 ? std::to_string(static_cast<long long>(triangles)) : "1e18 or more";
+        return "cannot remesh: an edge length of " + std::string(shown) + " would make about " +
+               count + " triangles (at most 100,000,000)";
     }
     if (const auto over = over_budget(triangles * 200.0)) {
-        return "cannot remesh: an edge length of " + std::to_string(length) + " " + *over;
+        return "cannot remesh: an edge length of " + std::string(shown) + " " + *over;
     }
     return {};
 }
@@ -324,7 +340,15 @@ RemeshReport remesh(Mesh& mesh, const RemeshOptions& options) {
     if (mesh.has_garbage()) {
         mesh.garbage_collection();
     }
-    const RemeshReport report = Remesher(mesh, options).run();
+    RemeshReport report;
+    {
+        // Lengths and areas square coordinates: keep them near 1, the target scaled alike.
+        const UnitScale unit(mesh);
+        RemeshOptions scaled = options;
+        scaled.target_length = unit.scaled(options.target_length);
+        report = Remesher(mesh, scaled).run();
+        report.target_length = unit.unscaled(report.target_length);
+    }
     MESHEDIT_ASSERT(!validate(mesh));
     return report;
 }

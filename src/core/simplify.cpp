@@ -28,6 +28,7 @@
 #include "meshedit/core/normals.h"
 #include "meshedit/core/validate.h"
 #include "triangles_only.h"
+#include "unit_scale.h"
 
 namespace meshedit {
 namespace {
@@ -376,7 +377,11 @@ SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options) {
     if (options.progress) {
         options.progress(0.0);
     }
-    const SimplifyReport report = Simplifier(mesh, options).run();
+    SimplifyReport report;
+    {
+        const UnitScale unit(mesh);  // quadrics square coordinates: keep them near 1
+        report = Simplifier(mesh, options).run();
+    }
     MESHEDIT_ASSERT(!validate(mesh));
     return report;
 }

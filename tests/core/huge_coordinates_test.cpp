@@ -10,7 +10,9 @@
 #include <cstdint>
 
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/remesh.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
 #include "support/mesh_compare.h"
 
@@ -85,6 +87,51 @@ TEST(HugeCoordinates, SplitAndCollapsePutTheMidpointInRange) {
         EXPECT_VALID(huge);
         EXPECT_TRUE(test::identical(huge, scaled(expected, kExponent)));
     }
+}
+
+}  // namespace
+}  // namespace meshedit
+
+namespace meshedit {
+namespace {
+
+Mesh scaled_by_power_of_two(Mesh mesh, int exponent) {
+    for (Vertex v : mesh.vertices()) {
+        Vec3& p = mesh.position(v);
+        p = {std::ldexp(p.x, exponent), std::ldexp(p.y, exponent), std::ldexp(p.z, exponent)};
+    }
+    return mesh;
+}
+
+// QEM and remeshing square coordinates; near 1e300 that overflows and near 1e-300 underflows.
+// Both work on the mesh scaled by a power of two, so the huge and tiny spheres come out as
+// the unit sphere's result, scaled, bit for bit.
+TEST(HugeCoordinates, SimplifyAndRemeshDoNotDependOnScale) {
+    const Mesh unit = shapes::icosphere(3);
+    SimplifyOptions half;
+    half.target_faces = 640;
+    RemeshOptions remesh_with;
+    remesh_with.target_length = 0.15;
+    Mesh simplified = unit, remeshed = unit;
+    simplify(simplified, half);
+    simplified.garbage_collection();
+    remesh(remeshed, remesh_with);
+    for (const int exponent : {990, -1000}) {
+        SCOPED_TRACE(exponent);
+        Mesh a = scaled_by_power_of_two(unit, exponent);
+        ASSERT_EQ(check_simplify(a, half), "");
+        simplify(a, half);
+        a.garbage_collection();
+        EXPECT_TRUE(test::identical(a, scaled_by_power_of_two(simplified, exponent)));
+        Mesh b = scaled_by_power_of_two(unit, exponent);
+        RemeshOptions scaled = remesh_with;
+        scaled.target_length = std::ldexp(0.15, exponent);
+        ASSERT_EQ(check_remesh(b, scaled), "");
+        remesh(b, scaled);
+        EXPECT_TRUE(test::identical(b, scaled_by_power_of_two(remeshed, exponent)));
+    }
+    // The default length (the mean) is measured without overflow too.
+    EXPECT_EQ(check_remesh(scaled_by_power_of_two(unit, 1000), RemeshOptions{}), "");
 }
 
 }  // namespace
