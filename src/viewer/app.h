@@ -120,6 +120,9 @@ private:
     bool cursor_moved_ = true;       ///< the hover pick is stale
     double last_cursor_time_ = 0.0;  ///< glfwGetTime() of the last cursor motion
     int redraw_frames_ = 3;          ///< frames still to draw (ImGui settles over a few)
+    // Frames drawn after any input: an ImGui window that changed its content (a header opened)
+    // takes two more frames to resize to it.
+    static constexpr int kSettleFrames = 3;
     double last_frame_ms_ = 0.0;
     double progress_started_ = -1.0;  ///< glfwGetTime() when the running operation began
     double progress_drawn_ = 0.0;     ///< glfwGetTime() of the last progress frame

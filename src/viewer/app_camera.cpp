@@ -1,0 +1,90 @@
+// The window's camera: framing the document (at the start, after Space, after a whole-mesh
+// operation), the selection (.), and the room the info panel takes.
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "app.h"
+
+namespace meshedit::viewer {
+
+void App::frame_mesh() {
+    // As reset_camera() frames, into the free part of the window, but from where the camera
+    // looks now.
+    if (!mesh_mode() || camera_.orthographic || editor_.mesh().n_vertices() == 0) {
+        return;
+    }
+    const glm::ivec2 size = framebuffer_size();
+    camera_.frame_mesh(editor_.mesh(),
+                       static_cast<float>(size.x - covered_pixels()) / static_cast<float>(size.y));
+    scene_center_ = camera_.target;
+    scene_radius_ = camera_.scene_radius;
+    update_camera_planes();
+}
+
+void App::frame_selection() {
+    const auto box = editor_.selection_bounds();
+    if (!box) {
+        return;
+    }
+    const Vec3 c = (box->first + box->second) * 0.5;
+    const double r = std::max(0.5 * norm(box->second - box->first), 0.02 * scene_radius_);
+    camera_.target = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
+    if (camera_.orthographic) {
+        camera_.ortho_height = static_cast<float>(3.0 * r);
+    } else {
+        const double half_fov = glm::radians(camera_.fov_y_deg) / 2.0;
+        camera_.distance = static_cast<float>(1.5 * r / std::sin(half_fov));
+    }
+    update_camera_planes();
+}
+
+int App::covered_pixels() const {
+    if (!editor_.view().show_info) {
+        return 0;
+    }
+    int w = 1, h = 1;
+    glfwGetWindowSize(window_, &w, &h);
+    const int fb = framebuffer_size().x;
+    // Window coordinates to framebuffer pixels (HiDPI); at most half the view.
+    const float px = panels_.info_right_edge() * static_cast<float>(fb) / static_cast<float>(w);
+    return std::clamp(static_cast<int>(std::lround(px)), 0, fb / 2);
+}
+
+void App::keep_room_for_panels() {
+    camera_.lens_shift_x =
+        static_cast<float>(covered_pixels()) / static_cast<float>(framebuffer_size().x);
+}
+
+void App::reset_camera() {
+    // Framed into the part of the window the info panel leaves free, and centred there: the
+    // same picture as `meshedit render` at that part's size.
+    const glm::ivec2 size = framebuffer_size();
+    const float a = static_cast<float>(size.x - covered_pixels()) / static_cast<float>(size.y);
+    camera_ = Camera();
+    keep_room_for_panels();
+    camera_.up = editor_.view().up;
+    if (!mesh_mode()) {
+        camera_.frame_2d({0.0f, 0.0f}, {1.0f, 1.0f}, a);
+    } else {
+        camera_.frame_mesh(editor_.mesh(), a);  // as `meshedit render`, in the free part
+    }
+    camera_.set_trackball(editor_.view().trackball && !camera_.orthographic);
+    scene_center_ = camera_.target;
+    scene_radius_ = camera_.orthographic ? 1.0f : camera_.scene_radius;
+    cursor_moved_ = true;
+    redraw_frames_ = kSettleFrames;
+}
+
+void App::update_camera_planes() {
+    // Near and far planes follow the scene's sphere even when the target has wandered off
+    // its centre (pan, zoom to cursor).
+    if (!camera_.orthographic) {
+        camera_.scene_radius = scene_radius_ + glm::length(camera_.target - scene_center_);
+    }
+    cursor_moved_ = true;
+}
+
+}  // namespace meshedit::viewer
