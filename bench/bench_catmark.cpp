@@ -187,29 +187,23 @@ int usage() {
 
 int main(int argc, char** argv) {
     mb::take_common_flags(argc, argv);
-    if (argc == 2 && std::string(argv[1]) == "--list") {
-        for (const Job& job : all_jobs()) {
-            for (const char* impl : kImpls) {
-                std::printf("%s %s\n", job.name.c_str(), impl);
-            }
-        }
-        return 0;
-    }
     mb::JobArgs args;
     if (!mb::parse_job_args(argc, argv, args)) {
         return usage();
     }
+    std::vector<std::string> names;
     std::optional<Job> job;
     for (const Job& j : all_jobs()) {
+        names.push_back(j.name);
         if (j.name == args.job) {
             job = j;
         }
     }
-    bool known_impl = false;
-    for (const char* name : kImpls) {
-        known_impl = known_impl || args.impl == name;
+    if (args.list) {
+        mb::print_pairs(names, kImpls);
+        return 0;
     }
-    if (!job || !known_impl || args.runs < 1) {
+    if (!job || !mb::one_of(kImpls, args.impl)) {
         return usage();
     }
     const std::string& impl = args.impl;

@@ -335,15 +335,17 @@ int usage() {
 int main(int argc, char** argv) {
     mb::take_common_flags(argc, argv);
     const auto all = jobs();
-    if (argc == 2 && std::string(argv[1]) == "--list") {
-        for (const auto& [job, spec] : all) {
-            std::printf("%s meshedit\n", job.c_str());
-        }
-        return 0;
-    }
     mb::JobArgs args;
     if (!mb::parse_job_args(argc, argv, args)) {
         return usage();
+    }
+    if (args.list) {
+        std::vector<std::string> names;
+        for (const auto& [job, spec] : all) {
+            names.push_back(job);
+        }
+        mb::print_pairs(names, std::vector<std::string>{"meshedit"});
+        return 0;
     }
     const std::string& job = args.job;
     const std::string& impl = args.impl;

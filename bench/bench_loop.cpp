@@ -65,6 +65,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_cgal.h"
 #include "bench_real_meshes.h"
 #include "bench_subdivision.h"
 #include "bench_util.h"
@@ -87,11 +88,8 @@ const char* const kImpls[] = {"meshedit", "openmesh", "cgal", "opensubdiv_min", 
 
 // ------------------------------------------------------------------------------ inputs
 
-/// The shared input: positions and triangles (counter-clockwise), every vertex referenced.
-struct Input {
-    std::vector<Vec3> positions;
-    std::vector<std::array<std::uint32_t, 3>> triangles;
-};
+/// The shared input: points and triangles (counter-clockwise), every vertex referenced.
+using Input = meshedit::bench::Surface;
 
 /// Triangles of a soup of triangles (anything else is an error: all inputs here are triangles).
 Input input_from_soup(const meshedit::PolygonSoup& soup) {
@@ -105,8 +103,8 @@ Input input_from_soup(const meshedit::PolygonSoup& soup) {
         for (int i = 0; i < 3; ++i) {
             const std::uint32_t v = soup.indices[soup.face_offsets[f] + i];
             if (remap[v] == UINT32_MAX) {
-                remap[v] = static_cast<std::uint32_t>(in.positions.size());
-                in.positions.push_back(soup.positions[v]);
+                remap[v] = static_cast<std::uint32_t>(in.points.size());
+                in.points.push_back(soup.positions[v]);
             }
             t[i] = remap[v];
         }
@@ -163,13 +161,7 @@ using meshedit::bench::Outcome;
 
 Outcome run_meshedit(const Input& in, int levels, int runs,
                      const std::function<void()>& before_copy) {
-    meshedit::PolygonSoup soup;
-    soup.positions = in.positions;
-    for (const auto& t : in.triangles) {
-        soup.add_face({t[0], t[1], t[2]});
-    }
-    const meshedit::Mesh input = meshedit::build_mesh(soup);
-    soup = {};
+    const meshedit::Mesh input = meshedit::bench::mesh_of(in);
     meshedit::Mesh mesh;
     Outcome out;
     out.ms = time_runs(
@@ -197,8 +189,8 @@ Outcome run_openmesh(const Input& in, int levels, int runs,
                      const std::function<void()>& before_copy) {
     OMesh input;
     std::vector<OMesh::VertexHandle> vh;
-    vh.reserve(in.positions.size());
-    for (const Vec3& p : in.positions) {
+    vh.reserve(in.points.size());
+    for (const Vec3& p : in.points) {
         vh.push_back(input.add_vertex(OMesh::Point(static_cast<float>(p.x), static_cast<float>(p.y),
                                                    static_cast<float>(p.z))));
     }
@@ -228,23 +220,10 @@ Outcome run_openmesh(const Input& in, int levels, int runs,
     return out;
 }
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using CMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using CMesh = meshedit::bench::CgalMesh;
 
 Outcome run_cgal(const Input& in, int levels, int runs, const std::function<void()>& before_copy) {
-    CMesh input;
-    using Size = CMesh::size_type;
-    input.reserve(static_cast<Size>(in.positions.size()),
-                  static_cast<Size>(3 * in.triangles.size() / 2),
-                  static_cast<Size>(in.triangles.size()));
-    std::vector<CMesh::Vertex_index> vh;
-    vh.reserve(in.positions.size());
-    for (const Vec3& p : in.positions) {
-        vh.push_back(input.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-    }
-    for (const auto& t : in.triangles) {
-        input.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
-    }
+    const CMesh input = meshedit::bench::cgal_mesh(in);
     if (input.number_of_faces() != in.triangles.size()) {
         std::printf("NOTE cgal: %zu of %zu input triangles refused by add_face\n",
                     in.triangles.size() - input.number_of_faces(), in.triangles.size());
@@ -278,8 +257,8 @@ Outcome run_opensubdiv(const Input& in, int levels, int runs, bool full_topology
         corners.insert(corners.end(),
                        {static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
     }
-    return meshedit::bench::run_opensubdiv(OpenSubdiv::Sdc::SCHEME_LOOP, in.positions, sizes,
-                                           corners, levels, runs, full_topology, before_copy);
+    return meshedit::bench::run_opensubdiv(OpenSubdiv::Sdc::SCHEME_LOOP, in.points, sizes, corners,
+                                           levels, runs, full_topology, before_copy);
 }
 
 // ------------------------------------------------------------------------------ main
@@ -295,45 +274,29 @@ int usage() {
 
 int main(int argc, char** argv) {
     meshedit::bench::take_common_flags(argc, argv);
-    std::string job_name;
-    std::string impl;
-    int runs = 5;
-    fs::path data_dir = fs::canonical("/proc/self/exe").parent_path() / "loop_data";
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        const bool has_value = i + 1 < argc;
-        if (arg == "--list") {
-            for (const Job& job : all_jobs()) {
-                for (const char* name : kImpls) {
-                    std::printf("%s %s\n", job.name.c_str(), name);
-                }
-            }
-            return 0;
-        } else if (arg == "--job" && has_value) {
-            job_name = argv[++i];
-        } else if (arg == "--impl" && has_value) {
-            impl = argv[++i];
-        } else if (arg == "--runs" && has_value) {
-            runs = std::atoi(argv[++i]);
-        } else if (arg == "--data" && has_value) {
-            data_dir = argv[++i];
-        } else {
-            return usage();
-        }
+    meshedit::bench::JobArgs args;
+    if (!meshedit::bench::parse_job_args(argc, argv, args)) {
+        return usage();
     }
+    std::vector<std::string> names;
     std::optional<Job> job;
     for (const Job& j : all_jobs()) {
-        if (j.name == job_name) {
+        names.push_back(j.name);
+        if (j.name == args.job) {
             job = j;
         }
     }
-    bool known_impl = false;
-    for (const char* name : kImpls) {
-        known_impl = known_impl || impl == name;
+    if (args.list) {
+        meshedit::bench::print_pairs(names, kImpls);
+        return 0;
     }
-    if (!job || !known_impl || runs < 1) {
+    if (!job || !meshedit::bench::one_of(kImpls, args.impl)) {
         return usage();
     }
+    const std::string& job_name = args.job;
+    const std::string& impl = args.impl;
+    const int runs = args.runs;
+    const fs::path& data_dir = args.data;
 
     Input input;
     try {

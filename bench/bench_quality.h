@@ -12,7 +12,9 @@
 #include <set>
 #include <vector>
 
+#include "meshedit/core/build.h"
 #include "meshedit/core/closest_point.h"
+#include "meshedit/core/display_fan.h"
 #include "meshedit/core/mesh.h"
 
 namespace meshedit::bench {
@@ -25,9 +27,32 @@ struct Surface {
     Triangles triangles;
 };
 
-inline Surface surface_of(const meshedit::Mesh& mesh) {
-    const meshedit::TriangleTree tree(mesh);
-    return {tree.points(), tree.triangles()};
+/// The halfedge mesh of a surface (build_mesh(), as every MeshEdit run starts from).
+inline Mesh mesh_of(const Surface& s) {
+    PolygonSoup soup;
+    soup.positions = s.points;
+    for (const auto& t : s.triangles) {
+        soup.add_face({t[0], t[1], t[2]});
+    }
+    return build_mesh(soup);
+}
+
+/// The triangles of a mesh (polygons cut as the renderer cuts them), its live vertices
+/// numbered densely.
+inline Surface surface_of(const Mesh& mesh) {
+    Surface out;
+    std::vector<std::uint32_t> index(mesh.vertices_size(), 0);
+    for (Vertex v : mesh.vertices()) {
+        index[v.idx()] = static_cast<std::uint32_t>(out.points.size());
+        out.points.push_back(mesh.position(v));
+    }
+    for (Face f : mesh.faces()) {
+        for_each_fan_triangle(mesh, f, [&](std::size_t, Vertex c0, Halfedge h) {
+            out.triangles.push_back({index[c0.idx()], index[mesh.from_vertex(h).idx()],
+                                     index[mesh.to_vertex(h).idx()]});
+        });
+    }
+    return out;
 }
 
 // The largest distance from kSamples points on `from` (by area, fixed seed) to `to`.

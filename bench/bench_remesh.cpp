@@ -16,13 +16,12 @@
 // lengths), hausdorff_pct (sampled, symmetric, % of the input's bounding-box diagonal).
 
 #include <CGAL/Polygon_mesh_processing/remesh.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "bench_cgal.h"
 #include "bench_quality.h"
 #include "bench_real_meshes.h"
 #include "bench_util.h"
@@ -58,12 +57,7 @@ struct Outcome {
 };
 
 Outcome run_meshedit(const Surface& in, double length, int runs) {
-    meshedit::PolygonSoup soup;
-    soup.positions = in.points;
-    for (const auto& t : in.triangles) {
-        soup.add_face({t[0], t[1], t[2]});
-    }
-    const meshedit::Mesh input = meshedit::build_mesh(soup);
+    const meshedit::Mesh input = mb::mesh_of(in);
     meshedit::Mesh mesh;
     meshedit::RemeshOptions options;
     options.target_length = length;
@@ -75,18 +69,11 @@ Outcome run_meshedit(const Surface& in, double length, int runs) {
     return out;
 }
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using CMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Kernel = mb::CgalKernel;
+using CMesh = mb::CgalMesh;
 
 Outcome run_cgal(const Surface& in, double length, int runs) {
-    CMesh input;
-    std::vector<CMesh::Vertex_index> vh;
-    for (const Vec3& p : in.points) {
-        vh.push_back(input.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-    }
-    for (const auto& t : in.triangles) {
-        input.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
-    }
+    const CMesh input = mb::cgal_mesh(in);
     CMesh mesh;
     Outcome out;
     out.ms = mb::time_runs(
@@ -95,19 +82,7 @@ Outcome run_cgal(const Surface& in, double length, int runs) {
             CGAL::Polygon_mesh_processing::isotropic_remeshing(
                 faces(mesh), length, mesh, CGAL::parameters::number_of_iterations(kIterations));
         });
-    mesh.collect_garbage();
-    for (auto v : mesh.vertices()) {
-        const auto& p = mesh.point(v);
-        out.result.points.push_back({p.x(), p.y(), p.z()});
-    }
-    for (auto f : mesh.faces()) {
-        std::array<std::uint32_t, 3> t{};
-        int i = 0;
-        for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-            t[i++] = static_cast<std::uint32_t>(v.idx());
-        }
-        out.result.triangles.push_back(t);
-    }
+    out.result = mb::surface_of(mesh);
     return out;
 }
 
@@ -123,30 +98,23 @@ int usage() {
 
 int main(int argc, char** argv) {
     mb::take_common_flags(argc, argv);
-    std::string job, impl;
-    int runs = 5;
-    fs::path data_dir = fs::canonical("/proc/self/exe").parent_path() / "loop_data";
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        const bool has_value = i + 1 < argc;
-        if (arg == "--list") {
-            std::printf("%s meshedit\n%s cgal\n", kJob, kJob);
-            return 0;
-        } else if (arg == "--job" && has_value) {
-            job = argv[++i];
-        } else if (arg == "--impl" && has_value) {
-            impl = argv[++i];
-        } else if (arg == "--runs" && has_value) {
-            runs = std::atoi(argv[++i]);
-        } else if (arg == "--data" && has_value) {
-            data_dir = argv[++i];
-        } else {
-            return usage();
-        }
-    }
-    if (job != kJob || (impl != "meshedit" && impl != "cgal") || runs < 1) {
+    const std::string jobs[] = {kJob};
+    const std::string impls[] = {"meshedit", "cgal"};
+    mb::JobArgs args;
+    if (!mb::parse_job_args(argc, argv, args)) {
         return usage();
     }
+    if (args.list) {
+        mb::print_pairs(jobs, impls);
+        return 0;
+    }
+    if (!mb::one_of(jobs, args.job) || !mb::one_of(impls, args.impl)) {
+        return usage();
+    }
+    const std::string& job = args.job;
+    const std::string& impl = args.impl;
+    const int runs = args.runs;
+    const fs::path& data_dir = args.data;
     try {
         meshedit::Mesh armadillo =
             meshedit::build_mesh(mb::read_off(mb::real_mesh_path("armadillo", data_dir)));

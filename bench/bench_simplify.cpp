@@ -19,8 +19,6 @@
 // and result, sampled (100,000 points on each surface by area, each measured to the other
 // through TriangleTree), as a percentage of the input's bounding-box diagonal.
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
@@ -37,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_cgal.h"
 #include "bench_quality.h"
 #include "bench_real_meshes.h"
 #include "bench_util.h"
@@ -77,12 +76,7 @@ struct Outcome {
 };
 
 Outcome run_meshedit(const Surface& in, int runs) {
-    meshedit::PolygonSoup soup;
-    soup.positions = in.points;
-    for (const auto& t : in.triangles) {
-        soup.add_face({t[0], t[1], t[2]});
-    }
-    const meshedit::Mesh input = meshedit::build_mesh(soup);
+    const meshedit::Mesh input = mb::mesh_of(in);
     meshedit::Mesh mesh;
     meshedit::SimplifyOptions options;
     options.target_faces = kTargetFaces;
@@ -167,19 +161,12 @@ Outcome run_openmesh(const Surface& in, int runs) {
     return out;
 }
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using CMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Kernel = mb::CgalKernel;
+using CMesh = mb::CgalMesh;
 
 Outcome run_cgal(const Surface& in, int runs) {
     namespace SMS = CGAL::Surface_mesh_simplification;
-    CMesh input;
-    std::vector<CMesh::Vertex_index> vh;
-    for (const Vec3& p : in.points) {
-        vh.push_back(input.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-    }
-    for (const auto& t : in.triangles) {
-        input.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
-    }
+    const CMesh input = mb::cgal_mesh(in);
     CMesh mesh;
     Outcome out;
     out.ms = mb::time_runs(
@@ -191,19 +178,7 @@ Outcome run_cgal(const Surface& in, int runs) {
                                CGAL::parameters::get_cost(policies.get_cost())
                                    .get_placement(policies.get_placement()));
         });
-    mesh.collect_garbage();
-    for (auto v : mesh.vertices()) {
-        const auto& p = mesh.point(v);
-        out.result.points.push_back({p.x(), p.y(), p.z()});
-    }
-    for (auto f : mesh.faces()) {
-        std::array<std::uint32_t, 3> t{};
-        int i = 0;
-        for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-            t[i++] = static_cast<std::uint32_t>(v.idx());
-        }
-        out.result.triangles.push_back(t);
-    }
+    out.result = mb::surface_of(mesh);
     return out;
 }
 
@@ -219,37 +194,21 @@ int usage() {
 int main(int argc, char** argv) {
     mb::take_common_flags(argc, argv);
     const std::vector<std::string> jobs = {"qem_torus_1m_to_100k", "qem_bunny_1m_to_100k"};
-    std::string job, impl;
-    int runs = 5;
-    fs::path data_dir = fs::canonical("/proc/self/exe").parent_path() / "loop_data";
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        const bool has_value = i + 1 < argc;
-        if (arg == "--list") {
-            for (const std::string& j : jobs) {
-                for (const char* name : kImpls) {
-                    std::printf("%s %s\n", j.c_str(), name);
-                }
-            }
-            return 0;
-        } else if (arg == "--job" && has_value) {
-            job = argv[++i];
-        } else if (arg == "--impl" && has_value) {
-            impl = argv[++i];
-        } else if (arg == "--runs" && has_value) {
-            runs = std::atoi(argv[++i]);
-        } else if (arg == "--data" && has_value) {
-            data_dir = argv[++i];
-        } else {
-            return usage();
-        }
-    }
-    const bool known_job = std::find(jobs.begin(), jobs.end(), job) != jobs.end();
-    const bool known_impl =
-        std::any_of(std::begin(kImpls), std::end(kImpls), [&](const char* n) { return impl == n; });
-    if (!known_job || !known_impl || runs < 1) {
+    mb::JobArgs args;
+    if (!mb::parse_job_args(argc, argv, args)) {
         return usage();
     }
+    if (args.list) {
+        mb::print_pairs(jobs, kImpls);
+        return 0;
+    }
+    if (!mb::one_of(jobs, args.job) || !mb::one_of(kImpls, args.impl)) {
+        return usage();
+    }
+    const std::string& job = args.job;
+    const std::string& impl = args.impl;
+    int runs = args.runs;
+    const fs::path& data_dir = args.data;
     try {
         const Surface input = load_input(job, data_dir);
         if (impl == "openmesh" || impl == "cgal") {

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -47,14 +48,26 @@ inline void take_common_flags(int& argc, char** argv) {
     argc = out;
 }
 
-/// `--job JOB --impl IMPL [--runs N]` (after take_common_flags()), as every program but
-/// bench_loop and bench_io_draw takes them; false on anything else (print the usage).
+/// The command line of every bench program but bench_io_draw (after take_common_flags()):
+/// `--list`, or `--job JOB --impl IMPL [--runs N] [--data DIR]`. `--data` is where the real
+/// meshes are unpacked (bench_real_meshes.h), by default loop_data beside the executable.
 struct JobArgs {
+    bool list = false;
     std::string job;
     std::string impl;
     int runs = 5;
+    std::filesystem::path data =
+        std::filesystem::canonical("/proc/self/exe").parent_path() / "loop_data";
 };
+/// False on anything else (print the usage).
 inline bool parse_job_args(int argc, char** argv, JobArgs& out) {
+    if (argc == 2 && std::strcmp(argv[1], "--list") == 0) {
+        out.list = true;
+        return true;
+    }
+    if (argc % 2 != 1) {
+        return false;
+    }
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i];
         if (key == "--job") {
@@ -63,11 +76,34 @@ inline bool parse_job_args(int argc, char** argv, JobArgs& out) {
             out.impl = argv[i + 1];
         } else if (key == "--runs") {
             out.runs = std::atoi(argv[i + 1]);
+        } else if (key == "--data") {
+            out.data = argv[i + 1];
         } else {
             return false;
         }
     }
     return out.runs >= 1;
+}
+
+/// The answer to --list: every "JOB IMPL" pair of `jobs` × `impls`, one a line.
+template <class Jobs, class Impls>
+void print_pairs(const Jobs& jobs, const Impls& impls) {
+    for (const auto& job : jobs) {
+        for (const auto& impl : impls) {
+            std::printf("%s %s\n", std::string(job).c_str(), std::string(impl).c_str());
+        }
+    }
+}
+
+/// Whether `name` is one of `names`.
+template <class Names>
+bool one_of(const Names& names, const std::string& name) {
+    for (const auto& n : names) {
+        if (name == n) {
+            return true;
+        }
+    }
+    return false;
 }
 
 /// Milliseconds of each of `runs` calls of `body`; `setup` runs before each call, untimed.
