@@ -329,13 +329,18 @@ void Panels::draw_help(Mode mode) {
     ImGui::End();
 }
 
-void Panels::draw_progress(const std::string& verb, double fraction, double seconds) {
+// The status line's window, at the bottom left; End() it whatever this returns.
+static bool begin_status_window() {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(
         ImVec2(viewport->WorkPos.x + 8, viewport->WorkPos.y + viewport->WorkSize.y - 8),
         ImGuiCond_Always, ImVec2(0.0f, 1.0f));
     ImGui::SetNextWindowBgAlpha(0.7f);
-    if (ImGui::Begin("status", nullptr, kOverlayFlags)) {
+    return ImGui::Begin("status", nullptr, kOverlayFlags);
+}
+
+void Panels::draw_progress(const std::string& verb, double fraction, double seconds) {
+    if (begin_status_window()) {
         ImGui::Text("%s: %.0f%% (%.1f s)", verb.c_str(), 100.0 * fraction, seconds);
         ImGui::ProgressBar(static_cast<float>(fraction), ImVec2(240.0f * scale_, 0.0f), "");
     }
@@ -343,12 +348,7 @@ void Panels::draw_progress(const std::string& verb, double fraction, double seco
 }
 
 void Panels::draw_status(const Editor& editor, const std::string& status, bool status_error) {
-    const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(
-        ImVec2(viewport->WorkPos.x + 8, viewport->WorkPos.y + viewport->WorkSize.y - 8),
-        ImGuiCond_Always, ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowBgAlpha(0.7f);
-    if (ImGui::Begin("status", nullptr, kOverlayFlags)) {
+    if (begin_status_window()) {
         const ElementRef& hover = editor.hover();
         if (!hover.is_none() && editor.mode() != Mode::Curve) {
             ImGui::TextDisabled("under the cursor: %s", describe(editor.mesh(), hover).c_str());
