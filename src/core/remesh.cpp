@@ -318,9 +318,13 @@ std::string check_remesh(const Mesh& mesh, const RemeshOptions& options) {
     // An equilateral triangle of side L has area √3/4 · L².
     const double triangles =
         surface_area(mesh, exponent) / (std::sqrt(3.0) / 4.0 * length * length);
+    if (!(length > 0.0)) {
+        return "cannot remesh: every edge has length 0 (a degenerate mesh), so there is no mean "
+               "length to aim for";
+    }
     char shown[32];
     std::snprintf(shown, sizeof shown, "%.4g", std::ldexp(length, -exponent));
-    if (!(length > 0.0) || !(triangles < 1e8)) {
+    if (!(triangles < 1e8)) {
         const std::string count =
             triangles < 1e18 ? std::to_string(static_cast<long long>(triangles)) : "1e18 or more";
         return "cannot remesh: an edge length of " + std::string(shown) + " would make about " +

@@ -67,6 +67,13 @@ TEST(RemeshRefuses, BadInput) {
     const std::string tiny = check_remesh(ball, length(1e-6));
     EXPECT_NE(tiny.find("triangles (at most 100,000,000)"), std::string::npos) << tiny;
     EXPECT_EQ(check_remesh(Mesh(), length(0.1)), "cannot remesh: the mesh has no faces");
+    Mesh point = shapes::tetrahedron();  // every corner on one point: no mean length
+    for (Vertex v : point.vertices()) {
+        point.position(v) = Vec3{};
+    }
+    EXPECT_EQ(check_remesh(point, length(0)),
+              "cannot remesh: every edge has length 0 (a degenerate mesh), so there is no mean "
+              "length to aim for");
     EXPECT_EQ(check_remesh(ball, length(0)), "");  // 0: the mean length
 }
 
