@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "local_op_helpers.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 
 namespace meshedit {
@@ -121,9 +122,22 @@ OpStatus is_collapse_ok(const Mesh& mesh, Edge e) {
     return OpStatus::ok();
 }
 
+namespace {
+
+// Two edges become one: the one kept is a crease if either was (a feature line survives a
+// collapse beside it, as it survives a split).
+void merge_crease(Mesh& mesh, Edge kept, Edge merged) {
+    if (auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+        crease[kept] = std::max(crease[kept], crease[merged]);
+    }
+}
+
+}  // namespace
+
 // v0 (smaller index) survives at the midpoint; v1, e, f0, f1, edge(h1) and edge(t2) are
-// deleted. h2 takes the place of o1 = twin(h1), t1 that of q2 = twin(t2). On a boundary edge
-// one side is a boundary gap instead of f0 or f1, and is closed.
+// deleted. h2 takes the place of o1 = twin(h1), t1 that of q2 = twin(t2), each keeping a
+// crease of either. On a boundary edge one side is a boundary gap instead of f0 or f1, and
+// is closed.
 //
 //             a                          a
 //           /   ^                       | ^
@@ -171,6 +185,7 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
         if (mesh.halfedge(a) == o1) {
             mesh.set_halfedge(a, h2);
         }
+        merge_crease(mesh, Mesh::edge(h2), Mesh::edge(h1));
         mesh.mark_deleted(Mesh::edge(h1));
         mesh.mark_deleted(f0);
     }
@@ -180,6 +195,7 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
         if (mesh.halfedge(d) == t2) {
             mesh.set_halfedge(d, Mesh::twin(t1));
         }
+        merge_crease(mesh, Mesh::edge(t1), Mesh::edge(t2));
         mesh.mark_deleted(Mesh::edge(t2));
         mesh.mark_deleted(f1);
     }
@@ -422,6 +438,7 @@ OpResult<Vertex> collapse_face(Mesh& mesh, Face f) {
         if (mesh.halfedge(x) == q) {
             mesh.set_halfedge(x, Mesh::twin(p));
         }
+        merge_crease(mesh, Mesh::edge(p), Mesh::edge(q));
         mesh.mark_deleted(Mesh::edge(q));
         mesh.mark_deleted(g);
     }

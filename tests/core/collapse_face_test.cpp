@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/op_test_util.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
 
@@ -114,6 +115,21 @@ TEST(CollapseFace, MiddleQuadOfAGrid) {
 TEST(CollapseFace, TriangleAmongTriangles) {
     Mesh mesh = shapes::grid(3, 3);
     expect_collapse_face(mesh, {5, 6, 10}, {{1, 6, 5}, {6, 11, 10}, {5, 10, 9}});
+}
+
+// A crease on 1-6, the edge of the triangle (6,5,1) across side 5-6 that goes, passes to
+// 1-5, the edge that takes its place.
+TEST(CollapseFace, MergedEdgeKeepsItsCrease) {
+    Mesh mesh = shapes::grid(3, 3);
+    auto crease = mesh.property<Edge, std::uint8_t>(kCreaseProperty, 0);
+    crease[mesh.find_edge(Vertex(1), Vertex(6))] = 1;
+    expect_collapse_face(mesh, {5, 6, 10}, {{1, 6, 5}, {6, 11, 10}, {5, 10, 9}});
+    std::size_t creases = 0;
+    for (const Edge e : mesh.edges()) {
+        creases += crease[e] != 0 ? 1 : 0;
+    }
+    EXPECT_EQ(creases, 1u);
+    EXPECT_NE(crease[mesh.find_edge(Vertex(1), Vertex(5))], 0);
 }
 
 // A quad on the rim: the boundary loses its side and the new vertex stays on the boundary.

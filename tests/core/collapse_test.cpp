@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
 #include "core/op_test_util.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
 
@@ -70,6 +72,27 @@ TEST(Collapse, GridInteriorEdge) {
     const Mesh expected = expected_collapse(mesh, 5, 6, {{1, 6, 5}, {5, 6, 10}});
     expect_collapse(mesh, 5, 6);
     EXPECT_TRUE(test::same_faces_by_position(mesh, expected));
+}
+
+// The same collapse with creases on 6-10 and 1-6: each merges into the edge that takes its
+// place (5-10, 1-5), so a feature line beside a collapse survives it.
+TEST(Collapse, MergedEdgesKeepTheirCrease) {
+    Mesh mesh = shapes::grid(3, 3);
+    auto crease = mesh.property<Edge, std::uint8_t>(kCreaseProperty, 0);
+    crease[mesh.find_edge(Vertex(6), Vertex(10))] = 1;
+    crease[mesh.find_edge(Vertex(1), Vertex(6))] = 1;
+    expect_collapse(mesh, 5, 6);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> creased;
+    for (const Edge e : mesh.edges()) {
+        if (crease[e] != 0) {
+            const Halfedge h = mesh.halfedge(e, 0);
+            const std::uint32_t a = mesh.from_vertex(h).idx();
+            const std::uint32_t b = mesh.to_vertex(h).idx();
+            creased.emplace_back(std::min(a, b), std::max(a, b));
+        }
+    }
+    std::sort(creased.begin(), creased.end());
+    EXPECT_EQ(creased, (std::vector<std::pair<std::uint32_t, std::uint32_t>>{{1, 5}, {5, 10}}));
 }
 
 // grid(2,2), vertex (i,j) = 3j + i. Boundary edge 0-1 of (0,1,4); 0 survives at (0.25, 0)

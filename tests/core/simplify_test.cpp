@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/quad_subdivision.h"
@@ -133,6 +134,39 @@ TEST(Simplify, SphereStaysRoundAndOutward) {
     }
     EXPECT_FALSE(report.stopped_early);
     EXPECT_GT(report.largest_error, 0.0);
+}
+
+// A crease on the torus's outer equator (z = 0, 48 edges) stays one closed crease loop in
+// the plane z = 0 at 10%: collapses along it merge crease edges into crease edges, and its
+// penalty planes (soft: 1000 times a face's weight) keep its vertices within 1e-5 of it.
+TEST(Simplify, CreaseLoopStaysAClosedCreaseLoop) {
+    Mesh torus = shapes::torus(48, 24);
+    auto crease = torus.property<Edge, std::uint8_t>(kCreaseProperty, 0);
+    for (int i = 0; i < 48; ++i) {
+        crease[torus.find_edge(Vertex(i * 24), Vertex(((i + 1) % 48) * 24))] = 1;
+    }
+    const Mesh out = simplified(torus, to(230));
+    const auto kept = out.get_property<Edge, std::uint8_t>(kCreaseProperty);
+    ASSERT_TRUE(kept);
+    std::vector<int> crease_degree(out.vertices_size(), 0);
+    std::size_t creases = 0;
+    for (const Edge e : out.edges()) {
+        if (kept[e] != 0) {
+            ++creases;
+            for (const Vertex v :
+                 {out.from_vertex(out.halfedge(e, 0)), out.to_vertex(out.halfedge(e, 0))}) {
+                ++crease_degree[v.idx()];
+                EXPECT_NEAR(out.position(v).z, 0.0, 1e-5)
+                    << "vertex " << v.idx() << " left the crease";
+            }
+        }
+    }
+    EXPECT_GE(creases, 8u);
+    EXPECT_LT(creases, 48u) << "the crease was simplified too";
+    for (const Vertex v : out.vertices()) {
+        EXPECT_TRUE(crease_degree[v.idx()] == 0 || crease_degree[v.idx()] == 2)
+            << "vertex " << v.idx() << " ends a crease: the loop broke";
+    }
 }
 
 // The error bound stops before the target; a looser bound goes further.
