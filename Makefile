@@ -77,7 +77,7 @@ fuzz:
 	./scripts/install-deps.sh --fuzz
 	cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	    -DCMAKE_CXX_COMPILER=clang++ -DMESHEDIT_FUZZ=ON -DMESHEDIT_BUILD_VIEWER=OFF $(CMAKE_FLAGS)
-	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_collada fuzz_obj fuzz_gltf fuzz_bez \
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_collada fuzz_obj fuzz_off fuzz_gltf fuzz_bez \
 	    fuzz_bzc fuzz_ops meshedit
 	FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_RUNS=$(FUZZ_RUNS) ./scripts/fuzz.sh $(FUZZ_DIR)
 

@@ -142,8 +142,7 @@ Input load_input(const Job& job, const fs::path& data_dir) {
     if (job.input == "torus_100k") {
         return input_from_soup(meshedit::to_polygon_soup(meshedit::shapes::torus(250, 200)));
     }
-    const meshedit::PolygonSoup raw =
-        meshedit::bench::read_off(meshedit::bench::real_mesh_path(job.input, data_dir));
+    const meshedit::PolygonSoup raw = meshedit::bench::real_mesh(job.input, data_dir);
     meshedit::BuildReport report;
     const meshedit::Mesh mesh = meshedit::build_mesh(raw, &report);
     if (report.repaired()) {

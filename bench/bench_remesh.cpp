@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
     const fs::path& data_dir = args.data;
     try {
         meshedit::Mesh armadillo =
-            meshedit::build_mesh(mb::read_off(mb::real_mesh_path("armadillo", data_dir)));
+            meshedit::build_mesh(mb::real_mesh("armadillo", data_dir));
         meshedit::loop_subdivide(armadillo);
         const Surface input = mb::surface_of(armadillo);
         const double length = mean_length(input);

@@ -62,7 +62,7 @@ Surface load_input(const std::string& job, const fs::path& data_dir) {
         return surface_of(meshedit::shapes::torus(1000, 500));
     }
     meshedit::Mesh bunny =
-        meshedit::build_mesh(mb::read_off(mb::real_mesh_path("bunny", data_dir)));
+        meshedit::build_mesh(mb::real_mesh("bunny", data_dir));
     meshedit::loop_subdivide(bunny);
     meshedit::loop_subdivide(bunny);
     return surface_of(bunny);

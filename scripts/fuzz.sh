@@ -17,7 +17,7 @@ else
     seconds=${FUZZ_SECONDS:-60}
 fi
 jobs=${FUZZ_JOBS:-$(nproc)}
-targets=${FUZZ_TARGETS:-"collada obj gltf bez bzc ops"}
+targets=${FUZZ_TARGETS:-"collada obj off gltf bez bzc ops"}
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 
@@ -32,6 +32,7 @@ seed() {  # seed TARGET FILES...
 mkdir -p "$build/artifacts" "$build/logs" "$build/seeds"
 seed collada dae/*.dae dae/*/*.dae tests/io/data/*.dae tests/fuzz/regressions/collada/*
 seed obj tests/io/data/*.obj tests/fuzz/regressions/obj/*
+seed off tests/fuzz/regressions/off/*
 seed gltf tests/io/data/*.gltf tests/fuzz/regressions/gltf/*
 seed bez bez/*.bez tests/io/data/*.bez tests/fuzz/regressions/bez/*
 seed bzc bez/*.bzc tests/io/data/*.bzc tests/fuzz/regressions/bzc/*
@@ -40,10 +41,12 @@ if [ -x "$build/src/cli/meshedit" ]; then
     for f in dae/cube.dae dae/icosahedron.dae dae/quadball.dae dae/bowl.dae dae/creased.dae; do
         name=$(basename "$f" .dae)
         "$build/src/cli/meshedit" convert "$f" "$build/seeds/$name.obj" >/dev/null 2>&1 || true
+        "$build/src/cli/meshedit" convert "$f" "$build/seeds/$name.off" >/dev/null 2>&1 || true
         "$build/src/cli/meshedit" convert "$f" "$build/seeds/$name.glb" >/dev/null 2>&1 || true
         "$build/src/cli/meshedit" convert "$f" "$build/seeds/$name.gltf" >/dev/null 2>&1 || true
     done
     seed obj "$build"/seeds/*.obj
+    seed off "$build"/seeds/*.off
     seed gltf "$build"/seeds/*.glb "$build"/seeds/*.gltf
 fi
 printf 'flip:0-6,split:0-1,loop\nloop:2\ncollapse:1-3,triangulate\ncrease:0-1,loop:1\n' |

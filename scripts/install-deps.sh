@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs every Debian package MeshEdit needs to build and test (OpenSubdiv is the tests'
-# subdivision oracle); with --bench also the other benchmark anchors (OpenMesh, CGAL and its
-# demo meshes and Eigen for its quadric policies, Assimp, meshoptimizer) and perf, which only `make bench` needs; with --fuzz clang and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs dpkg queries
-# (well under a second).
+# subdivision oracle; libcgal-demo holds the scanned bunny of the simplify and remesh golden
+# images); with --bench also the other benchmark anchors (OpenMesh, CGAL, Eigen for its quadric
+# policies, Assimp, meshoptimizer) and perf, which only `make bench` needs; with --fuzz clang
+# and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs
+# dpkg queries (well under a second).
 set -euo pipefail
 
 bench=0
@@ -23,14 +25,14 @@ packages=(
     assimp-utils assimp-testmodels
     libosmesa6-dev libgl-dev libglm-dev libopenimageio-dev openimageio-tools
     libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri
-    libosd-dev
+    libosd-dev libcgal-demo
     fonts-dejavu-core xvfb xdotool imagemagick x11-utils
 )
 if [ "$fuzz" -eq 1 ]; then
     packages+=(clang libclang-rt-14-dev)
 fi
 if [ "$bench" -eq 1 ]; then
-    packages+=(libopenmesh-dev libcgal-dev libcgal-demo libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf)
+    packages+=(libopenmesh-dev libcgal-dev libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf)
 fi
 
 missing=()

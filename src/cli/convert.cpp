@@ -30,8 +30,8 @@ void print_load_messages(const LoadedDocument& input) {
 void check_mesh_output(const std::filesystem::path& out) {
     if (!is_mesh_extension(file_extension(out))) {
         throw IoError(out.string(), "",
-                      "unknown extension '" + out.extension().string() +
-                          "' (meshedit writes .dae, .gltf, .glb and .obj)");
+                      "unknown extension '" + out.extension().string() + "' (meshedit writes " +
+                          mesh_extensions() + ")");
     }
 }
 
@@ -78,8 +78,10 @@ Command add_convert(CLI::App& meshedit) {
             ->type_name("LIST");
     add_density_option(*app, s->density);
     app->footer(
-        "Reads IN (.dae .gltf .glb .obj, or a .bez tessellated at --density), applies the --ops\n"
-        "edits in order and writes OUT in the format of its extension (.dae .gltf .glb .obj).\n"
+        "Reads IN (.dae .gltf .glb .obj .off, or a .bez tessellated at --density), applies the "
+        "--ops\n"
+        "edits in order and writes OUT in the format of its extension (.dae .gltf .glb .obj "
+        ".off).\n"
         "A .bzc curve converts only to .bzc, and a .bez to .bez keeps its patches (both written\n"
         "as the CS184 course's skeleton reads them). OUT is written to a temporary file and\n"
         "renamed, so a failed run never leaves a partial OUT.\n"

@@ -274,7 +274,7 @@ Command add_info(CLI::App& meshedit) {
     app->add_flag("--json", s->json, "print one JSON object (fields: docs/cli.md)");
     add_density_option(*app, s->density);
     app->footer(
-        "Describes a mesh (.dae .gltf .glb .obj), a Bezier patch set (.bez) or a Bezier curve\n"
+        "Describes a mesh (.dae .gltf .glb .obj .off), a Bezier patch set (.bez) or a Bezier curve\n"
         "(.bzc). For a mesh: vertices, edges, faces, boundary loops, connected components,\n"
         "Euler characteristic, genus, manifold (the loader repaired nothing), crease edges,\n"
         "bounding box, unit, and what the loader repaired or noticed. A .bez is tessellated\n"

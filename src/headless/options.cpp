@@ -115,7 +115,7 @@ int parse_options(int argc, char** argv, Options& o) {
     command_line::style(app);
     Raw raw;
     app.add_option("FILE", o.input,
-                   "a mesh (.dae .gltf .glb .obj: smooth shaded, boundary and crease edges "
+                   "a mesh (.dae .gltf .glb .obj .off: smooth shaded, boundary and crease edges "
                    "drawn), Bezier patches (.bez, tessellated) or a Bezier curve (.bzc, in the "
                    "[0,1]^2 square)")
         ->required();

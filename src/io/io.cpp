@@ -11,6 +11,7 @@
 #include "meshedit/io/collada.h"
 #include "meshedit/io/gltf.h"
 #include "meshedit/io/obj.h"
+#include "meshedit/io/off.h"
 
 namespace fs = std::filesystem;
 
@@ -20,7 +21,11 @@ namespace meshedit {
 
 bool is_mesh_extension(const std::string& extension) {
     return extension == ".dae" || extension == ".gltf" || extension == ".glb" ||
-           extension == ".obj";
+           extension == ".obj" || extension == ".off";
+}
+
+const char* mesh_extensions() {
+    return ".dae, .gltf, .glb, .obj or .off";
 }
 
 MeshSoup read_soup(const fs::path& path) {
@@ -33,11 +38,12 @@ MeshSoup read_soup(const fs::path& path) {
     if (!is_mesh_extension(ext)) {
         throw IoError(path.string(), "",
                       ext.empty()
-                          ? "no file extension; expected .dae, .gltf, .glb or .obj"
-                          : "unknown extension '" + ext + "'; expected .dae, .gltf, .glb or .obj");
+                          ? std::string("no file extension; expected ") + mesh_extensions()
+                          : "unknown extension '" + ext + "'; expected " + mesh_extensions());
     }
     MeshSoup soup = ext == ".dae"   ? read_collada(path)
                     : ext == ".obj" ? read_obj(path)
+                    : ext == ".off" ? read_off(path)
                                     : read_gltf(path);
     // One wording, whatever the format, for a file with nothing to load (an empty OBJ, a
     // text file named .obj, a glTF of lines only): never an empty mesh from a file.
@@ -90,8 +96,9 @@ LoadedMesh read_mesh(const fs::path& path) {
 std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& ext) {
     std::vector<std::string> unkept;
     const bool obj = ext == ".obj";
+    const bool off = ext == ".off";
     const bool gltf = ext == ".gltf" || ext == ".glb";
-    if (!obj && !gltf) {
+    if (!obj && !off && !gltf) {
         return unkept;  // COLLADA keeps polygons, creases and every double
     }
     std::size_t creases = 0;
@@ -100,7 +107,7 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
             creases += crease[e] != 0 ? 1 : 0;
         }
     }
-    const std::string format = obj ? "OBJ" : "glTF";
+    const std::string format = obj ? "OBJ" : off ? "OFF" : "glTF";
     if (creases > 0) {
         unkept.push_back(std::to_string(creases) + " crease mark" + (creases == 1 ? "" : "s") +
                          " (" + format + " has no crease edges)");
@@ -137,11 +144,13 @@ std::vector<std::string> write_mesh(const Mesh& mesh, const fs::path& path, cons
         write_gltf(dense, path, flags);
     } else if (ext == ".obj") {
         write_obj(dense, path, flags);
+    } else if (ext == ".off") {
+        write_off(dense, path);
     } else {
         throw IoError(path.string(), "",
                       ext.empty()
-                          ? "no file extension; expected .dae, .gltf, .glb or .obj"
-                          : "cannot write '" + ext + "' files; expected .dae, .gltf, .glb or .obj");
+                          ? std::string("no file extension; expected ") + mesh_extensions()
+                          : "cannot write '" + ext + "' files; expected " + mesh_extensions());
     }
     return unkept_by_format(dense, ext);
 }

@@ -22,6 +22,32 @@ std::string_view text_of(std::string_view bytes, const std::string& name) {
     return bytes;
 }
 
+std::string_view next_token(std::string_view& line) {
+    const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f'; };
+    std::size_t b = 0;
+    while (b < line.size() && is_space(line[b])) {
+        ++b;
+    }
+    std::size_t e = b;
+    while (e < line.size() && !is_space(line[e])) {
+        ++e;
+    }
+    const std::string_view t = line.substr(b, e - b);
+    line.remove_prefix(e);
+    return t;
+}
+
+std::optional<double> parse_double(std::string_view token) {
+    // from_chars does not take a leading '+'.
+    const std::size_t skip = token.size() > 1 && token[0] == '+' ? 1 : 0;
+    double x = 0.0;
+    const auto [ptr, ec] = std::from_chars(token.data() + skip, token.data() + token.size(), x);
+    if (ec != std::errc() || ptr != token.data() + token.size() || token.empty()) {
+        return std::nullopt;
+    }
+    return x;
+}
+
 std::string format_double(double value) {
     char buf[32];
     const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);

@@ -17,6 +17,14 @@ namespace meshedit::io_util {
 /// line), which the text formats do not read.
 std::string_view text_of(std::string_view bytes, const std::string& name);
 
+/// The next token of `line` separated by spaces, tabs, CR or FF (removed from `line` with the
+/// whitespace before it); empty at the end of the line.
+std::string_view next_token(std::string_view& line);
+
+/// `token` as a double (a leading '+' allowed, as some exporters write it); nullopt unless the
+/// whole token is one number.
+std::optional<double> parse_double(std::string_view token);
+
 /// Shortest decimal text that reads back as exactly `value` (std::to_chars).
 std::string format_double(double value);
 

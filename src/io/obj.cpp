@@ -46,42 +46,22 @@ public:
     }
 
 private:
-    static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f'; }
-
-    // The next whitespace-separated token of `l` (removed from it), or empty.
-    static std::string_view token(std::string_view& l) {
-        std::size_t b = 0;
-        while (b < l.size() && is_space(l[b])) {
-            ++b;
-        }
-        std::size_t e = b;
-        while (e < l.size() && !is_space(l[e])) {
-            ++e;
-        }
-        const std::string_view t = l.substr(b, e - b);
-        l.remove_prefix(e);
-        return t;
-    }
-
     [[noreturn]] void fail(const std::string& problem) const {
         throw IoError(file_, where_line(line_), problem);
     }
 
     double number(std::string_view t) const {
-        // from_chars does not take the leading '+' some exporters write.
-        const std::size_t skip = t.size() > 1 && t[0] == '+' ? 1 : 0;
-        double x = 0.0;
-        const auto [ptr, ec] = std::from_chars(t.data() + skip, t.data() + t.size(), x);
-        if (ec != std::errc() || ptr != t.data() + t.size()) {
+        const std::optional<double> x = io_util::parse_double(t);
+        if (!x) {
             fail("expected a number, found '" + std::string(t.substr(0, 24)) + "'");
         }
-        return x;
+        return *x;
     }
 
     Vec3 triple(std::string_view& rest, const char* what) const {
         Vec3 p;
         for (int i = 0; i < 3; ++i) {
-            const std::string_view t = token(rest);
+            const std::string_view t = io_util::next_token(rest);
             if (t.empty()) {
                 fail(std::string("a ") + what + " needs three coordinates");
             }
@@ -94,7 +74,7 @@ private:
         if (l.find('\0') != std::string_view::npos) {
             fail("binary data (a NUL byte): not an OBJ text file");
         }
-        const std::string_view key = token(l);
+        const std::string_view key = io_util::next_token(l);
         if (key.empty() || key[0] == '#') {
             return;
         }
@@ -154,7 +134,8 @@ private:
 
     void read_face(std::string_view l) {
         bool pending = false;  // an absolute index beyond what is defined so far
-        for (std::string_view corner = token(l); !corner.empty(); corner = token(l)) {
+        for (std::string_view corner = io_util::next_token(l); !corner.empty();
+             corner = io_util::next_token(l)) {
             const std::size_t s1 = corner.find('/');
             const std::int64_t v =
                 index(corner.substr(0, s1), out_.soup.positions.size(), "vertex");

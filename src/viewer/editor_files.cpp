@@ -103,8 +103,8 @@ Outcome Editor::save() {
     }
     if (doc_.mode != Mode::Curve && !is_mesh_extension(ext) &&
         !(doc_.mode == Mode::Surface && ext == ".bez")) {
-        return refused("cannot save a mesh as '" + ext +
-                       "': use Ctrl+Shift+S with .dae, .gltf, .glb or .obj");
+        return refused("cannot save a mesh as '" + ext + "': use Ctrl+Shift+S with " +
+                       mesh_extensions());
     }
     return write_to(path_);
 }
@@ -115,13 +115,12 @@ Outcome Editor::save_as(const std::filesystem::path& path) {
         return refused("a curve is saved as .bzc, not '" + ext + "'");
     }
     if (doc_.mode == Mode::Surface && ext != ".bez" && !is_mesh_extension(ext)) {
-        return refused(
-            "a surface is saved as .bez (its patches) or as .dae, .gltf, .glb or .obj "
-            "(its tessellation), not '" +
-            ext + "'");
+        return refused("a surface is saved as .bez (its patches) or as " +
+                       std::string(mesh_extensions()) + " (its tessellation), not '" + ext + "'");
     }
     if (doc_.mode == Mode::Mesh && !is_mesh_extension(ext)) {
-        return refused("a mesh is saved as .dae, .gltf, .glb or .obj, not '" + ext + "'");
+        return refused("a mesh is saved as " + std::string(mesh_extensions()) + ", not '" + ext +
+                       "'");
     }
     Outcome outcome = write_to(path);
     if (!outcome.refused) {

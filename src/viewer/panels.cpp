@@ -378,9 +378,10 @@ void Panels::draw_prompt(PanelRequests& requests) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(viewport->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::TextUnformatted(prompt_ == Prompt::SaveAs
-                                   ? "File name (.dae .obj .gltf .glb for meshes, .bzc for curves):"
-                                   : "File to open (.dae .obj .gltf .glb .bez .bzc):");
+        ImGui::TextUnformatted(
+            prompt_ == Prompt::SaveAs
+                ? "File name (.dae .obj .off .gltf .glb for meshes, .bzc for curves):"
+                : "File to open (.dae .obj .off .gltf .glb .bez .bzc):");
         if (prompt_fresh_) {
             ImGui::SetKeyboardFocusHere();
             prompt_fresh_ = false;

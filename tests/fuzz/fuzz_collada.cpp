@@ -6,21 +6,13 @@
 #include <string_view>
 
 #include "fuzz_common.h"
-#include "meshedit/core/budget.h"
 #include "meshedit/io/collada.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    using namespace meshedit;
-    static const bool ready = (fuzz::set_up(), true);
-    (void)ready;
-    MeshSoup soup;
-    try {
-        soup = parse_collada(std::string(reinterpret_cast<const char*>(data), size), "fuzz.dae");
-    } catch (const IoError&) {
-        return 0;  // a clean refusal is what bad input should get
-    } catch (const BudgetError&) {
-        return 0;
-    }
-    fuzz::exercise(soup, fuzz::hash(data, size));
-    return 0;
+    return meshedit::fuzz::read_and_exercise(
+        data, size,
+        [](std::string_view bytes, const std::string& name) {
+            return meshedit::parse_collada(std::string(bytes), name);
+        },
+        "fuzz.dae");
 }

@@ -8,8 +8,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
+#include "meshedit/core/budget.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/io/io.h"
 
@@ -31,5 +33,24 @@ void exercise(const MeshSoup& soup, std::uint64_t seed);
 
 /// The same on a mesh already built (the .bez target's tessellation).
 void exercise(Mesh mesh, std::uint64_t seed);
+
+/// A mesh reader's whole target: set_up(), `parse(bytes, name)`, and exercise() what it read;
+/// an IoError or BudgetError is a clean refusal.
+template <class Parse>
+int read_and_exercise(const std::uint8_t* data, std::size_t size, Parse parse,
+                      const std::string& name) {
+    static const bool ready = (set_up(), true);
+    (void)ready;
+    MeshSoup soup;
+    try {
+        soup = parse(std::string_view(reinterpret_cast<const char*>(data), size), name);
+    } catch (const IoError&) {
+        return 0;  // a clean refusal is what bad input should get
+    } catch (const BudgetError&) {
+        return 0;
+    }
+    exercise(soup, hash(data, size));
+    return 0;
+}
 
 }  // namespace meshedit::fuzz

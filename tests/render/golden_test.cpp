@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli/run.h"
+#include "support/demo_meshes.h"
 #include "support/image_compare.h"
 
 namespace meshedit::test {
@@ -25,15 +26,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Small enough to keep every PNG far under 100 KB, large enough to see facets and arrows.
+const char* const kSize = "384x288";
+// The scans: at 384x288 their triangles are a few pixels and the wires fade out.
+const char* const kScanSize = "576x432";
+
 /// One golden image: what to render and how.
 struct GoldenCase {
     std::string name;               ///< file stem in tests/golden/ and the gtest parameter name
-    std::string input;              ///< relative to the repository root
+    std::string input;              ///< relative to the repository root, or "demo:STEM"
     std::vector<std::string> args;  ///< after `FILE -o OUT --size WxH`
+    std::string size = kSize;
 };
-
-// Small enough to keep every PNG far under 100 KB, large enough to see facets and arrows.
-const char* const kSize = "384x288";
 
 // A polygon-mesh case: `ops` on the quad ball, the result selected.
 GoldenCase poly(const std::string& name, const std::string& ops) {
@@ -97,6 +101,12 @@ const std::vector<GoldenCase>& golden_cases() {
         // QEM simplification (docs/simplify.md): the teapot (4,032 triangles) at 10% and 2.5%;
         // rims, spout tip and handle keep their shape, flat regions get the big triangles.
         {"teapot_input_wire", "dae/teapot.dae", {"--flat", "--wireframe"}},
+        // The scanned bunny (75,408 triangles, CGAL's demo data) at 10%: the detail stays
+        // where the curvature is (ears, face, feet).
+        {"bunny_simplify10",
+         "demo:bunny00",
+         {"--ops", "simplify:0.1", "--flat", "--wireframe"},
+         kScanSize},
         {"teapot_simplify10", "dae/teapot.dae", {"--ops", "simplify:0.1", "--flat", "--wireframe"}},
         {"teapot_simplify2",
          "dae/teapot.dae",
@@ -105,6 +115,12 @@ const std::vector<GoldenCase>& golden_cases() {
         // at the spout and the lid's knob) become even ones of the mean length, then of 0.15.
         {"teapot_remesh", "dae/teapot.dae", {"--ops", "remesh", "--flat", "--wireframe"}},
         {"teapot_remesh_015", "dae/teapot.dae", {"--ops", "remesh:0.15", "--flat", "--wireframe"}},
+        // The bunny remeshed at edge length 0.03 (5,814 triangles, so about 3.6 times its mean
+        // length): near-equilateral triangles of one size everywhere.
+        {"bunny_remesh_003",
+         "demo:bunny00",
+         {"--ops", "remesh:0.03", "--flat", "--wireframe"},
+         kScanSize},
         // One selection of each element type. Vertex 0 = (−0.53, 0.85, 0) and 1 = (0.53, 0.85,
         // 0) share the faces (0,5,1) on +z and (0,1,7) on −z: each camera looks straight at
         // its element (az = atan2(x, z), el = asin(y)), so nothing sits on the silhouette.
@@ -224,6 +240,15 @@ void PrintTo(const GoldenCase& c, std::ostream* os) {
     *os << c.name;
 }
 
+// A case's input: a file of the repository, or "demo:STEM", a scan of CGAL's demo data set
+// (tests/support/demo_meshes.h) unpacked into the build.
+fs::path input_path(const std::string& input) {
+    if (input.rfind("demo:", 0) == 0) {
+        return test::demo_mesh(input.substr(5), fs::path(MESHEDIT_BUILD_DIR) / "demo_data");
+    }
+    return source_dir() / input;
+}
+
 class Golden : public ::testing::TestWithParam<GoldenCase> {};
 
 TEST_P(Golden, MatchesReference) {
@@ -233,8 +258,8 @@ TEST_P(Golden, MatchesReference) {
     const fs::path rendered = render_dir / (c.name + ".png");
     fs::remove(rendered);  // a stale file must not pass for a fresh render
 
-    std::vector<std::string> args = {(source_dir() / c.input).string(), "-o", rendered.string(),
-                                     "--size", kSize};
+    std::vector<std::string> args = {input_path(c.input).string(), "-o", rendered.string(),
+                                     "--size", c.size};
     args.insert(args.end(), c.args.begin(), c.args.end());
     const std::string exe = render_exe();
     const std::string command = command_line(exe, args);

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Reading and writing meshes and Bezier data, dispatched by file extension. Each format has
-/// its own read_X/write_X pair (collada.h, gltf.h, obj.h; the Bezier formats below); this is
+/// its own read_X/write_X pair (collada.h, gltf.h, obj.h, off.h; the Bezier formats below); this is
 /// the front door. document.h reads any file the programs open (mesh, patches or curve).
 ///
 /// Readers produce a MeshSoup (an indexed polygon soup plus what the file said about it);
@@ -45,8 +45,10 @@ struct IoFlags {
     bool write_normals = true;  ///< area-weighted vertex normals, where the format has them
 };
 
-/// Formats by extension (lower-case, with dot): ".dae", ".gltf", ".glb", ".obj".
+/// Formats by extension (lower-case, with dot): ".dae", ".gltf", ".glb", ".obj", ".off".
 bool is_mesh_extension(const std::string& extension);
+/// ".dae, .gltf, .glb, .obj or .off", for messages.
+const char* mesh_extensions();
 
 /// Reads a mesh file into a soup. \throws IoError (unknown extension, missing file, bad
 /// content), naming the file and the place.
