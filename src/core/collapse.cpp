@@ -125,9 +125,9 @@ OpStatus is_collapse_ok(const Mesh& mesh, Edge e) {
 namespace {
 
 // Two edges become one: the one kept is a crease if either was (a feature line survives a
-// collapse beside it, as it survives a split).
-void merge_crease(Mesh& mesh, Edge kept, Edge merged) {
-    if (auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+// collapse beside it, as it survives a split). `crease` may be null (no crease property).
+void merge_crease(EdgeProperty<std::uint8_t>& crease, Edge kept, Edge merged) {
+    if (crease) {
         crease[kept] = std::max(crease[kept], crease[merged]);
     }
 }
@@ -166,6 +166,8 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
     const Halfedge p0 = mesh.prev(h0);  // ends at v0; never deleted
     const bool triangle0 = in_triangle(mesh, h0);
     const bool triangle1 = in_triangle(mesh, t0);
+    auto crease = (triangle0 || triangle1) ? mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)
+                                           : EdgeProperty<std::uint8_t>();
 
     // Everything that pointed at v1 now points at v0.
     redirect_arrivals(mesh, v1, v0);
@@ -185,7 +187,7 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
         if (mesh.halfedge(a) == o1) {
             mesh.set_halfedge(a, h2);
         }
-        merge_crease(mesh, Mesh::edge(h2), Mesh::edge(h1));
+        merge_crease(crease, Mesh::edge(h2), Mesh::edge(h1));
         mesh.mark_deleted(Mesh::edge(h1));
         mesh.mark_deleted(f0);
     }
@@ -195,7 +197,7 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
         if (mesh.halfedge(d) == t2) {
             mesh.set_halfedge(d, Mesh::twin(t1));
         }
-        merge_crease(mesh, Mesh::edge(t1), Mesh::edge(t2));
+        merge_crease(crease, Mesh::edge(t1), Mesh::edge(t2));
         mesh.mark_deleted(Mesh::edge(t2));
         mesh.mark_deleted(f1);
     }
@@ -409,6 +411,7 @@ OpResult<Vertex> collapse_face(Mesh& mesh, Face f) {
     const FaceFrame fr = frame_of(mesh, f);
     const std::size_t n = fr.c.size();
     const Vertex w = fr.sorted.front();
+    auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
     Vec3 centre{0, 0, 0};
     std::vector<Halfedge> around;  // halfedges leaving the corners, off f
     std::vector<char> triangle(n);
@@ -438,7 +441,7 @@ OpResult<Vertex> collapse_face(Mesh& mesh, Face f) {
         if (mesh.halfedge(x) == q) {
             mesh.set_halfedge(x, Mesh::twin(p));
         }
-        merge_crease(mesh, Mesh::edge(p), Mesh::edge(q));
+        merge_crease(crease, Mesh::edge(p), Mesh::edge(q));
         mesh.mark_deleted(Mesh::edge(q));
         mesh.mark_deleted(g);
     }

@@ -138,7 +138,7 @@ TEST(Simplify, SphereStaysRoundAndOutward) {
 
 // A crease on the torus's outer equator (z = 0, 48 edges) stays one closed crease loop in
 // the plane z = 0 at 10%: collapses along it merge crease edges into crease edges, and its
-// penalty planes (soft: 1000 times a face's weight) keep its vertices within 1e-5 of it.
+// penalty planes (soft: 100 times a face's weight) keep its vertices within 1e-5 of it.
 TEST(Simplify, CreaseLoopStaysAClosedCreaseLoop) {
     Mesh torus = shapes::torus(48, 24);
     auto crease = torus.property<Edge, std::uint8_t>(kCreaseProperty, 0);
