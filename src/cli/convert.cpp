@@ -6,12 +6,14 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cli.h"
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/simplify.h"
 #include "meshedit/core/validate.h"
+#include "meshedit/files/files.h"
 #include "meshedit/io/io.h"
 #include "meshedit/ops/ops.h"
 #include "progress.h"
@@ -58,6 +60,32 @@ ops::ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
 
 }  // namespace
 
+// The steps of --ops: a comma list, or @FILE, a session file (one step per line, '#' lines a
+// header; the viewer's Ctrl+Shift+E writes them). A session names the file it was recorded
+// on by its hash: a replay on another file is allowed, with a note.
+std::vector<ops::Step> steps_of(const std::string& ops, const std::filesystem::path& in) {
+    if (ops.empty() || ops.front() != '@') {
+        return ops::parse(ops);
+    }
+    const std::filesystem::path session = ops.substr(1);
+    const std::string text = read_file(session);
+    std::vector<ops::Step> steps;
+    try {
+        steps = ops::parse_session(text);
+    } catch (const ops::SyntaxError& e) {
+        throw ops::SyntaxError(session.string() + ": " + e.what());
+    }
+    const std::optional<std::string> recorded = ops::session_header_value(text, "input-fnv1a64");
+    if (recorded && std::filesystem::is_regular_file(in)) {
+        if (const std::string actual = content_hash(read_file(in)); actual != *recorded) {
+            print_notice(session.string() + " was recorded on another file (fnv1a64 " + *recorded +
+                         "; " + in.string() + " has " + actual +
+                         "): its indices may name other elements");
+        }
+    }
+    return steps;
+}
+
 Command add_convert(CLI::App& meshedit) {
     struct Settings {
         std::filesystem::path in, out;
@@ -72,7 +100,8 @@ Command add_convert(CLI::App& meshedit) {
     app->add_option("OUT", s->out, "the output file")->required();
     s->ops_option =
         app->add_option("--ops", s->ops,
-                        "comma list of edits, run in order; an edge is named by its two vertices' "
+                        "comma list of edits, run in order, or @FILE, a session file (one per "
+                        "line, '#' lines skipped); an edge is named by its two vertices' "
                         "indices, as the file numbers them:\n" +
                             ops::help_lines())
             ->type_name("LIST");
@@ -89,6 +118,7 @@ Command add_convert(CLI::App& meshedit) {
         "Examples:\n"
         "  meshedit convert dae/cube.dae cube.obj\n"
         "  meshedit convert dae/cube.dae out.dae --ops flip:0-6,split:0-1,loop:2\n"
+        "  meshedit convert dae/cube.dae out.dae --ops @session.ops   (a viewer session)\n"
         "\n"
         "Exit status: 0 ok, 1 an op was refused, 2 bad usage, bad input, a named edge that does\n"
         "not exist, or an unwritable output.");
@@ -96,7 +126,7 @@ Command add_convert(CLI::App& meshedit) {
                 std::vector<ops::Step> steps;
                 if (s->ops_option->count() > 0) {
                     try {
-                        steps = ops::parse(s->ops);
+                        steps = steps_of(s->ops, s->in);
                     } catch (const ops::SyntaxError& e) {
                         throw UsageError(std::string("convert: ") + e.what());
                     }

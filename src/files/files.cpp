@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <system_error>
@@ -107,6 +109,16 @@ void write_file(const fs::path& path, std::string_view bytes) {
     if (!out) {
         throw std::runtime_error("write failed (disk full?)");
     }
+}
+
+std::string content_hash(std::string_view bytes) {
+    std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bits
+    for (const char c : bytes) {
+        h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    }
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+    return text;
 }
 
 }  // namespace meshedit

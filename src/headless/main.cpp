@@ -17,6 +17,7 @@
 
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/budget.h"
+#include "meshedit/files/files.h"
 #include "meshedit/files/io_error.h"
 #include "meshedit/io/document.h"
 #include "meshedit/ops/ops.h"
@@ -84,7 +85,11 @@ int run(const Options& options) {
         lap("load");
         ElementRef result;
         if (!options.ops.empty()) {
-            result = ops::apply_steps(mesh, ops::parse(options.ops));
+            // @FILE: a session file, as `meshedit convert --ops @FILE` reads it.
+            result =
+                ops::apply_steps(mesh, options.ops.front() == '@'
+                                           ? ops::parse_session(read_file(options.ops.substr(1)))
+                                           : ops::parse(options.ops));
             lap("ops");
         }
         if (options.features.value_or(!is_surface)) {

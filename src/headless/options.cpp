@@ -121,7 +121,9 @@ int parse_options(int argc, char** argv, Options& o) {
         ->required();
     app.add_option("-o,--output", o.output, "the image to write")->type_name("OUT.png")->required();
     app.add_option("--size", raw.size, "image size in pixels (default 512x384)")->type_name("WxH");
-    app.add_option("--ops", o.ops, "edits before drawing, e.g. flip:0-6,split:1-2,loop:2")
+    app.add_option("--ops", o.ops,
+                   "edits before drawing, e.g. flip:0-6,split:1-2,loop:2, or @FILE (a session "
+                   "file)")
         ->type_name("LIST");
     app.add_option("--shading", raw.shading, "name or number (default phong):" + shading_table())
         ->type_name("MODE");

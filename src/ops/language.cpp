@@ -286,6 +286,60 @@ std::vector<Step> parse(std::string_view list) {
     return steps;
 }
 
+std::vector<Step> parse_session(std::string_view text) {
+    std::vector<Step> steps;
+    std::size_t line_number = 0;
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        std::string_view line = text.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') {
+            line.remove_suffix(1);  // CRLF
+        }
+        line = trim(line);
+        start = end + 1;
+        ++line_number;
+        if (line.empty() || line.front() == '#') {
+            continue;
+        }
+        try {
+            for (Step& step : parse(line)) {
+                steps.push_back(std::move(step));
+            }
+        } catch (const SyntaxError& e) {
+            throw SyntaxError("line " + std::to_string(line_number) + ": " + e.what());
+        }
+    }
+    return steps;
+}
+
+std::string session_text(const std::vector<std::string>& header,
+                         const std::vector<std::string>& steps) {
+    std::string text;
+    for (const std::string& line : header) {
+        text += "# " + line + '\n';
+    }
+    for (const std::string& step : steps) {
+        text += step + '\n';
+    }
+    return text;
+}
+
+std::optional<std::string> session_header_value(std::string_view text, std::string_view key) {
+    const std::string prefix = "# " + std::string(key) + ": ";
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        const std::string_view line = trim(text.substr(start, end - start));
+        start = end + 1;
+        if (!line.empty() && line.front() != '#') {
+            break;  // the header is the comment lines before the first step
+        }
+        if (line.substr(0, prefix.size()) == prefix) {
+            return std::string(trim(line.substr(prefix.size())));
+        }
+    }
+    return std::nullopt;
+}
+
 Step make_step(std::string_view name, const Mesh& mesh, const ElementRef& target,
                std::span<const double> amounts, const ElementRef& second) {
     Step step;

@@ -219,7 +219,42 @@ StepResult run_crease(Mesh& mesh, const Step& step, const RunOptions&) {
         false);
 }
 
+// move:vI:X,Y,Z: what the viewer records for a drag or a move, rotate or scale (the exact
+// final position, so a replay is bit-identical).
+std::string check_move(const Mesh& mesh, const Step& step) {
+    named_vertex(mesh, step);
+    if (!is_finite(Vec3{step.amounts[0], step.amounts[1], step.amounts[2]})) {
+        return "cannot move: the position must be finite";
+    }
+    return {};
+}
+StepResult run_move(Mesh& mesh, const Step& step, const RunOptions&) {
+    const Vertex v = named_vertex(mesh, step);
+    mesh.position(v) = {step.amounts[0], step.amounts[1], step.amounts[2]};
+    return local(ElementRef::vertex(v),
+                 "moved vertex " + idx(v.idx()) + " to (" + amount_text(step.amounts[0]) + ", " +
+                     amount_text(step.amounts[1]) + ", " + amount_text(step.amounts[2]) + ")");
+}
+
 // ------------------------------------------------------------------ whole-mesh operations
+
+// compact: the numbering a file gets, now. The viewer renumbers after every edit that deletes
+// elements and records this step, so a recorded session names the same elements on replay.
+std::string check_compact(const Mesh&, const Step&) {
+    return {};
+}
+StepResult run_compact(Mesh& mesh, const Step&, const RunOptions&) {
+    const bool had_garbage = mesh.has_garbage();
+    mesh.garbage_collection();
+    StepResult result;
+    result.renumbers = had_garbage;
+    result.topology = had_garbage;
+    result.message = had_garbage ? "renumbered densely: V " + std::to_string(mesh.n_vertices()) +
+                                       " E " + std::to_string(mesh.n_edges()) + " F " +
+                                       std::to_string(mesh.n_faces())
+                                 : "nothing to renumber (no deleted elements)";
+    return result;
+}
 
 std::size_t non_triangles(const Mesh& mesh) {
     std::size_t n = 0;
@@ -449,6 +484,10 @@ constexpr std::array kVerbs{
     Verb{"crease", kEdgeArg, 0, 0, kNoDefaults, "crease:A-B",
          "toggles the `e:crease` mark of A-B (kept by COLLADA, used by Loop)",
          "toggle crease on the selected edge", check_crease, run_crease},
+    Verb{"move", kVertexArg, 3, 3, kNoDefaults, "move:vI:X,Y,Z",
+         "puts vertex I at (X, Y, Z) (the viewer records drags and move, rotate and scale "
+         "this way)",
+         "drag the selected vertex (M moves a selection)", check_move, run_move},
     Verb{"loop", kWholeMesh | kLevels, 0, 0, kNoDefaults, "loop, loop:K",
          "K levels (default 1) of Loop subdivision (Warren weights) of a triangle mesh; old "
          "vertices keep their indices, the vertex on old edge `e` gets index `V + e`",
@@ -483,6 +522,11 @@ constexpr std::array kVerbs{
          "reverses every face, so normals point the other way",
          "reverse the orientation of every face", check_flip_orientation,
          run_flip_orientation},
+    Verb{"compact", kWholeMesh, 0, 0, kNoDefaults, "compact",
+         "renumbers vertices, edges and faces from 0 without the deleted ones, as a written "
+         "file numbers them (the viewer does it after every edit that deletes elements, and "
+         "records it in the session)",
+         "renumber densely (the viewer does it after every edit)", check_compact, run_compact},
 };
 // clang-format on
 

@@ -468,6 +468,11 @@ void App::apply(const Outcome& outcome) {
     if (c & kAskSavePath) {
         panels_.ask_path(Panels::Prompt::SaveAs, editor_.path());
     }
+    if (c & kAskSessionPath) {
+        std::filesystem::path session = editor_.path();
+        panels_.ask_path(Panels::Prompt::ExportSession,
+                         session.empty() ? session : session.replace_extension(".ops"));
+    }
     if (c & kAskOpenPath) {
         panels_.ask_path(Panels::Prompt::Open, editor_.path());
     }
@@ -652,6 +657,9 @@ void App::draw_frame() {
     }
     if (requests.open) {
         open_file(*requests.open);
+    }
+    if (requests.export_session) {
+        apply(editor_.export_session(*requests.export_session));
     }
     if (requests.view_changed) {
         redraw_frames_ = std::max(redraw_frames_, 1);

@@ -61,6 +61,7 @@ constexpr std::array kTable{
     Binding{key_of('E'), kNoMods, kMeshModes, {Command::ToEdge}, "E", "from the selection go to its edge"},
     Binding{key_of('G'), kNoMods, kMeshModes, {Command::ToFace}, "G", "from the selection go to its face"},
     Binding{key_of('K'), kNoMods, kMeshModes, edit("crease"), "K", {}},
+    Binding{key_of('V'), kShift, kMeshModes, {Command::Validate}, "Shift+V", "check every invariant of the halfedge mesh (validate()); a broken one is selected, framed and named"},
     // Display.
     Binding{key_of('Q'), kNoMods, kMeshModes, {Command::ToggleSmooth}, "Q", "toggle smooth (area-weighted vertex normals) / flat shading"},
     Binding{key_of('W'), kNoMods, kMeshModes, {Command::ToggleWireframe}, "W", "toggle wireframe overlay"},
@@ -83,6 +84,7 @@ constexpr std::array kTable{
     Binding{key_of('Y'), kCtrl, kAllModes, {Command::Redo}, "Ctrl+Shift+Z / Ctrl+Y", "redo"},
     Binding{key_of('S'), kCtrl, kAllModes, {Command::Save}, "Ctrl+S", "save"},
     Binding{key_of('S'), kCtrl | kShift, kAllModes, {Command::SaveAs}, "Ctrl+Shift+S", "save as"},
+    Binding{key_of('E'), kCtrl | kShift, kMeshMode, {Command::ExportSession}, "Ctrl+Shift+E", "export the session: every edit since the file was opened, as steps `meshedit convert IN OUT --ops @FILE` replays"},
     Binding{key_of('O'), kCtrl, kAllModes, {Command::Open}, "Ctrl+O", "open a file"},
     Binding{key_of('P'), kNoMods, kAllModes, {Command::Screenshot}, "P", "screenshot to PNG (the 3D view the panels leave free, in Pictures/MeshEdit)"},
     Binding{Key::Space, kNoMods, kAllModes, {Command::ResetCamera}, "Space", "reset the camera"},

@@ -69,6 +69,7 @@ Outcome Editor::run(Action action) {
         case Command::SelectNone:
         case Command::SelectLoop:
         case Command::FrameSelection:
+        case Command::Validate:
             return run_selection(c);
         case Command::Next:
         case Command::Twin:
@@ -95,6 +96,8 @@ Outcome Editor::run(Action action) {
             return save();
         case Command::SaveAs:
             return {kAskSavePath, ""};
+        case Command::ExportSession:
+            return {kAskSessionPath, ""};
         case Command::Open:
             return {kAskOpenPath, ""};
         case Command::Escape:
@@ -196,7 +199,10 @@ Outcome Editor::edit(const std::function<std::string()>& check,
     if ((edited.changes & kTopology) != 0) {
         hover_ = {};
     }
-    compact();
+    doc_.session.insert(doc_.session.end(), edited.steps.begin(), edited.steps.end());
+    if (compact()) {
+        doc_.session.emplace_back("compact");
+    }
     return {edited.changes, std::move(edited.message)};
 }
 

@@ -67,7 +67,8 @@ Outcome Editor::run_curve(Action action) {
                     points.push_back(Vec3{});
                     return Edited{kCurve | kSelection | kDisplay,
                                   "added control point 0 (1 points)",
-                                  ElementRef::vertex(Vertex(0))};
+                                  ElementRef::vertex(Vertex(0)),
+                                  {}};
                 }
                 const std::size_t i = acted_on(doc.selection, n);
                 const Vec3 p = i + 1 < n ? 0.5 * (points[i] + points[i + 1])
@@ -77,7 +78,8 @@ Outcome Editor::run_curve(Action action) {
                 return Edited{kCurve | kSelection | kDisplay,
                               "added control point " + std::to_string(i + 1) + " (" +
                                   std::to_string(points.size()) + " points)",
-                              ElementRef::vertex(Vertex(static_cast<std::uint32_t>(i + 1)))};
+                              ElementRef::vertex(Vertex(static_cast<std::uint32_t>(i + 1))),
+                              {}};
             });
             if (n > 0 && at_bottom && view_.level >= 0) {
                 view_.level = last_level + 1;  // keep showing B(t)
@@ -96,7 +98,8 @@ Outcome Editor::run_curve(Action action) {
                 return Edited{kCurve | kSelection | kDisplay,
                               "removed control point " + std::to_string(i) + " (" +
                                   std::to_string(n - 1) + " points)",
-                              ElementRef{}};
+                              ElementRef{},
+                              {}};
             });
             if (!outcome.refused) {
                 view_.level = std::min(view_.level, last_level - 1);
@@ -154,7 +157,8 @@ Outcome Editor::run_surface(Command command) {
                                              "density " + std::to_string(density) + ": " +
                                                  std::to_string(doc.mesh.n_faces()) + " faces" +
                                                  (had_edits ? " (mesh edits replaced)" : ""),
-                                             ElementRef{}};
+                                             ElementRef{},
+                                             {}};
                            });
     if (!outcome.refused) {
         pristine_revisions_.insert(doc_.revision);

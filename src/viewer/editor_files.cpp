@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "meshedit/files/files.h"
 #include "meshedit/io/document.h"
 #include "meshedit/io/io.h"
 #include "meshedit/viewer/editor.h"
@@ -67,6 +68,11 @@ Outcome Editor::open(const std::filesystem::path& path) {
     }
     const Mode mode = doc.mode;
     set_document(std::move(doc), path);
+    try {
+        session_source_hash_ = content_hash(read_file(path));
+    } catch (const IoError&) {
+        session_source_hash_.clear();  // read a moment ago; a session file just lacks the hash
+    }
     if (mode == Mode::Surface) {
         pristine_revisions_.insert(doc_.revision);
     }
@@ -83,6 +89,8 @@ void Editor::set_document(Document document, std::filesystem::path path) {
     pristine_revisions_.clear();
     hover_ = {};
     path_ = std::move(path);
+    session_source_ = path_;
+    session_source_hash_.clear();
     view_.level = 0;
     view_.t = 0.5;
     // Flat below kSmoothFromFaces faces, as CS184 starts: on a cube or an icosahedron the

@@ -33,6 +33,7 @@ Outcome Editor::edit_mesh(std::string_view name) {
                         const ops::StepResult result = verb->run(doc.mesh, step, run);
                         Edited edited;
                         edited.message = result.message;
+                        edited.steps = {step.text};
                         // A whole-mesh operation may shrink or grow the shape: frame it.
                         edited.changes = kTopology | kSelection | kFrameMesh;
                         if (result.renumbers && doc.selection.kind != ElementRef::Kind::Vertex) {
@@ -88,14 +89,15 @@ Outcome Editor::edit_steps(const std::vector<ops::Step>& steps, std::string_view
             select_made(doc, run.made);
             Edited edited;
             edited.message = run.message;
+            edited.steps = run.steps;
             edited.changes = topology ? kTopology | kSelection : kSelection | kDisplay;
             return edited;
         });
 }
 
-void Editor::compact() {
+bool Editor::compact() {
     if (doc_.mode == Mode::Curve || !doc_.mesh.has_garbage()) {
-        return;
+        return false;
     }
     GarbageCollectionMap map;
     doc_.mesh.garbage_collection(&map);
@@ -108,6 +110,7 @@ void Editor::compact() {
     }
     doc_.also_selected = std::move(also);
     hover_ = {};
+    return true;
 }
 
 }  // namespace meshedit::viewer

@@ -254,14 +254,18 @@ Outcome Editor::apply_modal() {
         const std::vector<ops::Step> steps = steps_for_selection(
             doc.mesh, v, m.targets, std::span<const double>(m.amounts.data(), n), hint);
         const StepsRun run = run_steps(doc.mesh, steps, verb);
+        m.steps.clear();
         if (run.ran == 0) {
             m.refusal = run.first_refusal;
             doc = m.base;
         } else {
             select_made(doc, run.made);
+            m.steps = run.steps;
         }
         doc_ = std::move(doc);
-        compact();
+        if (compact()) {
+            m.steps.emplace_back("compact");
+        }
         hover_ = {};
         return {kTopology | kSelection, modal_status()};
     }
@@ -321,6 +325,16 @@ Outcome Editor::confirm_modal() {
         return {kSelection, "nothing moved"};
     }
     const std::string what = std::string(name_of(m.kind)) + " applied (Ctrl+Z undoes it)";
+    if (verb_of(m.kind) != nullptr) {
+        doc_.session.insert(doc_.session.end(), m.steps.begin(), m.steps.end());
+    } else {
+        for (const std::uint32_t v : m.vertices) {
+            const Vec3& p = doc_.mesh.position(Vertex(v));
+            if (p != m.base.mesh.position(Vertex(v))) {
+                doc_.session.push_back(move_step(doc_.mesh, v));
+            }
+        }
+    }
     history_.push(std::move(m.base));
     doc_.revision = next_revision_++;
     quit_armed_ = false;

@@ -1,6 +1,7 @@
 // The editor's selection: picking, moving it through the connectivity (N T H V E G), and
 // dragging the selected vertex or control point.
 
+#include "meshedit/core/validate.h"
 #include "meshedit/viewer/editor.h"
 #include "selection_steps.h"
 
@@ -209,10 +210,47 @@ Outcome Editor::run_selection(Command command) {
             return {kFrameSelection, "framed the selection (Space resets the camera)"};
         case Command::Delete:
             return delete_selection();
+        case Command::Validate:
+            return validate_mesh();
         default:
             break;
     }
     return {};
+}
+
+Outcome Editor::validate_mesh() {
+    const Mesh& mesh = doc_.mesh;
+    const std::optional<ValidationError> error = validate(mesh);
+    if (!error) {
+        return {kNothing, "valid: every invariant of docs/halfedge.md holds (" +
+                              std::to_string(mesh.n_vertices()) + " vertices, " +
+                              std::to_string(mesh.n_edges()) + " edges, " +
+                              std::to_string(mesh.n_faces()) + " faces)"};
+    }
+    // The culprit, selected without walking anything the failure may have broken: a face by
+    // its anchor halfedge (its loop may not close), the others as themselves.
+    ElementRef culprit;
+    const std::uint32_t i = error->index;
+    switch (error->kind) {
+        case ElementKind::Vertex:
+            culprit = i < mesh.vertices_size() ? ElementRef::vertex(Vertex(i)) : ElementRef{};
+            break;
+        case ElementKind::Edge:
+            culprit = i < mesh.edges_size() ? ElementRef::edge(Edge(i)) : ElementRef{};
+            break;
+        case ElementKind::Halfedge:
+            culprit = i < mesh.halfedges_size() ? ElementRef::halfedge(Halfedge(i)) : ElementRef{};
+            break;
+        case ElementKind::Face:
+            if (i < mesh.faces_size() && mesh.halfedge(Face(i)).idx() < mesh.halfedges_size()) {
+                culprit = ElementRef::halfedge(mesh.halfedge(Face(i)));
+            }
+            break;
+    }
+    doc_.selection = culprit;
+    doc_.also_selected.clear();
+    return {kSelection | (culprit.is_none() ? 0u : unsigned{kFrameSelection}),
+            "invalid (" + error->invariant + "): " + error->message, true};
 }
 
 bool Editor::begin_drag() {
@@ -288,9 +326,17 @@ Outcome Editor::drag_to(const Vec3& position, double pixel) {
         target = doc_.mode == Mode::Curve ? &doc_.curve.control_points[drag_index_]
                                           : &doc_.mesh.position(Vertex(drag_index_));
         drag_from_ = *target;
+        drag_session_step_ = doc_.session.size();
     }
     *target = wanted;
     const bool curve = doc_.mode == Mode::Curve;
+    if (!curve) {
+        // One step per drag: the first move adds it, the others update where it ends.
+        if (drag_session_step_ == doc_.session.size()) {
+            doc_.session.emplace_back();
+        }
+        doc_.session[drag_session_step_] = move_step(doc_.mesh, drag_index_);
+    }
     return {curve ? unsigned{kCurve} : unsigned{kGeometry},
             "moving " + moved_by(curve, drag_index_, wanted - drag_from_)};
 }

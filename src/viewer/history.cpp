@@ -26,6 +26,9 @@ std::size_t Document::bytes() const {
     }
     n += curve.control_points.capacity() * sizeof(Vec3);
     n += also_selected.capacity() * sizeof(ElementRef);
+    for (const std::string& step : session) {
+        n += sizeof(std::string) + step.capacity();
+    }
     return n;
 }
 

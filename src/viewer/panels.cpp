@@ -40,7 +40,7 @@ void Panels::ask_path(Prompt prompt, const std::filesystem::path& document) {
     prompt_ = prompt;
     prompt_fresh_ = true;
     place_cursor_ = true;
-    path_ = prompt_start(document, prompt == Prompt::SaveAs);
+    path_ = prompt_start(document, prompt != Prompt::Open);
     folder_ = std::filesystem::path(prompt_start(document, false));
     candidates_.clear();
 }
@@ -371,7 +371,9 @@ void Panels::draw_prompt(PanelRequests& requests) {
     if (prompt_ == Prompt::None) {
         return;
     }
-    const char* title = prompt_ == Prompt::SaveAs ? "Save as" : "Open";
+    const char* title = prompt_ == Prompt::SaveAs          ? "Save as"
+                        : prompt_ == Prompt::ExportSession ? "Export session"
+                                                           : "Open";
     if (prompt_fresh_) {
         ImGui::OpenPopup(title);
     }
@@ -381,6 +383,8 @@ void Panels::draw_prompt(PanelRequests& requests) {
         ImGui::TextUnformatted(
             prompt_ == Prompt::SaveAs
                 ? "File name (.dae .obj .off .gltf .glb for meshes, .bzc for curves):"
+            : prompt_ == Prompt::ExportSession
+                ? "Session file (meshedit convert IN OUT --ops @FILE replays it):"
                 : "File to open (.dae .obj .off .gltf .glb .bez .bzc):");
         if (prompt_fresh_) {
             ImGui::SetKeyboardFocusHere();
@@ -403,12 +407,17 @@ void Panels::draw_prompt(PanelRequests& requests) {
             ImGui::TextDisabled("%s", shown.c_str());
         }
         ImGui::TextDisabled("Tab completes a name; ~ is your home folder");
-        const bool ok = ImGui::Button(prompt_ == Prompt::SaveAs ? "Save" : "Open") || submit_;
+        const bool ok = ImGui::Button(prompt_ == Prompt::SaveAs          ? "Save"
+                                      : prompt_ == Prompt::ExportSession ? "Export"
+                                                                         : "Open") ||
+                        submit_;
         ImGui::SameLine();
         const bool cancel = ImGui::Button("Cancel") || cancel_;
         submit_ = cancel_ = false;
         if ((entered || ok) && !path_.empty()) {
-            (prompt_ == Prompt::SaveAs ? requests.save_as : requests.open) =
+            (prompt_ == Prompt::SaveAs          ? requests.save_as
+             : prompt_ == Prompt::ExportSession ? requests.export_session
+                                                : requests.open) =
                 resolve_prompt_path(path_, folder_);
             prompt_ = Prompt::None;
             ImGui::CloseCurrentPopup();

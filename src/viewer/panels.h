@@ -29,13 +29,14 @@ struct FrameStats {
 struct PanelRequests {
     std::optional<std::filesystem::path> save_as;
     std::optional<std::filesystem::path> open;
+    std::optional<std::filesystem::path> export_session;
     bool view_changed = false;     ///< a shading control moved
     std::optional<Action> action;  ///< a control that stands for a key (up axis, orbit)
 };
 
 class Panels {
 public:
-    enum class Prompt { None, SaveAs, Open };
+    enum class Prompt { None, SaveAs, Open, ExportSession };
 
     /// Shows the path prompt (a small modal) for the document at `document`: open starts at
     /// its folder, save as at its path (paths.h); the cursor always starts at the end, Tab

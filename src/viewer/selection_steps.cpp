@@ -135,6 +135,7 @@ StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps, std::string_
         }
         ops::StepResult result = step.verb->run(mesh, step, {});
         ++run.ran;
+        run.steps.push_back(step.text);
         if (!result.selected.is_none()) {
             run.made.push_back(result.selected);
         }
@@ -156,6 +157,12 @@ StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps, std::string_
 }  // namespace meshedit::viewer
 
 namespace meshedit::viewer {
+
+std::string move_step(const Mesh& mesh, std::uint32_t v) {
+    const Vec3& p = mesh.position(Vertex(v));
+    const double at[] = {p.x, p.y, p.z};
+    return ops::make_step("move", mesh, ElementRef::vertex(Vertex(v)), at).text;
+}
 
 void select_made(Document& doc, const std::vector<ElementRef>& made) {
     doc.selection = made.empty() ? ElementRef{} : made.back();

@@ -52,6 +52,48 @@ TEST_F(ViewerE2E, OpeningOverUnsavedWorkAsksFirst) {
     expect_exit(*viewer, 0);
 }
 
+// A session, recorded as a person works: click an edge, F, S, L, undo, E (the new vertex's
+// edge), C; Ctrl+S saves, Ctrl+Shift+E exports the session, and `meshedit convert` replays it
+// from the original file to the same bytes as the saved one.
+TEST_F(ViewerE2E, ExportedSessionReplaysToTheSavedFile) {
+    const fs::path original = source_dir() / "dae" / "cube.dae";
+    const fs::path doc = work_ / "cube.dae";
+    std::unique_ptr<BackgroundProcess> viewer;
+    std::optional<ViewerWindow> opened;
+    ASSERT_NO_FATAL_FAILURE(open_cube_and_flip(viewer, opened));
+    const ViewerWindow& window = *opened;
+    std::string title;
+    window.key("s");  // splits the flipped edge, which stays selected
+    ASSERT_TRUE(window.wait_title("V 9 E 21 F 14 *", false, 20s, &title)) << title;
+    window.key("l");
+    ASSERT_TRUE(window.wait_title("V 30 E 84 F 56 *", false, 60s, &title)) << title;
+    window.key("ctrl+z");
+    ASSERT_TRUE(window.wait_title("V 9 E 21 F 14 *", false, 20s, &title)) << title;
+    window.keys({"e", "c"});  // the new vertex's edge, collapsed
+    ASSERT_TRUE(window.wait_title("V 8 E 18 F 12 *", false, 20s, &title)) << title << "\n"
+                                                                          << viewer->err();
+    window.key("ctrl+s");
+    ASSERT_TRUE(window.wait_title(" *", true, 20s, &title)) << title;
+
+    const fs::path session = work_ / "cube.ops";
+    ASSERT_NO_FATAL_FAILURE(answer_prompt(window, "ctrl+shift+e", session));
+    ASSERT_TRUE(wait_until([&] { return fs::exists(session); }, 20s)) << viewer->err();
+    const std::string text = read_file(session);
+    std::cout << "session:\n" << text;
+    EXPECT_EQ(count_of(text, "\nloop"), 0u) << "the undone Loop is not in the session";
+    EXPECT_NE(text.find("# input-fnv1a64: " + content_hash(read_file(original))),
+              std::string::npos);
+
+    const fs::path replayed = work_ / "replayed.dae";
+    const RunResult convert = run_meshedit(
+        {"convert", original.string(), replayed.string(), "--ops", "@" + session.string()});
+    ASSERT_EQ(convert.exit_code, 0) << convert.err;
+    EXPECT_EQ(convert.err.find("another file"), std::string::npos) << convert.err;
+    EXPECT_TRUE(same_file_bytes(replayed, doc)) << "the replay differs from the saved file";
+    window.key("ctrl+q");
+    expect_exit(*viewer, 0);
+}
+
 /// The silhouette's bounding box in a screenshot: pixels that differ from the background
 /// (the gradient is constant along a row, so the row's last pixel stands for it).
 struct Extent {

@@ -368,9 +368,15 @@ protected:
 
     /// Ctrl+O, then (once the prompt shows) its text replaced by `path`, and Return.
     void open_through_prompt(const ViewerWindow& window, const fs::path& path) {
-        const fs::path before = logs_ / "before_open.png";
+        answer_prompt(window, "ctrl+o", path);
+    }
+
+    /// `key` (Ctrl+O, Ctrl+Shift+S, Ctrl+Shift+E), then (once its path prompt shows) the
+    /// prompt's text replaced by `path`, and Return.
+    void answer_prompt(const ViewerWindow& window, const std::string& key, const fs::path& path) {
+        const fs::path before = logs_ / "before_prompt.png";
         ASSERT_TRUE(window.capture(before));
-        window.key("ctrl+o");
+        window.key(key);
         const RgbImage plain = read_rgb(before);
         const bool prompt_shown = wait_until(
             [&] {
@@ -391,7 +397,7 @@ protected:
                 return changed > 1000;
             },
             20s, 100ms);
-        ASSERT_TRUE(prompt_shown) << "no Open prompt after Ctrl+O";
+        ASSERT_TRUE(prompt_shown) << "no path prompt after " << key;
         sleep_for(300ms);  // the text field takes the focus one frame after the prompt shows
         window.key("ctrl+a");
         window.type(path.string());

@@ -41,6 +41,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('E'), 0, kMeshModes, {Command::ToEdge}},
             {key_of('G'), 0, kMeshModes, {Command::ToFace}},
             {key_of('K'), 0, kMeshModes, edit("crease")},
+            {key_of('V'), kShift, kMeshModes, {Command::Validate}},
             // The local operations of polygon meshes (docs/spec.md §4).
             {key_of('S'), kShift, kMeshModes, edit("bisect")},
             {Key::Delete, 0, kMeshModes, {Command::Delete}},
@@ -75,6 +76,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('Y'), kCtrl, kAllModes, {Command::Redo}},
             {key_of('S'), kCtrl, kAllModes, {Command::Save}},
             {key_of('S'), kShiftCtrl, kAllModes, {Command::SaveAs}},
+            {key_of('E'), kShiftCtrl, kMeshMode, {Command::ExportSession}},
             {key_of('O'), kCtrl, kAllModes, {Command::Open}},
             {key_of('P'), 0, kAllModes, {Command::Screenshot}},
             {Key::Space, 0, kAllModes, {Command::ResetCamera}},

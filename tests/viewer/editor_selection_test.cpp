@@ -11,6 +11,7 @@
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
+#include "meshedit/core/validate.h"
 #include "meshedit/io/io.h"
 #include "support/fixtures.h"
 #include "support/mesh_compare.h"
@@ -229,6 +230,36 @@ TEST(Editor, DragIsOneUndoStep) {
     ed.end_drag();
     EXPECT_VALID(ed.mesh());
     EXPECT_EQ(ed.drag_to({0, 0, 0}).changes, unsigned{kNothing}) << "not dragging";
+}
+
+}  // namespace
+}  // namespace meshedit::viewer
+
+namespace meshedit::viewer {
+namespace {
+
+// Shift+V: a valid mesh says so with its counts; a corrupted one (a vertex anchored at a
+// halfedge that does not leave it, as a script might leave it) gets the culprit selected and
+// framed and the broken invariant named, refused so the status line shows it as a warning.
+TEST(EditorValidate, ValidSaysSoAndACorruptedMeshShowsItsCulprit) {
+    Editor ed = editor_with(shapes::cube());
+    const Outcome ok = ed.run({Command::Validate});
+    EXPECT_FALSE(ok.refused);
+    EXPECT_EQ(ok.message,
+              "valid: every invariant of docs/halfedge.md holds (8 vertices, 18 edges, 12 faces)");
+
+    Mesh broken = shapes::cube();
+    broken.set_halfedge(Vertex(0), broken.halfedge(Vertex(1)));
+    const std::optional<ValidationError> expected = validate(broken);
+    ASSERT_TRUE(expected);
+    ed.set_document(mesh_document(std::move(broken)));
+    const Outcome bad = ed.run({Command::Validate});
+    EXPECT_TRUE(bad.refused);
+    EXPECT_EQ(bad.message, "invalid (" + expected->invariant + "): " + expected->message);
+    EXPECT_NE(bad.changes & kFrameSelection, 0u);
+    ASSERT_EQ(expected->kind, ElementKind::Vertex);
+    EXPECT_EQ(ed.selection().kind, Kind::Vertex);
+    EXPECT_EQ(ed.selection().index, expected->index);
 }
 
 }  // namespace

@@ -136,6 +136,7 @@ public:
         EXPECT_TRUE(ed_.run({Command::Redo}).refused);
     }
 
+    const Editor& editor() const { return ed_; }
     std::size_t edits() const { return edits_; }
     std::size_t refusals() const { return refusals_; }
     std::size_t undos() const { return undos_; }

@@ -25,6 +25,10 @@ std::string file_extension(const std::filesystem::path& path);
 /// <reason>", "read error".
 std::string read_file(const std::filesystem::path& path, std::size_t max_bytes = 0);
 
+/// A fingerprint of `bytes`: their 64-bit FNV-1a hash as 16 lower-case hex digits. Session
+/// files name their input with it, so a replay on another file is noticed.
+std::string content_hash(std::string_view bytes);
+
 /// Writes `bytes` to `path` (created or truncated) and checks every step, so a full disk
 /// surfaces as an exception rather than a short file. \throws std::runtime_error.
 void write_file(const std::filesystem::path& path, std::string_view bytes);

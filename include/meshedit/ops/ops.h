@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -41,7 +42,7 @@ enum class Target { None, Vertex, Edge, Face, EdgePair };
 struct Verb;
 
 /// At most this many numbers follow a step's element (`extrude:f7:0.2,0.9`).
-inline constexpr std::size_t kMaxAmounts = 2;
+inline constexpr std::size_t kMaxAmounts = 3;
 
 /// One parsed step: a verb, the element it names and its amounts.
 struct Step {
@@ -135,6 +136,16 @@ Step parse_step(std::string_view text);
 /// Parses a comma list. \throws SyntaxError naming the offending item.
 std::vector<Step> parse(std::string_view list);
 
+/// The steps of a session file (`--ops @FILE`; what the viewer's Ctrl+Shift+E exports): lines
+/// that start with '#' are comments (the header), every other line holds one step or a comma
+/// list; blank lines are skipped. \throws SyntaxError naming the line.
+std::vector<Step> parse_session(std::string_view text);
+/// A session file: each `header` line after "# ", then one step per line.
+std::string session_text(const std::vector<std::string>& header,
+                         const std::vector<std::string>& steps);
+/// The value of a header line "# KEY: VALUE" of a session file, if it has one.
+std::optional<std::string> session_header_value(std::string_view text, std::string_view key);
+
 /// The step `verb` on `target` (a vertex, edge or face of `mesh`; none for whole-mesh verbs;
 /// `second` the other edge of a weld) with `amounts` (fewer than the verb takes: its
 /// defaults), written as the language writes it, so that its text parses back to the same
@@ -166,9 +177,9 @@ struct ApplyOptions {
 /// new vertex is appended (index = vertices_size() before the split), a collapse deletes the
 /// larger end without renumbering, and the subdivision verbs renumber as loop_subdivide()
 /// and quad_subdivide() document (old vertices keep their indices). Their levels are checked
-/// against the verbs' plans (plan_loop(), plan_quad_subdivision()) before any step runs. \throws OpError; steps before the failing one stay applied (callers write nothing
-/// on error).
-/// \return what the last step selected (its StepResult::selected): the result to show.
+/// against the verbs' plans (plan_loop(), plan_quad_subdivision()) before any step runs. \throws
+/// OpError; steps before the failing one stay applied (callers write nothing on error). \return
+/// what the last step selected (its StepResult::selected): the result to show.
 ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps,
                        const ApplyOptions& options = {});
 

@@ -70,6 +70,8 @@ enum class Command {
     Redo,
     Save,
     SaveAs,
+    ExportSession,  ///< write the session's steps for `meshedit convert --ops @FILE`
+    Validate,       ///< run validate(); on failure select and frame the culprit
     Open,
     Escape,  ///< clears the selection; with nothing selected, quits
     Quit,

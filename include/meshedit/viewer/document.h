@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "meshedit/bezier/bezier_curve.h"
@@ -34,6 +35,10 @@ struct Document {
     /// a boundary loop), in the order they were added; never holds `selection`.
     std::vector<ElementRef> also_selected;
     std::uint64_t revision = 0;  ///< identifies the content; new on every edit
+    /// Mesh mode: the steps of the edit language that made this mesh from the opened file,
+    /// in order (a drag is a `move`, the renumbering after a deleting edit a `compact`), so
+    /// undo and redo keep it in step with the mesh; Ctrl+Shift+E exports it.
+    std::vector<std::string> session;
 
     /// Bytes this document holds (for the history budget).
     std::size_t bytes() const;

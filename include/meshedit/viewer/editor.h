@@ -44,6 +44,7 @@ enum Change : unsigned {
                                  ///< re-upload everything
     kFrameSelection = 1u << 11,  ///< the camera should centre on selection_bounds()
     kFrameMesh = 1u << 12,       ///< the camera should frame the whole mesh, keeping its angle
+    kAskSessionPath = 1u << 13,  ///< the window should ask for a path, then export_session()
 };
 
 /// What the window measured since the interactive edit began.
@@ -107,6 +108,8 @@ struct ToolSettings {
 ///                         toggles; undo, redo, quitting; and edit(), the funnel every change
 ///                         of the document goes through
 ///   editor_files.cpp      open, save, save as, the window title
+///   editor_session.cpp    the session: the steps of the edit language that made the
+///                         mesh, exported for `meshedit convert --ops @FILE`
 ///   editor_mesh.cpp       mesh edits: the verbs of the edit language (meshedit/ops/ops.h)
 ///                         on the selection or the whole mesh, Delete; garbage collection
 ///                         (the steps a selection makes: selection_steps.cpp)
@@ -139,6 +142,10 @@ public:
     /// Saves to `path` and makes it the document's path (Ctrl+Shift+S after the window has
     /// asked for a path). Mesh/Surface write a mesh format; Curve writes .bzc.
     Outcome save_as(const std::filesystem::path& path);
+    /// Writes the session (Document::session) to `path` as a session file that `meshedit
+    /// convert IN OUT --ops @FILE` replays to the same mesh (Ctrl+Shift+E): a '#' header
+    /// naming the opened file and its content_hash(), then one step per line. Mesh mode only.
+    Outcome export_session(const std::filesystem::path& path);
     /// "name.dae — V 8 E 18 F 12 *" for the window title.
     std::string title() const;
 
@@ -257,6 +264,8 @@ private:
         /// The new selection; empty keeps the current one (remapped through garbage
         /// collection).
         std::optional<ElementRef> select;
+        /// The steps of the edit language that did it, for the session.
+        std::vector<std::string> steps;
     };
 
     /// The edit funnel (editor.cpp), the one way the document changes, as Scotty3D's
@@ -271,8 +280,9 @@ private:
     /// Records the document as an undo step and gives it a new revision; call before
     /// mutating doc_ (edit() and the first move of a drag).
     void snapshot();
-    /// Garbage-collects the mesh, remapping the selection, when it has deleted elements.
-    void compact();
+    /// Garbage-collects the mesh, remapping the selection, when it has deleted elements;
+    /// true if it did (the session then records a `compact`).
+    bool compact();
 
     /// The interactive edit under way (kind None: none).
     struct ModalState {
@@ -284,12 +294,13 @@ private:
         /// The amounts now: extrude height and shrink; inset shrink; bevel t; rotate degrees;
         /// scale factor.
         std::array<double, 2> amounts{};
-        Vec3 offset;          ///< Move: the offset now
-        Vec3 rotation_axis;   ///< Rotate: the unit axis now
-        std::string typed;    ///< digits typed so far
-        int axis = -1;        ///< the locked axis, or −1
-        ModalInput last;      ///< the last mouse input
-        std::string refusal;  ///< why the amounts now cannot apply, or empty
+        Vec3 offset;                     ///< Move: the offset now
+        Vec3 rotation_axis;              ///< Rotate: the unit axis now
+        std::string typed;               ///< digits typed so far
+        int axis = -1;                   ///< the locked axis, or −1
+        ModalInput last;                 ///< the last mouse input
+        std::string refusal;             ///< why the amounts now cannot apply, or empty
+        std::vector<std::string> steps;  ///< Extrude, Inset, Bevel: the steps now, for the session
     };
     /// Runs the modal edit with its amounts on a copy of its base.
     Outcome apply_modal();
@@ -298,6 +309,9 @@ private:
     /// what they made (edit_mesh, delete_selection); refused with the first reason if none
     /// runs.
     Outcome edit_steps(const std::vector<ops::Step>& steps, std::string_view what, bool topology);
+    /// Shift+V: validate(); on failure the culprit selected and framed, the broken
+    /// invariant's sentence as the (refused) outcome.
+    Outcome validate_mesh();
     /// " (3 selected)" when more than one element is selected.
     std::string count_text() const;
     Outcome run_navigation(Command command);
@@ -318,12 +332,16 @@ private:
     ProgressHook progress_hook_;
     ElementRef hover_;
     std::filesystem::path path_;
+    /// The file the session starts from and its content_hash() (set by open()).
+    std::filesystem::path session_source_;
+    std::string session_source_hash_;
     std::uint64_t saved_revision_ = 0;
     std::uint64_t next_revision_ = 1;
     ModalState modal_;
     bool dragging_ = false;
     bool drag_moved_ = false;
-    Vec3 drag_from_;  ///< where the dragged point was before the drag
+    Vec3 drag_from_;                     ///< where the dragged point was before the drag
+    std::size_t drag_session_step_ = 0;  ///< the drag's `move` in doc_.session
     bool quit_armed_ = false;
     bool replace_armed_ = false;         ///< the next open() may discard unsaved changes
     std::filesystem::path lossy_armed_;  ///< the next save to this path may lose what it said
