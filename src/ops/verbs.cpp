@@ -223,8 +223,12 @@ StepResult run_crease(Mesh& mesh, const Step& step, const RunOptions&) {
 // final position, so a replay is bit-identical).
 std::string check_move(const Mesh& mesh, const Step& step) {
     named_vertex(mesh, step);
-    if (!is_finite(Vec3{step.amounts[0], step.amounts[1], step.amounts[2]})) {
+    const Vec3 p{step.amounts[0], step.amounts[1], step.amounts[2]};
+    if (!is_finite(p)) {
         return "cannot move: the position must be finite";
+    }
+    if (!std::isfinite(sqrnorm(p))) {  // as a drag: normals and areas square coordinates
+        return "cannot move: the position is beyond the range of numbers (its square overflows)";
     }
     return {};
 }

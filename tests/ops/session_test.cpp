@@ -30,6 +30,9 @@ TEST(OpsSession, MoveSetsExactDoublesAndRefusesNonFinite) {
     const Step nan = make_step("move", mesh, ElementRef::vertex(Vertex(4)),
                                std::vector<double>{0.0, std::nan(""), 0.0});
     EXPECT_EQ(nan.verb->check(mesh, nan), "cannot move: the position must be finite");
+    const Step huge = parse("move:v4:1e300,0,0")[0];
+    EXPECT_EQ(huge.verb->check(mesh, huge),
+              "cannot move: the position is beyond the range of numbers (its square overflows)");
     EXPECT_TRUE(test::identical(mesh, before));
     EXPECT_THROW(run_step(mesh, parse("move:v99:0,0,0")[0]), OpError);
 }
