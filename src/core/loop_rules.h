@@ -1,6 +1,6 @@
 #pragma once
 // Private to meshedit_core: the Loop subdivision rules shared by the fast path
-// (subdivision.cpp) and the classic reference (subdivision_classic.cpp). Both paths gather
+// (subdivision.cpp) and the classic reference (loop_steps.cpp). Both paths gather
 // their inputs differently (raw arrays vs. circulators) and feed them through these
 // functions, so there is exactly one definition of every weight and rule.
 

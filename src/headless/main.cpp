@@ -95,6 +95,7 @@ int run(const Options& options) {
         if (options.features.value_or(!is_surface)) {
             add_feature_edges(mesh, style, overlay);
         }
+        add_loop_phase_marks(mesh, style, overlay);
         scene.mesh = &mesh;
         scene.patches = patches;
         scene.show_nets = options.net && is_surface;

@@ -10,6 +10,7 @@
 
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/loop_steps.h"
 #include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/remesh.h"
 #include "meshedit/core/simplify.h"
@@ -270,7 +271,21 @@ std::size_t non_triangles(const Mesh& mesh) {
 
 // Loop is defined on triangles; rather than cut polygons the user did not ask to cut, it
 // says so and names the step that does (the core's loop_subdivide() still triangulates).
+// A whole-mesh subdivision in the middle of a phased Loop would carry its half-done state
+// into a new mesh.
+std::string phased_loop_refusal(const Mesh& mesh) {
+    const int next = next_loop_phase(mesh);
+    return next == 1
+               ? std::string()
+               : "cannot subdivide: a phased Loop is under way (phase " + std::to_string(next) +
+                     " of 4 is next: `loop_step:" + std::to_string(5 - next) +
+                     "` finishes it, undo goes back)";
+}
+
 std::string check_loop(const Mesh& mesh, const Step& step) {
+    if (std::string why = phased_loop_refusal(mesh); !why.empty()) {
+        return why;
+    }
     if (mesh.n_faces() == 0) {
         return "cannot subdivide: the mesh has no faces";
     }
@@ -297,7 +312,42 @@ StepResult run_loop(Mesh& mesh, const Step& step, const RunOptions& options) {
     return result;
 }
 
+// loop_step, loop_step:N: the next N phases of a phased Loop (core/loop_steps.h).
+std::string check_loop_step_verb(const Mesh& mesh, const Step& step) {
+    const int next = next_loop_phase(mesh);
+    if (step.levels > 5 - next) {
+        return "cannot step Loop: " + std::to_string(step.levels) + " phases asked, but phase " +
+               std::to_string(next) + " of 4 is next (" + std::to_string(5 - next) + " remain)";
+    }
+    if (next == 1) {
+        Step one = step;
+        one.levels = 1;
+        if (std::string why = check_loop(mesh, one); !why.empty()) {
+            return why;
+        }
+    }
+    return check_loop_step(mesh);
+}
+StepResult run_loop_step(Mesh& mesh, const Step& step, const RunOptions& options) {
+    StepResult result;
+    result.renumbers = next_loop_phase(mesh) == 1 && mesh.has_garbage();
+    LoopOptions loop;
+    loop.weights = options.weights;
+    for (int phase = 0; phase < step.levels; ++phase) {
+        const LoopStepReport report = loop_step(mesh, loop);
+        result.message = report.message;
+    }
+    return result;
+}
+// A phased Loop makes what one level makes.
+SubdivisionPlan plan_loop_step(const Mesh& mesh, int) {
+    return plan_loop(mesh, 1);
+}
+
 std::string check_quads(const Mesh& mesh, const Step& step) {
+    if (std::string why = phased_loop_refusal(mesh); !why.empty()) {
+        return why;
+    }
     if (mesh.n_faces() == 0) {
         return "cannot subdivide: the mesh has no faces";
     }
@@ -496,6 +546,12 @@ constexpr std::array kVerbs{
          "K levels (default 1) of Loop subdivision (Warren weights) of a triangle mesh; old "
          "vertices keep their indices, the vertex on old edge `e` gets index `V + e`",
          "Loop-subdivide the mesh", check_loop, run_loop, plan_loop},
+    Verb{"loop_step", kWholeMesh | kLevels, 0, 0, kNoDefaults, "loop_step, loop_step:N",
+         "the next N phases (default 1) of Loop as it is taught: 1 compute the new positions, "
+         "2 split every edge, 3 flip the new edges that join an old and a new vertex, 4 move "
+         "every vertex; four phases make one `loop`",
+         "Loop one phase at a time (positions, split, flip, move)", check_loop_step_verb,
+         run_loop_step, plan_loop_step},
     Verb{"catmull_clark", kWholeMesh | kLevels, 0, 0, kNoDefaults,
          "catmull_clark, catmull_clark:K",
          "K levels (default 1) of Catmull-Clark subdivision (OpenSubdiv's Catmark rules, "

@@ -6,6 +6,7 @@
 
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/display_fan.h"
+#include "meshedit/core/loop_steps.h"
 #include "meshedit/core/normals.h"
 
 namespace meshedit {
@@ -133,6 +134,42 @@ void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch
         }
         out.lines.push_back({mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)),
                              boundary ? style.boundary : style.crease, style.feature_width_px});
+    }
+}
+
+void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out) {
+    const auto target = mesh.get_property<Vertex, Vec3>(kLoopTarget);
+    const auto has_target = mesh.get_property<Vertex, std::uint8_t>(kLoopHasTarget);
+    if (!target || !has_target) {
+        return;
+    }
+    const auto is_new = mesh.get_property<Vertex, std::uint8_t>(kLoopNewVertex);
+    const auto new_edge = mesh.get_property<Edge, std::uint8_t>(kLoopNewEdge);
+    const auto flipped = mesh.get_property<Edge, std::uint8_t>(kLoopFlippedEdge);
+    const float thin = style.feature_width_px;
+    for (Edge e : mesh.edges()) {
+        const bool turned = flipped && flipped[e] != 0;
+        if (turned || (new_edge && new_edge[e] != 0)) {
+            out.lines.push_back({mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)),
+                                 turned ? style.loop_flipped : style.loop_new, thin});
+        }
+    }
+    if (const auto edge_point = mesh.get_property<Edge, Vec3>(kLoopEdgePoint)) {
+        for (Edge e : mesh.edges()) {
+            out.points.push_back({edge_point[e], style.loop_new, style.loop_point_px});
+        }
+    }
+    for (Vertex v : mesh.vertices()) {
+        if (has_target[v] == 0) {
+            continue;
+        }
+        if (is_new && is_new[v] != 0) {
+            out.points.push_back({mesh.position(v), style.loop_new, style.loop_point_px});
+        }
+        if (target[v] != mesh.position(v)) {
+            out.lines.push_back({mesh.position(v), target[v], style.loop_target, thin});
+        }
+        out.points.push_back({target[v], style.loop_target, style.loop_point_px});
     }
 }
 

@@ -494,6 +494,7 @@ void App::rebuild_overlay(bool features_changed) {
         features_.clear();
         if (editor_.mode() == Mode::Mesh) {
             add_feature_edges(editor_.mesh(), style, features_);
+            add_loop_phase_marks(editor_.mesh(), style, features_);
         }
     }
     OverlayBatch batch = features_;

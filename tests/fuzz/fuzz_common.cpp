@@ -106,7 +106,9 @@ void one_local_op(Mesh& mesh, std::uint64_t seed) {
     }
     // Amounts in [-0.5, 1.5): below 0, inside and beyond the ranges the ops accept.
     const std::vector<double> amounts{static_cast<double>((seed >> 33) % 200) / 100.0 - 0.5,
-                                      static_cast<double>((seed >> 41) % 200) / 100.0 - 0.5};
+                                      static_cast<double>((seed >> 41) % 200) / 100.0 - 0.5,
+                                      static_cast<double>((seed >> 49) % 200) / 100.0 - 0.5};
+    static_assert(ops::kMaxAmounts == 3, "one amount per slot a verb may take");
     const ops::Step step = ops::make_step(
         verb.name, mesh, target, std::span<const double>(amounts.data(), verb.max_amounts), second);
     const Mesh before = mesh;

@@ -70,9 +70,8 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
     EXPECT_EQ(syntax_error("twist:0-1"),
               "unknown op 'twist:0-1' (the verbs are flip, split, bisect, collapse, dissolve, "
               "make_boundary, fill, weld, poke, extrude, inset, bevel, crease, move, loop, "
-              "catmull_clark, "
-              "linear, "
-              "simplify, remesh, triangulate, flip_orientation or compact)");
+              "loop_step, catmull_clark, linear, simplify, remesh, triangulate, "
+              "flip_orientation or compact)");
     EXPECT_EQ(syntax_error("flip:0"),
               "bad op 'flip:0': expected flip:A-B with A-B (an edge by its two vertex indices)");
     EXPECT_EQ(syntax_error("flip:3-3"), "bad op 'flip:3-3': an edge needs two different vertices");

@@ -79,6 +79,16 @@ const std::vector<GoldenCase>& golden_cases() {
         {"cube_loop1", "dae/cube.dae", {"--ops", "loop:1", "--wireframe"}},
         {"cube_loop2", "dae/cube.dae", {"--ops", "loop:2", "--wireframe"}},
         {"cube_loop3", "dae/cube.dae", {"--ops", "loop:3", "--wireframe"}},
+        // Loop step by step (docs/teaching.md), flat: after phase 1 the new positions (teal)
+        // and the edge points (purple), on the inside of the bowl, where smoothing lifts
+        // them off the surface toward the eye (on a convex shape they sink inside it);
+        // after phase 2 the new vertices and the edges across the old faces (purple); after
+        // phase 3 the flipped edges (yellow). Phase 4 is cube_loop1.
+        {"bowl_loop_phase1",
+         "dae/bowl.dae",
+         {"--ops", "loop_step", "--flat", "--wireframe", "--camera", "30,35"}},
+        {"cube_loop_phase2", "dae/cube.dae", {"--ops", "loop_step:2", "--flat", "--wireframe"}},
+        {"cube_loop_phase3", "dae/cube.dae", {"--ops", "loop_step:3", "--flat", "--wireframe"}},
         {"torus_loop2", "dae/torus.dae", {"--ops", "loop:2", "--flat", "--camera", "30,40"}},
         {"creased_input", "dae/creased.dae", {"--wireframe"}},
         {"creased_loop3", "dae/creased.dae", {"--ops", "loop:3"}},

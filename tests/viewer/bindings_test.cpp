@@ -42,6 +42,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('G'), 0, kMeshModes, {Command::ToFace}},
             {key_of('K'), 0, kMeshModes, edit("crease")},
             {key_of('V'), kShift, kMeshModes, {Command::Validate}},
+            {key_of('L'), kAlt, kMeshModes, edit("loop_step")},
             // The local operations of polygon meshes (docs/spec.md §4).
             {key_of('S'), kShift, kMeshModes, edit("bisect")},
             {Key::Delete, 0, kMeshModes, {Command::Delete}},

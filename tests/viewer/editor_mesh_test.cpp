@@ -11,6 +11,7 @@
 #include <string>
 
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/loop_steps.h"
 #include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/remesh.h"
 #include "meshedit/core/shapes.h"
@@ -371,6 +372,43 @@ TEST(Editor, ProgressHookSeesTheOperationRise) {
     EXPECT_EQ(seen.front(), 0.0);
     EXPECT_EQ(seen.back(), 1.0);
     EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+}
+
+// Alt+L: Loop one phase per press, each one undo step named in the status line; L refuses
+// mid-way; four presses are the classic Loop; undo walks back through the phases.
+TEST(EditorLoopSteps, FourPressesAreLoopAndUndoWalksBack) {
+    Editor ed = editor_with(shapes::icosahedron());
+    std::vector<Mesh> states = {ed.mesh()};
+    const char* const messages[] = {
+        "Loop 1/4: computed the new position of 12 vertices and 30 edge points (nothing moved "
+        "yet)",
+        "Loop 2/4: split 30 edges",
+        "Loop 3/4: flipped 20 new edges that join an old and a new vertex",
+        "Loop 4/4: moved 42 vertices to their new positions"};
+    for (int phase = 1; phase <= 4; ++phase) {
+        const Outcome out = ed.press(key_of('L'), kAlt);
+        ASSERT_FALSE(out.refused) << out.message;
+        EXPECT_EQ(out.message, messages[phase - 1]);
+        states.push_back(ed.mesh());
+        if (phase == 2) {
+            const Outcome loop = ed.press(key_of('L'), kNoMods);
+            EXPECT_TRUE(loop.refused);
+            EXPECT_EQ(loop.message,
+                      "cannot subdivide: a phased Loop is under way (phase 3 of 4 is next: "
+                      "`loop_step:2` finishes it, undo goes back)");
+        }
+    }
+    Mesh classic = shapes::icosahedron();
+    loop_subdivide_classic(classic);
+    EXPECT_TRUE(test::identical(ed.mesh(), classic));
+    EXPECT_EQ(ed.document().session,
+              (std::vector<std::string>{"loop_step", "loop_step", "loop_step", "loop_step"}));
+    for (int phase = 3; phase >= 0; --phase) {
+        ASSERT_FALSE(ed.run({Command::Undo}).refused);
+        EXPECT_TRUE(test::identical(ed.mesh(), states[static_cast<std::size_t>(phase)]))
+            << "undo to before phase " << phase + 1;
+        EXPECT_EQ(next_loop_phase(ed.mesh()), phase + 1);
+    }
 }
 
 }  // namespace

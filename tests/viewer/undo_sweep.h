@@ -14,6 +14,7 @@
 
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/loop_steps.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/viewer/editor.h"
@@ -82,6 +83,8 @@ inline Mesh apply_directly(const Mesh& before, std::string_view verb, const Elem
         crease[e] = crease[e] != 0 ? 0 : 1;
     } else if (verb == "loop") {
         loop_subdivide(m);
+    } else if (verb == "loop_step") {
+        loop_step(m);
     } else {
         ADD_FAILURE() << "not an edit: " << verb;
     }
@@ -321,7 +324,7 @@ private:
             modal_op();
         } else if (roll < 44) {
             if (ed_.mesh().n_faces() < 200) {
-                mesh_op("loop");
+                mesh_op(roll < 42 ? "loop" : "loop_step");
             }
         } else if (roll < 52) {
             drag();

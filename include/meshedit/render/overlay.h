@@ -92,10 +92,22 @@ struct OverlayStyle {
     Color evaluated_point{0.9f, 0.1f, 0.1f, 1.0f};
     Color control_net{0.2f, 0.2f, 0.75f, 1.0f};
     Color unit_square{0.72f, 0.74f, 0.78f, 1.0f};
+    /// A phased Loop (core/loop_steps.h): where vertices will go, what the split made, what
+    /// the flips turned.
+    Color loop_target{0.0f, 0.55f, 0.6f, 1.0f};    ///< teal: new positions and the way there
+    Color loop_new{0.6f, 0.2f, 0.75f, 1.0f};       ///< purple: edge points, new vertices, edges
+    Color loop_flipped{0.95f, 0.75f, 0.0f, 1.0f};  ///< yellow: flipped edges
+    float loop_point_px = 8.0f;
 };
 
 /// Boundary edges and crease edges ("e:crease") of `mesh`.
 void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out);
+
+/// The state of a phased Loop (core/loop_steps.h), if one is under way: after phase 1 every
+/// vertex's new position (a teal dot, and a line from where it is) and every edge point
+/// (purple); after phase 2 the new vertices and the new edges across the old faces (purple);
+/// after phase 3 the flipped edges (yellow). Nothing when no phased Loop is under way.
+void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out);
 
 /// The highlight of one element in `color`: a vertex disc; an edge as a thick line; a
 /// halfedge as an arrow (a line plus an Arrowhead sized in pixels) inset into its face towards the
