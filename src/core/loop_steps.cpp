@@ -39,13 +39,20 @@ std::size_t compute_positions(Mesh& mesh, const LoopOptions& options) {
         Vec3 sharp_sum;
         std::size_t n = 0;
         std::size_t n_sharp = 0;
-        for (Halfedge h : mesh.halfedges(v)) {
+        // Clockwise from the anchor (h -> next(twin(h))), the order the fast path sums in:
+        // floating-point sums depend on it, and so the targets are L's to the last bit.
+        const Halfedge start = mesh.halfedge(v);
+        for (Halfedge h = start; h.is_valid();) {
             const Vec3& q = mesh.position(mesh.to_vertex(h));
             sum += q;
             ++n;
             if (is_sharp(mesh, crease, Mesh::edge(h))) {
                 sharp_sum += q;
                 ++n_sharp;
+            }
+            h = mesh.next(Mesh::twin(h));
+            if (h == start) {
+                break;
             }
         }
         const Vec3& p = mesh.position(v);
