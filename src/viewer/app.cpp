@@ -668,6 +668,14 @@ void App::draw_frame() {
     if (requests.action) {
         apply(editor_.run(*requests.action));
     }
+    if (requests.select) {
+        apply(editor_.select(*requests.select));
+    }
+    if (requests.hover && (requests.hover->kind != editor_.hover().kind ||
+                           requests.hover->index != editor_.hover().index)) {
+        editor_.set_hover(*requests.hover);
+        rebuild_overlay();
+    }
 }
 
 void App::show_progress(std::string_view verb, double fraction) {

@@ -88,9 +88,11 @@ Rows vertex_info(const Mesh& mesh, Vertex v) {
     std::vector<Face> faces(mesh.faces(v).begin(), mesh.faces(v).end());
     rows.emplace_back("degree", std::to_string(mesh.valence(v)));
     rows.emplace_back("boundary", yes_no(mesh.is_boundary(v)));
+    std::vector<Halfedge> outgoing(mesh.halfedges(v).begin(), mesh.halfedges(v).end());
     rows.emplace_back("neighbours", index_list(ring));
     rows.emplace_back("faces", index_list(faces));
     rows.emplace_back("halfedge", std::to_string(mesh.halfedge(v).idx()));
+    rows.emplace_back("outgoing", index_list(outgoing));
     return rows;
 }
 
@@ -179,6 +181,90 @@ std::vector<std::pair<std::string, std::string>> element_info(const Mesh& mesh,
     rows.insert(rows.end(), std::make_move_iterator(more.begin()),
                 std::make_move_iterator(more.end()));
     return rows;
+}
+
+namespace {
+
+template <class H>
+std::vector<ElementRef> refs(const std::vector<H>& handles, ElementRef (*make)(H)) {
+    std::vector<ElementRef> out;
+    for (std::size_t i = 0; i < handles.size() && i < kMaxListed; ++i) {
+        if (handles[i].is_valid()) {
+            out.push_back(make(handles[i]));
+        }
+    }
+    return out;
+}
+
+template <class H, class Range>
+std::vector<H> all(const Range& range) {
+    return std::vector<H>(range.begin(), range.end());
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::vector<ElementRef>>> element_links(
+    const Mesh& mesh, const ElementRef& element) {
+    std::vector<std::pair<std::string, std::vector<ElementRef>>> links;
+    if (!is_live(mesh, element)) {
+        return links;
+    }
+    const auto vertex = [](Vertex v) { return ElementRef::vertex(v); };
+    const auto edge = [](Edge e) { return ElementRef::edge(e); };
+    const auto halfedge = [](Halfedge h) { return ElementRef::halfedge(h); };
+    const auto face = [](Face f) { return ElementRef::face(f); };
+    switch (element.kind) {
+        case Kind::Vertex: {
+            const Vertex v(element.index);
+            if (mesh.is_isolated(v)) {
+                break;
+            }
+            links.emplace_back("neighbours", refs(all<Vertex>(mesh.vertices(v)), +vertex));
+            links.emplace_back("faces", refs(all<Face>(mesh.faces(v)), +face));
+            links.emplace_back("halfedge",
+                               refs(std::vector<Halfedge>{mesh.halfedge(v)}, +halfedge));
+            links.emplace_back("outgoing", refs(all<Halfedge>(mesh.halfedges(v)), +halfedge));
+            break;
+        }
+        case Kind::Edge: {
+            const Edge e(element.index);
+            const Halfedge h = Mesh::halfedge(e, 0);
+            links.emplace_back(
+                "vertices",
+                refs(std::vector<Vertex>{mesh.from_vertex(h), mesh.to_vertex(h)}, +vertex));
+            links.emplace_back("halfedges",
+                               refs(std::vector<Halfedge>{h, Mesh::twin(h)}, +halfedge));
+            links.emplace_back("faces",
+                               refs(std::vector<Face>{mesh.face(e, 0), mesh.face(e, 1)}, +face));
+            break;
+        }
+        case Kind::Halfedge: {
+            const Halfedge h(element.index);
+            links.emplace_back("from (vertex())",
+                               refs(std::vector<Vertex>{mesh.from_vertex(h)}, +vertex));
+            links.emplace_back("to", refs(std::vector<Vertex>{mesh.to_vertex(h)}, +vertex));
+            links.emplace_back("next", refs(std::vector<Halfedge>{mesh.next(h)}, +halfedge));
+            links.emplace_back("prev", refs(std::vector<Halfedge>{mesh.prev(h)}, +halfedge));
+            links.emplace_back("twin", refs(std::vector<Halfedge>{Mesh::twin(h)}, +halfedge));
+            links.emplace_back("edge", refs(std::vector<Edge>{Mesh::edge(h)}, +edge));
+            links.emplace_back("face", refs(std::vector<Face>{mesh.face(h)}, +face));
+            break;
+        }
+        case Kind::Face: {
+            const Face f(element.index);
+            std::vector<Face> neighbours;
+            for (Halfedge h : mesh.halfedges(f)) {
+                neighbours.push_back(mesh.face(Mesh::twin(h)));
+            }
+            links.emplace_back("vertices", refs(all<Vertex>(mesh.vertices(f)), +vertex));
+            links.emplace_back("halfedges", refs(all<Halfedge>(mesh.halfedges(f)), +halfedge));
+            links.emplace_back("neighbours", refs(neighbours, +face));
+            break;
+        }
+        case Kind::None:
+            break;
+    }
+    return links;
 }
 
 std::vector<std::pair<std::string, std::string>> control_point_info(const BezierCurve& curve,

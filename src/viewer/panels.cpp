@@ -18,20 +18,61 @@ constexpr ImGuiWindowFlags kOverlayFlags =
     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
     ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
 
-// Name and value columns; values wrap inside the panel's fixed width.
-void rows_table(const char* id, const std::vector<std::pair<std::string, std::string>>& rows) {
-    if (ImGui::BeginTable(id, 2, ImGuiTableFlags_SizingStretchProp)) {
-        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
-        ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
-        for (const auto& [name, value] : rows) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", name.c_str());
-            ImGui::TableNextColumn();
-            ImGui::TextWrapped("%s", value.c_str());
-        }
-        ImGui::EndTable();
+// Name and value columns; values wrap inside the panel's fixed width. The inspector: rows
+// with `links` (element_links()) show each element as a small button; hovering one
+// highlights it in the view, clicking selects it. What is not an element ("none", "… (40 in
+// all)") follows as plain text.
+void rows_table(const char* id, const std::vector<std::pair<std::string, std::string>>& rows,
+                const std::vector<std::pair<std::string, std::vector<ElementRef>>>& links = {},
+                PanelRequests* requests = nullptr) {
+    if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_SizingStretchProp)) {
+        return;
     }
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
+    for (const auto& [name, value] : rows) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextDisabled("%s", name.c_str());
+        ImGui::TableNextColumn();
+        const auto row_links = std::find_if(links.begin(), links.end(),
+                                            [&](const auto& l) { return l.first == name; });
+        if (row_links == links.end() || row_links->second.empty()) {
+            ImGui::TextWrapped("%s", value.c_str());
+            continue;
+        }
+        ImGui::PushID(name.c_str());
+        const float right = ImGui::GetContentRegionMax().x;
+        for (std::size_t i = 0; i < row_links->second.size(); ++i) {
+            const ElementRef ref = row_links->second[i];
+            const std::string label = std::to_string(ref.index);
+            const float width =
+                ImGui::CalcTextSize(label.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+            if (i > 0) {
+                ImGui::SameLine();
+                if (ImGui::GetCursorPosX() + width > right) {
+                    ImGui::NewLine();  // wrap, as the plain rows do
+                }
+            }
+            ImGui::PushID(static_cast<int>(i));
+            if (ImGui::SmallButton(label.c_str()) && requests != nullptr) {
+                requests->select = ref;
+            }
+            if (ImGui::IsItemHovered() && requests != nullptr) {
+                requests->hover = ref;
+            }
+            ImGui::PopID();
+        }
+        for (const std::string_view rest : {"none (boundary)", "none", "…"}) {
+            if (const std::size_t at = value.find(rest); at != std::string::npos) {
+                ImGui::SameLine();
+                ImGui::TextDisabled("%s", value.substr(at).c_str());
+                break;
+            }
+        }
+        ImGui::PopID();
+    }
+    ImGui::EndTable();
 }
 
 }  // namespace
@@ -157,7 +198,9 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
         } else if (doc.mode == Mode::Curve) {
             rows_table("selection", control_point_info(doc.curve, selection.index));
         } else {
-            rows_table("selection", element_info(editor.mesh(), selection));
+            rows_table("selection", element_info(editor.mesh(), selection),
+                       element_links(editor.mesh(), selection), &requests);
+            ImGui::TextDisabled("click an index to select it, hover to see it");
         }
     }
 

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -260,6 +261,61 @@ TEST(EditorValidate, ValidSaysSoAndACorruptedMeshShowsItsCulprit) {
     ASSERT_EQ(expected->kind, ElementKind::Vertex);
     EXPECT_EQ(ed.selection().kind, Kind::Vertex);
     EXPECT_EQ(ed.selection().index, expected->index);
+}
+
+}  // namespace
+}  // namespace meshedit::viewer
+
+namespace meshedit::viewer {
+namespace {
+
+// The inspector's links: every row that names elements names the live ones the mesh says,
+// in the row's order; a boundary gap is left out; selecting a link is an ordinary select.
+TEST(EditorInspector, LinksAreTheElementsTheRowsName) {
+    const Mesh cube = shapes::cube();
+    const auto find = [](const auto& links, const std::string& name) {
+        for (const auto& [row, refs] : links) {
+            if (row == name) {
+                return refs;
+            }
+        }
+        ADD_FAILURE() << "no row " << name;
+        return std::vector<ElementRef>{};
+    };
+    const Halfedge h = cube.halfedge(Face(2));
+    const auto hl = element_links(cube, ElementRef::halfedge(h));
+    EXPECT_EQ(find(hl, "next"), std::vector<ElementRef>{ElementRef::halfedge(cube.next(h))});
+    EXPECT_EQ(find(hl, "prev"), std::vector<ElementRef>{ElementRef::halfedge(cube.prev(h))});
+    EXPECT_EQ(find(hl, "twin"), std::vector<ElementRef>{ElementRef::halfedge(Mesh::twin(h))});
+    EXPECT_EQ(find(hl, "from (vertex())"),
+              std::vector<ElementRef>{ElementRef::vertex(cube.from_vertex(h))});
+    EXPECT_EQ(find(hl, "edge"), std::vector<ElementRef>{ElementRef::edge(Mesh::edge(h))});
+    EXPECT_EQ(find(hl, "face"), std::vector<ElementRef>{ElementRef::face(Face(2))});
+
+    // A vertex's orbit: its outgoing halfedges, one per neighbour, in the rows' order.
+    const auto vl = element_links(cube, ElementRef::vertex(Vertex(0)));
+    const std::vector<ElementRef> outgoing = find(vl, "outgoing");
+    ASSERT_EQ(outgoing.size(), cube.valence(Vertex(0)));
+    const std::vector<ElementRef> neighbours = find(vl, "neighbours");
+    for (std::size_t i = 0; i < outgoing.size(); ++i) {
+        EXPECT_EQ(cube.from_vertex(Halfedge(outgoing[i].index)), Vertex(0));
+        EXPECT_EQ(ElementRef::vertex(cube.to_vertex(Halfedge(outgoing[i].index))), neighbours[i]);
+    }
+    const auto info = element_info(cube, ElementRef::vertex(Vertex(0)));
+    EXPECT_TRUE(std::any_of(info.begin(), info.end(), [](const auto& r) {
+        return r.first == "outgoing";
+    })) << "the orbit is a row of the panel too";
+
+    // A boundary halfedge has no face to link to; a boundary edge links its one face.
+    const Mesh grid = shapes::grid(1, 1);
+    const Halfedge b = boundary_halfedge(grid);
+    EXPECT_TRUE(find(element_links(grid, ElementRef::halfedge(b)), "face").empty());
+    EXPECT_EQ(find(element_links(grid, ElementRef::edge(Mesh::edge(b))), "faces").size(), 1u);
+    EXPECT_TRUE(element_links(cube, ElementRef::vertex(Vertex(99))).empty());
+
+    Editor ed = editor_with(cube);
+    ASSERT_FALSE(ed.select(find(hl, "twin").front()).refused);
+    EXPECT_EQ(ed.selection(), ElementRef::halfedge(Mesh::twin(h)));
 }
 
 }  // namespace

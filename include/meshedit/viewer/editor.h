@@ -358,6 +358,11 @@ private:
 /// (to and from), edge and face. Empty for none.
 std::vector<std::pair<std::string, std::string>> element_info(const Mesh& mesh,
                                                               const ElementRef& element);
+/// The elements the rows of element_info() name, by row ("next" → that halfedge, "faces" →
+/// each face; boundary gaps left out), for the inspector's links: clicking one selects it,
+/// hovering highlights it. Empty for a dead element.
+std::vector<std::pair<std::string, std::vector<ElementRef>>> element_links(
+    const Mesh& mesh, const ElementRef& element);
 /// The same for control point `index` of a curve.
 std::vector<std::pair<std::string, std::string>> control_point_info(const BezierCurve& curve,
                                                                     std::uint32_t index);
