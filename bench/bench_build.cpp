@@ -88,35 +88,23 @@ std::map<std::string, PolygonSoup (*)()> jobs() {
     return out;
 }
 
-int usage() {
-    std::fprintf(stderr, "usage: bench_build --job JOB --impl meshedit [--runs N] | --list\n");
-    return 2;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    mb::take_common_flags(argc, argv);
     const auto all = jobs();
-    mb::JobArgs args;
-    if (!mb::parse_job_args(argc, argv, args)) {
-        return usage();
+    std::vector<std::string> names;
+    for (const auto& [job, make] : all) {
+        names.push_back(job);
     }
-    if (args.list) {
-        std::vector<std::string> names;
-        for (const auto& [job, make] : all) {
-            names.push_back(job);
-        }
-        mb::print_pairs(names, std::vector<std::string>{"meshedit"});
-        return 0;
+    const std::string impls[] = {"meshedit"};
+    mb::JobArgs args;
+    if (const std::optional<int> done = mb::read_command_line(argc, argv, names, impls, args)) {
+        return *done;
     }
     const std::string& job = args.job;
     const std::string& impl = args.impl;
     const int runs = args.runs;
     const auto it = all.find(job);
-    if (it == all.end() || impl != "meshedit" || runs < 1) {
-        return usage();
-    }
     const PolygonSoup soup = it->second();
     meshedit::Mesh mesh;
     const std::vector<double> ms = mb::time_runs(

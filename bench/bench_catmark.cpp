@@ -176,35 +176,22 @@ Outcome run_cgal(const PolygonSoup& soup, int levels, int runs, const Setup& bef
     return out;
 }
 
-int usage() {
-    std::fprintf(stderr,
-                 "usage: bench_catmark --job JOB --impl IMPL [--runs N]\n"
-                 "       bench_catmark --list\n");
-    return 2;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    mb::take_common_flags(argc, argv);
     mb::JobArgs args;
-    if (!mb::parse_job_args(argc, argv, args)) {
-        return usage();
-    }
     std::vector<std::string> names;
-    std::optional<Job> job;
     for (const Job& j : all_jobs()) {
         names.push_back(j.name);
+    }
+    if (const std::optional<int> done = mb::read_command_line(argc, argv, names, kImpls, args)) {
+        return *done;
+    }
+    std::optional<Job> job;
+    for (const Job& j : all_jobs()) {
         if (j.name == args.job) {
             job = j;
         }
-    }
-    if (args.list) {
-        mb::print_pairs(names, kImpls);
-        return 0;
-    }
-    if (!job || !mb::one_of(kImpls, args.impl)) {
-        return usage();
     }
     const std::string& impl = args.impl;
     const PolygonSoup soup = mb::quad_torus_soup(job->m, job->n, job->mixed);

@@ -325,36 +325,23 @@ int run_extrude_job(const std::string& name, const Job& job, int runs) {
     return 0;
 }
 
-int usage() {
-    std::fprintf(stderr, "usage: bench_local_ops --job JOB --impl meshedit [--runs N] | --list\n");
-    return 2;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    mb::take_common_flags(argc, argv);
     const auto all = jobs();
-    mb::JobArgs args;
-    if (!mb::parse_job_args(argc, argv, args)) {
-        return usage();
+    std::vector<std::string> names;
+    for (const auto& [job, spec] : all) {
+        names.push_back(job);
     }
-    if (args.list) {
-        std::vector<std::string> names;
-        for (const auto& [job, spec] : all) {
-            names.push_back(job);
-        }
-        mb::print_pairs(names, std::vector<std::string>{"meshedit"});
-        return 0;
+    const std::string impls[] = {"meshedit"};
+    mb::JobArgs args;
+    if (const std::optional<int> done = mb::read_command_line(argc, argv, names, impls, args)) {
+        return *done;
     }
     const std::string& job = args.job;
-    const std::string& impl = args.impl;
     const int runs = args.runs;
     const auto it =
         std::find_if(all.begin(), all.end(), [&](const auto& j) { return j.first == job; });
-    if (it == all.end() || impl != "meshedit" || runs < 1) {
-        return usage();
-    }
     return it->second.kind == Job::kMix ? run_mix_job(job, it->second, runs)
                                         : run_extrude_job(job, it->second, runs);
 }

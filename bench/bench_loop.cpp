@@ -262,35 +262,23 @@ Outcome run_opensubdiv(const Input& in, int levels, int runs, bool full_topology
 
 // ------------------------------------------------------------------------------ main
 
-int usage() {
-    std::fprintf(stderr,
-                 "usage: bench_loop --job JOB --impl IMPL [--runs N] [--data DIR]\n"
-                 "       bench_loop --list\n");
-    return 2;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    meshedit::bench::take_common_flags(argc, argv);
     meshedit::bench::JobArgs args;
-    if (!meshedit::bench::parse_job_args(argc, argv, args)) {
-        return usage();
-    }
     std::vector<std::string> names;
-    std::optional<Job> job;
     for (const Job& j : all_jobs()) {
         names.push_back(j.name);
+    }
+    if (const std::optional<int> done =
+            meshedit::bench::read_command_line(argc, argv, names, kImpls, args)) {
+        return *done;
+    }
+    std::optional<Job> job;
+    for (const Job& j : all_jobs()) {
         if (j.name == args.job) {
             job = j;
         }
-    }
-    if (args.list) {
-        meshedit::bench::print_pairs(names, kImpls);
-        return 0;
-    }
-    if (!job || !meshedit::bench::one_of(kImpls, args.impl)) {
-        return usage();
     }
     const std::string& job_name = args.job;
     const std::string& impl = args.impl;

@@ -321,29 +321,19 @@ void run_local(const std::string& job, const std::string& impl, const MeshT& inp
     }
 }
 
-int usage() {
-    std::fprintf(stderr,
-                 "usage: bench_ops --job flips_1e6|splits_1e6|normals_6p4m "
-                 "--impl meshedit|openmesh|cgal [--runs N]\n");
-    return 2;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    meshedit::bench::take_common_flags(argc, argv);
+    const std::string jobs[] = {"flips_1e6", "splits_1e6", "normals_6p4m"};
+    const std::string impls[] = {"meshedit", "openmesh", "cgal"};
     meshedit::bench::JobArgs args;
-    if (!meshedit::bench::parse_job_args(argc, argv, args)) {
-        return usage();
+    if (const std::optional<int> done =
+            meshedit::bench::read_command_line(argc, argv, jobs, impls, args)) {
+        return *done;
     }
     const std::string& job = args.job;
     const std::string& impl = args.impl;
     const int runs = args.runs;
-    const bool job_ok = job == "flips_1e6" || job == "splits_1e6" || job == "normals_6p4m";
-    const bool impl_ok = impl == "meshedit" || impl == "openmesh" || impl == "cgal";
-    if (!job_ok || !impl_ok || runs < 1) {
-        return usage();
-    }
 
     if (job == "normals_6p4m") {
         run_normals(impl, torus_soup(2000, 1600), runs);  // 6,400,000 faces

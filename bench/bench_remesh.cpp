@@ -86,38 +86,21 @@ Outcome run_cgal(const Surface& in, double length, int runs) {
     return out;
 }
 
-int usage() {
-    std::fprintf(stderr,
-                 "usage: bench_remesh --job %s --impl meshedit|cgal [--runs N] [--data DIR]\n"
-                 "       bench_remesh --list\n",
-                 kJob);
-    return 2;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    mb::take_common_flags(argc, argv);
     const std::string jobs[] = {kJob};
     const std::string impls[] = {"meshedit", "cgal"};
     mb::JobArgs args;
-    if (!mb::parse_job_args(argc, argv, args)) {
-        return usage();
-    }
-    if (args.list) {
-        mb::print_pairs(jobs, impls);
-        return 0;
-    }
-    if (!mb::one_of(jobs, args.job) || !mb::one_of(impls, args.impl)) {
-        return usage();
+    if (const std::optional<int> done = mb::read_command_line(argc, argv, jobs, impls, args)) {
+        return *done;
     }
     const std::string& job = args.job;
     const std::string& impl = args.impl;
     const int runs = args.runs;
     const fs::path& data_dir = args.data;
     try {
-        meshedit::Mesh armadillo =
-            meshedit::build_mesh(mb::real_mesh("armadillo", data_dir));
+        meshedit::Mesh armadillo = meshedit::build_mesh(mb::real_mesh("armadillo", data_dir));
         meshedit::loop_subdivide(armadillo);
         const Surface input = mb::surface_of(armadillo);
         const double length = mean_length(input);

@@ -61,8 +61,7 @@ Surface load_input(const std::string& job, const fs::path& data_dir) {
     if (job == "qem_torus_1m_to_100k") {
         return surface_of(meshedit::shapes::torus(1000, 500));
     }
-    meshedit::Mesh bunny =
-        meshedit::build_mesh(mb::real_mesh("bunny", data_dir));
+    meshedit::Mesh bunny = meshedit::build_mesh(mb::real_mesh("bunny", data_dir));
     meshedit::loop_subdivide(bunny);
     meshedit::loop_subdivide(bunny);
     return surface_of(bunny);
@@ -182,28 +181,13 @@ Outcome run_cgal(const Surface& in, int runs) {
     return out;
 }
 
-int usage() {
-    std::fprintf(stderr,
-                 "usage: bench_simplify --job JOB --impl IMPL [--runs N] [--data DIR]\n"
-                 "       bench_simplify --list\n");
-    return 2;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    mb::take_common_flags(argc, argv);
     const std::vector<std::string> jobs = {"qem_torus_1m_to_100k", "qem_bunny_1m_to_100k"};
     mb::JobArgs args;
-    if (!mb::parse_job_args(argc, argv, args)) {
-        return usage();
-    }
-    if (args.list) {
-        mb::print_pairs(jobs, kImpls);
-        return 0;
-    }
-    if (!mb::one_of(jobs, args.job) || !mb::one_of(kImpls, args.impl)) {
-        return usage();
+    if (const std::optional<int> done = mb::read_command_line(argc, argv, jobs, kImpls, args)) {
+        return *done;
     }
     const std::string& job = args.job;
     const std::string& impl = args.impl;

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,7 @@ inline constexpr const char* kNoHugePagesImpl = "meshedit_no_huge_pages";
 
 /// Turns MeshEdit's huge-page hint off (core/memory.h) for `--no-huge-pages` (removed from
 /// the arguments) and for `--impl meshedit_no_huge_pages` (which then runs as `meshedit`), to
-/// measure what the hint is worth. Call first in main().
+/// measure what the hint is worth. read_command_line() calls it first.
 inline void take_common_flags(int& argc, char** argv) {
     static char meshedit_impl[] = "meshedit";
     int out = 1;
@@ -104,6 +105,30 @@ bool one_of(const Names& names, const std::string& name) {
         }
     }
     return false;
+}
+
+/// A bench program's whole command line: take_common_flags(), then `--job J --impl I [--runs
+/// N] [--data DIR]` naming one of `jobs` × `impls`, or `--list`, which prints every pair.
+/// \return the status to exit with now (0 after --list; 2, the usage printed, for anything
+/// else), or nullopt when `args` names a pair to run.
+template <class Jobs, class Impls>
+std::optional<int> read_command_line(int& argc, char** argv, const Jobs& jobs, const Impls& impls,
+                                     JobArgs& args) {
+    take_common_flags(argc, argv);
+    const bool parsed = parse_job_args(argc, argv, args);
+    if (parsed && args.list) {
+        print_pairs(jobs, impls);
+        return 0;
+    }
+    if (!parsed || !one_of(jobs, args.job) || !one_of(impls, args.impl)) {
+        const std::string name = std::filesystem::path(argv[0]).filename().string();
+        std::fprintf(stderr,
+                     "usage: %s --job JOB --impl IMPL [--runs N] [--data DIR]\n"
+                     "       %s --list   (every JOB IMPL pair)\n",
+                     name.c_str(), name.c_str());
+        return 2;
+    }
+    return std::nullopt;
 }
 
 /// Milliseconds of each of `runs` calls of `body`; `setup` runs before each call, untimed.

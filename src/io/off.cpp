@@ -165,13 +165,20 @@ private:
         return *x;
     }
 
-    void read_vertex(std::size_t v) {
-        std::string_view l = next_line();
-        const std::string what = "vertex " + std::to_string(v);
+    // The line of record `i` of the `total` the header announced; the end of the file there
+    // is an error that says how far it got.
+    std::string_view record_line(std::size_t i, std::size_t total, const char* kinds) {
+        const std::string_view l = next_line();
         if (l.empty()) {
-            fail("the file ends after " + std::to_string(v) + " of the " + std::to_string(nv_) +
-                 " vertices the header announced");
+            fail("the file ends after " + std::to_string(i) + " of the " + std::to_string(total) +
+                 " " + kinds + " the header announced");
         }
+        return l;
+    }
+
+    void read_vertex(std::size_t v) {
+        std::string_view l = record_line(v, nv_, "vertices");
+        const std::string what = "vertex " + std::to_string(v);
         Vec3 p;
         for (int i = 0; i < 3; ++i) {
             p[i] = number(io_util::next_token(l), what);
@@ -191,12 +198,8 @@ private:
     }
 
     void read_face(std::size_t f) {
-        std::string_view l = next_line();
+        std::string_view l = record_line(f, nf_, "faces");
         const std::string what = "face " + std::to_string(f);
-        if (l.empty()) {
-            fail("the file ends after " + std::to_string(f) + " of the " + std::to_string(nf_) +
-                 " faces the header announced");
-        }
         const std::string_view n_text = io_util::next_token(l);
         const std::optional<std::size_t> corners = whole(n_text);
         if (!corners) {
