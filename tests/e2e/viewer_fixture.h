@@ -372,8 +372,10 @@ protected:
     }
 
     /// `key` (Ctrl+O, Ctrl+Shift+S, Ctrl+Shift+E), then (once its path prompt shows) the
-    /// prompt's text replaced by `path`, and Return.
-    void answer_prompt(const ViewerWindow& window, const std::string& key, const fs::path& path) {
+    /// prompt's text replaced by `path` — or, without one, the path the prompt suggests kept —
+    /// and Return.
+    void answer_prompt(const ViewerWindow& window, const std::string& key,
+                       const std::optional<fs::path>& path) {
         const fs::path before = logs_ / "before_prompt.png";
         ASSERT_TRUE(window.capture(before));
         window.key(key);
@@ -399,8 +401,10 @@ protected:
             20s, 100ms);
         ASSERT_TRUE(prompt_shown) << "no path prompt after " << key;
         sleep_for(300ms);  // the text field takes the focus one frame after the prompt shows
-        window.key("ctrl+a");
-        window.type(path.string());
+        if (path) {
+            window.key("ctrl+a");
+            window.type(path->string());
+        }
         window.key("Return");
     }
 
