@@ -150,9 +150,9 @@ void loop_vertex(const Mesh& mesh, Vertex v, LoopWeights weights, Terms& terms, 
                                      : "n = " + ns + ": u = 3/(8n) = 3/" + std::to_string(8 * n) +
                                            " = " + num(u));
     } else {
-        out.formula.push_back("n = " + ns + ": u = (5/8 - (3/8 + 1/4·cos(2π/n))²)/n = " + num(u));
+        out.formula.push_back("n = " + ns + ": u = (5/8 - (3/8 + 1/4·cos(2pi/n))²)/n = " + num(u));
     }
-    out.formula.push_back("p' = (1 - n·u)·p + u·Σ q = " + num(1.0 - static_cast<double>(n) * u) +
+    out.formula.push_back("p' = (1 - n·u)·p + u·sum(q) = " + num(1.0 - static_cast<double>(n) * u) +
                           "·p + " + num(u) + "·(q1 + … + q" + ns + ")");
 }
 
@@ -206,9 +206,9 @@ void catmark_vertex(const Mesh& mesh, Vertex v, Terms& terms, Stencil& out) {
         out.formula.push_back("one sharp edge (a dart): the interior rule");
     }
     out.formula.push_back("n = " + std::to_string(ring.neighbours.size()) +
-                          ": p' = (n - 2)/n·p + (Σ q + Σ F)/n²");
+                          ": p' = (n - 2)/n·p + (sum(q) + sum(F))/n²");
     out.formula.push_back("= " + num((n - 2.0) / n) + "·p + " + num(1.0 / (n * n)) +
-                          "·(Σ q + Σ F), F the face points (corner averages)");
+                          "·(sum(q) + sum(F)), F the face points (corner averages)");
 }
 
 void catmark_edge(const Mesh& mesh, Edge e, Terms& terms, Stencil& out) {

@@ -22,6 +22,7 @@
 #include "meshedit/io/document.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/render/camera.h"
+#include "meshedit/render/labels.h"
 #include "meshedit/render/overlay.h"
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/scene.h"
@@ -107,6 +108,16 @@ int run(const Options& options) {
         } else if (!options.select.empty()) {
             scene.selected = parse_selection(mesh, options.select);
         }
+        if (options.stencil) {
+            if (scene.selected.is_none()) {
+                throw UsageError("--stencil draws the stencil of the --select element: select one");
+            }
+            if (const Stencil s = subdivision_stencil(mesh, scene.selected, *options.stencil);
+                !s.ok()) {
+                throw UsageError("--stencil: " + s.refusal);
+            }
+            scene.stencil = options.stencil;
+        }
     }
     add_scene_marks(scene, style, overlay);
 
@@ -153,8 +164,9 @@ int run(const Options& options) {
     context.finish();
     check_gl("rendering");
     lap("draw");
-    const Image image = target.read();
+    Image image = target.read();
     lap("readback");
+    draw_labels(image, overlay.labels, camera);
     write_png(image, options.output);
     lap("write");
 

@@ -146,6 +146,17 @@ int parse_options(int argc, char** argv, Options& o) {
                    "highlight a vertex, the edge A-B, the halfedge A->B, a face, or what the "
                    "last step of --ops made (result)")
         ->option_text("v:I|e:A-B|h:A-B|f:I|result");
+    app.add_option_function<std::string>(
+           "--stencil",
+           [&o](const std::string& v) {
+               o.stencil = v == "loop"            ? StencilScheme::LoopWarren
+                           : v == "loop-original" ? StencilScheme::LoopOriginal
+                                                  : StencilScheme::CatmullClark;
+           },
+           "draw the --select element's subdivision stencil: its vertices with their weights "
+           "(loop: Warren's weights, as L; loop-original: Loop's; catmull-clark: as Shift+C)")
+        ->type_name("loop|loop-original|catmull-clark")
+        ->check(CLI::IsMember({"loop", "loop-original", "catmull-clark"}));
     app.add_flag_callback(
         "--features", [&o] { o.features = true; },
         "boundary (red) and crease (green) edges: on by default for mesh "

@@ -10,6 +10,7 @@
 
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/stencil.h"
 #include "meshedit/render/camera.h"
 
 namespace meshedit::headless {
@@ -32,6 +33,7 @@ struct Options {
     std::optional<float> azimuth, elevation, distance;
     UpAxis up = UpAxis::Y;
     std::string select;
+    std::optional<StencilScheme> stencil;
     std::optional<bool> features;
     int density = 8;
     bool net = false;

@@ -165,6 +165,20 @@ void Camera::frame_2d(glm::vec2 min, glm::vec2 max, float aspect, float margin) 
     scene_radius = 0.5f * glm::length(size) + 1.0f;
 }
 
+std::optional<glm::vec2> project_to_pixels(const Camera& camera, const Vec3& p, int width,
+                                           int height) {
+    const float w = static_cast<float>(std::max(width, 1));
+    const float h = static_cast<float>(std::max(height, 1));
+    const glm::vec4 clip =
+        camera.projection(w / h) * camera.view() *
+        glm::vec4(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z), 1.0f);
+    if (clip.w <= 0.0f || clip.z < -clip.w || clip.z > clip.w) {
+        return std::nullopt;
+    }
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return glm::vec2((ndc.x + 1.0f) * 0.5f * w, (1.0f - ndc.y) * 0.5f * h);
+}
+
 bool back_faces_hidden(const Camera& camera, bool closed_and_outward, const BoundingBox& bounds) {
     if (!closed_and_outward || camera.orthographic || bounds.is_empty()) {
         return false;

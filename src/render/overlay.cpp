@@ -121,6 +121,7 @@ void OverlayBatch::append(const OverlayBatch& other) {
     lines.insert(lines.end(), other.lines.begin(), other.lines.end());
     triangles.insert(triangles.end(), other.triangles.begin(), other.triangles.end());
     arrowheads.insert(arrowheads.end(), other.arrowheads.begin(), other.arrowheads.end());
+    labels.insert(labels.end(), other.labels.begin(), other.labels.end());
 }
 
 void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out) {
@@ -156,7 +157,7 @@ void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBa
     }
     if (const auto edge_point = mesh.get_property<Edge, Vec3>(kLoopEdgePoint)) {
         for (Edge e : mesh.edges()) {
-            out.points.push_back({edge_point[e], style.loop_new, style.loop_point_px});
+            out.points.push_back({edge_point[e], style.loop_new, style.loop_point_px, true});
         }
     }
     for (Vertex v : mesh.vertices()) {
@@ -166,10 +167,11 @@ void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBa
         if (is_new && is_new[v] != 0) {
             out.points.push_back({mesh.position(v), style.loop_new, style.loop_point_px});
         }
+        // X-ray: on a convex mesh the new positions lie inside it.
         if (target[v] != mesh.position(v)) {
-            out.lines.push_back({mesh.position(v), target[v], style.loop_target, thin});
+            out.lines.push_back({mesh.position(v), target[v], style.loop_target, thin, true});
         }
-        out.points.push_back({target[v], style.loop_target, style.loop_point_px});
+        out.points.push_back({target[v], style.loop_target, style.loop_point_px, true});
     }
 }
 

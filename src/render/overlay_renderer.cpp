@@ -3,6 +3,7 @@
 #include "meshedit/render/overlay_renderer.h"
 
 #include <algorithm>
+#include <iterator>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -112,6 +113,31 @@ void OverlayRenderer::ensure_gl_objects() {
 }
 
 void OverlayRenderer::upload(const OverlayBatch& batch) {
+    const auto is_xray = [](const auto& item) { return item.xray; };
+    if (std::none_of(batch.points.begin(), batch.points.end(), is_xray) &&
+        std::none_of(batch.lines.begin(), batch.lines.end(), is_xray)) {
+        upload_layer(batch);
+        if (xray_) {
+            xray_->upload_layer({});
+        }
+        return;
+    }
+    OverlayBatch surface = batch;
+    OverlayBatch xray;
+    std::erase_if(surface.points, is_xray);
+    std::erase_if(surface.lines, is_xray);
+    std::copy_if(batch.points.begin(), batch.points.end(), std::back_inserter(xray.points),
+                 is_xray);
+    std::copy_if(batch.lines.begin(), batch.lines.end(), std::back_inserter(xray.lines), is_xray);
+    upload_layer(surface);
+    if (!xray_) {
+        xray_ = std::make_unique<OverlayRenderer>();
+        xray_->depth_tested_ = false;
+    }
+    xray_->upload_layer(xray);
+}
+
+void OverlayRenderer::upload_layer(const OverlayBatch& batch) {
     ensure_gl_objects();
     points_.clear();
     lines_.clear();
@@ -155,6 +181,13 @@ void OverlayRenderer::upload(const OverlayBatch& batch) {
 }
 
 void OverlayRenderer::draw(const Camera& camera, int width, int height, float depth_bias) {
+    draw_layer(camera, width, height, depth_bias);
+    if (xray_) {
+        xray_->draw_layer(camera, width, height, depth_bias);
+    }
+}
+
+void OverlayRenderer::draw_layer(const Camera& camera, int width, int height, float depth_bias) {
     if (n_points_ + n_lines_ + n_triangles_ + n_arrowheads_ == 0) {
         return;
     }
@@ -165,21 +198,40 @@ void OverlayRenderer::draw(const Camera& camera, int width, int height, float de
     const float h = static_cast<float>(height);
 
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     // Translucent overlays must not hide each other through the depth buffer.
     glDepthMask(GL_FALSE);
 
-    // Every overlay shader takes the same uniforms (the triangles' ignores the viewport).
+    // Every overlay shader takes the same uniforms (the triangles' ignores the viewport and
+    // the alpha).
+    float alpha = 1.0f;
     const auto use = [&](const ShaderProgram& shader, unsigned vao) {
         shader.use();
         shader.set_mat4("u_view_projection", vp);
         shader.set_vec2("u_viewport", w, h);
         shader.set_float("u_depth_bias", depth_bias);
+        shader.set_float("u_alpha", alpha);
         glBindVertexArray(vao);
     };
+    // The x-ray layer draws twice: where the surface does not hide it, then faded where it
+    // does (as Blender shows hidden marks).
+    glDepthFunc(GL_LEQUAL);
+    draw_primitives(use);
+    if (!depth_tested_) {
+        glDepthFunc(GL_GREATER);
+        alpha = kHiddenAlpha;
+        draw_primitives(use);
+    }
+    glBindVertexArray(0);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+}
+
+template <typename Use>
+void OverlayRenderer::draw_primitives(const Use& use) {
     // Order: face tints, then lines, arrowheads over their shafts, then discs on top.
     if (n_triangles_ > 0) {
         use(tri_shader_, tri_vao_);
@@ -197,10 +249,6 @@ void OverlayRenderer::draw(const Camera& camera, int width, int height, float de
         use(point_shader_, point_vao_);
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n_points_));
     }
-    glBindVertexArray(0);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
 }
 
 BackgroundRenderer::~BackgroundRenderer() {

@@ -17,6 +17,13 @@ void add_scene_marks(const SceneContent& scene, const OverlayStyle& style, Overl
             add_element_highlight(mesh, e, style.selected, style, out);
         }
         add_element_highlight(mesh, scene.selected, style.selected, style, out);
+        if (scene.stencil) {
+            const ElementRef element = scene.hovered.is_none() ? scene.selected : scene.hovered;
+            if (!element.is_none()) {
+                add_stencil_marks(mesh, subdivision_stencil(mesh, element, *scene.stencil), style,
+                                  out);
+            }
+        }
         return;
     }
     if (scene.curve == nullptr) {

@@ -513,7 +513,11 @@ void App::rebuild_overlay(bool features_changed) {
     scene.selected = editor_.selection();
     scene.also_selected = editor_.also_selected();
     scene.hovered = editor_.hover();
+    if (mesh_mode()) {
+        scene.stencil = view.stencil;
+    }
     add_scene_marks(scene, style, batch);
+    labels_ = std::move(batch.labels);
     scene_->overlay().upload(batch);
     redraw_frames_ = kSettleFrames;
 }
@@ -646,6 +650,9 @@ void App::draw_frame() {
     stats.width = size.x;
     stats.height = size.y;
     stats.triangles = scene_->has_mesh() ? scene_->mesh().triangle_count() : 0;
+    int window_w = 1, window_h = 1;
+    glfwGetWindowSize(window_, &window_w, &window_h);
+    draw_labels(labels_, camera_, window_w, window_h);
     const PanelRequests requests = panels_.draw(editor_, stats, status_, status_error_);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -108,7 +108,8 @@ private:
 
     std::unique_ptr<SceneRenderer> scene_;
     std::unique_ptr<RenderTarget> pick_target_;
-    OverlayBatch features_;  ///< boundary and crease edges of the current mesh
+    OverlayBatch features_;                    ///< boundary and crease edges of the current mesh
+    std::vector<OverlayBatch::Label> labels_;  ///< the overlay's text, drawn with the panels
 
     Panels panels_;
     std::string status_;

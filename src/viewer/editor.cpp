@@ -86,6 +86,7 @@ Outcome Editor::run(Action action) {
         case Command::ResetCamera:
         case Command::CycleUp:
         case Command::ToggleTrackball:
+        case Command::CycleStencil:
         case Command::Screenshot:
             return run_display(action);
         case Command::Undo:
@@ -162,6 +163,8 @@ Outcome Editor::run_display(Action action) {
             view_.trackball = !view_.trackball;
             return {kDisplay, view_.trackball ? "orbit: trackball (free rotation)"
                                               : "orbit: turntable (the up axis stays up)"};
+        case Command::CycleStencil:
+            return cycle_stencil();
         case Command::Screenshot:
             return {kScreenshot, ""};
         default:
@@ -250,6 +253,31 @@ Outcome Editor::quit() {
     quit_armed_ = true;
     return refused(
         "unsaved changes: press Esc or Ctrl+Q again to quit without saving, or Ctrl+S to save");
+}
+
+Outcome Editor::cycle_stencil() {
+    std::optional<StencilScheme>& stencil = view_.stencil;
+    if (!stencil) {
+        stencil = StencilScheme::LoopWarren;
+    } else if (*stencil == StencilScheme::LoopWarren) {
+        stencil = StencilScheme::LoopOriginal;
+    } else if (*stencil == StencilScheme::LoopOriginal) {
+        stencil = StencilScheme::CatmullClark;
+    } else {
+        stencil.reset();
+        return {kDisplay | kSelection, "stencil view off"};
+    }
+    return {kDisplay | kSelection,
+            std::string("stencil view: ") + scheme_name(*stencil) + " — hover a vertex, an edge" +
+                (*stencil == StencilScheme::CatmullClark ? " or a face" : "") +
+                " (Alt+W: next scheme)"};
+}
+
+ElementRef Editor::stencil_element() const {
+    if (!view_.stencil || mode() == Mode::Curve) {
+        return {};
+    }
+    return hover_.is_none() ? selection() : hover_;
 }
 
 }  // namespace meshedit::viewer

@@ -204,6 +204,10 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
         }
     }
 
+    if (editor.view().stencil && doc.mode != Mode::Curve) {
+        draw_stencil(editor);
+    }
+
     if (ImGui::CollapsingHeader("Statistics")) {
         if (doc.mode != Mode::Curve) {
             ImGui::Text("triangles drawn %zu", stats.triangles);
@@ -289,6 +293,61 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
     }
     remember_rect();
     ImGui::End();
+}
+
+void Panels::draw_stencil(const Editor& editor) {
+    if (!ImGui::CollapsingHeader("Stencil (Alt+W)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    ImGui::TextDisabled("%s", scheme_name(*editor.view().stencil));
+    const ElementRef element = editor.stencil_element();
+    if (element.is_none()) {
+        ImGui::TextWrapped("hover a vertex or an edge to see what makes its new point");
+        return;
+    }
+    const Mesh& mesh = editor.mesh();
+    const Stencil stencil = subdivision_stencil(mesh, element, *editor.view().stencil);
+    ImGui::Text("%s", describe(mesh, element).c_str());
+    if (!stencil.ok()) {
+        ImGui::TextWrapped("%s", stencil.refusal.c_str());
+        return;
+    }
+    ImGui::Text("rule: %s", stencil.rule.c_str());
+    for (const std::string& line : stencil.formula) {
+        ImGui::TextWrapped("%s", line.c_str());
+    }
+    if (ImGui::BeginTable("stencil", 2, ImGuiTableFlags_SizingFixedFit)) {
+        for (const StencilTerm& term : stencil.terms) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::Text("vertex %u", term.vertex.idx());
+            ImGui::TableNextColumn();
+            ImGui::Text("%s", weight_label(term.weight).c_str());
+        }
+        ImGui::EndTable();
+    }
+}
+
+void draw_labels(const std::vector<OverlayBatch::Label>& labels, const Camera& camera, int width,
+                 int height) {
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const float gap = ImGui::GetFontSize() * 0.5f;
+    for (const OverlayBatch::Label& label : labels) {
+        const auto at = project_to_pixels(camera, label.at, width, height);
+        if (!at) {
+            continue;
+        }
+        const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
+        const ImVec2 corner(label.left ? at->x - gap - size.x : at->x + gap, at->y - size.y - 2.0f);
+        draw->AddRectFilled(ImVec2(corner.x - 2.0f, corner.y - 1.0f),
+                            ImVec2(corner.x + size.x + 2.0f, corner.y + size.y + 1.0f),
+                            IM_COL32(13, 13, 20, 180), 2.0f);
+        const auto channel = [](float c) { return static_cast<int>(255.0f * (0.5f + 0.5f * c)); };
+        draw->AddText(corner,
+                      IM_COL32(channel(label.color[0]), channel(label.color[1]),
+                               channel(label.color[2]), 255),
+                      label.text.c_str());
+    }
 }
 
 void Panels::draw_help(Mode mode) {

@@ -14,6 +14,8 @@
 
 struct ImGuiInputTextCallbackData;
 
+#include "meshedit/render/camera.h"
+#include "meshedit/render/overlay.h"
 #include "meshedit/viewer/editor.h"
 
 namespace meshedit::viewer {
@@ -35,6 +37,12 @@ struct PanelRequests {
     std::optional<ElementRef> select;  ///< an index clicked in the inspector
     std::optional<ElementRef> hover;   ///< an index under the mouse in the inspector
 };
+
+/// Draws overlay labels (a stencil's weights) under the panels, each beside where its point
+/// lands in a `width` × `height` window seen through `camera`: light text on a dark box, as
+/// meshedit-render draws them (render/labels.h).
+void draw_labels(const std::vector<OverlayBatch::Label>& labels, const Camera& camera, int width,
+                 int height);
 
 class Panels {
 public:
@@ -70,6 +78,7 @@ public:
 
 private:
     void draw_info(Editor& editor, const FrameStats& stats, PanelRequests& requests);
+    void draw_stencil(const Editor& editor);
     void draw_help(Mode mode);
     void draw_status(const Editor& editor, const std::string& status, bool status_error);
     void draw_prompt(PanelRequests& requests);

@@ -37,6 +37,32 @@ TEST(Editor, SmallMeshesOpenFlatAndCurvedOnesSmooth) {
     EXPECT_TRUE(ed.view().render.smooth);
 }
 
+TEST(Editor, StencilViewCyclesItsSchemesAndFollowsHoverThenSelection) {
+    Editor ed = editor_with(shapes::cube());
+    EXPECT_TRUE(ed.stencil_element().is_none());
+    const std::vector<std::string> expected{"Loop (Warren's weights)", "Loop (Loop's weights)",
+                                            "Catmull-Clark"};
+    for (const std::string& name : expected) {
+        const Outcome out = ed.press(key_of('W'), kAlt);
+        ASSERT_TRUE(ed.view().stencil.has_value());
+        EXPECT_EQ(scheme_name(*ed.view().stencil), name);
+        EXPECT_NE(out.message.find(name), std::string::npos) << out.message;
+    }
+    EXPECT_EQ(ed.press(key_of('W'), kAlt).message, "stencil view off");
+    EXPECT_FALSE(ed.view().stencil.has_value());
+    ed.press(key_of('W'), kAlt);
+    EXPECT_TRUE(ed.stencil_element().is_none());  // nothing hovered or selected
+    ed.select(ElementRef::vertex(Vertex(2)));
+    EXPECT_EQ(ed.stencil_element(), ElementRef::vertex(Vertex(2)));
+    ed.set_hover(ElementRef::edge(Edge(1)));
+    EXPECT_EQ(ed.stencil_element(), ElementRef::edge(Edge(1)));
+    ed.set_hover({});
+    EXPECT_EQ(ed.stencil_element(), ElementRef::vertex(Vertex(2)));
+    // A display state: no edit, nothing to undo.
+    EXPECT_FALSE(ed.dirty());
+    EXPECT_EQ(ed.history().undo_steps(), 0u);
+}
+
 TEST(Editor, DisplayTogglesAreNotEdits) {
     Editor ed = editor_with(shapes::cube());
     const bool smooth = ed.view().render.smooth;

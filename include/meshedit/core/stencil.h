@@ -40,7 +40,8 @@ struct Stencil {
     /// a face's corners), then the others in the order they are met around it.
     std::vector<StencilTerm> terms;
     Vec3 position;  ///< where the new point goes: Σ weight·p
-    /// The formula with the numbers filled in, a line each, for the panel.
+    /// The formula with the numbers filled in, a line each, for the panel (Latin-1 only: the
+    /// viewer's font has no Σ or π).
     std::vector<std::string> formula;
     /// Why there is no stencil ("Loop needs triangles: face 3 has 4 corners …"), or empty.
     std::string refusal;

@@ -5,6 +5,7 @@
 /// Perspective by default; orthographic for 2D views (Bezier curves). Shared by the headless
 /// renderer and the interactive viewer.
 
+#include <optional>
 #include <span>
 
 #include <glm/glm.hpp>
@@ -77,6 +78,11 @@ public:
     float near_plane() const;
     float far_plane() const;
 };
+
+/// Where `p` lands in a `width` × `height` image seen through `camera`, in pixels from the
+/// top-left corner; nothing when it lies behind the eye or outside the depth range.
+std::optional<glm::vec2> project_to_pixels(const Camera& camera, const Vec3& p, int width,
+                                           int height);
 
 /// True when no back face of a surface can be seen from `camera` (perspective): every part of the
 /// surface is closed with its faces pointing outwards

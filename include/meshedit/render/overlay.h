@@ -10,12 +10,14 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "meshedit/bezier/bezier_curve.h"
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/stencil.h"
 
 namespace meshedit {
 
@@ -25,15 +27,19 @@ using Color = std::array<float, 4>;
 /// Coloured primitives in world space. Points are drawn as screen-space discs of
 /// `point_size` pixels, lines as screen-space quads `line_width` pixels wide.
 struct OverlayBatch {
+    /// `xray`: drawn over the surface even where the surface hides it (a point inside a
+    /// closed mesh, marks on its far side).
     struct Point {
         Vec3 p;
         Color color;
         float size_px;
+        bool xray = false;
     };
     struct Line {
         Vec3 a, b;
         Color color;
         float width_px;
+        bool xray = false;
     };
     struct Triangle {
         Vec3 a, b, c;
@@ -55,15 +61,26 @@ struct OverlayBatch {
     std::vector<Line> lines;
     std::vector<Triangle> triangles;
     std::vector<Arrowhead> arrowheads;
+    /// Text beside a point (a stencil's weights): drawn by the window with Dear ImGui and by
+    /// meshedit-render on the finished image (render/labels.h), never by the GL renderer.
+    struct Label {
+        Vec3 at;
+        std::string text;
+        Color color;
+        bool left = false;  ///< the text ends left of the point (else starts right of it)
+    };
+    std::vector<Label> labels;
 
     void clear() {
         points.clear();
         lines.clear();
         triangles.clear();
         arrowheads.clear();
+        labels.clear();
     }
     bool empty() const {
-        return points.empty() && lines.empty() && triangles.empty() && arrowheads.empty();
+        return points.empty() && lines.empty() && triangles.empty() && arrowheads.empty() &&
+               labels.empty();
     }
     void append(const OverlayBatch& other);
 };
@@ -97,6 +114,8 @@ struct OverlayStyle {
     Color loop_target{0.0f, 0.55f, 0.6f, 1.0f};    ///< teal: new positions and the way there
     Color loop_new{0.6f, 0.2f, 0.75f, 1.0f};       ///< purple: edge points, new vertices, edges
     Color loop_flipped{0.95f, 0.75f, 0.0f, 1.0f};  ///< yellow: flipped edges
+    /// A subdivision stencil (core/stencil.h): its vertices and their weights.
+    Color stencil{0.85f, 0.1f, 0.6f, 1.0f};  ///< magenta
     float loop_point_px = 8.0f;
 };
 
@@ -105,9 +124,20 @@ void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch
 
 /// The state of a phased Loop (core/loop_steps.h), if one is under way: after phase 1 every
 /// vertex's new position (a teal dot, and a line from where it is) and every edge point
-/// (purple); after phase 2 the new vertices and the new edges across the old faces (purple);
-/// after phase 3 the flipped edges (yellow). Nothing when no phased Loop is under way.
+/// (purple), x-ray (they lie inside a convex mesh); after phase 2 the new vertices and the new
+/// edges across the old faces (purple); after phase 3 the flipped edges (yellow). Nothing when no
+/// phased Loop is under way.
 void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out);
+
+/// A subdivision stencil: a disc on every contributing vertex labelled with its weight
+/// (weight_label()), a thin line from each to the new point, and the new point (teal) with
+/// the rule's name. Nothing for a stencil that is not ok().
+void add_stencil_marks(const Mesh& mesh, const Stencil& stencil, const OverlayStyle& style,
+                       OverlayBatch& out);
+
+/// A weight as a reader checks it against the formula: an exact small fraction ("3/8",
+/// "1/16", "-1/8") when there is one with a denominator up to 4096, else 4 significant digits.
+std::string weight_label(double weight);
 
 /// The highlight of one element in `color`: a vertex disc; an edge as a thick line; a
 /// halfedge as an arrow (a line plus an Arrowhead sized in pixels) inset into its face towards the
@@ -150,10 +180,14 @@ struct SceneContent {
     ElementRef hovered;
     /// Meshes: elements selected besides `selected` (drawn alike).
     std::span<const ElementRef> also_selected;
+    /// Meshes: the stencil view's scheme; the hovered element's stencil is drawn (the
+    /// selected one's when nothing is hovered).
+    std::optional<StencilScheme> stencil;
 };
 
 /// Everything the overlay shows besides feature edges: control nets, the hovered and the
-/// selected element (a hovered element that is also selected shows as selected), or for a
+/// selected element (a hovered element that is also selected shows as selected), the stencil
+/// of the hovered (else selected) element when `stencil` is set, or for a
 /// curve the unit square, the curve with its levels and the marked control points.
 void add_scene_marks(const SceneContent& scene, const OverlayStyle& style, OverlayBatch& out);
 

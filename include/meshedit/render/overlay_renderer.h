@@ -6,9 +6,11 @@
 /// lines), both by instancing a 4-vertex strip whose corners the vertex shader pushes out in
 /// pixels; arrowheads are triangles sized in pixels the same way; triangles are drawn as
 /// they are. All use alpha blending and a small depth bias
-/// towards the eye, so edges lying on the surface win the depth test.
+/// towards the eye, so edges lying on the surface win the depth test. X-ray points and lines
+/// go to a second layer drawn last, faded where the surface hides them.
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "meshedit/render/camera.h"
@@ -32,6 +34,15 @@ public:
 
 private:
     void ensure_gl_objects();
+    void upload_layer(const OverlayBatch& batch);
+    void draw_layer(const Camera& camera, int width, int height, float depth_bias);
+    template <typename Use>
+    void draw_primitives(const Use& use);
+
+    static constexpr float kHiddenAlpha = 0.45f;  ///< x-ray marks behind the surface
+
+    std::unique_ptr<OverlayRenderer> xray_;  ///< the x-ray layer, made on first use
+    bool depth_tested_ = true;               ///< false: the x-ray layer
 
     ShaderProgram point_shader_, line_shader_, tri_shader_, arrow_shader_;
     unsigned point_vao_ = 0, line_vao_ = 0, tri_vao_ = 0, arrow_vao_ = 0;

@@ -64,6 +64,7 @@ enum class Command {
     ResetCamera,
     CycleUp,          ///< which world axis is up: +Y, +Z
     ToggleTrackball,  ///< turntable or trackball orbit
+    CycleStencil,     ///< stencil view: off, Loop (Warren), Loop (Loop's), Catmull-Clark
     Screenshot,
     // History and files.
     Undo,

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/stencil.h"
 #include "meshedit/render/camera.h"
 #include "meshedit/render/shading.h"
 #include "meshedit/viewer/bindings.h"
@@ -92,6 +93,9 @@ struct ViewState {
     int level = -1;          ///< Curve mode: levels shown (−1 = all, with B(t))
     UpAxis up = UpAxis::Y;   ///< which world axis is up on the screen (Y cycles)
     bool trackball = false;  ///< free rotation instead of the turntable (O toggles)
+    /// The stencil view (Alt+W cycles): the hovered (else selected) element's subdivision
+    /// stencil is drawn and spelled out in the info panel; off when empty.
+    std::optional<StencilScheme> stencil;
 };
 
 /// The parameters of the whole-mesh operations the keys run (the info panel's "Global
@@ -238,6 +242,9 @@ public:
     const ElementRef& selection() const { return doc_.selection; }
     const std::vector<ElementRef>& also_selected() const { return doc_.also_selected; }
     const ElementRef& hover() const { return hover_; }
+    /// What the stencil view shows: the hovered element, else the selected one (none when
+    /// the view is off or outside mesh modes).
+    ElementRef stencil_element() const;
     ViewState& view() { return view_; }
     const ViewState& view() const { return view_; }
     ToolSettings& tools() { return tools_; }
@@ -319,6 +326,7 @@ private:
     Outcome run_curve(Action action);
     Outcome run_surface(Command command);
     Outcome run_display(Action action);
+    Outcome cycle_stencil();
     Outcome undo();
     Outcome redo();
     Outcome quit();

@@ -1,0 +1,23 @@
+#pragma once
+/// \file
+/// Overlay labels (OverlayBatch::Label) on a finished image, for meshedit-render: the window
+/// draws the same labels with Dear ImGui. Text is DejaVu Sans (Debian's fonts-dejavu-core)
+/// through OpenImageIO, with a dark shadow so it reads on light and dark shading.
+
+#include <span>
+
+#include "meshedit/render/camera.h"
+#include "meshedit/render/image.h"
+#include "meshedit/render/overlay.h"
+
+namespace meshedit {
+
+/// The font labels are drawn in.
+inline constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+/// Draws each label a few pixels right of and above where its point lands in `image`, seen
+/// through `camera`; labels behind the eye are skipped. Nothing to draw, nothing needed.
+/// \throws IoError naming kLabelFont when it is missing.
+void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, const Camera& camera);
+
+}  // namespace meshedit
