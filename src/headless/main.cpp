@@ -23,6 +23,7 @@
 #include "meshedit/ops/ops.h"
 #include "meshedit/render/camera.h"
 #include "meshedit/render/labels.h"
+#include "meshedit/render/op_diagram.h"
 #include "meshedit/render/overlay.h"
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/scene.h"
@@ -50,6 +51,51 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
+// Runs --ops on `mesh`; with --op-diagram, the last step separately, returning what it
+// rewired (the changes listed under the picture).
+std::optional<OpDiagram> run_ops(Mesh& mesh, const Options& options, ElementRef& result) {
+    if (options.op_diagram && (!options.select.empty() || options.stencil)) {
+        throw UsageError("--op-diagram draws no mesh: --select and --stencil do not apply");
+    }
+    // @FILE: a session file, as `meshedit convert --ops @FILE` reads it.
+    std::vector<ops::Step> steps = options.ops.front() == '@'
+                                       ? ops::parse_session(read_file(options.ops.substr(1)))
+                                       : ops::parse(options.ops);
+    if (!options.op_diagram) {
+        result = ops::apply_steps(mesh, steps);
+        return std::nullopt;
+    }
+    if (steps.empty() || steps.back().target == ops::Target::None) {
+        throw UsageError(
+            "--op-diagram draws a local operation: the last step of --ops must name an element "
+            "(flip:A-B, split:A-B, collapse:A-B, dissolve:vI, …)");
+    }
+    const ops::Step last = steps.back();
+    steps.pop_back();
+    ops::apply_steps(mesh, steps);
+    const Mesh before = mesh;
+    const ElementRef input = ops::named_element(mesh, last);
+    result = ops::run_step(mesh, last).selected;
+    OpDiagram diagram = op_diagram(before, mesh, last.verb->name, input);
+    const Color ink{0.15f, 0.15f, 0.2f, 1.0f};
+    diagram.picture.labels.push_back({{0.5 * OpDiagram::kAfterX, diagram.max.y + 0.15, 0.0},
+                                      diagram.title,
+                                      ink,
+                                      OverlayBatch::Label::Side::Centre});
+    // The changes listed under the pictures, a line of text apart (the picture's width is
+    // what fits it into the image).
+    const double pixels_per_unit = options.width / (diagram.max.x - diagram.min.x);
+    const double line = 1.5 * diagram_font_px(options.width) / pixels_per_unit;
+    double y = diagram.min.y - 0.5 * line;
+    for (const std::string& text : diagram.changes) {
+        diagram.picture.labels.push_back({{diagram.min.x, y, 0.0}, text, ink});
+        y -= line;
+    }
+    diagram.min.y = y;
+    diagram.max.y += 0.3;
+    return diagram;
+}
+
 int run(const Options& options) {
     Clock::time_point phase = Clock::now();
     auto lap = [&](const char* name) {
@@ -70,6 +116,7 @@ int run(const Options& options) {
     OverlayBatch overlay;
     const OverlayStyle style;
     SceneContent scene;
+    std::optional<OpDiagram> diagram;
     if (is_curve) {
         if (!options.select.empty() || !options.ops.empty()) {
             throw UsageError("--select and --ops need a mesh or .bez file, not a curve");
@@ -86,12 +133,10 @@ int run(const Options& options) {
         lap("load");
         ElementRef result;
         if (!options.ops.empty()) {
-            // @FILE: a session file, as `meshedit convert --ops @FILE` reads it.
-            result =
-                ops::apply_steps(mesh, options.ops.front() == '@'
-                                           ? ops::parse_session(read_file(options.ops.substr(1)))
-                                           : ops::parse(options.ops));
+            diagram = run_ops(mesh, options, result);
             lap("ops");
+        } else if (options.op_diagram) {
+            throw UsageError("--op-diagram draws the last step of --ops: give --ops");
         }
         if (options.features.value_or(!is_surface)) {
             add_feature_edges(mesh, style, overlay);
@@ -120,6 +165,10 @@ int run(const Options& options) {
         }
     }
     add_scene_marks(scene, style, overlay);
+    if (diagram) {
+        overlay = diagram->picture;
+        scene.mesh = nullptr;
+    }
 
     const int w = options.width;
     const int h = options.height;
@@ -127,6 +176,10 @@ int run(const Options& options) {
     Camera camera;
     if (is_curve) {
         camera.frame_2d({0.0f, 0.0f}, {1.0f, 1.0f}, aspect);
+    } else if (diagram) {
+        camera.frame_2d({static_cast<float>(diagram->min.x), static_cast<float>(diagram->min.y)},
+                        {static_cast<float>(diagram->max.x), static_cast<float>(diagram->max.y)},
+                        aspect, 0.02f);
     } else {
         camera.up = options.up;
         camera.azimuth_deg = options.azimuth.value_or(30.0f);
@@ -155,7 +208,7 @@ int run(const Options& options) {
     render_options.shading = options.shading;
     render_options.smooth = options.smooth.value_or(true);
     render_options.wireframe = options.wireframe;
-    renderer.upload(is_curve ? nullptr : &mesh);
+    renderer.upload(is_curve || diagram ? nullptr : &mesh);
     renderer.overlay().upload(overlay);
     context.finish();
     lap("upload");
@@ -166,7 +219,7 @@ int run(const Options& options) {
     lap("draw");
     Image image = target.read();
     lap("readback");
-    draw_labels(image, overlay.labels, camera);
+    draw_labels(image, overlay.labels, camera, diagram ? diagram_font_px(w) : 0);
     write_png(image, options.output);
     lap("write");
 

@@ -157,6 +157,10 @@ int parse_options(int argc, char** argv, Options& o) {
            "(loop: Warren's weights, as L; loop-original: Loop's; catmull-clark: as Shift+C)")
         ->type_name("loop|loop-original|catmull-clark")
         ->check(CLI::IsMember({"loop", "loop-original", "catmull-clark"}));
+    app.add_flag("--op-diagram", o.op_diagram,
+                 "draw what the last step of --ops rewired instead of the mesh: its "
+                 "neighbourhood before and after, halfedges named as in its code "
+                 "(docs/teaching.md)");
     app.add_flag_callback(
         "--features", [&o] { o.features = true; },
         "boundary (red) and crease (green) edges: on by default for mesh "

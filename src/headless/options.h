@@ -34,6 +34,7 @@ struct Options {
     UpAxis up = UpAxis::Y;
     std::string select;
     std::optional<StencilScheme> stencil;
+    bool op_diagram = false;
     std::optional<bool> features;
     int density = 8;
     bool net = false;

@@ -422,6 +422,21 @@ Face named_face(const Mesh& mesh, const Step& step) {
     return Face(step.a);
 }
 
+ElementRef named_element(const Mesh& mesh, const Step& step) {
+    switch (step.target) {
+        case Target::Vertex:
+            return ElementRef::vertex(named_vertex(mesh, step));
+        case Target::Edge:
+        case Target::EdgePair:
+            return ElementRef::edge(named_edge(mesh, step));
+        case Target::Face:
+            return ElementRef::face(named_face(mesh, step));
+        case Target::None:
+            break;
+    }
+    return {};
+}
+
 StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options) {
     if (const std::string refusal = step.verb->check(mesh, step); !refusal.empty()) {
         throw OpError(step.text + " refused: " + refusal, true);

@@ -41,7 +41,8 @@ void add_stencil_marks(const Mesh& mesh, const Stencil& stencil, const OverlaySt
         out.labels.push_back({p, weight_label(term.weight), style.stencil});
     }
     out.points.push_back({stencil.position, style.loop_target, style.control_point_px, true});
-    out.labels.push_back({stencil.position, "p' (" + stencil.rule + ")", style.loop_target, true});
+    out.labels.push_back({stencil.position, "p' (" + stencil.rule + ")", style.loop_target,
+                          OverlayBatch::Label::Side::Left});
 }
 
 }  // namespace meshedit

@@ -9,6 +9,8 @@
 #include <new>
 #include <utility>
 
+#include "meshedit/ops/ops.h"
+
 namespace meshedit::viewer {
 
 namespace {
@@ -87,6 +89,7 @@ Outcome Editor::run(Action action) {
         case Command::CycleUp:
         case Command::ToggleTrackball:
         case Command::CycleStencil:
+        case Command::ToggleDiagram:
         case Command::Screenshot:
             return run_display(action);
         case Command::Undo:
@@ -165,6 +168,12 @@ Outcome Editor::run_display(Action action) {
                                               : "orbit: turntable (the up axis stays up)"};
         case Command::CycleStencil:
             return cycle_stencil();
+        case Command::ToggleDiagram:
+            view_.show_diagram = !view_.show_diagram;
+            return {kDisplay, view_.show_diagram
+                                  ? "rewiring panel on (shows after F, S, C and the other local "
+                                    "operations)"
+                                  : "rewiring panel off"};
         case Command::Screenshot:
             return {kScreenshot, ""};
         default:
@@ -174,6 +183,31 @@ Outcome Editor::run_display(Action action) {
 }
 
 // --------------------------------------------------------------------- the edit funnel
+
+namespace {
+
+// The diagram of an edit that was one local operation on the connectivity; none for
+// whole-mesh steps, several steps, drags (move) and crease marks.
+std::optional<OpDiagram> rewiring_of(const Mesh& before, const Mesh& after,
+                                     const std::vector<std::string>& steps) {
+    if (steps.size() != 1) {
+        return std::nullopt;
+    }
+    try {
+        const ops::Step step = ops::parse_step(steps.front());
+        const std::string_view verb = step.verb->name;
+        if (step.target == ops::Target::None || verb == "move" || verb == "crease") {
+            return std::nullopt;
+        }
+        return op_diagram(before, after, verb, ops::named_element(before, step));
+    } catch (const ops::SyntaxError&) {
+        return std::nullopt;  // a step the viewer wrote always parses; no diagram otherwise
+    } catch (const ops::OpError&) {
+        return std::nullopt;
+    }
+}
+
+}  // namespace
 
 Outcome Editor::edit(const std::function<std::string()>& check,
                      const std::function<Edited(Document&)>& apply) {
@@ -191,6 +225,8 @@ Outcome Editor::edit(const std::function<std::string()>& check,
         doc_ = std::move(before);
         return refused(e.what());
     }
+    // Before collect_garbage renumbers: the diagram names elements by their indices.
+    diagram_ = rewiring_of(before.mesh, doc_.mesh, edited.steps);
     history_.push(std::move(before));
     doc_.revision = next_revision_++;
     quit_armed_ = false;
@@ -221,6 +257,7 @@ void Editor::snapshot() {
 Outcome Editor::undo() {
     end_drag();
     cancel_modal();
+    diagram_.reset();
     if (!history_.undo(doc_)) {
         return refused("nothing to undo");
     }
@@ -235,6 +272,7 @@ Outcome Editor::undo() {
 Outcome Editor::redo() {
     end_drag();
     cancel_modal();
+    diagram_.reset();
     if (!history_.redo(doc_)) {
         return refused("nothing to redo");
     }

@@ -88,6 +88,7 @@ void Editor::set_document(Document document, std::filesystem::path path) {
     history_.clear();
     pristine_revisions_.clear();
     hover_ = {};
+    diagram_.reset();
     path_ = std::move(path);
     session_source_ = path_;
     session_source_hash_.clear();

@@ -122,6 +122,9 @@ PanelRequests Panels::draw(Editor& editor, const FrameStats& stats, const std::s
     if (editor.view().show_info) {
         draw_info(editor, stats, requests);
     }
+    if (editor.view().show_diagram && editor.last_diagram() && editor.mode() != Mode::Curve) {
+        draw_diagram(*editor.last_diagram());
+    }
     if (editor.view().show_help) {
         draw_help(editor.mode());
     }
@@ -325,28 +328,6 @@ void Panels::draw_stencil(const Editor& editor) {
             ImGui::Text("%s", weight_label(term.weight).c_str());
         }
         ImGui::EndTable();
-    }
-}
-
-void draw_labels(const std::vector<OverlayBatch::Label>& labels, const Camera& camera, int width,
-                 int height) {
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const float gap = ImGui::GetFontSize() * 0.5f;
-    for (const OverlayBatch::Label& label : labels) {
-        const auto at = project_to_pixels(camera, label.at, width, height);
-        if (!at) {
-            continue;
-        }
-        const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
-        const ImVec2 corner(label.left ? at->x - gap - size.x : at->x + gap, at->y - size.y - 2.0f);
-        draw->AddRectFilled(ImVec2(corner.x - 2.0f, corner.y - 1.0f),
-                            ImVec2(corner.x + size.x + 2.0f, corner.y + size.y + 1.0f),
-                            IM_COL32(13, 13, 20, 180), 2.0f);
-        const auto channel = [](float c) { return static_cast<int>(255.0f * (0.5f + 0.5f * c)); };
-        draw->AddText(corner,
-                      IM_COL32(channel(label.color[0]), channel(label.color[1]),
-                               channel(label.color[2]), 255),
-                      label.text.c_str());
     }
 }
 

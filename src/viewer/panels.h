@@ -79,6 +79,7 @@ public:
 private:
     void draw_info(Editor& editor, const FrameStats& stats, PanelRequests& requests);
     void draw_stencil(const Editor& editor);
+    void draw_diagram(const OpDiagram& diagram);  // panel_pictures.cpp
     void draw_help(Mode mode);
     void draw_status(const Editor& editor, const std::string& status, bool status_error);
     void draw_prompt(PanelRequests& requests);

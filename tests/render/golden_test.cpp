@@ -111,6 +111,11 @@ const std::vector<GoldenCase>& golden_cases() {
          "dae/quadcube.dae",
          {"--select", "e:0-1", "--stencil", "catmull-clark", "--flat", "--wireframe"},
          "576x432"},
+        // Rewiring diagrams (docs/teaching.md) of the cube's edge 7-4: the names of the
+        // diagrams above flip(), split() and collapse(), what changed coloured and listed.
+        {"diagram_flip", "dae/cube.dae", {"--ops", "flip:7-4", "--op-diagram"}, "960x640"},
+        {"diagram_split", "dae/cube.dae", {"--ops", "split:7-4", "--op-diagram"}, "1024x880"},
+        {"diagram_collapse", "dae/cube.dae", {"--ops", "collapse:7-4", "--op-diagram"}, "1024x880"},
         {"torus_loop2", "dae/torus.dae", {"--ops", "loop:2", "--flat", "--camera", "30,40"}},
         {"creased_input", "dae/creased.dae", {"--wireframe"}},
         {"creased_loop3", "dae/creased.dae", {"--ops", "loop:3"}},

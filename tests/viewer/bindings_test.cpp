@@ -42,6 +42,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('G'), 0, kMeshModes, {Command::ToFace}},
             {key_of('K'), 0, kMeshModes, edit("crease")},
             {key_of('W'), kAlt, kMeshModes, {Command::CycleStencil}},
+            {key_of('R'), kAlt, kMeshModes, {Command::ToggleDiagram}},
             {key_of('V'), kShift, kMeshModes, {Command::Validate}},
             {key_of('L'), kAlt, kMeshModes, edit("loop_step")},
             // The local operations of polygon meshes (docs/spec.md §4).

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/shapes.h"
 #include "support/fixtures.h"
 #include "support/mesh_compare.h"
 #include "viewer/editor_test_util.h"
@@ -207,6 +208,37 @@ TEST(EditorPolygons, LoopNeedsTriangulateFirst) {
     EXPECT_EQ(ed.press(key_of('T'), kCtrl).message, "triangulated 6 faces");
     EXPECT_FALSE(ed.press(key_of('L'), 0).refused);
     EXPECT_EQ(ed.mesh().n_faces(), 48u);
+}
+
+}  // namespace
+}  // namespace meshedit::viewer
+
+namespace meshedit::viewer {
+namespace {
+
+TEST(EditorRewiring, AFlipShowsItsDiagramUntilUndoAndWholeMeshEditsShowNone) {
+    Editor ed = editor_with(shapes::icosahedron());
+    EXPECT_FALSE(ed.last_diagram().has_value());
+    const Edge e(7);
+    const std::string described = describe(ed.mesh(), ElementRef::edge(e));
+    ed.select(ElementRef::edge(e));
+    ASSERT_FALSE(ed.press(key_of('F'), 0).refused);
+    ASSERT_TRUE(ed.last_diagram().has_value());
+    EXPECT_EQ(ed.last_diagram()->title, "flip of " + described);
+    EXPECT_EQ(ed.last_diagram()->changes.size(), 8u);  // six halfedges, two faces
+    EXPECT_TRUE(ed.view().show_diagram);
+    ed.press(key_of('R'), kAlt);
+    EXPECT_FALSE(ed.view().show_diagram);
+    ed.press(key_of('R'), kAlt);
+    ed.press(key_of('Z'), kCtrl);
+    EXPECT_FALSE(ed.last_diagram().has_value());
+    // A collapse's diagram names the elements before the renumbering that follows it.
+    ed.select(ElementRef::edge(e));
+    ASSERT_FALSE(ed.press(key_of('C'), 0).refused);
+    ASSERT_TRUE(ed.last_diagram().has_value());
+    EXPECT_EQ(ed.last_diagram()->title, "collapse of " + described);
+    ed.press(key_of('L'), 0);
+    EXPECT_FALSE(ed.last_diagram().has_value());
 }
 
 }  // namespace

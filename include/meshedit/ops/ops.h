@@ -160,6 +160,8 @@ Edge named_edge(const Mesh& mesh, const Step& step);
 Face named_face(const Mesh& mesh, const Step& step);
 /// A weld's second edge (C-D).
 Edge named_second_edge(const Mesh& mesh, const Step& step);
+/// The element a step names (a weld: its first edge); none for whole-mesh steps.
+ElementRef named_element(const Mesh& mesh, const Step& step);
 
 /// Runs one step: check(), then run(). \throws OpError with "<step> refused: <reason>".
 StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options = {});

@@ -17,7 +17,14 @@ inline constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/Deja
 
 /// Draws each label a few pixels right of and above where its point lands in `image`, seen
 /// through `camera`; labels behind the eye are skipped. Nothing to draw, nothing needed.
+/// `font_px` 0: a 32nd of the image's height (at least 12).
 /// \throws IoError naming kLabelFont when it is missing.
-void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, const Camera& camera);
+void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, const Camera& camera,
+                 int font_px = 0);
+
+/// The font size of labels on a diagram `width` pixels wide (op_diagram.h).
+inline int diagram_font_px(int width) {
+    return width / 72 > 12 ? width / 72 : 12;
+}
 
 }  // namespace meshedit

@@ -67,7 +67,10 @@ struct OverlayBatch {
         Vec3 at;
         std::string text;
         Color color;
-        bool left = false;  ///< the text ends left of the point (else starts right of it)
+        /// Where the text sits: starting right of the point, ending left of it, or centred
+        /// on it.
+        enum class Side { Right, Left, Centre };
+        Side side = Side::Right;
     };
     std::vector<Label> labels;
 

@@ -65,6 +65,7 @@ enum class Command {
     CycleUp,          ///< which world axis is up: +Y, +Z
     ToggleTrackball,  ///< turntable or trackball orbit
     CycleStencil,     ///< stencil view: off, Loop (Warren), Loop (Loop's), Catmull-Clark
+    ToggleDiagram,    ///< the rewiring panel
     Screenshot,
     // History and files.
     Undo,

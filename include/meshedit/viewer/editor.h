@@ -18,6 +18,7 @@
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/stencil.h"
 #include "meshedit/render/camera.h"
+#include "meshedit/render/op_diagram.h"
 #include "meshedit/render/shading.h"
 #include "meshedit/viewer/bindings.h"
 #include "meshedit/viewer/history.h"
@@ -96,6 +97,8 @@ struct ViewState {
     /// The stencil view (Alt+W cycles): the hovered (else selected) element's subdivision
     /// stencil is drawn and spelled out in the info panel; off when empty.
     std::optional<StencilScheme> stencil;
+    /// The rewiring panel (Alt+R): the last local operation's before/after diagram.
+    bool show_diagram = true;
 };
 
 /// The parameters of the whole-mesh operations the keys run (the info panel's "Global
@@ -242,6 +245,9 @@ public:
     const ElementRef& selection() const { return doc_.selection; }
     const std::vector<ElementRef>& also_selected() const { return doc_.also_selected; }
     const ElementRef& hover() const { return hover_; }
+    /// What the last edit rewired, when it was one local operation (F, S, C, …): its
+    /// before/after diagram (render/op_diagram.h); empty after any other edit, undo or redo.
+    const std::optional<OpDiagram>& last_diagram() const { return diagram_; }
     /// What the stencil view shows: the hovered element, else the selected one (none when
     /// the view is off or outside mesh modes).
     ElementRef stencil_element() const;
@@ -339,6 +345,7 @@ private:
     ToolSettings tools_;
     ProgressHook progress_hook_;
     ElementRef hover_;
+    std::optional<OpDiagram> diagram_;
     std::filesystem::path path_;
     /// The file the session starts from and its content_hash() (set by open()).
     std::filesystem::path session_source_;

@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// "What did that operation rewire?": the local neighbourhood of a local operation before
+/// and after it, as a flat 2-D picture of halfedges, twins and faces labelled with the names
+/// the operation's code and docs/halfedge.md use (h0, t0, a, b, c, d, m, v0 …; other elements
+/// by index), the elements it created, deleted or relinked coloured. The viewer draws it in a
+/// panel (Alt+R); `meshedit render --ops … --op-diagram` renders it for docs. GL-free.
+///
+/// The picture is an OverlayBatch in the z = 0 plane: "before" on the left, "after" on the
+/// right, each laid out as a Tutte embedding of its faces (the region's outline on a circle,
+/// the inner vertices at the average of their neighbours), so a bent neighbourhood (a cube's
+/// corner) lies flat and nothing overlaps, whatever the mesh's own geometry.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "meshedit/core/element_ref.h"
+#include "meshedit/core/mesh.h"
+#include "meshedit/render/overlay.h"
+
+namespace meshedit {
+
+/// The diagram's colours (one place, as OverlayStyle for the 3-D view).
+struct OpDiagramStyle {
+    Color unchanged{0.25f, 0.25f, 0.3f, 1.0f};  ///< dark grey
+    Color created{0.1f, 0.6f, 0.2f, 1.0f};      ///< green
+    Color deleted{0.85f, 0.15f, 0.15f, 1.0f};   ///< red
+    Color relinked{0.95f, 0.5f, 0.0f, 1.0f};    ///< orange
+    Color edge{0.55f, 0.55f, 0.6f, 1.0f};       ///< the edges, under the halfedge arrows
+    float face_alpha = 0.18f;                   ///< face tints
+};
+
+struct OpDiagram {
+    std::string title;     ///< "flip of edge 17 (7–4)"
+    OverlayBatch picture;  ///< z = 0; before at x ∈ [−1, 1], after at x ∈ [kAfterX ± 1]
+    Vec3 min, max;         ///< the picture's extent, labels' anchors included
+    std::vector<std::string> changes;  ///< "h0: next h1 → t2, to c → a", one line per element
+    static constexpr double kAfterX = 2.9;
+};
+
+/// The diagram of `verb` (an edit-language verb: "flip", "split", "collapse", …) run on
+/// `input` of `before`, which made `after`. Flip, split and collapse between triangles name
+/// their elements as their code does; the other operations, and polygons, label elements by
+/// index. The region shown: for an edge, its faces (collapse: every face at either end); for
+/// a vertex, its faces; for a face, it and the faces across its sides; after the edit, the
+/// faces on the same vertices (and any new ones) that are new or were shown before.
+/// \pre `after` is `before` after the operation, without garbage collection between (indices
+///      name the same elements); `input` is live in `before`.
+OpDiagram op_diagram(const Mesh& before, const Mesh& after, std::string_view verb, ElementRef input,
+                     const OpDiagramStyle& style = {});
+
+namespace op_diagram_detail {
+
+/// Names of elements by index, as an operation's code calls them.
+struct Names {
+    std::vector<std::pair<std::uint32_t, std::string>> halfedges, vertices, faces;
+    const std::string* halfedge(Halfedge h) const;
+    const std::string* vertex(Vertex v) const;
+    const std::string* face(Face f) const;
+};
+
+/// The code's names for `verb` on `input` (empty for operations without named diagrams).
+Names code_names(const Mesh& before, std::string_view verb, ElementRef input);
+
+}  // namespace op_diagram_detail
+
+}  // namespace meshedit
