@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "mesh_arrays.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/topology.h"
 #include "parallel.h"
 
@@ -304,6 +305,115 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh) {
     std::vector<Vec3> out;
     compute_vertex_normals(mesh, out);
     return out;
+}
+
+bool splits_normals(const Mesh& mesh, Edge e, const NormalSplit& split) {
+    if (mesh.is_deleted(e) || mesh.is_boundary(e)) {
+        return false;
+    }
+    if (split.creases) {
+        const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
+        if (crease && crease[e] != 0) {
+            return true;
+        }
+    }
+    if (split.auto_smooth_deg) {
+        const Vec3 a = face_normal(mesh, mesh.face(e, 0));
+        const Vec3 b = face_normal(mesh, mesh.face(e, 1));
+        const double angle = std::acos(std::clamp(dot(a, b), -1.0, 1.0)) * 180.0 / M_PI;
+        return angle > *split.auto_smooth_deg;
+    }
+    return false;
+}
+
+// Around v, clockwise from a sharp (or boundary) edge: the faces up to the next sharp edge
+// form a wedge. Corners are named by their incoming halfedge (to_vertex = v, in the face).
+bool compute_corner_normals(const Mesh& mesh, const NormalSplit& split,
+                            const std::vector<Vec3>& vertex_normals, std::vector<Vec3>& out) {
+    // The crease flags looked up once (by name), and nothing at all to do, the usual case
+    // during a drag, when there are none and no Auto Smooth.
+    const auto crease = split.creases ? mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)
+                                      : EdgeProperty<std::uint8_t>();
+    if (!crease && !split.auto_smooth_deg) {
+        return false;
+    }
+    std::vector<std::uint8_t> sharp(mesh.edges_size(), 0);
+    bool any = false;
+    const double cos_limit =
+        split.auto_smooth_deg ? std::cos(*split.auto_smooth_deg * M_PI / 180.0) : -2.0;
+    for (Edge e : mesh.edges()) {
+        if (mesh.is_boundary(e)) {
+            continue;
+        }
+        const bool flagged = crease && crease[e] != 0;
+        const bool turned =
+            split.auto_smooth_deg &&
+            dot(face_normal(mesh, mesh.face(e, 0)), face_normal(mesh, mesh.face(e, 1))) < cos_limit;
+        if (flagged || turned) {
+            sharp[e.idx()] = 1;
+            any = true;
+        }
+    }
+    if (!any) {
+        return false;
+    }
+    out.assign(mesh.halfedges_size(), Vec3{});
+    for (Vertex v : mesh.vertices()) {
+        const Halfedge start = mesh.halfedge(v);
+        if (!start.is_valid()) {
+            continue;
+        }
+        // Faces around v, clockwise: face(h) for each outgoing h, the next one sharing
+        // edge(h) with it. A cut: an outgoing halfedge whose edge is sharp or boundary.
+        const auto is_cut = [&](Halfedge g) {
+            return sharp[Mesh::edge(g).idx()] != 0 || mesh.is_boundary(Mesh::edge(g));
+        };
+        Halfedge cut = start;
+        bool has_sharp = false;
+        Halfedge h = start;
+        do {
+            if (sharp[Mesh::edge(h).idx()] != 0) {
+                cut = h;
+                has_sharp = true;
+                break;
+            }
+            h = mesh.cw_rotated(h);
+        } while (h != start);
+        if (!has_sharp) {
+            // No sharp edge at v (a hole's rim alone does not split): its vertex normal for
+            // every corner, bit for bit what shading without splits gives.
+            h = start;
+            do {
+                if (!mesh.is_boundary(h)) {
+                    out[mesh.prev(h).idx()] = vertex_normals[v.idx()];
+                }
+                h = mesh.cw_rotated(h);
+            } while (h != start);
+            continue;
+        }
+        // From just after a cut, once around: the corner of face(h) at v is entered by
+        // prev(h); a cut edge(h) closes the wedge.
+        std::vector<Halfedge> wedge;
+        Vec3 sum;
+        const Halfedge begin = mesh.cw_rotated(cut);
+        h = begin;
+        do {
+            if (!mesh.is_boundary(h)) {
+                wedge.push_back(mesh.prev(h));
+                sum += face_area_vector(mesh, mesh.face(h));
+            }
+            if (is_cut(h)) {
+                const Vec3 n = normalize(sum);
+                for (Halfedge corner : wedge) {
+                    out[corner.idx()] = n;
+                }
+                wedge.clear();
+                sum = Vec3{};
+            }
+            h = mesh.cw_rotated(h);
+        } while (h != begin);
+    }
+    return true;
 }
 
 }  // namespace meshedit

@@ -208,6 +208,7 @@ int run(const Options& options) {
     render_options.shading = options.shading;
     render_options.smooth = options.smooth.value_or(true);
     render_options.wireframe = options.wireframe;
+    renderer.mesh().set_normal_split(options.normals);
     renderer.upload(is_curve || diagram ? nullptr : &mesh);
     renderer.overlay().upload(overlay);
     context.finish();

@@ -157,6 +157,15 @@ int parse_options(int argc, char** argv, Options& o) {
            "(loop: Warren's weights, as L; loop-original: Loop's; catmull-clark: as Shift+C)")
         ->type_name("loop|loop-original|catmull-clark")
         ->check(CLI::IsMember({"loop", "loop-original", "catmull-clark"}));
+    app.add_option_function<double>(
+           "--auto-smooth", [&o](double deg) { o.normals.auto_smooth_deg = deg; },
+           "smooth shading also splits at edges whose faces turn by more than DEG degrees "
+           "(Blender's Auto Smooth; crease edges always split)")
+        ->type_name("DEG")
+        ->check(CLI::Range(0.0, 180.0));
+    app.add_flag_callback(
+        "--no-crease-split", [&o] { o.normals.creases = false; },
+        "smooth shading across crease edges too (as before crease-aware normals)");
     app.add_flag("--op-diagram", o.op_diagram,
                  "draw what the last step of --ops rewired instead of the mesh: its "
                  "neighbourhood before and after, halfedges named as in its code "

@@ -10,6 +10,7 @@
 
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/stencil.h"
 #include "meshedit/render/camera.h"
 
@@ -35,6 +36,7 @@ struct Options {
     std::string select;
     std::optional<StencilScheme> stencil;
     bool op_diagram = false;
+    NormalSplit normals;  ///< --auto-smooth, --no-crease-split
     std::optional<bool> features;
     int density = 8;
     bool net = false;

@@ -92,6 +92,7 @@ void MeshRenderer::upload(const Mesh& mesh) {
     // for the first and last fan triangle's outer sides; the rest are diagonals, which the
     // wireframe must not draw and picking must not report.
     triangle_corners_.clear();
+    corner_halfedges_.clear();
     triangle_faces_.clear();
     pick_table_.clear();
     for (Face f : mesh.faces()) {
@@ -101,6 +102,8 @@ void MeshRenderer::upload(const Mesh& mesh) {
             triangle_corners_.push_back(c0.idx());
             triangle_corners_.push_back(mesh.from_vertex(h).idx());
             triangle_corners_.push_back(mesh.to_vertex(h).idx());
+            corner_halfedges_.insert(corner_halfedges_.end(),
+                                     {mesh.prev(h0).idx(), mesh.prev(h).idx(), h.idx()});
             triangle_faces_.push_back(f.idx());
             // Halfedges c0->c1, c1->c2, c2->c0 of this fan triangle.
             const std::uint32_t side0 = i == 1 ? h0.idx() : kInvalidIndex;
@@ -133,6 +136,8 @@ void MeshRenderer::update_geometry(const Mesh& mesh) {
 void MeshRenderer::fill_geometry(const Mesh& mesh) {
     compute_vertex_normals(mesh, vertex_normals_);
     compute_face_normals(mesh, face_normals_);
+    const bool split =
+        compute_corner_normals(mesh, normal_split_, vertex_normals_, corner_normals_);
     vertices_.resize(3 * triangle_count_);
     bounds_ = {};
     for (Vertex v : mesh.vertices()) {
@@ -154,7 +159,9 @@ void MeshRenderer::fill_geometry(const Mesh& mesh) {
             out.position[0] = static_cast<float>(p.x);
             out.position[1] = static_cast<float>(p.y);
             out.position[2] = static_cast<float>(p.z);
-            out.smooth_normal = pack_normal(vertex_normals_[v]);
+            out.smooth_normal = pack_normal(
+                split ? corner_normals_[corner_halfedges_[3 * t + static_cast<std::size_t>(k)]]
+                      : vertex_normals_[v]);
             out.flat_normal = flat;
             out.corner[0] = k == 0 ? 255 : 0;
             out.corner[1] = k == 1 ? 255 : 0;

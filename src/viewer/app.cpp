@@ -482,6 +482,7 @@ void App::apply(const Outcome& outcome) {
 }
 
 void App::upload_document() {
+    scene_->mesh().set_normal_split(editor_.view().normals);
     scene_->upload(mesh_mode() ? &editor_.mesh() : nullptr);
     editor_.set_hover({});
     cursor_moved_ = true;  // the caller rebuilds the overlay
@@ -668,6 +669,10 @@ void App::draw_frame() {
     }
     if (requests.export_session) {
         apply(editor_.export_session(*requests.export_session));
+    }
+    if (requests.normals_changed && scene_->has_mesh()) {
+        scene_->mesh().set_normal_split(editor_.view().normals);
+        scene_->mesh().update_geometry(editor_.mesh());
     }
     if (requests.view_changed) {
         redraw_frames_ = std::max(redraw_frames_, 1);

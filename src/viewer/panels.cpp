@@ -275,6 +275,23 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
         changed |= ImGui::Checkbox("smooth (Q)", &render.smooth);
         ImGui::SameLine();
         changed |= ImGui::Checkbox("wireframe (W)", &render.wireframe);
+        NormalSplit& normals = editor.view().normals;
+        bool normals_changed = ImGui::Checkbox("split at creases", &normals.creases);
+        bool auto_smooth = normals.auto_smooth_deg.has_value();
+        ImGui::SameLine();
+        if (ImGui::Checkbox("auto smooth", &auto_smooth)) {
+            normals.auto_smooth_deg = auto_smooth ? std::optional<double>(30.0) : std::nullopt;
+            normals_changed = true;
+        }
+        if (normals.auto_smooth_deg) {
+            float angle = static_cast<float>(*normals.auto_smooth_deg);
+            if (ImGui::SliderFloat("angle", &angle, 0.0f, 180.0f, "%.0f°")) {
+                normals.auto_smooth_deg = angle;
+                normals_changed = true;
+            }
+        }
+        requests.normals_changed |= normals_changed;
+        changed |= normals_changed;
         PhongParams& phong = render.phong;
         ImGui::TextDisabled("Blinn-Phong (mode 1)");
         changed |= ImGui::SliderFloat("ambient", &phong.ambient, 0.0f, 3.0f);

@@ -33,6 +33,7 @@ struct PanelRequests {
     std::optional<std::filesystem::path> open;
     std::optional<std::filesystem::path> export_session;
     bool view_changed = false;         ///< a shading control moved
+    bool normals_changed = false;      ///< which edges split smooth shading
     std::optional<Action> action;      ///< a control that stands for a key (up axis, orbit)
     std::optional<ElementRef> select;  ///< an index clicked in the inspector
     std::optional<ElementRef> hover;   ///< an index under the mouse in the inspector

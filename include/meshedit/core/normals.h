@@ -2,6 +2,7 @@
 /// \file
 /// Face and vertex normals, and the signed volume they enclose.
 
+#include <optional>
 #include <vector>
 
 #include "meshedit/core/mesh.h"
@@ -39,6 +40,26 @@ double signed_volume(const Mesh& mesh);
 /// every part, only front faces can be visible (unless a surface intersects itself), which
 /// lets a renderer cull back faces. One inside-out part makes it false.
 bool is_closed_and_outward(const Mesh& mesh);
+
+/// Which edges split smooth shading ("sharp" edges): crease edges (kCreaseProperty) when
+/// `creases`, and with `auto_smooth_deg` every edge whose two faces' normals differ by more
+/// than that angle (Blender's Auto Smooth). A boundary edge bounds anyway: it has one face.
+struct NormalSplit {
+    bool creases = true;
+    std::optional<double> auto_smooth_deg;
+};
+
+/// True if `e` splits smooth shading under `split` (a live edge with two faces).
+bool splits_normals(const Mesh& mesh, Edge e, const NormalSplit& split);
+
+/// Area-weighted normals per face corner, indexed by halfedge: `out[h]` is the normal of the
+/// corner at to_vertex(h) in face(h). Around a vertex the sharp edges cut its faces into
+/// wedges; each corner gets the normalised sum of the area vectors of its wedge. A vertex on
+/// no sharp edge gets its vertex normal (`vertex_normals`, from compute_vertex_normals()), so
+/// a mesh without sharp edges shades exactly as with vertex normals. Boundary halfedges get
+/// zero. O(H). \return false, leaving `out` alone, when no edge is sharp.
+bool compute_corner_normals(const Mesh& mesh, const NormalSplit& split,
+                            const std::vector<Vec3>& vertex_normals, std::vector<Vec3>& out);
 
 /// Convenience forms returning a new vector.
 std::vector<Vec3> face_normals(const Mesh& mesh);

@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/render/camera.h"
 #include "meshedit/render/overlay.h"
 #include "meshedit/render/shader_program.h"
@@ -80,6 +81,11 @@ public:
 
     std::size_t triangle_count() const { return triangle_count_; }
 
+    /// Which edges split smooth shading (core/normals.h; by default crease edges). Takes
+    /// effect at the next upload() or update_geometry().
+    void set_normal_split(const NormalSplit& split) { normal_split_ = split; }
+    const NormalSplit& normal_split() const { return normal_split_; }
+
     /// Whether draw() and the ID pass skip back faces for this camera: back_faces_hidden()
     /// (camera.h) for the uploaded mesh. The bare draw never culls.
     bool culls_back_faces(const Camera& camera) const;
@@ -111,7 +117,11 @@ private:
     std::vector<Vec3> vertex_normals_;
     std::vector<Vec3> face_normals_;
     std::vector<std::uint32_t> triangle_corners_;  ///< 3 vertex indices per triangle
-    std::vector<std::uint32_t> triangle_faces_;    ///< face index per triangle
+    /// The halfedge entering each corner in its face (names its corner normal).
+    std::vector<std::uint32_t> corner_halfedges_;
+    std::vector<Vec3> corner_normals_;  ///< by halfedge, when some edge splits
+    NormalSplit normal_split_;
+    std::vector<std::uint32_t> triangle_faces_;  ///< face index per triangle
 };
 
 }  // namespace meshedit

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/stencil.h"
 #include "meshedit/render/camera.h"
 #include "meshedit/render/op_diagram.h"
@@ -99,6 +100,9 @@ struct ViewState {
     std::optional<StencilScheme> stencil;
     /// The rewiring panel (Alt+R): the last local operation's before/after diagram.
     bool show_diagram = true;
+    /// Which edges split smooth shading (the Shading panel): creases, and with Auto Smooth
+    /// every edge sharper than its angle.
+    NormalSplit normals;
 };
 
 /// The parameters of the whole-mesh operations the keys run (the info panel's "Global
