@@ -1,0 +1,130 @@
+// Scalar fields against closed forms: a sphere's curvatures, a torus's Gaussian curvature
+// signs, a plane's zeros, Gauss–Bonnet on closed and open meshes, an equilateral triangle's
+// quality, a grid's edge distances.
+
+#include "meshedit/core/fields.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "meshedit/core/shapes.h"
+#include "support/fixtures.h"
+
+namespace meshedit {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::vector<double> field(const Mesh& mesh, const char* name, const FieldOptions& o = {}) {
+    const FieldInfo* info = find_field(name);
+    EXPECT_NE(info, nullptr) << name;
+    return compute_field(mesh, *info, o);
+}
+
+TEST(Fields, SphereCurvaturesWithinOnePercent) {
+    // icosphere(6): 81,920 triangles on the unit sphere; K = 1, H = 1 at every vertex.
+    const Mesh sphere = shapes::icosphere(6);
+    ASSERT_GT(sphere.n_faces(), 40000u);
+    for (const char* name : {"gauss", "mean"}) {
+        SCOPED_TRACE(name);
+        const std::vector<double> values = field(sphere, name);
+        const FieldStats s = field_stats(values);
+        EXPECT_EQ(s.count, sphere.n_vertices());
+        EXPECT_NEAR(s.min, 1.0, 0.01);
+        EXPECT_NEAR(s.max, 1.0, 0.01);
+    }
+}
+
+TEST(Fields, GaussBonnetHoldsOnAnyMesh) {
+    // Σ angle defects = 2πχ: sphere and cube χ = 2, torus 0, disk and grid 1.
+    EXPECT_NEAR(total_angle_defect(shapes::icosphere(3)), 4 * kPi, 1e-9);
+    EXPECT_NEAR(total_angle_defect(shapes::cube()), 4 * kPi, 1e-9);
+    EXPECT_NEAR(total_angle_defect(test::quad_cube()), 4 * kPi, 1e-9);
+    EXPECT_NEAR(total_angle_defect(shapes::torus(12, 8)), 0.0, 1e-9);
+    EXPECT_NEAR(total_angle_defect(shapes::disk(7)), 2 * kPi, 1e-9);
+    EXPECT_NEAR(total_angle_defect(shapes::grid(5, 3)), 2 * kPi, 1e-9);
+}
+
+TEST(Fields, TorusIsPositiveOutsideAndNegativeInside) {
+    // Major radius 1, minor 0.4: K > 0 where the vertex is farther from the axis than the
+    // tube's centre circle, K < 0 nearer.
+    const Mesh torus = shapes::torus(48, 24, 1.0, 0.4);
+    const std::vector<double> k = field(torus, "gauss");
+    for (Vertex v : torus.vertices()) {
+        const Vec3 p = torus.position(v);
+        const double from_axis = std::hypot(p.x, p.y);
+        if (from_axis > 1.05) {
+            EXPECT_GT(k[v.idx()], 0.0) << v.idx();
+        } else if (from_axis < 0.95) {
+            EXPECT_LT(k[v.idx()], 0.0) << v.idx();
+        }
+    }
+}
+
+TEST(Fields, PlaneIsFlatAndBoundaryHasNoCurvature) {
+    const Mesh grid = shapes::grid(4, 4);
+    const std::vector<double> k = field(grid, "gauss");
+    const std::vector<double> h = field(grid, "mean");
+    for (Vertex v : grid.vertices()) {
+        if (grid.is_boundary(v)) {
+            EXPECT_TRUE(std::isnan(k[v.idx()]));
+        } else {
+            EXPECT_NEAR(k[v.idx()], 0.0, 1e-12);
+            EXPECT_NEAR(h[v.idx()], 0.0, 1e-12);
+        }
+    }
+}
+
+TEST(Fields, EquilateralTriangleIsPerfect) {
+    const double s = std::sqrt(3.0) / 2.0;
+    const Mesh tri = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {0.5, s, 0}}, {{0, 1, 2}});
+    EXPECT_NEAR(field(tri, "aspect")[0], 1.0, 1e-12);
+    EXPECT_NEAR(field(tri, "min_angle")[0], 60.0, 1e-12);
+    EXPECT_NEAR(field(tri, "face_area")[0], s / 2.0, 1e-15);
+    // A squashed one is worse on both counts.
+    const Mesh flat = test::mesh_from_faces({{0, 0, 0}, {1, 0, 0}, {0.5, 0.1, 0}}, {{0, 1, 2}});
+    EXPECT_GT(field(flat, "aspect")[0], 2.0);
+    EXPECT_LT(field(flat, "min_angle")[0], 12.0);
+}
+
+TEST(Fields, EdgeFieldsAndDistances) {
+    const Mesh cube = shapes::cube();  // [-1, 1]³, each side cut by a diagonal
+    const std::vector<double> dihedral = field(cube, "dihedral");
+    const std::vector<double> length = field(cube, "edge_length");
+    for (Edge e : cube.edges()) {
+        const bool diagonal = std::abs(length[e.idx()] - 2.0 * std::sqrt(2.0)) < 1e-12;
+        EXPECT_NEAR(dihedral[e.idx()], diagonal ? 0.0 : 90.0, 1e-9);
+        if (!diagonal) {
+            EXPECT_NEAR(length[e.idx()], 2.0, 1e-15);
+        }
+    }
+    // Grid vertex (i, j) is j·4 + i; diagonals run (i, j) to (i+1, j+1); the unit square
+    // spans 3 × 3 cells of side 1/3.
+    const Mesh grid = shapes::grid(3, 3);
+    FieldOptions from_corner;
+    from_corner.source = Vertex(0);
+    const std::vector<double> d = field(grid, "distance", from_corner);
+    EXPECT_EQ(d[0], 0.0);
+    EXPECT_NEAR(d[15], std::sqrt(2.0), 1e-12);                     // three diagonals
+    EXPECT_NEAR(d[3], 1.0, 1e-12);                                 // along the bottom row
+    EXPECT_NEAR(d[7], 1.0 / 3.0 * (2.0 + std::sqrt(2.0)), 1e-12);  // (3, 1)
+}
+
+TEST(Fields, ValenceStatsAndPercentiles) {
+    const Mesh ico = shapes::icosahedron();
+    const FieldStats s = field_stats(field(ico, "valence"));
+    EXPECT_EQ(s.count, 12u);
+    EXPECT_EQ(s.min, 5.0);
+    EXPECT_EQ(s.max, 5.0);
+    const std::vector<double> values{4.0, 1.0, std::nan(""), 3.0, 2.0, 5.0};
+    EXPECT_EQ(field_percentile(values, 0.0), 1.0);
+    EXPECT_EQ(field_percentile(values, 1.0), 5.0);
+    EXPECT_EQ(field_percentile(values, 0.5), 3.0);
+    EXPECT_EQ(field_stats(values).mean, 3.0);
+    EXPECT_NEAR(surface_area(test::quad_cube()), 24.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace meshedit
