@@ -1,8 +1,9 @@
-// `meshedit info FILE [--json] [--density N]`: counts, topology, bounding box, repairs.
+// `meshedit info FILE [--json] [--stats] [--density N]`: counts, topology, bounding box, repairs.
 
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <numbers>
 
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -11,6 +12,8 @@
 
 #include "cli.h"
 #include "meshedit/core/attributes.h"
+#include "meshedit/core/fields.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/topology.h"
 #include "meshedit/io/io.h"
 
@@ -161,7 +164,42 @@ std::string degrees_text(const std::map<std::size_t, std::size_t>& degrees) {
 }
 
 // Everything `meshedit info` prints about `path`.
-int info(const std::filesystem::path& path, bool json, int density) {
+// --stats: area, volume of a closed mesh, Gauss–Bonnet, every field's min/mean/max.
+Json stats_json(const Mesh& mesh, bool closed) {
+    Json j;
+    j["area"] = surface_area(mesh);
+    if (closed) {
+        j["volume"] = signed_volume(mesh);
+    }
+    j["total_angle_defect"] = total_angle_defect(mesh);
+    Json fields = Json::object();
+    for (const FieldInfo& info : field_infos()) {
+        const FieldStats s = field_stats(compute_field(mesh, info));
+        fields[std::string(info.name)] = {
+            {"count", s.count}, {"min", s.min}, {"mean", s.mean}, {"max", s.max}};
+    }
+    j["fields"] = std::move(fields);
+    return j;
+}
+
+void print_stats(const Mesh& mesh, bool closed, long euler_characteristic) {
+    print_row("area", format_number(surface_area(mesh)));
+    print_row("volume", closed ? format_number(signed_volume(mesh)) : "(open: none)");
+    print_row("angle defect", format_number(total_angle_defect(mesh) / std::numbers::pi) +
+                                  " pi (Gauss-Bonnet: 2 pi chi = " +
+                                  std::to_string(2 * euler_characteristic) + " pi)");
+    for (const FieldInfo& info : field_infos()) {
+        const FieldStats s = field_stats(compute_field(mesh, info));
+        const std::string unit = info.unit.empty() ? "" : " " + std::string(info.unit);
+        print_row(std::string(info.name), s.count == 0 ? "(no values)"
+                                                       : "min " + format_number(s.min) + ", mean " +
+                                                             format_number(s.mean) + ", max " +
+                                                             format_number(s.max) + unit + " (" +
+                                                             std::to_string(s.count) + " values)");
+    }
+}
+
+int info(const std::filesystem::path& path, bool json, int density, bool with_stats) {
     ReadOptions options;
     options.density = density;
     const LoadedDocument input = read_document(path, options);
@@ -215,6 +253,12 @@ int info(const std::filesystem::path& path, bool json, int density) {
             }
             j["parts"] = std::move(parts);
         }
+        if (with_stats) {
+            j["stats"] = stats_json(mesh, stats.boundary_loops == 0);
+        }
+        if (with_stats) {
+            j["stats"] = stats_json(mesh, stats.boundary_loops == 0);
+        }
         std::printf("%s\n", j.dump(2).c_str());
         return 0;
     }
@@ -256,6 +300,9 @@ int info(const std::filesystem::path& path, bool json, int density) {
                           std::to_string(long(p.vertices) - long(p.edges) + long(p.faces)));
         }
     }
+    if (with_stats) {
+        print_stats(mesh, stats.boundary_loops == 0, stats.euler_characteristic);
+    }
     return 0;
 }
 
@@ -265,6 +312,7 @@ Command add_info(CLI::App& meshedit) {
     struct Settings {
         std::filesystem::path file;
         bool json = false;
+        bool stats = false;
         int density = 8;
     };
     auto s = std::make_shared<Settings>();
@@ -272,9 +320,13 @@ Command add_info(CLI::App& meshedit) {
         meshedit.add_subcommand("info", "counts, topology, bounding box, repairs of a file");
     app->add_option("FILE", s->file, "the file to describe")->required();
     app->add_flag("--json", s->json, "print one JSON object (fields: docs/cli.md)");
+    app->add_flag("--stats", s->stats,
+                  "also area, volume (closed meshes), the total angle defect and min/mean/max "
+                  "of every scalar field (docs/fields.md)");
     add_density_option(*app, s->density);
     app->footer(
-        "Describes a mesh (.dae .gltf .glb .obj .off), a Bezier patch set (.bez) or a Bezier curve\n"
+        "Describes a mesh (.dae .gltf .glb .obj .off), a Bezier patch set (.bez) or a Bezier "
+        "curve\n"
         "(.bzc). For a mesh: vertices, edges, faces, boundary loops, connected components,\n"
         "Euler characteristic, genus, manifold (the loader repaired nothing), crease edges,\n"
         "bounding box, unit, and what the loader repaired or noticed. A .bez is tessellated\n"
@@ -282,7 +334,7 @@ Command add_info(CLI::App& meshedit) {
         "its point count, degree and bounding box.\n"
         "\n"
         "Exit status: 0 ok, 2 bad usage or unreadable file.");
-    return {app, [s] { return info(s->file, s->json, s->density); }};
+    return {app, [s] { return info(s->file, s->json, s->density, s->stats); }};
 }
 
 }  // namespace meshedit::cli
