@@ -20,6 +20,8 @@ in vec3 v_barycentric;
 flat in int v_edge_mask;
 
 uniform vec3 u_base_color;
+uniform bool u_field;         // colour by a scalar field (v_color), lit by Blinn-Phong
+in vec3 v_color;
 uniform float u_wire_width;   // pixels
 uniform vec4 u_wire_color;
 uniform vec2 u_depth_range;   // view-space distance of the nearest and farthest scene point
@@ -83,7 +85,9 @@ void main() {
     }
 
     vec3 color;
-    if (MESHEDIT_MODE == 0) {
+    if (u_field) {
+        color = blinn_phong(n, v, v_color) * side;
+    } else if (MESHEDIT_MODE == 0) {
         color = 0.5 + 0.5 * normalize(v_normal_world);
     } else if (MESHEDIT_MODE == 2) {
         vec3 fn = normalize(v_flat_normal_view) * (gl_FrontFacing ? 1.0 : -1.0);

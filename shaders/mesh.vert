@@ -5,6 +5,7 @@ layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec4 a_smooth_normal;  // packed 10-10-10-2, normalised
 layout(location = 2) in vec4 a_flat_normal;
 layout(location = 3) in vec4 a_corner;         // one-hot barycentric, real-edge mask / 255
+layout(location = 4) in vec4 a_color;          // a scalar field's colour (when u_field)
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
@@ -16,6 +17,7 @@ out vec3 v_normal_world;
 out vec3 v_flat_normal_view;
 out vec3 v_barycentric;
 flat out int v_edge_mask;
+out vec3 v_color;
 
 void main() {
     vec4 p = u_view * vec4(a_position, 1.0);
@@ -29,5 +31,6 @@ void main() {
     v_flat_normal_view = mat3(u_view) * a_flat_normal.xyz;
     v_barycentric = a_corner.xyz;
     v_edge_mask = int(a_corner.w * 255.0 + 0.5);
+    v_color = a_color.rgb;
     gl_Position = u_projection * p;
 }

@@ -17,6 +17,7 @@
 
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/budget.h"
+#include "meshedit/core/fields.h"
 #include "meshedit/files/files.h"
 #include "meshedit/files/io_error.h"
 #include "meshedit/io/document.h"
@@ -164,6 +165,33 @@ int run(const Options& options) {
             scene.stencil = options.stencil;
         }
     }
+    // --field: the values, their colouring, and for an edge field the coloured edges.
+    const FieldInfo* field = options.field.empty() ? nullptr : find_field(options.field);
+    std::vector<double> field_values;
+    FieldColoring coloring;
+    if (field != nullptr) {
+        if (is_curve || diagram) {
+            throw UsageError("--field colours a mesh: not a curve or an --op-diagram");
+        }
+        FieldOptions field_options;
+        field_options.source = Vertex(options.field_source);
+        if (options.field_source >= mesh.vertices_size() || mesh.is_deleted(field_options.source)) {
+            throw UsageError("--field-source v" + std::to_string(options.field_source) +
+                             ": no such vertex");
+        }
+        field_values = compute_field(mesh, *field, field_options);
+        coloring = default_coloring(*field, field_values);
+        if (options.colormap) {
+            coloring.map = *options.colormap;
+        }
+        if (field->site == FieldSite::Edge) {
+            for (Edge e : mesh.edges()) {
+                overlay.lines.push_back({mesh.position(mesh.vertex(e, 0)),
+                                         mesh.position(mesh.vertex(e, 1)),
+                                         coloring.color_of(field_values[e.idx()]), 2.0f});
+            }
+        }
+    }
     add_scene_marks(scene, style, overlay);
     if (diagram) {
         overlay = diagram->picture;
@@ -210,6 +238,9 @@ int run(const Options& options) {
     render_options.wireframe = options.wireframe;
     renderer.mesh().set_normal_split(options.normals);
     renderer.upload(is_curve || diagram ? nullptr : &mesh);
+    if (field != nullptr) {
+        renderer.mesh().set_field(field->site, field_values, coloring);
+    }
     renderer.overlay().upload(overlay);
     context.finish();
     lap("upload");
@@ -221,6 +252,11 @@ int run(const Options& options) {
     Image image = target.read();
     lap("readback");
     draw_labels(image, overlay.labels, camera, diagram ? diagram_font_px(w) : 0);
+    if (field != nullptr) {
+        draw_legend(image, coloring,
+                    std::string(field->title) +
+                        (field->unit.empty() ? "" : " (" + std::string(field->unit) + ")"));
+    }
     write_png(image, options.output);
     lap("write");
 

@@ -2,6 +2,8 @@
 
 #include "options.h"
 
+#include "meshedit/core/fields.h"
+
 #include <charconv>
 #include <cstdio>
 #include <string_view>
@@ -166,6 +168,34 @@ int parse_options(int argc, char** argv, Options& o) {
     app.add_flag_callback(
         "--no-crease-split", [&o] { o.normals.creases = false; },
         "smooth shading across crease edges too (as before crease-aware normals)");
+    std::string field_names;
+    for (const FieldInfo& info : field_infos()) {
+        field_names += (field_names.empty() ? "" : "|") + std::string(info.name);
+    }
+    app.add_option("--field", o.field,
+                   "colour the surface by a scalar field, with its legend (docs/fields.md)")
+        ->type_name(field_names)
+        ->check([](const std::string& name) {
+            return find_field(name) ? std::string() : "no field called '" + name + "'";
+        });
+    app.add_option_function<std::string>(
+           "--colormap", [&o](const std::string& name) { o.colormap = find_colormap(name); },
+           "the field's colour map (default: diverging for signed curvature, else viridis)")
+        ->type_name("viridis|magma|diverging")
+        ->check(CLI::IsMember({"viridis", "magma", "diverging"}));
+    app.add_option_function<std::string>(
+           "--field-source",
+           [&o](const std::string& v) {
+               std::uint32_t index = 0;
+               const char* end = v.data() + v.size();
+               if (v.size() < 2 || v[0] != 'v' ||
+                   std::from_chars(v.data() + 1, end, index).ptr != end) {
+                   throw CLI::ValidationError("--field-source", "wants vI, got '" + v + "'");
+               }
+               o.field_source = index;
+           },
+           "--field distance: the vertex it is measured from (default v0)")
+        ->type_name("vI");
     app.add_flag("--op-diagram", o.op_diagram,
                  "draw what the last step of --ops rewired instead of the mesh: its "
                  "neighbourhood before and after, halfedges named as in its code "

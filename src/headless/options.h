@@ -13,6 +13,7 @@
 #include "meshedit/core/normals.h"
 #include "meshedit/core/stencil.h"
 #include "meshedit/render/camera.h"
+#include "meshedit/render/colormap.h"
 
 namespace meshedit::headless {
 
@@ -37,6 +38,9 @@ struct Options {
     std::optional<StencilScheme> stencil;
     bool op_diagram = false;
     NormalSplit normals;  ///< --auto-smooth, --no-crease-split
+    std::string field;    ///< --field NAME (core/fields.h)
+    std::optional<ColorMap> colormap;
+    std::uint32_t field_source = 0;  ///< --field-source vI: where distance starts
     std::optional<bool> features;
     int density = 8;
     bool net = false;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -19,7 +20,7 @@ namespace {
 // labels' few other characters as ASCII, anything else as '?'.
 std::string oiio_safe(const std::string& text) {
     static const std::pair<std::string_view, std::string_view> kAscii[] = {
-        {"→", "->"}, {"–", "-"}, {"·", "*"}, {"…", "..."}, {"²", "^2"}};
+        {"→", "->"}, {"–", "-"}, {"·", "*"}, {"…", "..."}, {"²", "^2"}, {"°", " deg"}};
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
         const auto byte = static_cast<unsigned char>(text[i]);
@@ -95,6 +96,59 @@ void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, cons
             !OIIO::ImageBufAlgo::render_text(buffer, x, y, text, font_px, kLabelFont, color)) {
             throw IoError(kLabelFont, "", "cannot draw text: " + buffer.geterror());
         }
+    }
+}
+
+void draw_legend(Image& image, const FieldColoring& coloring, const std::string& title) {
+    if (!std::filesystem::exists(kLabelFont)) {
+        throw IoError(kLabelFont, "",
+                      "the legend's font is missing (apt-get install fonts-dejavu-core)");
+    }
+    namespace OIIO = OIIO_NAMESPACE;
+    const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+    OIIO::ImageBuf buffer(spec, image.rgba.data());
+    const int font_px = std::max(12, image.height / 32);
+    const OIIO::ROI title_box =
+        OIIO::ImageBufAlgo::text_size(oiio_safe(title), font_px, kLabelFont);
+    const int bar_w = std::max({60, image.width / 4, title_box.defined() ? title_box.xend : 0});
+    const int bar_h = std::max(8, font_px * 2 / 3);
+    const int margin = font_px;
+    const int x0 = image.width - margin - bar_w;
+    const int y0 = image.height - margin - font_px - bar_h;  // the bar's top; values below it
+    const std::array<float, 4> panel{0.97f, 0.97f, 0.98f, 0.85f};
+    const std::array<float, 4> ink{0.12f, 0.12f, 0.16f, 1.0f};
+    OIIO::ImageBufAlgo::render_box(buffer, x0 - font_px / 2, y0 - 2 * font_px,
+                                   image.width - margin / 2, image.height - margin / 3, panel,
+                                   true);
+    for (int x = 0; x < bar_w; ++x) {
+        const Color c = colormap_color(coloring.map, (x + 0.5) / bar_w);
+        for (int y = 0; y < bar_h; ++y) {
+            std::uint8_t* p = image.pixel(x0 + x, y0 + y);
+            for (int k = 0; k < 3; ++k) {
+                p[k] =
+                    static_cast<std::uint8_t>(std::lround(255.0f * c[static_cast<std::size_t>(k)]));
+            }
+            p[3] = 255;
+        }
+    }
+    const double scale = std::max(std::abs(coloring.lo), std::abs(coloring.hi));
+    const auto value = [scale](double x) {
+        if (std::abs(x) < 1e-9 * scale) {
+            x = 0.0;  // rounding noise of a value that is 0 (a flat dihedral: "9e-15")
+        }
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3g", x);
+        return std::string(text);
+    };
+    const std::string lo = value(coloring.lo), hi = value(coloring.hi);
+    const OIIO::ROI hi_box = OIIO::ImageBufAlgo::text_size(hi, font_px, kLabelFont);
+    const int below = y0 + bar_h + font_px;
+    if (!OIIO::ImageBufAlgo::render_text(buffer, x0, y0 - font_px / 2, oiio_safe(title), font_px,
+                                         kLabelFont, ink) ||
+        !OIIO::ImageBufAlgo::render_text(buffer, x0, below, lo, font_px, kLabelFont, ink) ||
+        !OIIO::ImageBufAlgo::render_text(buffer, x0 + bar_w - (hi_box.defined() ? hi_box.xend : 0),
+                                         below, hi, font_px, kLabelFont, ink)) {
+        throw IoError(kLabelFont, "", "cannot draw text: " + buffer.geterror());
     }
 }
 

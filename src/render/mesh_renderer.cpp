@@ -51,6 +51,7 @@ MeshRenderer::~MeshRenderer() {
     if (vao_ != 0) {
         glDeleteVertexArrays(1, &vao_);
         glDeleteBuffers(1, &vbo_);
+        glDeleteBuffers(1, &color_vbo_);
         glDeleteBuffers(1, &pick_tbo_buffer_);
         glDeleteTextures(1, &pick_tbo_texture_);
     }
@@ -78,6 +79,11 @@ void MeshRenderer::ensure_gl_objects() {
     glEnableVertexAttribArray(3);
     glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
                           reinterpret_cast<const void*>(offsetof(MeshGpuVertex, corner)));
+    // The field colours: their own buffer, bound only while a field is shown.
+    glGenBuffers(1, &color_vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, color_vbo_);
+    glVertexAttribPointer(4, 4, GL_UNSIGNED_BYTE, GL_TRUE, 4, nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glBindVertexArray(0);
 
     glGenBuffers(1, &pick_tbo_buffer_);
@@ -87,6 +93,7 @@ void MeshRenderer::ensure_gl_objects() {
 
 void MeshRenderer::upload(const Mesh& mesh) {
     ensure_gl_objects();
+    has_field_ = false;
 
     // Fan-triangulate every face: (c0, ci, ci+1). A triangle side is a real mesh edge only
     // for the first and last fan triangle's outer sides; the rest are diagonals, which the
@@ -188,6 +195,7 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
     set_camera(shader, camera, aspect);
     shader.set_int("u_smooth", options.smooth ? 1 : 0);
     shader.set_vec3("u_base_color", options.base_color.data());
+    shader.set_int("u_field", has_field_ ? 1 : 0);
     shader.set_float("u_wire_width", options.wire_width_px);
     shader.set_vec4("u_wire_color", options.wire_color.data());
     shader.set_float("u_ambient", options.phong.ambient);
@@ -201,9 +209,46 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
     shader.set_vec2("u_depth_range", std::max(d - camera.scene_radius, 0.0f),
                     d + camera.scene_radius);
     glBindVertexArray(vao_);
+    if (has_field_) {
+        glEnableVertexAttribArray(4);
+    } else {
+        glDisableVertexAttribArray(4);
+    }
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
     glBindVertexArray(0);
     glDisable(GL_CULL_FACE);
+}
+
+void MeshRenderer::set_field(FieldSite site, std::span<const double> values,
+                             const FieldColoring& coloring) {
+    ensure_gl_objects();
+    const auto pack = [](const Color& c) {
+        const auto byte = [](float x) {
+            return static_cast<std::uint32_t>(std::lround(255.0f * std::clamp(x, 0.0f, 1.0f)));
+        };
+        return byte(c[0]) | byte(c[1]) << 8 | byte(c[2]) << 16 | 255u << 24;
+    };
+    const std::uint32_t neutral = pack({0.78f, 0.78f, 0.8f, 1.0f});
+    corner_colors_.assign(3 * triangle_count_, neutral);
+    for (std::size_t t = 0; t < triangle_count_; ++t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (site == FieldSite::Vertex) {
+                const std::uint32_t v = triangle_corners_[3 * t + k];
+                corner_colors_[3 * t + k] =
+                    pack(coloring.color_of(v < values.size() ? values[v] : NAN));
+            } else if (site == FieldSite::Face) {
+                const std::uint32_t f = triangle_faces_[t];
+                corner_colors_[3 * t + k] =
+                    pack(coloring.color_of(f < values.size() ? values[f] : NAN));
+            }
+        }
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, color_vbo_);
+    upload_buffer(GL_ARRAY_BUFFER, color_capacity_, corner_colors_.data(),
+                  corner_colors_.size() * sizeof(std::uint32_t));
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    has_field_ = true;
+    check_gl("MeshRenderer::set_field");
 }
 
 const ShaderProgram& MeshRenderer::shaded_program(int mode, bool wireframe) {

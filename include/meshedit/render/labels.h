@@ -6,7 +6,10 @@
 
 #include <span>
 
+#include <string>
+
 #include "meshedit/render/camera.h"
+#include "meshedit/render/colormap.h"
 #include "meshedit/render/image.h"
 #include "meshedit/render/overlay.h"
 
@@ -21,6 +24,11 @@ inline constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/Deja
 /// \throws IoError naming kLabelFont when it is missing.
 void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, const Camera& camera,
                  int font_px = 0);
+
+/// A field's legend in the image's bottom-right corner: the colour bar from `coloring.lo` to
+/// `coloring.hi`, the two values under its ends and `title` (the field's name and unit)
+/// above it, on a light panel. \throws IoError naming kLabelFont when it is missing.
+void draw_legend(Image& image, const FieldColoring& coloring, const std::string& title);
 
 /// The font size of labels on a diagram `width` pixels wide (op_diagram.h).
 inline int diagram_font_px(int width) {

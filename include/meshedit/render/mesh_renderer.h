@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -19,6 +20,7 @@
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/render/camera.h"
+#include "meshedit/render/colormap.h"
 #include "meshedit/render/overlay.h"
 #include "meshedit/render/shader_program.h"
 #include "meshedit/render/shading.h"
@@ -81,6 +83,14 @@ public:
 
     std::size_t triangle_count() const { return triangle_count_; }
 
+    /// Colours the surface by a scalar field (core/fields.h) of the uploaded mesh: a vertex
+    /// field interpolated across the faces, a face field flat per face, an edge field leaves
+    /// the surface neutral grey (the caller draws the edges; overlay lines). Lit by
+    /// Blinn-Phong whatever the shading mode. Call after upload(); another upload() clears it.
+    void set_field(FieldSite site, std::span<const double> values, const FieldColoring& coloring);
+    void clear_field() { has_field_ = false; }
+    bool has_field() const { return has_field_; }
+
     /// Which edges split smooth shading (core/normals.h; by default crease edges). Takes
     /// effect at the next upload() or update_geometry().
     void set_normal_split(const NormalSplit& split) { normal_split_ = split; }
@@ -121,6 +131,10 @@ private:
     std::vector<std::uint32_t> corner_halfedges_;
     std::vector<Vec3> corner_normals_;  ///< by halfedge, when some edge splits
     NormalSplit normal_split_;
+    unsigned color_vbo_ = 0;                    ///< RGBA8 per corner, attribute 4
+    std::size_t color_capacity_ = 0;            ///< bytes allocated in color_vbo_
+    std::vector<std::uint32_t> corner_colors_;  ///< staging, RGBA8 per corner
+    bool has_field_ = false;
     std::vector<std::uint32_t> triangle_faces_;  ///< face index per triangle
 };
 
