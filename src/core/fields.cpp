@@ -22,7 +22,7 @@ constexpr double kPi = std::numbers::pi;
 
 constexpr FieldInfo kFields[] = {
     {"gauss", "Gaussian curvature", "1/length²", FieldSite::Vertex, true,
-     "angle defect (2π − the angles at the vertex) over the mixed Voronoi area; none on the "
+     "angle defect (2 pi − the angles at the vertex) over the mixed Voronoi area; none on the "
      "boundary"},
     {"mean", "mean curvature", "1/length", FieldSite::Vertex, true,
      "half the cotangent Laplacian of the position along the vertex normal, over the mixed "

@@ -445,6 +445,9 @@ void App::apply(const Outcome& outcome) {
         scene_->mesh().update_geometry(editor_.mesh());
         cursor_moved_ = true;
     }
+    if (c & (kTopology | kGeometry | kDocument | kDisplay | kSelection)) {
+        refresh_field();  // before the overlay: an edge field is drawn as coloured edges
+    }
     if ((c & kDisplay) && !camera_.orthographic && camera_.trackball != editor_.view().trackball) {
         camera_.set_trackball(editor_.view().trackball);
     }
@@ -499,6 +502,14 @@ void App::rebuild_overlay(bool features_changed) {
         }
     }
     OverlayBatch batch = features_;
+    if (field_.info != nullptr && field_.info->site == FieldSite::Edge) {
+        const Mesh& mesh = editor_.mesh();
+        for (Edge e : mesh.edges()) {
+            batch.lines.push_back({mesh.position(mesh.vertex(e, 0)),
+                                   mesh.position(mesh.vertex(e, 1)),
+                                   field_.coloring.color_of(field_.values[e.idx()]), 2.0f});
+        }
+    }
     SceneContent scene;
     const Document& doc = editor_.document();
     if (mesh_mode()) {
@@ -654,7 +665,7 @@ void App::draw_frame() {
     int window_w = 1, window_h = 1;
     glfwGetWindowSize(window_, &window_w, &window_h);
     draw_labels(labels_, camera_, window_w, window_h);
-    const PanelRequests requests = panels_.draw(editor_, stats, status_, status_error_);
+    const PanelRequests requests = panels_.draw(editor_, stats, status_, status_error_, field_);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glfwSwapBuffers(window_);
@@ -673,6 +684,10 @@ void App::draw_frame() {
     if (requests.normals_changed && scene_->has_mesh()) {
         scene_->mesh().set_normal_split(editor_.view().normals);
         scene_->mesh().update_geometry(editor_.mesh());
+    }
+    if (requests.field_changed) {
+        refresh_field();
+        rebuild_overlay();
     }
     if (requests.view_changed) {
         redraw_frames_ = std::max(redraw_frames_, 1);

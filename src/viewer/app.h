@@ -58,6 +58,9 @@ private:
     /// Uploads the overlay: cached boundary/crease edges (recomputed if `features_changed`),
     /// control nets or the curve, hover and selection highlights.
     void rebuild_overlay(bool features_changed = false);
+    /// Recomputes the scalar field shown (Alt+F) for the current mesh and selection and
+    /// colours the surface by it, or clears it (app_field.cpp).
+    void refresh_field();
     void reset_camera();
     /// Centres the camera on the selection, close enough that it fills about a third of the
     /// view.
@@ -108,6 +111,7 @@ private:
 
     std::unique_ptr<SceneRenderer> scene_;
     std::unique_ptr<RenderTarget> pick_target_;
+    FieldDisplay field_;
     OverlayBatch features_;                    ///< boundary and crease edges of the current mesh
     std::vector<OverlayBatch::Label> labels_;  ///< the overlay's text, drawn with the panels
 

@@ -90,6 +90,7 @@ Outcome Editor::run(Action action) {
         case Command::ToggleTrackball:
         case Command::CycleStencil:
         case Command::ToggleDiagram:
+        case Command::CycleField:
         case Command::Screenshot:
             return run_display(action);
         case Command::Undo:
@@ -168,6 +169,8 @@ Outcome Editor::run_display(Action action) {
                                               : "orbit: turntable (the up axis stays up)"};
         case Command::CycleStencil:
             return cycle_stencil();
+        case Command::CycleField:
+            return cycle_field();
         case Command::ToggleDiagram:
             view_.show_diagram = !view_.show_diagram;
             return {kDisplay, view_.show_diagram
@@ -309,6 +312,23 @@ Outcome Editor::cycle_stencil() {
             std::string("stencil view: ") + scheme_name(*stencil) + " — hover a vertex, an edge" +
                 (*stencil == StencilScheme::CatmullClark ? " or a face" : "") +
                 " (Alt+W: next scheme)"};
+}
+
+Outcome Editor::cycle_field() {
+    const std::span<const FieldInfo> all = field_infos();
+    if (view_.field == nullptr) {
+        view_.field = &all.front();
+    } else if (view_.field == &all.back()) {
+        view_.field = nullptr;
+        return {kDisplay, "field off"};
+    } else {
+        view_.field = view_.field + 1;
+    }
+    std::string message = "field: " + std::string(view_.field->title);
+    if (view_.field->name == "distance") {
+        message += " from the selected vertex (vertex 0 when none)";
+    }
+    return {kDisplay, message + " (Alt+F: next)"};
 }
 
 ElementRef Editor::stencil_element() const {

@@ -5,7 +5,10 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
 
 #include "panels.h"
 
@@ -84,6 +87,90 @@ void draw_labels(const std::vector<OverlayBatch::Label>& labels, const Camera& c
         if (const auto at = project_to_pixels(camera, label.at, width, height)) {
             draw_label(draw, ImVec2(at->x, at->y), label);
         }
+    }
+}
+
+void Panels::draw_field(Editor& editor, const FieldDisplay& field, PanelRequests& requests) {
+    if (!ImGui::CollapsingHeader("Field (Alt+F)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    const FieldInfo& info = *field.info;
+    ImGui::Text("%s%s%s%s", std::string(info.title).c_str(), info.unit.empty() ? "" : " (",
+                std::string(info.unit).c_str(), info.unit.empty() ? "" : ")");
+    ImGui::TextWrapped("%s", std::string(info.description).c_str());
+    if (info.name == "distance") {
+        ImGui::Text("from vertex %u (select a vertex to move it)", field.source.idx());
+    }
+    // The colour bar, its ends' values under it.
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 corner = ImGui::GetCursorScreenPos();
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float height = ImGui::GetFontSize();
+    constexpr int kSteps = 32;
+    for (int i = 0; i < kSteps; ++i) {
+        const float x0 = corner.x + width * static_cast<float>(i) / kSteps;
+        const float x1 = corner.x + width * static_cast<float>(i + 1) / kSteps;
+        draw->AddRectFilledMultiColor(
+            ImVec2(x0, corner.y), ImVec2(x1, corner.y + height),
+            rgba(colormap_color(field.coloring.map, static_cast<double>(i) / kSteps)),
+            rgba(colormap_color(field.coloring.map, static_cast<double>(i + 1) / kSteps)),
+            rgba(colormap_color(field.coloring.map, static_cast<double>(i + 1) / kSteps)),
+            rgba(colormap_color(field.coloring.map, static_cast<double>(i) / kSteps)));
+    }
+    ImGui::Dummy(ImVec2(width, height));
+    ImGui::Text("%.4g", field.coloring.lo);
+    char hi[32];
+    std::snprintf(hi, sizeof hi, "%.4g", field.coloring.hi);
+    ImGui::SameLine(std::max(0.0f, width - ImGui::CalcTextSize(hi).x));
+    ImGui::TextUnformatted(hi);
+    ImGui::TextWrapped("min %.4g  mean %.4g  max %.4g  (%zu values)", field.stats.min,
+                       field.stats.mean, field.stats.max, field.stats.count);
+
+    // Under the cursor: the hovered element's value, when it is of the field's kind.
+    const ElementRef& hover = editor.hover();
+    const ElementRef::Kind kind = info.site == FieldSite::Vertex ? ElementRef::Kind::Vertex
+                                  : info.site == FieldSite::Edge ? ElementRef::Kind::Edge
+                                                                 : ElementRef::Kind::Face;
+    if (hover.kind == kind && hover.index < field.values.size()) {
+        ImGui::Text("under the cursor: %s %u: %.6g", kind_name(kind), hover.index,
+                    field.values[hover.index]);
+    } else {
+        ImGui::TextDisabled("hover a %s to read its value", kind_name(kind));
+    }
+
+    // A histogram of the values within the range.
+    constexpr int kBins = 40;
+    std::array<float, kBins> bins{};
+    const double span = field.coloring.hi - field.coloring.lo;
+    for (const double x : field.values) {
+        if (std::isfinite(x) && span > 0.0) {
+            const int bin = static_cast<int>((x - field.coloring.lo) / span * kBins);
+            bins[static_cast<std::size_t>(std::clamp(bin, 0, kBins - 1))] += 1.0f;
+        }
+    }
+    ImGui::PlotHistogram("##histogram", bins.data(), kBins, 0, nullptr, 0.0f, FLT_MAX,
+                         ImVec2(width, 3.0f * height));
+
+    ViewState& view = editor.view();
+    const std::string current =
+        view.colormap ? std::string(colormap_name(*view.colormap)) : "default";
+    if (ImGui::BeginCombo("colour map", current.c_str())) {
+        if (ImGui::Selectable("default", !view.colormap)) {
+            view.colormap.reset();
+            requests.field_changed = true;
+        }
+        for (const ColorMap map : {ColorMap::Viridis, ColorMap::Magma, ColorMap::Diverging}) {
+            if (ImGui::Selectable(std::string(colormap_name(map)).c_str(), view.colormap == map)) {
+                view.colormap = map;
+                requests.field_changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    float percent = 100.0f * view.field_clip;
+    if (ImGui::SliderFloat("clip %", &percent, 0.0f, 25.0f, "%.1f")) {
+        view.field_clip = percent / 100.0f;
+        requests.field_changed = true;
     }
 }
 

@@ -116,11 +116,11 @@ void Panels::remember_rect() {
 }
 
 PanelRequests Panels::draw(Editor& editor, const FrameStats& stats, const std::string& status,
-                           bool status_error) {
+                           bool status_error, const FieldDisplay& field) {
     PanelRequests requests;
     rects_.clear();
     if (editor.view().show_info) {
-        draw_info(editor, stats, requests);
+        draw_info(editor, stats, field, requests);
     }
     if (editor.view().show_diagram && editor.last_diagram() && editor.mode() != Mode::Curve) {
         draw_diagram(*editor.last_diagram());
@@ -141,7 +141,8 @@ float Panels::info_right_edge() const {
     return info_left_ <= 4.0f * kInfoMargin * scale_ ? info_right_ : 0.0f;
 }
 
-void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& requests) {
+void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDisplay& field,
+                       PanelRequests& requests) {
     // A fixed width, so a long row wraps instead of widening the panel over the model (the
     // camera's framing leaves this much room, App::free_view_fraction); as tall as its
     // open sections, scrolling when they do not fit.
@@ -209,6 +210,9 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, PanelRequests& r
 
     if (editor.view().stencil && doc.mode != Mode::Curve) {
         draw_stencil(editor);
+    }
+    if (field.info != nullptr && doc.mode != Mode::Curve) {
+        draw_field(editor, field, requests);
     }
 
     if (ImGui::CollapsingHeader("Statistics")) {

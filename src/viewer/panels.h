@@ -27,6 +27,15 @@ struct FrameStats {
     std::size_t triangles = 0;
 };
 
+/// The scalar field on screen (Alt+F): what the window computed for the current mesh.
+struct FieldDisplay {
+    const FieldInfo* info = nullptr;  ///< none shown
+    std::vector<double> values;       ///< by element index of its site
+    FieldColoring coloring;
+    FieldStats stats;
+    Vertex source;  ///< distance: where it is measured from
+};
+
 /// What the user asked for in a panel this frame.
 struct PanelRequests {
     std::optional<std::filesystem::path> save_as;
@@ -34,6 +43,7 @@ struct PanelRequests {
     std::optional<std::filesystem::path> export_session;
     bool view_changed = false;         ///< a shading control moved
     bool normals_changed = false;      ///< which edges split smooth shading
+    bool field_changed = false;        ///< the field's colour map or clipping
     std::optional<Action> action;      ///< a control that stands for a key (up axis, orbit)
     std::optional<ElementRef> select;  ///< an index clicked in the inspector
     std::optional<ElementRef> hover;   ///< an index under the mouse in the inspector
@@ -75,12 +85,14 @@ public:
 
     /// Draws every visible panel; call between ImGui::NewFrame() and ImGui::Render().
     PanelRequests draw(Editor& editor, const FrameStats& stats, const std::string& status,
-                       bool status_error);
+                       bool status_error, const FieldDisplay& field);
 
 private:
-    void draw_info(Editor& editor, const FrameStats& stats, PanelRequests& requests);
+    void draw_info(Editor& editor, const FrameStats& stats, const FieldDisplay& field,
+                   PanelRequests& requests);
     void draw_stencil(const Editor& editor);
     void draw_diagram(const OpDiagram& diagram);  // panel_pictures.cpp
+    void draw_field(Editor& editor, const FieldDisplay& field, PanelRequests& requests);  // same
     void draw_help(Mode mode);
     void draw_status(const Editor& editor, const std::string& status, bool status_error);
     void draw_prompt(PanelRequests& requests);

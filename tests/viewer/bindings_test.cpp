@@ -43,6 +43,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('K'), 0, kMeshModes, edit("crease")},
             {key_of('W'), kAlt, kMeshModes, {Command::CycleStencil}},
             {key_of('R'), kAlt, kMeshModes, {Command::ToggleDiagram}},
+            {key_of('F'), kAlt, kMeshModes, {Command::CycleField}},
             {key_of('V'), kShift, kMeshModes, {Command::Validate}},
             {key_of('L'), kAlt, kMeshModes, edit("loop_step")},
             // The local operations of polygon meshes (docs/spec.md §4).
@@ -182,7 +183,7 @@ TEST(Bindings, ModifiersAreExactAndLockBitsIgnored) {
     EXPECT_EQ(lookup(Key::Slash, kShift, Mode::Mesh), Action{Command::ToggleHelp});
     EXPECT_FALSE(lookup(Key::Slash, 0, Mode::Mesh));
     EXPECT_FALSE(lookup(key_of('F'), kCtrl, Mode::Mesh));
-    EXPECT_FALSE(lookup(key_of('F'), kAlt, Mode::Mesh));
+    EXPECT_FALSE(lookup(key_of('F'), kAlt | kCtrl, Mode::Mesh));
     EXPECT_EQ(lookup(key_of('Q'), 0, Mode::Mesh), Action{Command::ToggleSmooth});
     EXPECT_EQ(lookup(key_of('Q'), kCtrl, Mode::Mesh), Action{Command::Quit});
     EXPECT_EQ(lookup(key_of('S'), kCtrl | kShift, Mode::Mesh), Action{Command::SaveAs});

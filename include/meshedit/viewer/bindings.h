@@ -66,6 +66,7 @@ enum class Command {
     ToggleTrackball,  ///< turntable or trackball orbit
     CycleStencil,     ///< stencil view: off, Loop (Warren), Loop (Loop's), Catmull-Clark
     ToggleDiagram,    ///< the rewiring panel
+    CycleField,       ///< the scalar field shown: off, then each of core/fields.h
     Screenshot,
     // History and files.
     Undo,

@@ -15,10 +15,12 @@
 #include <utility>
 #include <vector>
 
+#include "meshedit/core/fields.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/stencil.h"
 #include "meshedit/render/camera.h"
+#include "meshedit/render/colormap.h"
 #include "meshedit/render/op_diagram.h"
 #include "meshedit/render/shading.h"
 #include "meshedit/viewer/bindings.h"
@@ -103,6 +105,11 @@ struct ViewState {
     /// Which edges split smooth shading (the Shading panel): creases, and with Auto Smooth
     /// every edge sharper than its angle.
     NormalSplit normals;
+    /// The scalar field shown (Alt+F cycles; core/fields.h), or none; its colour map
+    /// (empty: the field's default) and the share of values clipped at each end.
+    const FieldInfo* field = nullptr;
+    std::optional<ColorMap> colormap;
+    float field_clip = 0.05f;
 };
 
 /// The parameters of the whole-mesh operations the keys run (the info panel's "Global
@@ -337,6 +344,7 @@ private:
     Outcome run_surface(Command command);
     Outcome run_display(Action action);
     Outcome cycle_stencil();
+    Outcome cycle_field();
     Outcome undo();
     Outcome redo();
     Outcome quit();

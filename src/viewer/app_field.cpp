@@ -1,0 +1,34 @@
+// The scalar field on screen (Alt+F, core/fields.h): recomputed whenever the mesh, the
+// selection (distance's source) or the field's settings change, and handed to the mesh
+// renderer as colours; an edge field is drawn by rebuild_overlay() as coloured edges.
+
+#include "app.h"
+
+namespace meshedit::viewer {
+
+void App::refresh_field() {
+    const ViewState& view = editor_.view();
+    if (view.field == nullptr || !mesh_mode() || !scene_->has_mesh()) {
+        field_ = {};
+        scene_->mesh().clear_field();
+        return;
+    }
+    const Mesh& mesh = editor_.mesh();
+    FieldOptions options;
+    const ElementRef& selected = editor_.selection();
+    options.source = selected.kind == ElementRef::Kind::Vertex && is_live(mesh, selected)
+                         ? Vertex(selected.index)
+                         : Vertex(0);
+    field_.info = view.field;
+    field_.source = options.source;
+    field_.values = compute_field(mesh, *view.field, options);
+    field_.stats = field_stats(field_.values);
+    field_.coloring = default_coloring(*view.field, field_.values, view.field_clip);
+    if (view.colormap) {
+        field_.coloring.map = *view.colormap;
+    }
+    scene_->mesh().set_field(view.field->site, field_.values, field_.coloring);
+    redraw_frames_ = kSettleFrames;
+}
+
+}  // namespace meshedit::viewer
