@@ -21,7 +21,9 @@ flat in int v_edge_mask;
 
 uniform vec3 u_base_color;
 uniform bool u_field;         // colour by a scalar field (v_color), lit by Blinn-Phong
+uniform bool u_edge_field;    // and draw the real sides in their edge field's colours
 in vec3 v_color;
+flat in vec3 v_side_color[3];
 uniform float u_wire_width;   // pixels
 uniform vec4 u_wire_color;
 uniform vec2 u_depth_range;   // view-space distance of the nearest and farthest scene point
@@ -107,6 +109,20 @@ void main() {
     } else {
         // 1 and the reserved aliases 7-9.
         color = blinn_phong(n, v, u_base_color) * side;
+    }
+
+    if (u_edge_field) {
+        // The nearest real side within 1.5 px takes its edge's colour (as the wireframe).
+        vec3 d = v_barycentric / max(fwidth(v_barycentric), vec3(1e-7));
+        float dist = 1e9;
+        int side = -1;
+        if ((v_edge_mask & 1) != 0 && d.x < dist) { dist = d.x; side = 0; }
+        if ((v_edge_mask & 2) != 0 && d.y < dist) { dist = d.y; side = 1; }
+        if ((v_edge_mask & 4) != 0 && d.z < dist) { dist = d.z; side = 2; }
+        if (side >= 0) {
+            float coverage = clamp(2.0 - dist, 0.0, 1.0);
+            color = mix(color, v_side_color[side], coverage);
+        }
     }
 
 #if MESHEDIT_WIREFRAME

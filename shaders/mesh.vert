@@ -6,6 +6,9 @@ layout(location = 1) in vec4 a_smooth_normal;  // packed 10-10-10-2, normalised
 layout(location = 2) in vec4 a_flat_normal;
 layout(location = 3) in vec4 a_corner;         // one-hot barycentric, real-edge mask / 255
 layout(location = 4) in vec4 a_color;          // a scalar field's colour (when u_field)
+layout(location = 5) in vec4 a_side_color0;    // an edge field's colour of the side opposite
+layout(location = 6) in vec4 a_side_color1;    // corner 0, 1, 2 (when u_edge_field)
+layout(location = 7) in vec4 a_side_color2;
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
@@ -18,6 +21,7 @@ out vec3 v_flat_normal_view;
 out vec3 v_barycentric;
 flat out int v_edge_mask;
 out vec3 v_color;
+flat out vec3 v_side_color[3];
 
 void main() {
     vec4 p = u_view * vec4(a_position, 1.0);
@@ -32,5 +36,8 @@ void main() {
     v_barycentric = a_corner.xyz;
     v_edge_mask = int(a_corner.w * 255.0 + 0.5);
     v_color = a_color.rgb;
+    v_side_color[0] = a_side_color0.rgb;
+    v_side_color[1] = a_side_color1.rgb;
+    v_side_color[2] = a_side_color2.rgb;
     gl_Position = u_projection * p;
 }

@@ -165,7 +165,7 @@ int run(const Options& options) {
             scene.stencil = options.stencil;
         }
     }
-    // --field: the values, their colouring, and for an edge field the coloured edges.
+    // --field: the values and their colouring.
     const FieldInfo* field = options.field.empty() ? nullptr : find_field(options.field);
     std::vector<double> field_values;
     FieldColoring coloring;
@@ -183,13 +183,6 @@ int run(const Options& options) {
         coloring = default_coloring(*field, field_values);
         if (options.colormap) {
             coloring.map = *options.colormap;
-        }
-        if (field->site == FieldSite::Edge) {
-            for (Edge e : mesh.edges()) {
-                overlay.lines.push_back({mesh.position(mesh.vertex(e, 0)),
-                                         mesh.position(mesh.vertex(e, 1)),
-                                         coloring.color_of(field_values[e.idx()]), 2.0f});
-            }
         }
     }
     add_scene_marks(scene, style, overlay);

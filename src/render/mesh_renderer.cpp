@@ -52,6 +52,7 @@ MeshRenderer::~MeshRenderer() {
         glDeleteVertexArrays(1, &vao_);
         glDeleteBuffers(1, &vbo_);
         glDeleteBuffers(1, &color_vbo_);
+        glDeleteBuffers(1, &side_color_vbo_);
         glDeleteBuffers(1, &pick_tbo_buffer_);
         glDeleteTextures(1, &pick_tbo_texture_);
     }
@@ -83,6 +84,13 @@ void MeshRenderer::ensure_gl_objects() {
     glGenBuffers(1, &color_vbo_);
     glBindBuffer(GL_ARRAY_BUFFER, color_vbo_);
     glVertexAttribPointer(4, 4, GL_UNSIGNED_BYTE, GL_TRUE, 4, nullptr);
+    // An edge field's three side colours per corner.
+    glGenBuffers(1, &side_color_vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, side_color_vbo_);
+    for (GLuint k = 0; k < 3; ++k) {
+        glVertexAttribPointer(5 + k, 4, GL_UNSIGNED_BYTE, GL_TRUE, 12,
+                              reinterpret_cast<const void*>(static_cast<std::uintptr_t>(4 * k)));
+    }
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glBindVertexArray(0);
 
@@ -93,7 +101,7 @@ void MeshRenderer::ensure_gl_objects() {
 
 void MeshRenderer::upload(const Mesh& mesh) {
     ensure_gl_objects();
-    has_field_ = false;
+    has_field_ = has_edge_field_ = false;
 
     // Fan-triangulate every face: (c0, ci, ci+1). A triangle side is a real mesh edge only
     // for the first and last fan triangle's outer sides; the rest are diagonals, which the
@@ -196,6 +204,7 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
     shader.set_int("u_smooth", options.smooth ? 1 : 0);
     shader.set_vec3("u_base_color", options.base_color.data());
     shader.set_int("u_field", has_field_ ? 1 : 0);
+    shader.set_int("u_edge_field", has_edge_field_ ? 1 : 0);
     shader.set_float("u_wire_width", options.wire_width_px);
     shader.set_vec4("u_wire_color", options.wire_color.data());
     shader.set_float("u_ambient", options.phong.ambient);
@@ -209,10 +218,13 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
     shader.set_vec2("u_depth_range", std::max(d - camera.scene_radius, 0.0f),
                     d + camera.scene_radius);
     glBindVertexArray(vao_);
-    if (has_field_) {
-        glEnableVertexAttribArray(4);
-    } else {
-        glDisableVertexAttribArray(4);
+    for (GLuint k = 4; k < 8; ++k) {
+        const bool on = k == 4 ? has_field_ : has_edge_field_;
+        if (on) {
+            glEnableVertexAttribArray(k);
+        } else {
+            glDisableVertexAttribArray(k);
+        }
     }
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
     glBindVertexArray(0);
@@ -248,6 +260,30 @@ void MeshRenderer::set_field(FieldSite site, std::span<const double> values,
                   corner_colors_.size() * sizeof(std::uint32_t));
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     has_field_ = true;
+    has_edge_field_ = site == FieldSite::Edge;
+    if (has_edge_field_) {
+        // Side k is opposite corner k: c1->c2 (pick table slot 1), c2->c0 (2), c0->c1 (0).
+        side_colors_.assign(9 * triangle_count_, neutral);
+        for (std::size_t t = 0; t < triangle_count_; ++t) {
+            const std::uint32_t* sides = &pick_table_[8 * t + 4];
+            const std::uint32_t opposite[3] = {sides[1], sides[2], sides[0]};
+            for (std::size_t k = 0; k < 3; ++k) {
+                if (opposite[k] == kInvalidIndex) {
+                    continue;
+                }
+                const std::uint32_t e = opposite[k] >> 1;
+                const std::uint32_t color =
+                    pack(coloring.color_of(e < values.size() ? values[e] : NAN));
+                for (std::size_t corner = 0; corner < 3; ++corner) {
+                    side_colors_[9 * t + 3 * corner + k] = color;
+                }
+            }
+        }
+        glBindBuffer(GL_ARRAY_BUFFER, side_color_vbo_);
+        upload_buffer(GL_ARRAY_BUFFER, side_color_capacity_, side_colors_.data(),
+                      side_colors_.size() * sizeof(std::uint32_t));
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+    }
     check_gl("MeshRenderer::set_field");
 }
 

@@ -446,7 +446,7 @@ void App::apply(const Outcome& outcome) {
         cursor_moved_ = true;
     }
     if (c & (kTopology | kGeometry | kDocument | kDisplay | kSelection)) {
-        refresh_field();  // before the overlay: an edge field is drawn as coloured edges
+        refresh_field();
     }
     if ((c & kDisplay) && !camera_.orthographic && camera_.trackball != editor_.view().trackball) {
         camera_.set_trackball(editor_.view().trackball);
@@ -502,14 +502,6 @@ void App::rebuild_overlay(bool features_changed) {
         }
     }
     OverlayBatch batch = features_;
-    if (field_.info != nullptr && field_.info->site == FieldSite::Edge) {
-        const Mesh& mesh = editor_.mesh();
-        for (Edge e : mesh.edges()) {
-            batch.lines.push_back({mesh.position(mesh.vertex(e, 0)),
-                                   mesh.position(mesh.vertex(e, 1)),
-                                   field_.coloring.color_of(field_.values[e.idx()]), 2.0f});
-        }
-    }
     SceneContent scene;
     const Document& doc = editor_.document();
     if (mesh_mode()) {
@@ -687,7 +679,6 @@ void App::draw_frame() {
     }
     if (requests.field_changed) {
         refresh_field();
-        rebuild_overlay();
     }
     if (requests.view_changed) {
         redraw_frames_ = std::max(redraw_frames_, 1);

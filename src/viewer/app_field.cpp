@@ -1,6 +1,6 @@
 // The scalar field on screen (Alt+F, core/fields.h): recomputed whenever the mesh, the
 // selection (distance's source) or the field's settings change, and handed to the mesh
-// renderer as colours; an edge field is drawn by rebuild_overlay() as coloured edges.
+// renderer as colours.
 
 #include "app.h"
 

@@ -2,6 +2,7 @@
 /// End-to-end tests of teaching mode: Loop stepped one phase per Alt+L in the real window
 /// ends where one press of L does.
 
+#include "meshedit/core/fields.h"
 #include "support/mesh_compare.h"
 #include "viewer_fixture.h"
 
@@ -40,6 +41,46 @@ TEST_F(ViewerE2E, LoopSteppedFourTimesIsL) {
         EXPECT_EQ(stepped.position(v), expected.position(v)) << "vertex " << v.idx();
     }
     EXPECT_EQ(canonical_faces(stepped), canonical_faces(expected));
+    window.key("ctrl+q");
+    expect_exit(*viewer, 0);
+}
+
+// Pixels whose red and blue differ by more than 40: tinted towards one end of the diverging
+// map (the grey teapot, the grey-blue background and the grey panels are not).
+std::size_t saturated_pixels(const RgbImage& image) {
+    std::size_t n = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const std::uint8_t* p = image.at(x, y);
+            n += std::abs(int(p[0]) - int(p[2])) > 40;
+        }
+    }
+    return n;
+}
+
+// Alt+F colours the teapot by Gaussian curvature (red knob and rims, blue saddles); stepping
+// through every field comes back to the plain teapot, pixel for pixel in red and blue.
+TEST_F(ViewerE2E, AltFColoursByCurvatureAndCyclesBackToPlain) {
+    const fs::path doc = work_ / "teapot.dae";
+    fs::copy_file(source_dir() / "dae" / "teapot.dae", doc);
+    auto viewer = start_viewer(doc, "800x600");
+    const ViewerWindow window(*viewer);
+    ASSERT_TRUE(window.ok());
+    std::string title;
+    ASSERT_TRUE(window.wait_title("teapot.dae", false, 20s, &title)) << title;
+    const fs::path plain = screenshot(*viewer, window, 1);
+    window.key("alt+f");
+    const fs::path gauss = screenshot(*viewer, window, 2);
+    std::vector<std::string> rest(field_infos().size(), "alt+f");
+    window.keys(rest);  // the other fields, then off
+    const fs::path off = screenshot(*viewer, window, 3);
+    ASSERT_FALSE(plain.empty() || gauss.empty() || off.empty());
+    // The plain teapot's red: its open rims (boundary edges).
+    const std::size_t rims = saturated_pixels(read_rgb(plain));
+    const std::size_t coloured = saturated_pixels(read_rgb(gauss));
+    std::cout << "saturated pixels: plain " << rims << ", gauss " << coloured << "\n";
+    EXPECT_GT(coloured, 2 * rims + 300);
+    EXPECT_EQ(saturated_pixels(read_rgb(off)), rims);
     window.key("ctrl+q");
     expect_exit(*viewer, 0);
 }

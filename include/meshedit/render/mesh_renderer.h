@@ -84,11 +84,11 @@ public:
     std::size_t triangle_count() const { return triangle_count_; }
 
     /// Colours the surface by a scalar field (core/fields.h) of the uploaded mesh: a vertex
-    /// field interpolated across the faces, a face field flat per face, an edge field leaves
-    /// the surface neutral grey (the caller draws the edges; overlay lines). Lit by
+    /// field interpolated across the faces, a face field flat per face, an edge field on the
+    /// edges (about 3 px wide, as the wireframe is drawn) over a neutral grey surface. Lit by
     /// Blinn-Phong whatever the shading mode. Call after upload(); another upload() clears it.
     void set_field(FieldSite site, std::span<const double> values, const FieldColoring& coloring);
-    void clear_field() { has_field_ = false; }
+    void clear_field() { has_field_ = has_edge_field_ = false; }
     bool has_field() const { return has_field_; }
 
     /// Which edges split smooth shading (core/normals.h; by default crease edges). Takes
@@ -135,6 +135,10 @@ private:
     std::size_t color_capacity_ = 0;            ///< bytes allocated in color_vbo_
     std::vector<std::uint32_t> corner_colors_;  ///< staging, RGBA8 per corner
     bool has_field_ = false;
+    unsigned side_color_vbo_ = 0;  ///< an edge field: 3 × RGBA8 per corner, attributes 5-7
+    std::size_t side_color_capacity_ = 0;
+    std::vector<std::uint32_t> side_colors_;
+    bool has_edge_field_ = false;
     std::vector<std::uint32_t> triangle_faces_;  ///< face index per triangle
 };
 
