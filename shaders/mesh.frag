@@ -20,6 +20,9 @@ in vec3 v_barycentric;
 flat in int v_edge_mask;
 
 uniform vec3 u_base_color;
+uniform mat4 u_view;          // mode 7: back to world space (a rotation and a translation)
+uniform sampler2D u_envmap;   // mode 7: equirectangular, texture unit 1, linear
+uniform float u_exposure;     // mode 7: stops
 uniform bool u_field;         // colour by a scalar field (v_color), lit by Blinn-Phong
 uniform bool u_edge_field;    // and draw the real sides in their edge field's colours
 in vec3 v_color;
@@ -75,6 +78,24 @@ vec3 matcap(vec3 n) {
     return mix(color, vec3(0.55, 0.5, 0.52), rim * 0.5);
 }
 
+// Mode 7: the mirror reflection of the view direction about the normal, looked up in the
+// equirectangular environment (u = θ/2π, v = φ/π as in the CS184 handout). The mip level comes
+// from how fast the reflected direction turns between pixels, not from u, which jumps by 1 at
+// θ = ±π: so the seam leaves no line.
+vec3 envmap_reflection(vec3 n, vec3 v) {
+    mat3 to_world = transpose(mat3(u_view));
+    vec3 r = normalize(to_world * reflect(-v, n));
+    const float kPi = 3.14159265358979;
+    vec2 uv = vec2(atan(r.z, r.x) / (2.0 * kPi) + 0.5, acos(clamp(r.y, -1.0, 1.0)) / kPi);
+    // Radians per pixel times texels per radian (the height spans π).
+    float turn = max(length(dFdx(r)), length(dFdy(r)));
+    float lod = log2(max(turn * float(textureSize(u_envmap, 0).y) / kPi, 1.0));
+    vec3 c = textureLod(u_envmap, uv, lod).rgb * exp2(u_exposure);
+    // Highlights above 0.8 roll off towards 1 instead of clipping; then about sRGB (γ 2).
+    c = mix(c, 0.8 + 0.2 * (1.0 - exp(-(c - 0.8) / 0.2)), step(0.8, c));
+    return sqrt(clamp(c, 0.0, 1.0));
+}
+
 void main() {
     vec3 n = normalize(v_normal_view);
     vec3 v = normalize(-v_position_view);
@@ -87,7 +108,9 @@ void main() {
     }
 
     vec3 color;
-    if (u_field) {
+    if (MESHEDIT_MODE == 7 && !u_field) {
+        color = envmap_reflection(n, v);
+    } else if (u_field) {
         color = blinn_phong(n, v, v_color) * side;
     } else if (MESHEDIT_MODE == 0) {
         color = 0.5 + 0.5 * normalize(v_normal_world);
@@ -107,7 +130,7 @@ void main() {
         vec3 light = mix(vec3(0.42, 0.36, 0.30), vec3(1.0, 0.98, 0.95), up);
         color = u_base_color * light * side;
     } else {
-        // 1 and the reserved aliases 7-9.
+        // 1 and the reserved aliases 8-9.
         color = blinn_phong(n, v, u_base_color) * side;
     }
 

@@ -23,6 +23,7 @@
 #include "meshedit/io/document.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/render/camera.h"
+#include "meshedit/render/environment.h"
 #include "meshedit/render/labels.h"
 #include "meshedit/render/op_diagram.h"
 #include "meshedit/render/overlay.h"
@@ -106,6 +107,9 @@ int run(const Options& options) {
         phase = Clock::now();
     };
     // Everything that can fail on bad input happens before the GL context exists.
+    const std::optional<EnvironmentImage> environment =
+        options.envmap.empty() ? std::nullopt
+                               : std::optional<EnvironmentImage>(read_environment(options.envmap));
     ReadOptions read;
     read.density = options.density;
     LoadedDocument doc = read_document(options.input, read);
@@ -229,7 +233,11 @@ int run(const Options& options) {
     render_options.shading = options.shading;
     render_options.smooth = options.smooth.value_or(true);
     render_options.wireframe = options.wireframe;
+    render_options.exposure = options.exposure;
     renderer.mesh().set_normal_split(options.normals);
+    if (environment) {
+        renderer.mesh().set_environment(*environment);
+    }
     renderer.upload(is_curve || diagram ? nullptr : &mesh);
     if (field != nullptr) {
         renderer.mesh().set_field(field->site, field_values, coloring);

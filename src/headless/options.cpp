@@ -168,6 +168,13 @@ int parse_options(int argc, char** argv, Options& o) {
     app.add_flag_callback(
         "--no-crease-split", [&o] { o.normals.creases = false; },
         "smooth shading across crease edges too (as before crease-aware normals)");
+    app.add_option("--envmap", o.envmap,
+                   "shading 7's environment: an equirectangular PNG, JPEG, HDR or EXR (default: "
+                   "a procedural studio)")
+        ->type_name("FILE");
+    app.add_option("--exposure", o.exposure, "shading 7: the environment's brightness in stops")
+        ->type_name("EV")
+        ->check(CLI::Range(-16.0, 16.0));
     std::string field_names;
     for (const FieldInfo& info : field_infos()) {
         field_names += (field_names.empty() ? "" : "|") + std::string(info.name);

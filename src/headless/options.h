@@ -37,8 +37,10 @@ struct Options {
     std::string select;
     std::optional<StencilScheme> stencil;
     bool op_diagram = false;
-    NormalSplit normals;  ///< --auto-smooth, --no-crease-split
-    std::string field;    ///< --field NAME (core/fields.h)
+    NormalSplit normals;           ///< --auto-smooth, --no-crease-split
+    std::filesystem::path envmap;  ///< --envmap FILE: mode 7's environment
+    float exposure = 0.0f;
+    std::string field;  ///< --field NAME (core/fields.h)
     std::optional<ColorMap> colormap;
     std::uint32_t field_source = 0;  ///< --field-source vI: where distance starts
     std::optional<bool> features;

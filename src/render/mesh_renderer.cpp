@@ -53,6 +53,7 @@ MeshRenderer::~MeshRenderer() {
         glDeleteBuffers(1, &vbo_);
         glDeleteBuffers(1, &color_vbo_);
         glDeleteBuffers(1, &side_color_vbo_);
+        glDeleteTextures(1, &env_texture_);
         glDeleteBuffers(1, &pick_tbo_buffer_);
         glDeleteTextures(1, &pick_tbo_texture_);
     }
@@ -204,6 +205,16 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
     shader.set_int("u_smooth", options.smooth ? 1 : 0);
     shader.set_vec3("u_base_color", options.base_color.data());
     shader.set_int("u_field", has_field_ ? 1 : 0);
+    if (options.shading == 7) {
+        if (env_texture_ == 0) {
+            set_environment(default_environment());
+        }
+        glActiveTexture(GL_TEXTURE1);  // unit 1, as in the CS184 skeleton
+        glBindTexture(GL_TEXTURE_2D, env_texture_);
+        glActiveTexture(GL_TEXTURE0);
+        shader.set_int("u_envmap", 1);
+        shader.set_float("u_exposure", options.exposure);
+    }
     shader.set_int("u_edge_field", has_edge_field_ ? 1 : 0);
     shader.set_float("u_wire_width", options.wire_width_px);
     shader.set_vec4("u_wire_color", options.wire_color.data());
@@ -229,6 +240,23 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
     glBindVertexArray(0);
     glDisable(GL_CULL_FACE);
+}
+
+void MeshRenderer::set_environment(const EnvironmentImage& image) {
+    if (env_texture_ == 0) {
+        glGenTextures(1, &env_texture_);
+    }
+    glBindTexture(GL_TEXTURE_2D, env_texture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, image.width, image.height, 0, GL_RGB, GL_FLOAT,
+                 image.rgb.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // around in θ
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    check_gl("MeshRenderer::set_environment");
 }
 
 void MeshRenderer::set_field(FieldSite site, std::span<const double> values,
@@ -289,8 +317,8 @@ void MeshRenderer::set_field(FieldSite site, std::span<const double> values,
 
 const ShaderProgram& MeshRenderer::shaded_program(int mode, bool wireframe) {
     mode = std::clamp(mode, 0, static_cast<int>(kShadingModes.size()) - 1);
-    if (mode >= 7) {
-        mode = 1;  // 7-9 alias Phong (shading.h)
+    if (mode >= 8) {
+        mode = 1;  // 8-9 alias Phong (shading.h)
     }
     ShaderProgram& program = shaded_programs_[static_cast<std::size_t>(2 * mode + wireframe)];
     if (!program.is_valid()) {

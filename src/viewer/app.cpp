@@ -134,6 +134,9 @@ App::App(const ViewerOptions& options) {
     scene_ = std::make_unique<SceneRenderer>();
     upload_document();  // the empty document, until a file opens
 
+    if (!options.envmap.empty()) {
+        load_environment(options.envmap);
+    }
     if (!options.file.empty()) {
         open_file(options.file);
         if (!status_error_) {
@@ -392,7 +395,11 @@ void App::on_scroll(double dy) {
 
 void App::on_drop(int count, const char** paths) {
     if (count > 0) {
-        open_file(paths[0]);
+        if (is_environment_image(paths[0])) {
+            load_environment(paths[0]);
+        } else {
+            open_file(paths[0]);
+        }
         if (count > 1) {
             set_status(status_ + " (" + std::to_string(count - 1) + " more dropped files ignored)",
                        status_error_);

@@ -23,8 +23,12 @@ struct ViewerOptions {
     int width = 1280;            ///< window size in screen coordinates
     int height = 800;
     bool vsync = true;
-    UpAxis up = UpAxis::Y;  ///< --up: which world axis starts up on the screen
+    UpAxis up = UpAxis::Y;         ///< --up: which world axis starts up on the screen
+    std::filesystem::path envmap;  ///< --envmap: shading 7's environment (empty: the default)
 };
+
+/// Whether a dropped file is an image (an environment for shading 7) rather than a document.
+bool is_environment_image(const std::filesystem::path& path);
 
 class App {
 public:
@@ -52,6 +56,9 @@ private:
     /// Reacts to what a command changed: uploads, overlay, camera, prompts, status line.
     void apply(const Outcome& outcome);
     void open_file(const std::filesystem::path& path);
+    /// Makes `path` shading 7's environment and switches to mode 7; a bad image is reported
+    /// in the status line and the environment stays (app_field.cpp).
+    void load_environment(const std::filesystem::path& path);
     void set_status(std::string message, bool error);
 
     void upload_document();

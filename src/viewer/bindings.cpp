@@ -17,7 +17,7 @@ constexpr Key num(int d) {
 
 constexpr std::string_view kShadingHelp =
     "shading mode (0 normals as colour, 1 Blinn-Phong, 2 flat grey, 3 studio, 4 matcap, "
-    "5 depth, 6 hemisphere; 7–9 same as 1 for now)";
+    "5 depth, 6 hemisphere, 7 environment-map reflection; 8–9 same as 1 for now)";
 constexpr std::string_view kTHelp = "decrease / increase t by 0.01";
 
 // clang-format off

@@ -41,6 +41,11 @@ int main(int argc, char** argv) {
     app.add_option("--size", size, "window size in screen coordinates (default 1280x800)")
         ->type_name("WxH");
     app.add_flag("--no-vsync", no_vsync, "draw without waiting for the display's refresh");
+    std::string envmap;
+    app.add_option("--envmap", envmap,
+                   "shading 7's environment: an equirectangular PNG, JPEG, HDR or EXR (default: a "
+                   "procedural studio); dropping an image on the window does the same")
+        ->type_name("FILE");
     std::string up = "file";
     app.add_option("--up", up,
                    "which axis is up: y, z (the CS184 course's models), or file (the file's "
@@ -59,6 +64,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     options.file = file;
+    options.envmap = envmap;
     options.vsync = !no_vsync;
     options.up = up == "z" ? meshedit::UpAxis::Z : meshedit::UpAxis::Y;
     const char* display = std::getenv("DISPLAY");

@@ -296,6 +296,10 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDispl
         }
         requests.normals_changed |= normals_changed;
         changed |= normals_changed;
+        if (render.shading == 7) {
+            changed |= ImGui::SliderFloat("exposure", &render.exposure, -6.0f, 6.0f, "%.1f EV");
+            ImGui::TextDisabled("drop an image on the window for another environment");
+        }
         PhongParams& phong = render.phong;
         ImGui::TextDisabled("Blinn-Phong (mode 1)");
         changed |= ImGui::SliderFloat("ambient", &phong.ambient, 0.0f, 3.0f);

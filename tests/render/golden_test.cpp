@@ -35,7 +35,8 @@ const char* const kScanSize = "576x432";
 struct GoldenCase {
     std::string name;               ///< file stem in tests/golden/ and the gtest parameter name
     std::string input;              ///< relative to the repository root, or "demo:STEM"
-    std::vector<std::string> args;  ///< after `FILE -o OUT --size WxH`
+    std::vector<std::string> args;  ///< after `FILE -o OUT --size WxH`; tests/golden/data/… paths
+                                    ///< are made absolute
     std::string size = kSize;
 };
 
@@ -132,6 +133,14 @@ const std::vector<GoldenCase>& golden_cases() {
         {"field_distance",
          "dae/teapot.dae",
          {"--field", "distance", "--field-source", "v0"},
+         "480x360"},
+        // Mode 7: the mirror teapot in the default (procedural) environment, and in a
+        // checkerboard made by the test (the seam at θ = ±π shows as a line if the mip level
+        // jumps there).
+        {"envmap_teapot", "dae/teapot.dae", {"--shading", "envmap"}, "480x360"},
+        {"envmap_checker",
+         "dae/teapot.dae",
+         {"--shading", "7", "--envmap", "tests/golden/data/checker_env.png"},
          "480x360"},
         {"torus_loop2", "dae/torus.dae", {"--ops", "loop:2", "--flat", "--camera", "30,40"}},
         {"creased_input", "dae/creased.dae", {"--wireframe"}},
@@ -314,7 +323,11 @@ TEST_P(Golden, MatchesReference) {
 
     std::vector<std::string> args = {input_path(c.input).string(), "-o", rendered.string(),
                                      "--size", c.size};
-    args.insert(args.end(), c.args.begin(), c.args.end());
+    for (const std::string& arg : c.args) {
+        // Files of the repository among the options (an --envmap) are relative to its root.
+        args.push_back(arg.rfind("tests/golden/data/", 0) == 0 ? (source_dir() / arg).string()
+                                                               : arg);
+    }
     const std::string exe = render_exe();
     const std::string command = command_line(exe, args);
     // llvmpipe on two shared cores needs a few seconds for the Loop-3 meshes; 120 s only
@@ -355,6 +368,30 @@ INSTANTIATE_TEST_SUITE_P(Renders, Golden, ::testing::ValuesIn(golden_cases()),
 
 // Every PNG in tests/golden/ belongs to a case, so a renamed or dropped case does not leave
 // an unchecked image behind (or in the gallery).
+// --envmap refuses what is not an equirectangular image, naming the file, before any GL.
+TEST(EnvironmentMap, BadImagesAreRefusedByName) {
+    const fs::path dir = out_dir() / "envmap";
+    fs::create_directories(dir);
+    const std::string mesh = (source_dir() / "dae/cube.dae").string();
+    const std::string out = (dir / "x.png").string();
+    const auto run = [&](const std::string& env) {
+        return run_program(render_exe(), {mesh, "-o", out, "--shading", "7", "--envmap", env},
+                           60.0);
+    };
+    const RunResult not_image = run(mesh);
+    EXPECT_EQ(not_image.exit_code, 2);
+    EXPECT_NE(not_image.err.find("cube.dae: cannot read the environment image"), std::string::npos)
+        << not_image.err;
+    // A square image is not equirectangular (2:1).
+    const RunResult wrong_shape =
+        run((source_dir() / "tests/golden/data/checker_square.png").string());
+    EXPECT_EQ(wrong_shape.exit_code, 2);
+    EXPECT_NE(wrong_shape.err.find(
+                  "not equirectangular: it should be twice as wide as high, it is 64 × 64"),
+              std::string::npos)
+        << wrong_shape.err;
+}
+
 TEST(GoldenSet, NoOrphanReferences) {
     std::set<std::string> names;
     for (const GoldenCase& c : golden_cases()) {

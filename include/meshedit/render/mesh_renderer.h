@@ -21,6 +21,7 @@
 #include "meshedit/core/normals.h"
 #include "meshedit/render/camera.h"
 #include "meshedit/render/colormap.h"
+#include "meshedit/render/environment.h"
 #include "meshedit/render/overlay.h"
 #include "meshedit/render/shader_program.h"
 #include "meshedit/render/shading.h"
@@ -88,6 +89,10 @@ public:
     /// edges (about 3 px wide, as the wireframe is drawn) over a neutral grey surface. Lit by
     /// Blinn-Phong whatever the shading mode. Call after upload(); another upload() clears it.
     void set_field(FieldSite site, std::span<const double> values, const FieldColoring& coloring);
+    /// The environment mode 7 reflects (texture unit 1, mipmapped); the default one
+    /// (environment.h) is made on the first draw in mode 7 without one. Needs the context.
+    void set_environment(const EnvironmentImage& image);
+
     void clear_field() { has_field_ = has_edge_field_ = false; }
     bool has_field() const { return has_field_; }
 
@@ -139,6 +144,7 @@ private:
     std::size_t side_color_capacity_ = 0;
     std::vector<std::uint32_t> side_colors_;
     bool has_edge_field_ = false;
+    unsigned env_texture_ = 0;                   ///< mode 7's environment, 0 until needed
     std::vector<std::uint32_t> triangle_faces_;  ///< face index per triangle
 };
 

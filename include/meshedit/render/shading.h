@@ -25,8 +25,8 @@ inline constexpr std::array<ShadingMode, 10> kShadingModes{{
     {4, "matcap", "matcap-like clay lookup by view-space normal (procedural, no texture)"},
     {5, "depth", "grey by view depth (near light, far dark)"},
     {6, "hemisphere", "sky/ground hemisphere light"},
-    // 7–9 are free for later modes; until then they alias existing ones so every key works.
-    {7, "phong7", "same as 1 (Blinn-Phong) until a mode takes this number"},
+    {7, "envmap", "mirror reflection of an environment map (default: a procedural studio)"},
+    // 8–9 are free for later modes; until then they alias mode 1 so every key works.
     {8, "phong8", "same as 1 (Blinn-Phong) until a mode takes this number"},
     {9, "phong9", "same as 1 (Blinn-Phong) until a mode takes this number"},
 }};
@@ -56,6 +56,9 @@ struct RenderOptions {
     /// Base colour of the surface (a warm white).
     std::array<float, 3> base_color{0.93f, 0.89f, 0.82f};
     PhongParams phong;
+    /// Mode 7: the environment's brightness in stops (2^exposure), before the highlights
+    /// above 0.8 roll off towards white and the result is encoded as sRGB.
+    float exposure = 0.0f;
 };
 
 }  // namespace meshedit

@@ -1,0 +1,121 @@
+#include "meshedit/render/environment.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "meshedit/files/io_error.h"
+
+namespace meshedit {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Direction {
+    double x, y, z;
+};
+
+// The direction of pixel centre (x, y) of a w × h equirectangular image.
+Direction direction_of(int x, int y, int w, int h) {
+    const double theta = 2.0 * kPi * ((x + 0.5) / w - 0.5);  // −π … π, atan2(z, x)
+    const double phi = kPi * (y + 0.5) / h;                  // 0 at +Y
+    return {std::sin(phi) * std::cos(theta), std::cos(phi), std::sin(phi) * std::sin(theta)};
+}
+
+// A soft light: intensity × a Gaussian of the angle to its direction.
+double light(const Direction& d, double theta_deg, double elevation_deg, double radius_deg) {
+    const double t = theta_deg * kPi / 180.0, e = elevation_deg * kPi / 180.0;
+    const Direction c{std::cos(e) * std::cos(t), std::sin(e), std::cos(e) * std::sin(t)};
+    const double cosine = std::clamp(d.x * c.x + d.y * c.y + d.z * c.z, -1.0, 1.0);
+    const double angle = std::acos(cosine) / (radius_deg * kPi / 180.0);
+    return std::exp(-0.5 * angle * angle);
+}
+
+double srgb_to_linear(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+}  // namespace
+
+EnvironmentImage default_environment(int width) {
+    EnvironmentImage env;
+    env.width = std::max(width, 8);
+    env.height = env.width / 2;
+    env.rgb.resize(static_cast<std::size_t>(3 * env.width * env.height));
+    for (int y = 0; y < env.height; ++y) {
+        for (int x = 0; x < env.width; ++x) {
+            const Direction d = direction_of(x, y, env.width, env.height);
+            double r, g, b;
+            if (d.y >= 0.0) {
+                // Sky: bright at the horizon, blue-grey overhead.
+                const double s = std::pow(d.y, 0.6);
+                r = 0.85 + s * (0.32 - 0.85);
+                g = 0.88 + s * (0.42 - 0.88);
+                b = 0.93 + s * (0.62 - 0.93);
+            } else {
+                // Ground: warm grey, darker straight down; a soft step at the horizon.
+                const double s = std::pow(-d.y, 0.5);
+                r = 0.30 + s * (0.10 - 0.30);
+                g = 0.27 + s * (0.09 - 0.27);
+                b = 0.24 + s * (0.08 - 0.24);
+            }
+            const double key = 6.0 * light(d, 40.0, 35.0, 9.0);
+            const double fill = 1.6 * light(d, 215.0, 18.0, 16.0);
+            // A long soft box overhead: a band of constant longitude width near the zenith.
+            const double box = 2.5 * std::exp(-std::pow((d.y - 0.93) / 0.035, 2.0)) *
+                               std::exp(-std::pow(d.x / 0.25, 2.0));
+            // The sky and ground were chosen as display colours: linear, as images are.
+            float* p = env.rgb.data() + 3 * (y * env.width + x);
+            p[0] = static_cast<float>(srgb_to_linear(r) + key * 1.0 + fill * 0.75 + box);
+            p[1] = static_cast<float>(srgb_to_linear(g) + key * 0.93 + fill * 0.85 + box);
+            p[2] = static_cast<float>(srgb_to_linear(b) + key * 0.82 + fill * 1.0 + box);
+        }
+    }
+    return env;
+}
+
+EnvironmentImage read_environment(const std::filesystem::path& path) {
+    namespace OIIO = OIIO_NAMESPACE;
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) {
+        throw IoError(path.string(), "", "cannot read the environment image: " + OIIO::geterror());
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width < 8 || spec.height < 4 || spec.width > 16384 || spec.height > 16384) {
+        throw IoError(path.string(), "",
+                      "an environment image is 8 to 16384 pixels a side, this one " +
+                          std::to_string(spec.width) + " × " + std::to_string(spec.height));
+    }
+    if (std::abs(spec.width - 2 * spec.height) > spec.height / 10) {
+        throw IoError(path.string(), "",
+                      "not equirectangular: it should be twice as wide as high, it is " +
+                          std::to_string(spec.width) + " × " + std::to_string(spec.height));
+    }
+    EnvironmentImage env;
+    env.width = spec.width;
+    env.height = spec.height;
+    const int channels = spec.nchannels;
+    std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * channels);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
+        throw IoError(path.string(), "", "cannot read the environment image: " + in->geterror());
+    }
+    const bool srgb = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
+                      spec.format.basetype == OIIO::TypeDesc::UINT16;
+    env.rgb.resize(static_cast<std::size_t>(3 * env.width * env.height));
+    for (std::size_t i = 0; i < static_cast<std::size_t>(env.width * env.height); ++i) {
+        for (int k = 0; k < 3; ++k) {
+            const float c =
+                pixels[i * channels + static_cast<std::size_t>(std::min(k, channels - 1))];
+            env.rgb[3 * i + static_cast<std::size_t>(k)] =
+                !std::isfinite(c) ? 0.0f
+                : srgb            ? static_cast<float>(srgb_to_linear(c))
+                                  : std::max(c, 0.0f);
+        }
+    }
+    return env;
+}
+
+}  // namespace meshedit
