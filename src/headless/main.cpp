@@ -238,6 +238,12 @@ int run(const Options& options) {
     if (environment) {
         renderer.mesh().set_environment(*environment);
     }
+    if (!options.shader_dir.empty()) {
+        renderer.mesh().set_user_shader_dir(options.shader_dir);
+    } else if (options.shading >= 8) {
+        std::fprintf(stderr, "meshedit-render: note: shading %d draws as 1 without --shader-dir\n",
+                     options.shading);
+    }
     renderer.upload(is_curve || diagram ? nullptr : &mesh);
     if (field != nullptr) {
         renderer.mesh().set_field(field->site, field_values, coloring);
@@ -249,6 +255,9 @@ int run(const Options& options) {
     draw_frame();
     context.finish();
     check_gl("rendering");
+    if (!renderer.mesh().user_shader_error().empty()) {
+        throw GlError(renderer.mesh().user_shader_error());
+    }
     lap("draw");
     Image image = target.read();
     lap("readback");

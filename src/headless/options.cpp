@@ -172,6 +172,9 @@ int parse_options(int argc, char** argv, Options& o) {
                    "shading 7's environment: an equirectangular PNG, JPEG, HDR or EXR (default: "
                    "a procedural studio)")
         ->type_name("FILE");
+    app.add_option("--shader-dir", o.shader_dir,
+                   "shading 8 and 9 load mesh8.frag and mesh9.frag from DIR (docs/shaders.md)")
+        ->type_name("DIR");
     app.add_option("--exposure", o.exposure, "shading 7: the environment's brightness in stops")
         ->type_name("EV")
         ->check(CLI::Range(-16.0, 16.0));

@@ -37,8 +37,9 @@ struct Options {
     std::string select;
     std::optional<StencilScheme> stencil;
     bool op_diagram = false;
-    NormalSplit normals;           ///< --auto-smooth, --no-crease-split
-    std::filesystem::path envmap;  ///< --envmap FILE: mode 7's environment
+    NormalSplit normals;               ///< --auto-smooth, --no-crease-split
+    std::filesystem::path envmap;      ///< --envmap FILE: mode 7's environment
+    std::filesystem::path shader_dir;  ///< --shader-dir DIR: modes 8 and 9
     float exposure = 0.0f;
     std::string field;  ///< --field NAME (core/fields.h)
     std::optional<ColorMap> colormap;

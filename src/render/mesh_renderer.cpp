@@ -12,6 +12,7 @@
 #include "gl.h"
 #include "meshedit/core/display_fan.h"
 #include "meshedit/core/normals.h"
+#include "meshedit/render/user_shaders.h"
 
 namespace meshedit {
 namespace {
@@ -215,6 +216,9 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
         shader.set_int("u_envmap", 1);
         shader.set_float("u_exposure", options.exposure);
     }
+    shader.set_float("u_time", options.time_s);
+    shader.set_int("u_has_selection", options.has_selection ? 1 : 0);
+    shader.set_vec3("u_selection", options.selection.data());
     shader.set_int("u_edge_field", has_edge_field_ ? 1 : 0);
     shader.set_float("u_wire_width", options.wire_width_px);
     shader.set_vec4("u_wire_color", options.wire_color.data());
@@ -315,19 +319,81 @@ void MeshRenderer::set_field(FieldSite site, std::span<const double> values,
     check_gl("MeshRenderer::set_field");
 }
 
+namespace {
+
+std::string defines_of(int mode, bool wireframe) {
+    return "#define MESHEDIT_MODE " + std::to_string(mode) + "\n#define MESHEDIT_WIREFRAME " +
+           (wireframe ? "1" : "0") + "\n";
+}
+
+}  // namespace
+
+// The program of slot (mode, wireframe), built from disk: the user's file for 8 and 9.
+ShaderProgram MeshRenderer::build_program(int mode, bool wireframe) const {
+    if (mode >= 8) {
+        return ShaderProgram::from_files(shader_directory() / "mesh.vert",
+                                         user_shader_path(user_shader_dir_, mode),
+                                         defines_of(mode, wireframe));
+    }
+    return ShaderProgram("mesh.vert", "mesh.frag", defines_of(mode, wireframe));
+}
+
 const ShaderProgram& MeshRenderer::shaded_program(int mode, bool wireframe) {
     mode = std::clamp(mode, 0, static_cast<int>(kShadingModes.size()) - 1);
-    if (mode >= 8) {
-        mode = 1;  // 8-9 alias Phong (shading.h)
+    if (mode >= 8 && user_shader_dir_.empty()) {
+        mode = 1;  // no user folder: 8 and 9 draw as 1
     }
     ShaderProgram& program = shaded_programs_[static_cast<std::size_t>(2 * mode + wireframe)];
     if (!program.is_valid()) {
-        const std::string defines = "#define MESHEDIT_MODE " + std::to_string(mode) +
-                                    "\n#define MESHEDIT_WIREFRAME " + (wireframe ? "1" : "0") +
-                                    "\n";
-        program = ShaderProgram("mesh.vert", "mesh.frag", defines);
+        if (mode < 8) {
+            program = build_program(mode, wireframe);
+        } else {
+            try {
+                program = build_program(mode, wireframe);
+                user_shader_error_.clear();
+            } catch (const GlError& e) {
+                user_shader_error_ = e.what();  // drawn as mode 1 until it compiles
+                return shaded_program(1, wireframe);
+            }
+        }
     }
     return program;
+}
+
+void MeshRenderer::set_user_shader_dir(const std::filesystem::path& dir) {
+    user_shader_dir_ = dir;
+    user_shader_error_.clear();
+    for (const int mode : {8, 9}) {
+        for (const int wire : {0, 1}) {
+            shaded_programs_[static_cast<std::size_t>(2 * mode + wire)] = ShaderProgram();
+        }
+    }
+}
+
+std::string MeshRenderer::reload_shaders() {
+    std::string errors;
+    for (int mode = 0; mode < static_cast<int>(kShadingModes.size()); ++mode) {
+        for (const bool wire : {false, true}) {
+            ShaderProgram& program = shaded_programs_[static_cast<std::size_t>(2 * mode + wire)];
+            const bool user = mode >= 8 && !user_shader_dir_.empty();
+            if (!program.is_valid() && !user) {
+                continue;  // never used: compiled when first drawn
+            }
+            if (user && wire) {
+                continue;  // the same file as without the wireframe: one message is enough
+            }
+            try {
+                program = build_program(mode, wire);
+                if (user) {
+                    shaded_programs_[static_cast<std::size_t>(2 * mode + 1)] = ShaderProgram();
+                }
+            } catch (const GlError& e) {
+                errors += std::string(errors.empty() ? "" : "\n") + e.what();
+            }
+        }
+    }
+    user_shader_error_.clear();
+    return errors;
 }
 
 bool MeshRenderer::culls_back_faces(const Camera& camera) const {

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -85,7 +86,11 @@ GLuint compile(GLenum type, const std::filesystem::path& path, std::string_view 
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (ok != GL_TRUE) {
-        const std::string log = trimmed(shader_log(shader));
+        // Mesa writes "0:36(15): error: …": name the line and column as a reader looks
+        // them up.
+        const std::string log = std::regex_replace(trimmed(shader_log(shader)),
+                                                   std::regex(R"(\b0:(\d+)\((\d+)\): )"),
+                                                   "line $1, column $2: ");
         glDeleteShader(shader);
         throw GlError("shader " + path.string() + " does not compile: " + log);
     }
@@ -127,10 +132,13 @@ void check_gl(std::string_view what) {
 }
 
 ShaderProgram::ShaderProgram(std::string_view vert_name, std::string_view frag_name,
-                             std::string_view defines) {
-    const std::filesystem::path dir = shader_directory();
-    const std::filesystem::path vert_path = dir / vert_name;
-    const std::filesystem::path frag_path = dir / frag_name;
+                             std::string_view defines)
+    : ShaderProgram(
+          from_files(shader_directory() / vert_name, shader_directory() / frag_name, defines)) {}
+
+ShaderProgram ShaderProgram::from_files(const std::filesystem::path& vert_path,
+                                        const std::filesystem::path& frag_path,
+                                        std::string_view defines) {
     const GLuint vert = compile(GL_VERTEX_SHADER, vert_path, defines);
     GLuint frag = 0;
     try {
@@ -153,7 +161,9 @@ ShaderProgram::ShaderProgram(std::string_view vert_name, std::string_view frag_n
         throw GlError("shaders " + vert_path.string() + " + " + frag_path.string() +
                       " do not link: " + log);
     }
-    id_ = program;
+    ShaderProgram out;
+    out.id_ = program;
+    return out;
 }
 
 ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept : id_(std::exchange(other.id_, 0)) {}

@@ -18,6 +18,7 @@
 #include "meshedit/files/io_error.h"
 #include "meshedit/render/image.h"
 #include "meshedit/render/overlay.h"
+#include "meshedit/render/user_shaders.h"
 #include "meshedit/viewer/paths.h"
 
 namespace meshedit::viewer {
@@ -134,6 +135,8 @@ App::App(const ViewerOptions& options) {
     scene_ = std::make_unique<SceneRenderer>();
     upload_document();  // the empty document, until a file opens
 
+    user_shader_dir_ = options.shader_dir.empty() ? default_user_shader_dir() : options.shader_dir;
+    scene_->mesh().set_user_shader_dir(user_shader_dir_);
     if (!options.envmap.empty()) {
         load_environment(options.envmap);
     }
@@ -182,6 +185,9 @@ int App::run() {
         if (const std::string t = editor_.title(); t != title) {
             title = t;
             glfwSetWindowTitle(window_, ("MeshEdit — " + title).c_str());
+        }
+        if (editor_.view().render.shading >= 8 && mesh_mode()) {
+            redraw_frames_ = std::max(redraw_frames_, 1);  // user shaders may animate (u_time)
         }
         if (redraw_frames_ > 0) {
             draw_frame();
@@ -472,6 +478,12 @@ void App::apply(const Outcome& outcome) {
     if (c & kFrameMesh) {
         frame_mesh();
     }
+    if ((c & kDisplay) && editor_.view().render.shading >= 8) {
+        prepare_user_shaders();
+    }
+    if (c & kReloadShaders) {
+        reload_shaders();
+    }
     if (c & kScreenshot) {
         write_screenshot();
     }
@@ -641,7 +653,7 @@ void App::drag_element_to_cursor() {
 // ---------------------------------------------------------------------------- drawing
 
 void App::draw_scene(int width, int height) {
-    scene_->draw(camera_, width, height, editor_.view().render);
+    scene_->draw(camera_, width, height, frame_options());
 }
 
 void App::draw_frame() {
@@ -741,7 +753,7 @@ void App::write_screenshot() {
     target.bind();
     Camera free_part = camera_;
     free_part.lens_shift_x = 0.0f;
-    scene_->draw(free_part, width, size.y, editor_.view().render);
+    scene_->draw(free_part, width, size.y, frame_options());
     const Image image = target.read();
     rebuild_overlay();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -23,8 +23,9 @@ struct ViewerOptions {
     int width = 1280;            ///< window size in screen coordinates
     int height = 800;
     bool vsync = true;
-    UpAxis up = UpAxis::Y;         ///< --up: which world axis starts up on the screen
-    std::filesystem::path envmap;  ///< --envmap: shading 7's environment (empty: the default)
+    UpAxis up = UpAxis::Y;             ///< --up: which world axis starts up on the screen
+    std::filesystem::path envmap;      ///< --envmap: shading 7's environment (empty: the default)
+    std::filesystem::path shader_dir;  ///< --shader-dir: modes 8, 9 (empty: the per-user one)
 };
 
 /// Whether a dropped file is an image (an environment for shading 7) rather than a document.
@@ -57,8 +58,15 @@ private:
     void apply(const Outcome& outcome);
     void open_file(const std::filesystem::path& path);
     /// Makes `path` shading 7's environment and switches to mode 7; a bad image is reported
-    /// in the status line and the environment stays (app_field.cpp).
+    /// in the status line and the environment stays (app_shading.cpp).
     void load_environment(const std::filesystem::path& path);
+    /// Modes 8 and 9: writes the starter shaders into the user folder where missing (the
+    /// first time either mode is chosen); Ctrl+R: recompiles every shader, showing errors.
+    void prepare_user_shaders();
+    void reload_shaders();
+    /// The frame's render options: the view's, with the time and the selection for user
+    /// shaders.
+    RenderOptions frame_options();
     void set_status(std::string message, bool error);
 
     void upload_document();
@@ -66,7 +74,7 @@ private:
     /// control nets or the curve, hover and selection highlights.
     void rebuild_overlay(bool features_changed = false);
     /// Recomputes the scalar field shown (Alt+F) for the current mesh and selection and
-    /// colours the surface by it, or clears it (app_field.cpp).
+    /// colours the surface by it, or clears it (app_shading.cpp).
     void refresh_field();
     void reset_camera();
     /// Centres the camera on the selection, close enough that it fills about a third of the
@@ -119,6 +127,8 @@ private:
     std::unique_ptr<SceneRenderer> scene_;
     std::unique_ptr<RenderTarget> pick_target_;
     FieldDisplay field_;
+    std::filesystem::path user_shader_dir_;
+    bool starters_checked_ = false;
     OverlayBatch features_;                    ///< boundary and crease edges of the current mesh
     std::vector<OverlayBatch::Label> labels_;  ///< the overlay's text, drawn with the panels
 

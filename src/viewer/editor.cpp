@@ -91,6 +91,7 @@ Outcome Editor::run(Action action) {
         case Command::CycleStencil:
         case Command::ToggleDiagram:
         case Command::CycleField:
+        case Command::ReloadShaders:
         case Command::Screenshot:
             return run_display(action);
         case Command::Undo:
@@ -145,7 +146,7 @@ Outcome Editor::run_display(Action action) {
             }
             r.shading = n;
             const ShadingMode& m = kShadingModes[static_cast<std::size_t>(n)];
-            const bool alias = m.description.starts_with("same as");
+            const bool alias = m.number >= 8;  // the user's: say where the file is
             return {kDisplay, "shading " + std::to_string(n) + ": " +
                                   std::string(alias ? m.description : m.name)};
         }
@@ -171,6 +172,8 @@ Outcome Editor::run_display(Action action) {
             return cycle_stencil();
         case Command::CycleField:
             return cycle_field();
+        case Command::ReloadShaders:
+            return {kReloadShaders, ""};
         case Command::ToggleDiagram:
             view_.show_diagram = !view_.show_diagram;
             return {kDisplay, view_.show_diagram

@@ -46,6 +46,12 @@ int main(int argc, char** argv) {
                    "shading 7's environment: an equirectangular PNG, JPEG, HDR or EXR (default: a "
                    "procedural studio); dropping an image on the window does the same")
         ->type_name("FILE");
+    std::string shader_dir;
+    app.add_option("--shader-dir", shader_dir,
+                   "where shading 8 and 9 load mesh8.frag and mesh9.frag (default: "
+                   "$XDG_CONFIG_HOME/meshedit/shaders or ~/.config/meshedit/shaders, given starter "
+                   "shaders the first time)")
+        ->type_name("DIR");
     std::string up = "file";
     app.add_option("--up", up,
                    "which axis is up: y, z (the CS184 course's models), or file (the file's "
@@ -65,6 +71,7 @@ int main(int argc, char** argv) {
     }
     options.file = file;
     options.envmap = envmap;
+    options.shader_dir = shader_dir;
     options.vsync = !no_vsync;
     options.up = up == "z" ? meshedit::UpAxis::Z : meshedit::UpAxis::Y;
     const char* display = std::getenv("DISPLAY");

@@ -174,6 +174,21 @@ void Panels::draw_field(Editor& editor, const FieldDisplay& field, PanelRequests
     }
 }
 
+void Panels::draw_shader_errors() {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x * 0.5f,
+                                   viewport->WorkPos.y + viewport->WorkSize.y - 90.0f * scale_),
+                            ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(720.0f * scale_, viewport->WorkSize.x - 20.0f), 0.0f));
+    if (ImGui::Begin("Shader errors (Ctrl+R recompiles)")) {
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 140, 120, 255));
+        ImGui::TextWrapped("%s", shader_errors_.c_str());
+        ImGui::PopStyleColor();
+    }
+    remember_rect();
+    ImGui::End();
+}
+
 void Panels::draw_diagram(const OpDiagram& diagram) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const ImVec2 size(500.0f * scale_, 430.0f * scale_);

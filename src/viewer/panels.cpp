@@ -125,6 +125,9 @@ PanelRequests Panels::draw(Editor& editor, const FrameStats& stats, const std::s
     if (editor.view().show_diagram && editor.last_diagram() && editor.mode() != Mode::Curve) {
         draw_diagram(*editor.last_diagram());
     }
+    if (!shader_errors_.empty()) {
+        draw_shader_errors();
+    }
     if (editor.view().show_help) {
         draw_help(editor.mode());
     }

@@ -83,6 +83,10 @@ public:
     /// expected edge until the panel is first drawn; 0 once it is dragged off the left edge).
     float info_right_edge() const;
 
+    /// The errors of the last shader reload (or of a user shader that does not compile), shown
+    /// in their own panel until a reload succeeds; empty: no panel.
+    void set_shader_errors(std::string errors) { shader_errors_ = std::move(errors); }
+
     /// Draws every visible panel; call between ImGui::NewFrame() and ImGui::Render().
     PanelRequests draw(Editor& editor, const FrameStats& stats, const std::string& status,
                        bool status_error, const FieldDisplay& field);
@@ -92,6 +96,7 @@ private:
                    PanelRequests& requests);
     void draw_stencil(const Editor& editor);
     void draw_diagram(const OpDiagram& diagram);  // panel_pictures.cpp
+    void draw_shader_errors();                    // same
     void draw_field(Editor& editor, const FieldDisplay& field, PanelRequests& requests);  // same
     void draw_help(Mode mode);
     void draw_status(const Editor& editor, const std::string& status, bool status_error);
@@ -110,6 +115,7 @@ private:
     bool place_cursor_ = false;  ///< put the cursor at the end, nothing selected
     bool submit_ = false, cancel_ = false;
     std::string path_;
+    std::string shader_errors_;
     std::filesystem::path folder_;         ///< relative text is resolved against this
     std::vector<std::string> candidates_;  ///< names Tab found, when there were several
     static int on_prompt_input(ImGuiInputTextCallbackData* data);

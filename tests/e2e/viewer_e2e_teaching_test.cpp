@@ -3,6 +3,7 @@
 /// ends where one press of L does.
 
 #include "meshedit/core/fields.h"
+#include "meshedit/files/files.h"
 #include "support/mesh_compare.h"
 #include "viewer_fixture.h"
 
@@ -81,6 +82,59 @@ TEST_F(ViewerE2E, AltFColoursByCurvatureAndCyclesBackToPlain) {
     std::cout << "saturated pixels: plain " << rims << ", gauss " << coloured << "\n";
     EXPECT_GT(coloured, 2 * rims + 300);
     EXPECT_EQ(saturated_pixels(read_rgb(off)), rims);
+    window.key("ctrl+q");
+    expect_exit(*viewer, 0);
+}
+
+// Pixels that differ by more than 40 in some channel.
+std::size_t changed_pixels(const RgbImage& a, const RgbImage& b) {
+    std::size_t n = 0;
+    for (int y = 0; y < std::min(a.height, b.height); ++y) {
+        for (int x = 0; x < std::min(a.width, b.width); ++x) {
+            n += channel_difference(a, x, y, b, x, y) > 40;
+        }
+    }
+    return n;
+}
+
+// Mode 8 from a shader folder; a broken edit and Ctrl+R: the error names the file and line on
+// stderr and the picture stays; a working edit and Ctrl+R: the new picture.
+TEST_F(ViewerE2E, CtrlRReloadsUserShadersAndKeepsTheOldOneOnAnError) {
+    const fs::path doc = work_ / "cube.dae";
+    fs::copy_file(source_dir() / "dae" / "cube.dae", doc);
+    const fs::path shaders = work_ / "shaders";
+    fs::create_directories(shaders);
+    const std::string starter = read_file(source_dir() / "shaders/user/mesh8.frag");
+    write_file(shaders / "mesh8.frag", starter);
+    auto viewer = start_viewer(doc, "800x600", {"--shader-dir", shaders.string()});
+    const ViewerWindow window(*viewer);
+    ASSERT_TRUE(window.ok());
+    std::string title;
+    ASSERT_TRUE(window.wait_title(kCubeTitle, false, 20s, &title)) << title;
+    window.key("8");
+    const fs::path toon = screenshot(*viewer, window, 1);
+
+    std::string broken = starter;
+    broken.insert(broken.find("float band = ") + 13, "oops");
+    write_file(shaders / "mesh8.frag", broken);
+    window.key("ctrl+r");
+    ASSERT_TRUE(wait_until(
+        [&] { return viewer->err().find("does not compile") != std::string::npos; }, 20s))
+        << viewer->err();
+    EXPECT_NE(viewer->err().find((shaders / "mesh8.frag").string() + " does not compile: line 36"),
+              std::string::npos)
+        << viewer->err();
+    const fs::path kept = screenshot(*viewer, window, 2);
+
+    std::string red = starter;
+    red.replace(red.find("vec3 color = u_base_color * band"), 32,
+                "vec3 color = vec3(0.9, 0.1, 0.1) * band");
+    write_file(shaders / "mesh8.frag", red);
+    window.key("ctrl+r");
+    const fs::path recompiled = screenshot(*viewer, window, 3);
+    ASSERT_FALSE(toon.empty() || kept.empty() || recompiled.empty());
+    EXPECT_EQ(changed_pixels(read_rgb(toon), read_rgb(kept)), 0u) << "the old shader stays";
+    EXPECT_GT(changed_pixels(read_rgb(toon), read_rgb(recompiled)), 5000u) << "the red one draws";
     window.key("ctrl+q");
     expect_exit(*viewer, 0);
 }

@@ -303,14 +303,15 @@ protected:
         fs::create_directories(out_dir());
     }
 
-    /// `meshedit FILE --size WxH` with the work folder as its current directory and as its
+    /// `meshedit FILE --size WxH [MORE…]` with the work folder as its current directory and as its
     /// pictures folder (XDG_PICTURES_DIR): screenshots go to work_/MeshEdit.
-    std::unique_ptr<BackgroundProcess> start_viewer(const fs::path& file, const std::string& size) {
+    std::unique_ptr<BackgroundProcess> start_viewer(const fs::path& file, const std::string& size,
+                                                    const std::vector<std::string>& more = {}) {
         viewer_stem_ = file.stem().string();
         ::setenv("XDG_PICTURES_DIR", work_.path().c_str(), 1);
-        return std::make_unique<BackgroundProcess>(
-            MESHEDIT_EXE, std::vector<std::string>{file.string(), "--size", size}, work_.path(),
-            logs_.path());
+        std::vector<std::string> args{file.string(), "--size", size};
+        args.insert(args.end(), more.begin(), more.end());
+        return std::make_unique<BackgroundProcess>(MESHEDIT_EXE, args, work_.path(), logs_.path());
     }
 
     /// Presses P and waits for the viewer to announce screenshot number `n` on stdout;

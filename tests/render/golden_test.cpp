@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -141,6 +142,15 @@ const std::vector<GoldenCase>& golden_cases() {
         {"envmap_checker",
          "dae/teapot.dae",
          {"--shading", "7", "--envmap", "tests/golden/data/checker_env.png"},
+         "480x360"},
+        // Modes 8 and 9 with the starter shaders (shaders/user): toon bands, stripes at time 0.
+        {"user8_teapot",
+         "dae/teapot.dae",
+         {"--shading", "8", "--shader-dir", "shaders/user"},
+         "480x360"},
+        {"user9_teapot",
+         "dae/teapot.dae",
+         {"--shading", "9", "--shader-dir", "shaders/user"},
          "480x360"},
         {"torus_loop2", "dae/torus.dae", {"--ops", "loop:2", "--flat", "--camera", "30,40"}},
         {"creased_input", "dae/creased.dae", {"--wireframe"}},
@@ -325,8 +335,8 @@ TEST_P(Golden, MatchesReference) {
                                      "--size", c.size};
     for (const std::string& arg : c.args) {
         // Files of the repository among the options (an --envmap) are relative to its root.
-        args.push_back(arg.rfind("tests/golden/data/", 0) == 0 ? (source_dir() / arg).string()
-                                                               : arg);
+        const bool in_repo = arg.rfind("tests/golden/data/", 0) == 0 || arg == "shaders/user";
+        args.push_back(in_repo ? (source_dir() / arg).string() : arg);
     }
     const std::string exe = render_exe();
     const std::string command = command_line(exe, args);
@@ -390,6 +400,34 @@ TEST(EnvironmentMap, BadImagesAreRefusedByName) {
                   "not equirectangular: it should be twice as wide as high, it is 64 × 64"),
               std::string::npos)
         << wrong_shape.err;
+}
+
+// A user shader that does not compile: exit 1, the error naming the file and its line.
+TEST(UserShaders, CompileErrorsNameTheFileAndLine) {
+    const fs::path dir = out_dir() / "user_shaders";
+    fs::create_directories(dir);
+    std::ifstream starter(source_dir() / "shaders/user/mesh8.frag");
+    std::stringstream text;
+    text << starter.rdbuf();
+    std::string broken = text.str();
+    const std::size_t at = broken.find("float band = ");
+    ASSERT_NE(at, std::string::npos);
+    broken.insert(at + std::string("float band = ").size(), "oops");
+    const std::size_t line =
+        1 + static_cast<std::size_t>(
+                std::count(broken.begin(), broken.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+    std::ofstream(dir / "mesh8.frag") << broken;
+    const RunResult r =
+        run_program(render_exe(),
+                    {(source_dir() / "dae/cube.dae").string(), "-o", (dir / "x.png").string(),
+                     "--shading", "8", "--shader-dir", dir.string()},
+                    60.0);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find((dir / "mesh8.frag").string() + " does not compile: line " +
+                         std::to_string(line) + ", column"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("oopslight"), std::string::npos) << r.err;
 }
 
 TEST(GoldenSet, NoOrphanReferences) {

@@ -44,6 +44,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('W'), kAlt, kMeshModes, {Command::CycleStencil}},
             {key_of('R'), kAlt, kMeshModes, {Command::ToggleDiagram}},
             {key_of('F'), kAlt, kMeshModes, {Command::CycleField}},
+            {key_of('R'), kCtrl, kMeshModes, {Command::ReloadShaders}},
             {key_of('V'), kShift, kMeshModes, {Command::Validate}},
             {key_of('L'), kAlt, kMeshModes, edit("loop_step")},
             // The local operations of polygon meshes (docs/spec.md §4).
@@ -300,7 +301,7 @@ TEST(Bindings, HelpShowsOnlyWhatTheModeDoes) {
         EXPECT_TRUE(says(mode, "drop a file")) << mode_description(mode);
         EXPECT_TRUE(says(mode, "pan")) << mode_description(mode);
     }
-    EXPECT_TRUE(says(Mode::Mesh, "7–9 same as 1"));
+    EXPECT_TRUE(says(Mode::Mesh, "8–9 your shaders"));
 }
 
 TEST(Bindings, LegendTakesItsColoursFromTheStyle) {

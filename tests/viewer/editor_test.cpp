@@ -75,9 +75,9 @@ TEST(Editor, DisplayTogglesAreNotEdits) {
     EXPECT_EQ(ed.view().render.shading, 5);
     EXPECT_EQ(out.message, "shading 5: depth");
     EXPECT_EQ(ed.press(key_of('1'), 0).message, "shading 1: phong");
-    // 7–9 are not modes of their own yet, and say so.
+    // 8 and 9 are the user's shaders: the message says where the file is.
     EXPECT_EQ(ed.press(key_of('8'), 0).message,
-              "shading 8: same as 1 (Blinn-Phong) until a mode takes this number");
+              "shading 8: your shader: mesh8.frag in the user shader folder (docs/shaders.md)");
     EXPECT_EQ(ed.view().render.shading, 8);
     const bool info = ed.view().show_info;
     ed.press(key_of('I'), 0);

@@ -12,7 +12,9 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -93,6 +95,17 @@ public:
     /// (environment.h) is made on the first draw in mode 7 without one. Needs the context.
     void set_environment(const EnvironmentImage& image);
 
+    /// Where modes 8 and 9 load mesh8.frag and mesh9.frag (user_shaders.h); empty: they draw
+    /// as mode 1. Takes effect at the next draw in those modes.
+    void set_user_shader_dir(const std::filesystem::path& dir);
+    const std::filesystem::path& user_shader_dir() const { return user_shader_dir_; }
+    /// Why the last draw in mode 8 or 9 fell back to mode 1 (the compiler's message, naming
+    /// the file and line), or empty.
+    const std::string& user_shader_error() const { return user_shader_error_; }
+    /// Recompiles, from disk, every program compiled so far and the user's. A program that
+    /// fails keeps the one it had. \return the errors, one per line (empty: all compiled).
+    std::string reload_shaders();
+
     void clear_field() { has_field_ = has_edge_field_ = false; }
     bool has_field() const { return has_field_; }
 
@@ -110,6 +123,7 @@ private:
     void fill_geometry(const Mesh& mesh);
     /// The mesh program for a shading mode and wireframe switch, compiled on first use.
     const ShaderProgram& shaded_program(int mode, bool wireframe);
+    ShaderProgram build_program(int mode, bool wireframe) const;
     void set_culling(const Camera& camera) const;
 
     std::array<ShaderProgram, 2 * kShadingModes.size()> shaded_programs_;  ///< [2 * mode + wire]
@@ -144,7 +158,9 @@ private:
     std::size_t side_color_capacity_ = 0;
     std::vector<std::uint32_t> side_colors_;
     bool has_edge_field_ = false;
-    unsigned env_texture_ = 0;                   ///< mode 7's environment, 0 until needed
+    unsigned env_texture_ = 0;  ///< mode 7's environment, 0 until needed
+    std::filesystem::path user_shader_dir_;
+    std::string user_shader_error_;
     std::vector<std::uint32_t> triangle_faces_;  ///< face index per triangle
 };
 

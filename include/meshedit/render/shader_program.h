@@ -38,6 +38,10 @@ public:
     /// \throws GlError naming the file with the compiler or linker log.
     ShaderProgram(std::string_view vert_name, std::string_view frag_name,
                   std::string_view defines = {});
+    /// The same from two paths anywhere (a user's shader folder).
+    static ShaderProgram from_files(const std::filesystem::path& vert,
+                                    const std::filesystem::path& frag,
+                                    std::string_view defines = {});
     ShaderProgram(ShaderProgram&& other) noexcept;
     ShaderProgram& operator=(ShaderProgram&& other) noexcept;
     ShaderProgram(const ShaderProgram&) = delete;

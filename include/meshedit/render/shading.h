@@ -26,9 +26,8 @@ inline constexpr std::array<ShadingMode, 10> kShadingModes{{
     {5, "depth", "grey by view depth (near light, far dark)"},
     {6, "hemisphere", "sky/ground hemisphere light"},
     {7, "envmap", "mirror reflection of an environment map (default: a procedural studio)"},
-    // 8–9 are free for later modes; until then they alias mode 1 so every key works.
-    {8, "phong8", "same as 1 (Blinn-Phong) until a mode takes this number"},
-    {9, "phong9", "same as 1 (Blinn-Phong) until a mode takes this number"},
+    {8, "user8", "your shader: mesh8.frag in the user shader folder (docs/shaders.md)"},
+    {9, "user9", "your shader: mesh9.frag in the user shader folder (docs/shaders.md)"},
 }};
 
 /// Looks a mode up by name or number ("phong", "1"); nullopt if unknown.
@@ -59,6 +58,10 @@ struct RenderOptions {
     /// Mode 7: the environment's brightness in stops (2^exposure), before the highlights
     /// above 0.8 roll off towards white and the result is encoded as sRGB.
     float exposure = 0.0f;
+    /// For user shaders (modes 8, 9): seconds since the start, and the selection's centre.
+    float time_s = 0.0f;
+    bool has_selection = false;
+    std::array<float, 3> selection{};
 };
 
 }  // namespace meshedit

@@ -67,6 +67,7 @@ enum class Command {
     CycleStencil,     ///< stencil view: off, Loop (Warren), Loop (Loop's), Catmull-Clark
     ToggleDiagram,    ///< the rewiring panel
     CycleField,       ///< the scalar field shown: off, then each of core/fields.h
+    ReloadShaders,    ///< recompile every shader from disk (user shaders: modes 8, 9)
     Screenshot,
     // History and files.
     Undo,

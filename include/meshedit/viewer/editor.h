@@ -50,6 +50,7 @@ enum Change : unsigned {
     kFrameSelection = 1u << 11,  ///< the camera should centre on selection_bounds()
     kFrameMesh = 1u << 12,       ///< the camera should frame the whole mesh, keeping its angle
     kAskSessionPath = 1u << 13,  ///< the window should ask for a path, then export_session()
+    kReloadShaders = 1u << 14,   ///< the window should recompile every shader from disk
 };
 
 /// What the window measured since the interactive edit began.

@@ -1,14 +1,20 @@
-// Shading 7's environment, and the scalar field on screen (Alt+F, core/fields.h): recomputed
+// Shading 7's environment, the user's shaders (modes 8, 9; Ctrl+R), and the scalar field on
+// screen (Alt+F, core/fields.h): recomputed
 // whenever the mesh, the selection (distance's source) or the field's settings change, and handed
 // to the mesh renderer as colours.
 
 #include "app.h"
 
 #include <cctype>
+#include <cstdio>
+#include <vector>
+
+#include <GLFW/glfw3.h>
 #include <string>
 
 #include "meshedit/files/io_error.h"
 #include "meshedit/render/environment.h"
+#include "meshedit/render/user_shaders.h"
 
 namespace meshedit::viewer {
 
@@ -33,6 +39,54 @@ void App::load_environment(const std::filesystem::path& path) {
     } catch (const IoError& e) {
         set_status(e.what(), true);
     }
+}
+
+void App::prepare_user_shaders() {
+    if (starters_checked_ || user_shader_dir_.empty()) {
+        return;
+    }
+    starters_checked_ = true;
+    try {
+        const std::vector<std::filesystem::path> written =
+            install_starter_shaders(user_shader_dir_);
+        if (!written.empty()) {
+            set_status("wrote the starter shaders mesh8.frag and mesh9.frag to " +
+                           user_shader_dir_.string() + ": edit them and press Ctrl+R",
+                       false);
+        }
+    } catch (const IoError& e) {
+        set_status(e.what(), true);
+    }
+}
+
+void App::reload_shaders() {
+    prepare_user_shaders();
+    const std::string errors = scene_->mesh().reload_shaders();
+    panels_.set_shader_errors(errors);
+    if (errors.empty()) {
+        set_status("shaders recompiled from disk (yours from " + user_shader_dir_.string() + ")",
+                   false);
+    } else {
+        std::fprintf(stderr, "meshedit: %s\n", errors.c_str());
+        set_status(errors.substr(0, errors.find('\n')) + " — the previous shader stays", true);
+    }
+    redraw_frames_ = kSettleFrames;
+}
+
+RenderOptions App::frame_options() {
+    RenderOptions options = editor_.view().render;
+    options.time_s = static_cast<float>(glfwGetTime());
+    if (const auto bounds = editor_.selection_bounds()) {
+        const Vec3 c = 0.5 * (bounds->first + bounds->second);
+        options.has_selection = true;
+        options.selection = {static_cast<float>(c.x), static_cast<float>(c.y),
+                             static_cast<float>(c.z)};
+    }
+    // A user shader that does not compile: its error in the panel (it draws as mode 1).
+    if (options.shading >= 8 && !scene_->mesh().user_shader_error().empty()) {
+        panels_.set_shader_errors(scene_->mesh().user_shader_error());
+    }
+    return options;
 }
 
 void App::refresh_field() {
