@@ -21,7 +21,8 @@ flat in int v_edge_mask;
 
 uniform vec3 u_base_color;
 uniform mat4 u_view;          // mode 7: back to world space (a rotation and a translation)
-uniform sampler2D u_envmap;   // mode 7: equirectangular, texture unit 1, linear
+uniform sampler2D u_envmap;   // the environment, equirectangular, texture unit 1, linear
+uniform samplerCube u_envcube; // mode 7: the same as a cube map, unit 2
 uniform float u_exposure;     // mode 7: stops
 uniform bool u_field;         // colour by a scalar field (v_color), lit by Blinn-Phong
 uniform bool u_edge_field;    // and draw the real sides in their edge field's colours
@@ -79,18 +80,12 @@ vec3 matcap(vec3 n) {
 }
 
 // Mode 7: the mirror reflection of the view direction about the normal, looked up in the
-// equirectangular environment (u = θ/2π, v = φ/π as in the CS184 handout). The mip level comes
-// from how fast the reflected direction turns between pixels, not from u, which jumps by 1 at
-// θ = ±π: so the seam leaves no line.
+// environment. The equirectangular image (u = θ/2π, v = φ/π as in the CS184 handout) was
+// resampled through that mapping into a cube map when it was loaded (environment.h): the same
+// picture, with no seam at θ = ±π and no arc tangent or arc cosine per pixel.
 vec3 envmap_reflection(vec3 n, vec3 v) {
-    mat3 to_world = transpose(mat3(u_view));
-    vec3 r = normalize(to_world * reflect(-v, n));
-    const float kPi = 3.14159265358979;
-    vec2 uv = vec2(atan(r.z, r.x) / (2.0 * kPi) + 0.5, acos(clamp(r.y, -1.0, 1.0)) / kPi);
-    // Radians per pixel times texels per radian (the height spans π).
-    float turn = max(length(dFdx(r)), length(dFdy(r)));
-    float lod = log2(max(turn * float(textureSize(u_envmap, 0).y) / kPi, 1.0));
-    vec3 c = textureLod(u_envmap, uv, lod).rgb * exp2(u_exposure);
+    vec3 r = transpose(mat3(u_view)) * reflect(-v, n);
+    vec3 c = texture(u_envcube, r).rgb * exp2(u_exposure);
     // Highlights above 0.8 roll off towards 1 instead of clipping; then about sRGB (γ 2).
     c = mix(c, 0.8 + 0.2 * (1.0 - exp(-(c - 0.8) / 0.2)), step(0.8, c));
     return sqrt(clamp(c, 0.0, 1.0));

@@ -77,6 +77,80 @@ EnvironmentImage default_environment(int width) {
     return env;
 }
 
+namespace {
+
+// Bilinear sample of `image` at direction d (unit): u = θ/2π + ½, v = φ/π; wraps in θ.
+void sample(const EnvironmentImage& image, double x, double y, double z, float* out) {
+    const double u = std::atan2(z, x) / (2.0 * kPi) + 0.5;
+    const double v = std::acos(std::clamp(y, -1.0, 1.0)) / kPi;
+    const double fx = u * image.width - 0.5,
+                 fy = std::clamp(v * image.height - 0.5, 0.0, image.height - 1.0);
+    const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+    const double tx = fx - x0, ty = fy - y0;
+    const int y1 = std::min(y0 + 1, image.height - 1);
+    const auto wrap = [&](int i) { return ((i % image.width) + image.width) % image.width; };
+    const float* a = image.at(wrap(x0), y0);
+    const float* b = image.at(wrap(x0 + 1), y0);
+    const float* c = image.at(wrap(x0), y1);
+    const float* d = image.at(wrap(x0 + 1), y1);
+    for (int k = 0; k < 3; ++k) {
+        out[k] = static_cast<float>((1 - ty) * ((1 - tx) * a[k] + tx * b[k]) +
+                                    ty * ((1 - tx) * c[k] + tx * d[k]));
+    }
+}
+
+}  // namespace
+
+std::vector<std::vector<float>> cube_faces(const EnvironmentImage& image, int size) {
+    std::vector<std::vector<float>> faces(
+        6, std::vector<float>(static_cast<std::size_t>(3 * size * size)));
+    for (int face = 0; face < 6; ++face) {
+        for (int j = 0; j < size; ++j) {
+            for (int i = 0; i < size; ++i) {
+                // GL's cube map table: the texel's (sc, tc) in [−1, 1] and its major axis.
+                const double sc = 2.0 * (i + 0.5) / size - 1.0, tc = 2.0 * (j + 0.5) / size - 1.0;
+                double x = 0, y = 0, z = 0;
+                switch (face) {
+                    case 0:
+                        x = 1;
+                        y = -tc;
+                        z = -sc;
+                        break;
+                    case 1:
+                        x = -1;
+                        y = -tc;
+                        z = sc;
+                        break;
+                    case 2:
+                        x = sc;
+                        y = 1;
+                        z = tc;
+                        break;
+                    case 3:
+                        x = sc;
+                        y = -1;
+                        z = -tc;
+                        break;
+                    case 4:
+                        x = sc;
+                        y = -tc;
+                        z = 1;
+                        break;
+                    default:
+                        x = -sc;
+                        y = -tc;
+                        z = -1;
+                        break;
+                }
+                const double n = std::sqrt(x * x + y * y + z * z);
+                sample(image, x / n, y / n, z / n,
+                       faces[static_cast<std::size_t>(face)].data() + 3 * (j * size + i));
+            }
+        }
+    }
+    return faces;
+}
+
 EnvironmentImage read_environment(const std::filesystem::path& path) {
     namespace OIIO = OIIO_NAMESPACE;
     auto in = OIIO::ImageInput::open(path.string());

@@ -55,6 +55,7 @@ MeshRenderer::~MeshRenderer() {
         glDeleteBuffers(1, &color_vbo_);
         glDeleteBuffers(1, &side_color_vbo_);
         glDeleteTextures(1, &env_texture_);
+        glDeleteTextures(1, &env_cube_);
         glDeleteBuffers(1, &pick_tbo_buffer_);
         glDeleteTextures(1, &pick_tbo_texture_);
     }
@@ -206,14 +207,17 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
     shader.set_int("u_smooth", options.smooth ? 1 : 0);
     shader.set_vec3("u_base_color", options.base_color.data());
     shader.set_int("u_field", has_field_ ? 1 : 0);
-    if (options.shading == 7) {
+    if (options.shading >= 7) {
         if (env_texture_ == 0) {
             set_environment(default_environment());
         }
-        glActiveTexture(GL_TEXTURE1);  // unit 1, as in the CS184 skeleton
+        glActiveTexture(GL_TEXTURE1);  // unit 1, as in the CS184 skeleton (user shaders)
         glBindTexture(GL_TEXTURE_2D, env_texture_);
+        glActiveTexture(GL_TEXTURE2);  // mode 7's cube
+        glBindTexture(GL_TEXTURE_CUBE_MAP, env_cube_);
         glActiveTexture(GL_TEXTURE0);
         shader.set_int("u_envmap", 1);
+        shader.set_int("u_envcube", 2);
         shader.set_float("u_exposure", options.exposure);
     }
     shader.set_float("u_time", options.time_s);
@@ -260,6 +264,25 @@ void MeshRenderer::set_environment(const EnvironmentImage& image) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // around in θ
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D, 0);
+    // Mode 7 samples a cube map made from it (environment.h), filtered across the faces.
+    if (env_cube_ == 0) {
+        glGenTextures(1, &env_cube_);
+    }
+    const int size = std::clamp(image.width / 4, 16, 2048);
+    const std::vector<std::vector<float>> faces = cube_faces(image, size);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, env_cube_);
+    for (GLenum face = 0; face < 6; ++face) {
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGB16F, size, size, 0, GL_RGB,
+                     GL_FLOAT, faces[face].data());
+    }
+    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     check_gl("MeshRenderer::set_environment");
 }
 

@@ -88,9 +88,9 @@ GLuint compile(GLenum type, const std::filesystem::path& path, std::string_view 
     if (ok != GL_TRUE) {
         // Mesa writes "0:36(15): error: …": name the line and column as a reader looks
         // them up.
-        const std::string log = std::regex_replace(trimmed(shader_log(shader)),
-                                                   std::regex(R"(\b0:(\d+)\((\d+)\): )"),
-                                                   "line $1, column $2: ");
+        const std::string log =
+            std::regex_replace(trimmed(shader_log(shader)), std::regex(R"(\b0:(\d+)\((\d+)\): )"),
+                               "line $1, column $2: ");
         glDeleteShader(shader);
         throw GlError("shader " + path.string() + " does not compile: " + log);
     }

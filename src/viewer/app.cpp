@@ -401,11 +401,7 @@ void App::on_scroll(double dy) {
 
 void App::on_drop(int count, const char** paths) {
     if (count > 0) {
-        if (is_environment_image(paths[0])) {
-            load_environment(paths[0]);
-        } else {
-            open_file(paths[0]);
-        }
+        open_file(paths[0]);
         if (count > 1) {
             set_status(status_ + " (" + std::to_string(count - 1) + " more dropped files ignored)",
                        status_error_);
@@ -431,6 +427,10 @@ void App::set_status(std::string message, bool error) {
 }
 
 void App::open_file(const std::filesystem::path& path) {
+    if (is_environment_image(path)) {
+        load_environment(path);  // Ctrl+O or a drop: an image is an environment, not a document
+        return;
+    }
     try {
         apply(editor_.open(path));  // uploads, reframes and rebuilds the overlay
     } catch (const std::exception& e) {

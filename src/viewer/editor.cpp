@@ -92,6 +92,7 @@ Outcome Editor::run(Action action) {
         case Command::ToggleDiagram:
         case Command::CycleField:
         case Command::ReloadShaders:
+        case Command::CycleColormap:
         case Command::Screenshot:
             return run_display(action);
         case Command::Undo:
@@ -174,6 +175,15 @@ Outcome Editor::run_display(Action action) {
             return cycle_field();
         case Command::ReloadShaders:
             return {kReloadShaders, ""};
+        case Command::CycleColormap: {
+            std::optional<ColorMap>& map = view_.colormap;
+            map = !map                        ? std::optional(ColorMap::Viridis)
+                  : *map == ColorMap::Viridis ? std::optional(ColorMap::Magma)
+                  : *map == ColorMap::Magma   ? std::optional(ColorMap::Diverging)
+                                              : std::nullopt;
+            return {kDisplay, "colour map: " + (map ? std::string(colormap_name(*map))
+                                                    : std::string("the field's default"))};
+        }
         case Command::ToggleDiagram:
             view_.show_diagram = !view_.show_diagram;
             return {kDisplay, view_.show_diagram

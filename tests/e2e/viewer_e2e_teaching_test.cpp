@@ -46,6 +46,17 @@ TEST_F(ViewerE2E, LoopSteppedFourTimesIsL) {
     expect_exit(*viewer, 0);
 }
 
+// Pixels that differ by more than 40 in some channel.
+std::size_t changed_pixels(const RgbImage& a, const RgbImage& b) {
+    std::size_t n = 0;
+    for (int y = 0; y < std::min(a.height, b.height); ++y) {
+        for (int x = 0; x < std::min(a.width, b.width); ++x) {
+            n += channel_difference(a, x, y, b, x, y) > 40;
+        }
+    }
+    return n;
+}
+
 // Pixels whose red and blue differ by more than 40: tinted towards one end of the diverging
 // map (the grey teapot, the grey-blue background and the grey panels are not).
 std::size_t saturated_pixels(const RgbImage& image) {
@@ -59,8 +70,9 @@ std::size_t saturated_pixels(const RgbImage& image) {
     return n;
 }
 
-// Alt+F colours the teapot by Gaussian curvature (red knob and rims, blue saddles); stepping
-// through every field comes back to the plain teapot, pixel for pixel in red and blue.
+// Alt+F colours the teapot by Gaussian curvature (red knob and rims, blue saddles);
+// Alt+Shift+F switches its colour map; stepping through every field comes back to the plain
+// teapot, pixel for pixel in red and blue; 7 turns it into a mirror.
 TEST_F(ViewerE2E, AltFColoursByCurvatureAndCyclesBackToPlain) {
     const fs::path doc = work_ / "teapot.dae";
     fs::copy_file(source_dir() / "dae" / "teapot.dae", doc);
@@ -72,10 +84,18 @@ TEST_F(ViewerE2E, AltFColoursByCurvatureAndCyclesBackToPlain) {
     const fs::path plain = screenshot(*viewer, window, 1);
     window.key("alt+f");
     const fs::path gauss = screenshot(*viewer, window, 2);
+    window.key("alt+shift+f");  // the colour map: viridis instead of the diverging default
+    const fs::path viridis = screenshot(*viewer, window, 3);
+    window.keys({"alt+shift+f", "alt+shift+f", "alt+shift+f"});  // magma, diverging, default
     std::vector<std::string> rest(field_infos().size(), "alt+f");
     window.keys(rest);  // the other fields, then off
-    const fs::path off = screenshot(*viewer, window, 3);
-    ASSERT_FALSE(plain.empty() || gauss.empty() || off.empty());
+    const fs::path off = screenshot(*viewer, window, 4);
+    window.key("7");  // the mirror
+    const fs::path mirror = screenshot(*viewer, window, 5);
+    ASSERT_FALSE(plain.empty() || gauss.empty() || viridis.empty() || off.empty() ||
+                 mirror.empty());
+    EXPECT_GT(changed_pixels(read_rgb(gauss), read_rgb(viridis)), 5000u) << "another colour map";
+    EXPECT_GT(changed_pixels(read_rgb(off), read_rgb(mirror)), 5000u) << "mode 7 reflects";
     // The plain teapot's red: its open rims (boundary edges).
     const std::size_t rims = saturated_pixels(read_rgb(plain));
     const std::size_t coloured = saturated_pixels(read_rgb(gauss));
@@ -84,17 +104,6 @@ TEST_F(ViewerE2E, AltFColoursByCurvatureAndCyclesBackToPlain) {
     EXPECT_EQ(saturated_pixels(read_rgb(off)), rims);
     window.key("ctrl+q");
     expect_exit(*viewer, 0);
-}
-
-// Pixels that differ by more than 40 in some channel.
-std::size_t changed_pixels(const RgbImage& a, const RgbImage& b) {
-    std::size_t n = 0;
-    for (int y = 0; y < std::min(a.height, b.height); ++y) {
-        for (int x = 0; x < std::min(a.width, b.width); ++x) {
-            n += channel_difference(a, x, y, b, x, y) > 40;
-        }
-    }
-    return n;
 }
 
 // Mode 8 from a shader folder; a broken edit and Ctrl+R: the error names the file and line on

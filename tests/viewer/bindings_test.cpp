@@ -45,6 +45,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('R'), kAlt, kMeshModes, {Command::ToggleDiagram}},
             {key_of('F'), kAlt, kMeshModes, {Command::CycleField}},
             {key_of('R'), kCtrl, kMeshModes, {Command::ReloadShaders}},
+            {key_of('F'), kAlt | kShift, kMeshModes, {Command::CycleColormap}},
             {key_of('V'), kShift, kMeshModes, {Command::Validate}},
             {key_of('L'), kAlt, kMeshModes, edit("loop_step")},
             // The local operations of polygon meshes (docs/spec.md §4).

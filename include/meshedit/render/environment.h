@@ -24,6 +24,12 @@ struct EnvironmentImage {
 /// box overhead.
 EnvironmentImage default_environment(int width = 512);
 
+/// The six faces of a cube map (+X, −X, +Y, −Y, +Z, −Z, in GL's order and orientation),
+/// each `size` × `size` RGB, resampled bilinearly from `image` at each texel's direction
+/// through the same θ/2π, φ/π mapping: what mode 7 samples, since a cube lookup costs a
+/// software rasteriser far less than the arc tangent and arc cosine per pixel.
+std::vector<std::vector<float>> cube_faces(const EnvironmentImage& image, int size);
+
 /// Reads an equirectangular image. 8-bit images are sRGB and are made linear; float images
 /// (HDR, EXR) are taken as they are. \throws IoError naming the file (unreadable, not about
 /// twice as wide as high, larger than 16384 pixels a side).

@@ -159,6 +159,7 @@ private:
     std::vector<std::uint32_t> side_colors_;
     bool has_edge_field_ = false;
     unsigned env_texture_ = 0;  ///< mode 7's environment, 0 until needed
+    unsigned env_cube_ = 0;     ///< the same as a cube map (mode 7 samples it)
     std::filesystem::path user_shader_dir_;
     std::string user_shader_error_;
     std::vector<std::uint32_t> triangle_faces_;  ///< face index per triangle

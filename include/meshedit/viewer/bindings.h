@@ -68,6 +68,7 @@ enum class Command {
     ToggleDiagram,    ///< the rewiring panel
     CycleField,       ///< the scalar field shown: off, then each of core/fields.h
     ReloadShaders,    ///< recompile every shader from disk (user shaders: modes 8, 9)
+    CycleColormap,    ///< the field's colour map: default, viridis, magma, diverging
     Screenshot,
     // History and files.
     Undo,
