@@ -80,13 +80,13 @@ vec3 matcap(vec3 n) {
 }
 
 // Mode 7: the mirror reflection of the view direction about the normal, looked up in the
-// environment. The equirectangular image (u = θ/2π, v = φ/π as in the CS184 handout) was
+// environment. The equirectangular image (u = theta/2pi, v = phi/pi as in the CS184 handout) was
 // resampled through that mapping into a cube map when it was loaded (environment.h): the same
-// picture, with no seam at θ = ±π and no arc tangent or arc cosine per pixel.
+// picture, with no seam at theta = +-pi and no arc tangent or arc cosine per pixel.
 vec3 envmap_reflection(vec3 n, vec3 v) {
     vec3 r = transpose(mat3(u_view)) * reflect(-v, n);
     vec3 c = texture(u_envcube, r).rgb * exp2(u_exposure);
-    // Highlights above 0.8 roll off towards 1 instead of clipping; then about sRGB (γ 2).
+    // Highlights above 0.8 roll off towards 1 instead of clipping; then about sRGB (gamma 2).
     c = mix(c, 0.8 + 0.2 * (1.0 - exp(-(c - 0.8) / 0.2)), step(0.8, c));
     return sqrt(clamp(c, 0.0, 1.0));
 }

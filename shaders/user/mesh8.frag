@@ -18,7 +18,7 @@ uniform vec3 u_base_color;    // the surface colour (Shading panel)
 uniform vec3 u_light_dir;     // towards the light, view space
 uniform vec3 u_light_color;
 uniform float u_ambient, u_diffuse, u_specular, u_shininess;
-uniform sampler2D u_envmap;   // the environment, equirectangular (u = θ/2π + ½, v = φ/π), unit 1
+uniform sampler2D u_envmap;   // the environment, equirectangular (u = theta/2pi + 1/2, v = phi/pi), unit 1
 uniform float u_exposure;     // stops
 uniform float u_time;         // seconds since the viewer started (0 headless)
 uniform bool u_has_selection; // something is selected
