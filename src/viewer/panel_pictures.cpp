@@ -174,6 +174,41 @@ void Panels::draw_field(Editor& editor, const FieldDisplay& field, PanelRequests
     }
 }
 
+// The field's legend in the view's bottom-right corner, as meshedit-render draws it: the
+// title and unit, the colour bar, the values at its ends. Shown with the info panel hidden too.
+void Panels::draw_field_legend(const FieldDisplay& field) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const FieldInfo& info = *field.info;
+    const std::string title =
+        std::string(info.title) + (info.unit.empty() ? "" : " (" + std::string(info.unit) + ")");
+    const float font = ImGui::GetFontSize();
+    const float width = std::max(200.0f * scale_, ImGui::CalcTextSize(title.c_str()).x);
+    const float bar = 0.8f * font;
+    const ImVec2 corner(viewport->WorkPos.x + viewport->WorkSize.x - width - font,
+                        viewport->WorkPos.y + viewport->WorkSize.y - 3.6f * font - bar);
+    draw->AddRectFilled(ImVec2(corner.x - 0.5f * font, corner.y - 0.4f * font),
+                        ImVec2(corner.x + width + 0.5f * font, corner.y + 2.6f * font + bar),
+                        IM_COL32(246, 246, 248, 220), 4.0f);
+    draw->AddText(corner, IM_COL32(30, 30, 40, 255), title.c_str());
+    const float top = corner.y + 1.2f * font;
+    constexpr int kSteps = 32;
+    for (int i = 0; i < kSteps; ++i) {
+        const float x0 = corner.x + width * static_cast<float>(i) / kSteps;
+        const float x1 = corner.x + width * static_cast<float>(i + 1) / kSteps;
+        const ImU32 left = rgba(colormap_color(field.coloring.map, double(i) / kSteps));
+        const ImU32 right = rgba(colormap_color(field.coloring.map, double(i + 1) / kSteps));
+        draw->AddRectFilledMultiColor(ImVec2(x0, top), ImVec2(x1, top + bar), left, right, right,
+                                      left);
+    }
+    char lo[32], hi[32];
+    std::snprintf(lo, sizeof lo, "%.3g", field.coloring.lo);
+    std::snprintf(hi, sizeof hi, "%.3g", field.coloring.hi);
+    draw->AddText(ImVec2(corner.x, top + bar + 0.2f * font), IM_COL32(30, 30, 40, 255), lo);
+    draw->AddText(ImVec2(corner.x + width - ImGui::CalcTextSize(hi).x, top + bar + 0.2f * font),
+                  IM_COL32(30, 30, 40, 255), hi);
+}
+
 void Panels::draw_shader_errors() {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x * 0.5f,

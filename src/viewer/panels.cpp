@@ -128,6 +128,9 @@ PanelRequests Panels::draw(Editor& editor, const FrameStats& stats, const std::s
     if (!shader_errors_.empty()) {
         draw_shader_errors();
     }
+    if (field.info != nullptr && editor.mode() != Mode::Curve) {
+        draw_field_legend(field);
+    }
     if (editor.view().show_help) {
         draw_help(editor.mode());
     }

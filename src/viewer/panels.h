@@ -95,8 +95,9 @@ private:
     void draw_info(Editor& editor, const FrameStats& stats, const FieldDisplay& field,
                    PanelRequests& requests);
     void draw_stencil(const Editor& editor);
-    void draw_diagram(const OpDiagram& diagram);  // panel_pictures.cpp
-    void draw_shader_errors();                    // same
+    void draw_diagram(const OpDiagram& diagram);        // panel_pictures.cpp
+    void draw_shader_errors();                          // same
+    void draw_field_legend(const FieldDisplay& field);  // same
     void draw_field(Editor& editor, const FieldDisplay& field, PanelRequests& requests);  // same
     void draw_help(Mode mode);
     void draw_status(const Editor& editor, const std::string& status, bool status_error);

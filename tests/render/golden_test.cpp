@@ -152,6 +152,9 @@ const std::vector<GoldenCase>& golden_cases() {
          "dae/teapot.dae",
          {"--shading", "9", "--shader-dir", "shaders/user"},
          "480x360"},
+        // Auto Smooth at 30°: the teapot stays smooth but its lid's and spout's rims, where
+        // faces turn by more than 30°, are lit crisply.
+        {"auto_smooth_teapot", "dae/teapot.dae", {"--auto-smooth", "30"}, "480x360"},
         {"torus_loop2", "dae/torus.dae", {"--ops", "loop:2", "--flat", "--camera", "30,40"}},
         {"creased_input", "dae/creased.dae", {"--wireframe"}},
         {"creased_loop3", "dae/creased.dae", {"--ops", "loop:3"}},
