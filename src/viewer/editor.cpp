@@ -216,9 +216,9 @@ std::optional<OpDiagram> rewiring_of(const Mesh& before, const Mesh& after,
             return std::nullopt;
         }
         return op_diagram(before, after, verb, ops::named_element(before, step));
-    } catch (const ops::SyntaxError&) {
-        return std::nullopt;  // a step the viewer wrote always parses; no diagram otherwise
-    } catch (const ops::OpError&) {
+    } catch (const std::exception&) {
+        // A step the viewer wrote always parses and names a live element; whatever goes wrong
+        // in drawing its diagram must not take the edit, which is done, down with it.
         return std::nullopt;
     }
 }
