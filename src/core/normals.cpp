@@ -307,25 +307,6 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh) {
     return out;
 }
 
-bool splits_normals(const Mesh& mesh, Edge e, const NormalSplit& split) {
-    if (mesh.is_deleted(e) || mesh.is_boundary(e)) {
-        return false;
-    }
-    if (split.creases) {
-        const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
-        if (crease && crease[e] != 0) {
-            return true;
-        }
-    }
-    if (split.auto_smooth_deg) {
-        const Vec3 a = face_normal(mesh, mesh.face(e, 0));
-        const Vec3 b = face_normal(mesh, mesh.face(e, 1));
-        const double angle = std::acos(std::clamp(dot(a, b), -1.0, 1.0)) * 180.0 / M_PI;
-        return angle > *split.auto_smooth_deg;
-    }
-    return false;
-}
-
 // Around v, clockwise from a sharp (or boundary) edge: the faces up to the next sharp edge
 // form a wedge. Corners are named by their incoming halfedge (to_vertex = v, in the face).
 bool compute_corner_normals(const Mesh& mesh, const NormalSplit& split,

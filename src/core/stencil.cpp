@@ -105,7 +105,7 @@ std::string vertex_rule(const Ring& ring) {
 }
 
 // The rules both schemes share: a crease or boundary vertex, a corner, an isolated vertex.
-// Returns false for a smooth vertex or a dart (the scheme's own weights).
+// Returns false for a smooth vertex or a dart (the scheme's own weights; a dart says so).
 bool sharp_vertex_stencil(const Vertex v, const Ring& ring, Terms& terms, Stencil& out) {
     if (ring.neighbours.empty() ||
         loop_rules::classify(ring.sharp_ends.size()) == loop_rules::VertexRule::Corner) {
@@ -125,7 +125,24 @@ bool sharp_vertex_stencil(const Vertex v, const Ring& ring, Terms& terms, Stenci
         out.formula.push_back("p' = 3/4·p + 1/8·(a + b)");
         return true;
     }
+    if (ring.sharp_ends.size() == 1) {
+        out.formula.push_back("one sharp edge (a dart): the interior rule");
+    }
     return false;
+}
+
+// The rule both schemes share for a boundary or crease edge: its midpoint. Returns false for
+// a smooth edge (the scheme's own weights).
+bool sharp_edge_stencil(const Mesh& mesh, Edge e, Terms& terms, Stencil& out) {
+    const bool boundary = mesh.is_boundary(e);
+    if (!boundary && !edge_is_crease(mesh, e)) {
+        return false;
+    }
+    out.rule = boundary ? "boundary edge" : "crease edge";
+    terms.add(mesh.vertex(e, 1), 0.5);
+    terms.add(mesh.vertex(e, 0), 0.5);
+    out.formula.push_back("a sharp edge: its midpoint, p' = 1/2·(A + B)");
+    return true;
 }
 
 void loop_vertex(const Mesh& mesh, Vertex v, LoopWeights weights, Terms& terms, Stencil& out) {
@@ -142,9 +159,6 @@ void loop_vertex(const Mesh& mesh, Vertex v, LoopWeights weights, Terms& terms, 
         terms.add(q, u);
     }
     const std::string ns = std::to_string(n);
-    if (out.rule == "dart") {
-        out.formula.push_back("one sharp edge (a dart): the interior rule");
-    }
     if (weights == LoopWeights::Warren) {
         out.formula.push_back(n == 3 ? "n = 3: u = 3/16 = " + num(u)
                                      : "n = " + ns + ": u = 3/(8n) = 3/" + std::to_string(8 * n) +
@@ -157,16 +171,11 @@ void loop_vertex(const Mesh& mesh, Vertex v, LoopWeights weights, Terms& terms, 
 }
 
 void loop_edge(const Mesh& mesh, Edge e, Terms& terms, Stencil& out) {
-    const Vertex a = mesh.vertex(e, 1);
-    const Vertex b = mesh.vertex(e, 0);
-    const bool boundary = mesh.is_boundary(e);
-    if (boundary || edge_is_crease(mesh, e)) {
-        out.rule = boundary ? "boundary edge" : "crease edge";
-        terms.add(a, 0.5);
-        terms.add(b, 0.5);
-        out.formula.push_back("a sharp edge: its midpoint, p' = 1/2·(A + B)");
+    if (sharp_edge_stencil(mesh, e, terms, out)) {
         return;
     }
+    const Vertex a = mesh.vertex(e, 1);
+    const Vertex b = mesh.vertex(e, 0);
     for (unsigned i = 0; i < 2; ++i) {
         const Face f = mesh.face(e, i);
         if (!mesh.is_triangle(f)) {
@@ -202,9 +211,6 @@ void catmark_vertex(const Mesh& mesh, Vertex v, Terms& terms, Stencil& out) {
     for (Face f : ring.faces) {
         terms.add_face(mesh, f, 1.0 / (n * n));
     }
-    if (out.rule == "dart") {
-        out.formula.push_back("one sharp edge (a dart): the interior rule");
-    }
     out.formula.push_back("n = " + std::to_string(ring.neighbours.size()) +
                           ": p' = (n - 2)/n·p + (sum(q) + sum(F))/n²");
     out.formula.push_back("= " + num((n - 2.0) / n) + "·p + " + num(1.0 / (n * n)) +
@@ -212,16 +218,11 @@ void catmark_vertex(const Mesh& mesh, Vertex v, Terms& terms, Stencil& out) {
 }
 
 void catmark_edge(const Mesh& mesh, Edge e, Terms& terms, Stencil& out) {
-    const Vertex a = mesh.vertex(e, 1);
-    const Vertex b = mesh.vertex(e, 0);
-    const bool boundary = mesh.is_boundary(e);
-    if (boundary || edge_is_crease(mesh, e)) {
-        out.rule = boundary ? "boundary edge" : "crease edge";
-        terms.add(a, 0.5);
-        terms.add(b, 0.5);
-        out.formula.push_back("a sharp edge: its midpoint, p' = 1/2·(A + B)");
+    if (sharp_edge_stencil(mesh, e, terms, out)) {
         return;
     }
+    const Vertex a = mesh.vertex(e, 1);
+    const Vertex b = mesh.vertex(e, 0);
     out.rule = "interior edge";
     terms.add(a, 0.25);
     terms.add(b, 0.25);

@@ -459,7 +459,7 @@ void App::apply(const Outcome& outcome) {
         cursor_moved_ = true;
     }
     if (c & (kTopology | kGeometry | kDocument | kDisplay | kSelection)) {
-        refresh_field();
+        refresh_field((c & (kTopology | kGeometry | kDocument)) != 0);
     }
     if ((c & kDisplay) && !camera_.orthographic && camera_.trackball != editor_.view().trackball) {
         camera_.set_trackball(editor_.view().trackball);

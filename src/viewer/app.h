@@ -73,9 +73,10 @@ private:
     /// Uploads the overlay: cached boundary/crease edges (recomputed if `features_changed`),
     /// control nets or the curve, hover and selection highlights.
     void rebuild_overlay(bool features_changed = false);
-    /// Recomputes the scalar field shown (Alt+F) for the current mesh and selection and
-    /// colours the surface by it, or clears it (app_shading.cpp).
-    void refresh_field();
+    /// Recomputes the scalar field shown (Alt+F) and colours the surface by it, or clears
+    /// it (app_shading.cpp): when `mesh_changed` (an upload also drops the colours), else
+    /// only if the field, its colour settings or distance's source vertex changed.
+    void refresh_field(bool mesh_changed = false);
     void reset_camera();
     /// Centres the camera on the selection, close enough that it fills about a third of the
     /// view.

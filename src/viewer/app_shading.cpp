@@ -89,7 +89,7 @@ RenderOptions App::frame_options() {
     return options;
 }
 
-void App::refresh_field() {
+void App::refresh_field(bool mesh_changed) {
     const ViewState& view = editor_.view();
     if (view.field == nullptr || !mesh_mode() || !scene_->has_mesh()) {
         field_ = {};
@@ -99,10 +99,19 @@ void App::refresh_field() {
     const Mesh& mesh = editor_.mesh();
     FieldOptions options;
     const ElementRef& selected = editor_.selection();
-    options.source = selected.kind == ElementRef::Kind::Vertex && is_live(mesh, selected)
-                         ? Vertex(selected.index)
-                         : Vertex(0);
+    const bool distance = view.field->name == "distance";
+    options.source =
+        distance && selected.kind == ElementRef::Kind::Vertex && is_live(mesh, selected)
+            ? Vertex(selected.index)
+            : Vertex(0);
+    // A click or a display toggle leaves the values as they are: O(mesh) saved per event.
+    if (!mesh_changed && field_.info == view.field && field_.source == options.source &&
+        field_.clip == view.field_clip && field_.colormap == view.colormap) {
+        return;
+    }
     field_.info = view.field;
+    field_.clip = view.field_clip;
+    field_.colormap = view.colormap;
     field_.source = options.source;
     field_.values = compute_field(mesh, *view.field, options);
     field_.stats = field_stats(field_.values);

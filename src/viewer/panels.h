@@ -34,6 +34,9 @@ struct FieldDisplay {
     FieldColoring coloring;
     FieldStats stats;
     Vertex source;  ///< distance: where it is measured from
+    /// The settings it was computed with (ViewState::field_clip, colormap).
+    float clip = 0.0f;
+    std::optional<ColorMap> colormap;
 };
 
 /// What the user asked for in a panel this frame.

@@ -49,9 +49,6 @@ struct NormalSplit {
     std::optional<double> auto_smooth_deg;
 };
 
-/// True if `e` splits smooth shading under `split` (a live edge with two faces).
-bool splits_normals(const Mesh& mesh, Edge e, const NormalSplit& split);
-
 /// Area-weighted normals per face corner, indexed by halfedge: `out[h]` is the normal of the
 /// corner at to_vertex(h) in face(h). Around a vertex the sharp edges cut its faces into
 /// wedges; each corner gets the normalised sum of the area vectors of its wedge. A vertex on
