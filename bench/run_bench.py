@@ -57,6 +57,8 @@ DEFAULT_CONFIGS = {
                                                         "collapse_edge", "collapse_face")
        for size in ("10k", "100k", "1m")]
     + [(f"extrude_all_faces_{size}", "meshedit") for size in ("10k", "100k", "1m")],
+    "bench_editor": [("editor_edits_torus_1m", "all"), ("editor_edits_scan_1m", "all"),
+                     ("editor_loop_1m", "core"), ("editor_loop_1m", "viewer")],
     "bench_catmark": [
         (job, impl)
         for job in ["cc_1m_1level"] + [f"cc_100k_levels_{k}" for k in range(1, 4)]
@@ -64,7 +66,7 @@ DEFAULT_CONFIGS = {
     ],
 }
 PROGRAMS = ["bench_loop", "bench_catmark", "bench_simplify", "bench_remesh", "bench_ops",
-            "bench_io_draw", "bench_build", "bench_local_ops"]
+            "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor"]
 QEM_JOBS = ("qem_torus_1m_to_100k", "qem_bunny_1m_to_100k")
 BUILD_SIZES = ("100k", "300k", "1m")
 # bench_local_ops (issue 16): no anchor, no target; the cost per op at each size, side by side.
@@ -110,6 +112,13 @@ JOB_TITLES = {
     "dissolves_collapses_1e6_quad100k": "1,000,000 random dissolves and collapses "
     "(dissolve_edge, dissolve_vertex, collapse, collapse_face) on the 100k-face quad-dominant "
     "torus; a fresh copy, untimed, whenever it falls below half its faces",
+    "editor_edits_torus_1m": "The viewer's command layer (viewer::Editor) on the 1M-triangle "
+    "torus: random F/S/C on a selected live edge (`command`: with the undo record, no GPU; "
+    "`command_upload`: plus the renderer's buffer update), then undo and redo of every edit "
+    "the history still holds; p50 is `median_ms`, `p99_ms` the 99th percentile",
+    "editor_edits_scan_1m": "The same on bunny00 Loop-subdivided twice (1,206,530 triangles)",
+    "editor_loop_1m": "Loop on the 1M torus: `core` loop_subdivide(), `viewer` the L key "
+    "through viewer::Editor plus the upload of the new buffers (target: ≤ 2× core + upload)",
     "draw_1m_triangles": "Headless draw of a 1M-triangle torus at 1280×800 (OSMesa); MeshEdit's "
     "smooth Blinn-Phong renderer (which culls back faces of closed outward meshes) vs a trivial "
     "shader over the same vertex buffer (`bare`), and the trivial shader with back faces culled "
