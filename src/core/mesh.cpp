@@ -37,6 +37,8 @@ Mesh& Mesh::operator=(Mesh&& other) noexcept {
 }
 
 void Mesh::take_from(Mesh& other) noexcept {
+    untracked();  // a recorded mesh replaced wholesale, or moved away from
+    other.untracked();
     vprops_ = std::move(other.vprops_);
     hprops_ = std::move(other.hprops_);
     eprops_ = std::move(other.eprops_);
@@ -135,6 +137,7 @@ void Mesh::reserve(std::size_t nv, std::size_t ne, std::size_t nf) {
 }
 
 void Mesh::resize(std::size_t nv, std::size_t ne, std::size_t nf) {
+    untracked();
     vprops_.resize(nv);
     eprops_.resize(ne);
     hprops_.resize(2 * ne);
@@ -215,6 +218,7 @@ Edge Mesh::find_edge(Vertex a, Vertex b) const {
 }
 
 void Mesh::mark_deleted(Vertex v) {
+    touch(v);
     if (vdeleted_[v] == 0) {
         vdeleted_[v] = 1;
         ++n_deleted_vertices_;
@@ -222,6 +226,7 @@ void Mesh::mark_deleted(Vertex v) {
 }
 
 void Mesh::mark_deleted(Edge e) {
+    touch(e);
     if (edeleted_[e] == 0) {
         edeleted_[e] = 1;
         ++n_deleted_edges_;
@@ -229,6 +234,7 @@ void Mesh::mark_deleted(Edge e) {
 }
 
 void Mesh::mark_deleted(Face f) {
+    touch(f);
     if (fdeleted_[f] == 0) {
         fdeleted_[f] = 1;
         ++n_deleted_faces_;
@@ -269,6 +275,7 @@ H remap(const std::vector<H>& map, H h) {
 }  // namespace
 
 void Mesh::garbage_collection(GarbageCollectionMap* out) {
+    untracked();
     GarbageCollectionMap local;
     GarbageCollectionMap& map = out != nullptr ? *out : local;
 

@@ -13,14 +13,38 @@
 namespace meshedit {
 
 struct MeshArrays {
-    static memory::Array<Halfedge>& next(Mesh& m) { return m.hnext_.vector(); }
-    static memory::Array<Halfedge>& prev(Mesh& m) { return m.hprev_.vector(); }
-    static memory::Array<Vertex>& to_vertex(Mesh& m) { return m.hvertex_.vector(); }
-    static memory::Array<Face>& face(Mesh& m) { return m.hface_.vector(); }
-    static memory::Array<Halfedge>& vertex_halfedge(Mesh& m) { return m.vhalfedge_.vector(); }
-    static memory::Array<Halfedge>& face_halfedge(Mesh& m) { return m.fhalfedge_.vector(); }
-    static memory::Array<std::uint8_t>& edge_deleted(Mesh& m) { return m.edeleted_.vector(); }
-    static memory::Array<std::uint8_t>& face_deleted(Mesh& m) { return m.fdeleted_.vector(); }
+    static memory::Array<Halfedge>& next(Mesh& m) {
+        m.untracked();
+        return m.hnext_.vector();
+    }
+    static memory::Array<Halfedge>& prev(Mesh& m) {
+        m.untracked();
+        return m.hprev_.vector();
+    }
+    static memory::Array<Vertex>& to_vertex(Mesh& m) {
+        m.untracked();
+        return m.hvertex_.vector();
+    }
+    static memory::Array<Face>& face(Mesh& m) {
+        m.untracked();
+        return m.hface_.vector();
+    }
+    static memory::Array<Halfedge>& vertex_halfedge(Mesh& m) {
+        m.untracked();
+        return m.vhalfedge_.vector();
+    }
+    static memory::Array<Halfedge>& face_halfedge(Mesh& m) {
+        m.untracked();
+        return m.fhalfedge_.vector();
+    }
+    static memory::Array<std::uint8_t>& edge_deleted(Mesh& m) {
+        m.untracked();
+        return m.edeleted_.vector();
+    }
+    static memory::Array<std::uint8_t>& face_deleted(Mesh& m) {
+        m.untracked();
+        return m.fdeleted_.vector();
+    }
 
     static const memory::Array<Halfedge>& next(const Mesh& m) { return m.hnext_.vector(); }
     static const memory::Array<Vertex>& to_vertex(const Mesh& m) { return m.hvertex_.vector(); }

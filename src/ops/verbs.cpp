@@ -34,7 +34,7 @@ StepResult local(ElementRef selected, std::string message, bool topology = true)
 }
 
 // The result of an op that deletes elements is named by its size, not its index: the viewer
-// renumbers after every edit, so an index in its status line would name another element.
+// renumbers when it saves, so an index in its status line could later name another element.
 std::string corners(const Mesh& mesh, Face f) {
     return std::to_string(mesh.valence(f)) + " corners";
 }
@@ -213,6 +213,7 @@ std::string check_crease(const Mesh& mesh, const Step& step) {
 StepResult run_crease(Mesh& mesh, const Step& step, const RunOptions&) {
     const Edge e = named_edge(mesh, step);
     auto crease = mesh.property<Edge, std::uint8_t>(kCreaseProperty, 0);
+    mesh.touch(e);  // a write through the property's handle: tell a recorded edit
     crease[e] = crease[e] != 0 ? 0 : 1;
     return local(
         ElementRef::edge(e),
@@ -243,8 +244,9 @@ StepResult run_move(Mesh& mesh, const Step& step, const RunOptions&) {
 
 // ------------------------------------------------------------------ whole-mesh operations
 
-// compact: the numbering a file gets, now. The viewer renumbers after every edit that deletes
-// elements and records this step, so a recorded session names the same elements on replay.
+// compact: the numbering a file gets, now. The viewer renumbers when it saves and after a
+// whole-mesh edit (local edits leave tombstones) and records this step, so a recorded session
+// names the same elements on replay.
 std::string check_compact(const Mesh&, const Step&) {
     return {};
 }
@@ -584,9 +586,9 @@ constexpr std::array kVerbs{
          run_flip_orientation},
     Verb{"compact", kWholeMesh, 0, 0, kNoDefaults, "compact",
          "renumbers vertices, edges and faces from 0 without the deleted ones, as a written "
-         "file numbers them (the viewer does it after every edit that deletes elements, and "
-         "records it in the session)",
-         "renumber densely (the viewer does it after every edit)", check_compact, run_compact},
+         "file numbers them (the viewer does it when it saves and after a whole-mesh edit, and "
+         "records it in the session; local edits leave deleted elements as tombstones)",
+         "renumber densely (the viewer: on saving)", check_compact, run_compact},
 };
 // clang-format on
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <exception>
 #include <new>
+#include <stdexcept>
 #include <utility>
 
 #include "meshedit/ops/ops.h"
@@ -202,6 +203,9 @@ Outcome Editor::run_display(Action action) {
 
 namespace {
 
+// Above this the rewiring diagram of a local edit is skipped: it needs a copy of the mesh.
+constexpr std::size_t kDiagramMaxFaces = 200000;
+
 // The diagram of an edit that was one local operation on the connectivity; none for
 // whole-mesh steps, several steps, drags (move) and crease marks.
 std::optional<OpDiagram> rewiring_of(const Mesh& before, const Mesh& after,
@@ -226,9 +230,12 @@ std::optional<OpDiagram> rewiring_of(const Mesh& before, const Mesh& after,
 }  // namespace
 
 Outcome Editor::edit(const std::function<std::string()>& check,
-                     const std::function<Edited(Document&)>& apply) {
+                     const std::function<Edited(Document&)>& apply, bool local) {
     if (std::string reason = check(); !reason.empty()) {
         return refused(std::move(reason));
+    }
+    if (local && doc_.mode != Mode::Curve) {
+        return edit_recorded(apply);
     }
     Document before = doc_;
     Edited edited;
@@ -244,6 +251,65 @@ Outcome Editor::edit(const std::function<std::string()>& check,
     // Before collect_garbage renumbers: the diagram names elements by their indices.
     diagram_ = rewiring_of(before.mesh, doc_.mesh, edited.steps);
     history_.push(std::move(before));
+    settle(edited);
+    if (compact()) {
+        doc_.session.emplace_back("compact");
+    }
+    return {edited.changes, std::move(edited.message)};
+}
+
+Outcome Editor::edit_recorded(const std::function<Edited(Document&)>& apply) {
+    DocumentChange change;
+    change.selection_before = doc_.selection;
+    change.also_before = doc_.also_selected;
+    change.revision_before = doc_.revision;
+    const std::size_t session_before = doc_.session.size();
+    // The rewiring diagram compares the mesh before with the mesh after: a copy, so only
+    // where a copy costs little (a teaching-sized mesh).
+    std::optional<Mesh> before;
+    if (doc_.mesh.n_faces() <= kDiagramMaxFaces) {
+        before = doc_.mesh;
+    }
+    Edited edited;
+    {
+        MeshRecorder recorder(doc_.mesh);
+        const auto roll_back = [&](std::string reason) {
+            recorder.roll_back();
+            doc_.selection = change.selection_before;
+            doc_.also_selected = change.also_before;
+            return refused(std::move(reason));
+        };
+        try {
+            edited = apply(doc_);
+        } catch (const std::bad_alloc&) {
+            return roll_back("not enough memory: nothing changed");
+        } catch (const std::exception& e) {
+            return roll_back(e.what());
+        }
+        try {
+            change.mesh = recorder.finish();
+        } catch (const std::logic_error& e) {
+            // A verb wrote what its recording cannot see (a bug the recorded-edit tests are
+            // there to catch): the edit stands, but nothing before it can be undone.
+            history_.clear();
+            edited.message += std::string(" — cannot be undone: ") + e.what();
+            diagram_.reset();
+            settle(edited);
+            return {edited.changes, std::move(edited.message)};
+        }
+    }
+    diagram_ = before ? rewiring_of(*before, doc_.mesh, edited.steps) : std::nullopt;
+    settle(edited);
+    change.selection_after = doc_.selection;
+    change.also_after = doc_.also_selected;
+    change.session_added.assign(doc_.session.begin() + static_cast<std::ptrdiff_t>(session_before),
+                                doc_.session.end());
+    change.revision_after = doc_.revision;
+    history_.push(std::move(change));
+    return {edited.changes, std::move(edited.message)};
+}
+
+void Editor::settle(Edited& edited) {
     doc_.revision = next_revision_++;
     quit_armed_ = false;
     replace_armed_ = false;
@@ -255,10 +321,6 @@ Outcome Editor::edit(const std::function<std::string()>& check,
         hover_ = {};
     }
     doc_.session.insert(doc_.session.end(), edited.steps.begin(), edited.steps.end());
-    if (compact()) {
-        doc_.session.emplace_back("compact");
-    }
-    return {edited.changes, std::move(edited.message)};
 }
 
 void Editor::snapshot() {

@@ -160,9 +160,13 @@ Outcome Editor::write_to(const std::filesystem::path& path) {
         } else if (patches) {
             write_bez(doc_.patches, path);
         } else {
-            // Collect first, so the file numbers elements as the info panel showed them.
+            // Collect the tombstones local edits left first, so the file numbers elements as
+            // the info panel shows them from now on. Renumbering is an undo step of its own
+            // (the recorded changes before it name the old numbers) and a session step.
             if (doc_.mesh.has_garbage()) {
+                snapshot();
                 compact();
+                doc_.session.emplace_back("compact");
                 outcome.changes |= kTopology | kSelection;
             }
             write_mesh(doc_.mesh, path);  // atomic: temporary file + rename

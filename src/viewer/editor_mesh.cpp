@@ -92,7 +92,8 @@ Outcome Editor::edit_steps(const std::vector<ops::Step>& steps, std::string_view
             edited.steps = run.steps;
             edited.changes = topology ? kTopology | kSelection : kSelection | kDisplay;
             return edited;
-        });
+        },
+        /*local=*/true);
 }
 
 bool Editor::compact() {

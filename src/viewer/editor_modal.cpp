@@ -263,9 +263,6 @@ Outcome Editor::apply_modal() {
             m.steps = run.steps;
         }
         doc_ = std::move(doc);
-        if (compact()) {
-            m.steps.emplace_back("compact");
-        }
         hover_ = {};
         return {kTopology | kSelection, modal_status()};
     }

@@ -1,4 +1,4 @@
-// Undo/redo by whole-document snapshots (see history.h).
+// Undo/redo by recorded changes and whole-document snapshots (see history.h).
 
 #include "meshedit/viewer/history.h"
 
@@ -32,42 +32,85 @@ std::size_t Document::bytes() const {
     return n;
 }
 
+// The selection is not part of the change: like a snapshot, each side keeps the selection
+// it had when the document last left it (a click after the edit survives undo and redo).
+void DocumentChange::undo(Document& doc) {
+    mesh.undo(doc.mesh);
+    selection_after = std::exchange(doc.selection, selection_before);
+    also_after = std::exchange(doc.also_selected, also_before);
+    doc.session.resize(doc.session.size() - session_added.size());
+    doc.revision = revision_before;
+}
+
+void DocumentChange::redo(Document& doc) {
+    mesh.redo(doc.mesh);
+    selection_before = std::exchange(doc.selection, selection_after);
+    also_before = std::exchange(doc.also_selected, also_after);
+    doc.session.insert(doc.session.end(), session_added.begin(), session_added.end());
+    doc.revision = revision_after;
+}
+
+std::size_t DocumentChange::bytes() const {
+    std::size_t n = sizeof(*this) + mesh.bytes() +
+                    (also_before.capacity() + also_after.capacity()) * sizeof(ElementRef);
+    for (const std::string& step : session_added) {
+        n += sizeof(std::string) + step.capacity();
+    }
+    return n;
+}
+
+std::size_t History::bytes_of(const Step& step) {
+    return std::visit([](const auto& s) { return s.bytes(); }, step);
+}
+
 void History::push(Document before) {
-    for (const Document& d : redo_) {
-        bytes_ -= d.bytes();
+    push_step(std::move(before));
+}
+
+void History::push(DocumentChange change) {
+    push_step(std::move(change));
+}
+
+void History::push_step(Step step) {
+    for (const Step& s : redo_) {
+        bytes_ -= bytes_of(s);
     }
     redo_.clear();
-    bytes_ += before.bytes();
-    undo_.push_back(std::move(before));
+    bytes_ += bytes_of(step);
+    undo_.push_back(std::move(step));
     trim();
+}
+
+template <class From, class To>
+bool History::move_step(From& from, To& to, Document& current, bool forward) {
+    if (from.empty()) {
+        return false;
+    }
+    Step step = std::move(from.back());
+    from.pop_back();
+    bytes_ -= bytes_of(step);
+    if (auto* change = std::get_if<DocumentChange>(&step)) {
+        if (forward) {
+            change->redo(current);
+        } else {
+            change->undo(current);
+        }
+    } else {
+        // A snapshot: the current document becomes the step that leads back to it.
+        std::swap(std::get<Document>(step), current);
+    }
+    bytes_ += bytes_of(step);
+    to.push_back(std::move(step));
+    trim();
+    return true;
 }
 
 bool History::undo(Document& current) {
-    if (undo_.empty()) {
-        return false;
-    }
-    Document previous = std::move(undo_.back());
-    undo_.pop_back();
-    bytes_ -= previous.bytes();
-    bytes_ += current.bytes();
-    redo_.push_back(std::move(current));
-    current = std::move(previous);
-    trim();
-    return true;
+    return move_step(undo_, redo_, current, false);
 }
 
 bool History::redo(Document& current) {
-    if (redo_.empty()) {
-        return false;
-    }
-    Document next = std::move(redo_.back());
-    redo_.pop_back();
-    bytes_ -= next.bytes();
-    bytes_ += current.bytes();
-    undo_.push_back(std::move(current));
-    current = std::move(next);
-    trim();
-    return true;
+    return move_step(redo_, undo_, current, true);
 }
 
 void History::clear() {
@@ -82,13 +125,13 @@ void History::trim() {
     };
     // The oldest undo steps go first, down to one.
     while (undo_.size() > 1 && over()) {
-        bytes_ -= undo_.front().bytes();
+        bytes_ -= bytes_of(undo_.front());
         undo_.pop_front();
     }
     // Only possible after undo/redo moved a larger document onto the redo stack: drop the
     // redo steps furthest from the present, keeping the next one.
     while (redo_.size() > 1 && over()) {
-        bytes_ -= redo_.front().bytes();
+        bytes_ -= bytes_of(redo_.front());
         redo_.erase(redo_.begin());
     }
 }

@@ -48,26 +48,25 @@ TEST(Session, ExportedFileReplaysAndUndoTakesStepsBack) {
     ed.select(ElementRef::edge(edge_of(m, 0, 6)));
     ASSERT_FALSE(ed.run(edit("flip")).refused);
     ed.select(ElementRef::edge(edge_of(m, 1, 3)));
-    ASSERT_FALSE(ed.run(edit("collapse")).refused);  // deletes: a compact follows
+    ASSERT_FALSE(ed.run(edit("collapse")).refused);  // deletes: tombstones, indices stay
     ed.select(ElementRef::vertex(Vertex(2)));
     ASSERT_TRUE(ed.begin_drag());
     ed.drag_to({0.5, 2.0, -0.25});
     ed.drag_to({0.75, 2.0, -0.25});
     ed.end_drag();
     ASSERT_FALSE(ed.run(edit("loop")).refused);
-    EXPECT_EQ(ed.document().session,
-              (std::vector<std::string>{"flip:0-6", "collapse:3-1", "compact",
-                                        "move:v2:0.75,2,-0.25", "loop"}));
+    EXPECT_EQ(ed.document().session, (std::vector<std::string>{"flip:0-6", "collapse:3-1",
+                                                               "move:v2:0.75,2,-0.25", "loop"}));
     // Undo takes the last edit's steps back; redo brings them again.
     ASSERT_FALSE(ed.run({Command::Undo}).refused);
-    EXPECT_EQ(ed.document().session.size(), 4u);
+    EXPECT_EQ(ed.document().session.size(), 3u);
     ASSERT_FALSE(ed.run({Command::Redo}).refused);
     EXPECT_EQ(ed.document().session.back(), "loop");
 
     const Outcome out = ed.export_session(dir / "cube.ops");
     ASSERT_FALSE(out.refused) << out.message;
     EXPECT_EQ(out.message,
-              "exported 5 steps to cube.ops (meshedit convert IN OUT --ops @cube.ops replays "
+              "exported 4 steps to cube.ops (meshedit convert IN OUT --ops @cube.ops replays "
               "them)");
     const std::string text = read_file(dir / "cube.ops");
     EXPECT_EQ(ops::session_header_value(text, "input"), (dir / "cube.dae").string());

@@ -43,6 +43,8 @@ struct GarbageCollectionMap {
 /// Handle lifetime: handles to live elements stay valid across every operation (local ops,
 /// property changes, copies and moves of the mesh) and are invalidated only by
 /// garbage_collection(), which compacts the arrays and reports the old-to-new maps.
+class MeshRecorder;
+
 class Mesh {
 public:
     Mesh();
@@ -121,15 +123,56 @@ public:
     /// Clockwise rotation around from_vertex(h).
     Halfedge cw_rotated(Halfedge h) const { return next(twin(h)); }
 
-    void set_halfedge(Vertex v, Halfedge h) { vhalfedge_[v] = h; }
-    void set_halfedge(Face f, Halfedge h) { fhalfedge_[f] = h; }
+    // Every setter tells a recorded edit (mesh_change.h) what it is about to overwrite.
+    void set_halfedge(Vertex v, Halfedge h) {
+        touch(v);
+        vhalfedge_[v] = h;
+    }
+    void set_halfedge(Face f, Halfedge h) {
+        touch(f);
+        fhalfedge_[f] = h;
+    }
     /// Sets `next(h) = n` and `prev(n) = h` together, so the two never disagree.
     void set_next(Halfedge h, Halfedge n) {
+        touch(h);
+        touch(n);
         hnext_[h] = n;
         hprev_[n] = h;
     }
-    void set_vertex(Halfedge h, Vertex v) { hvertex_[h] = v; }
-    void set_face(Halfedge h, Face f) { hface_[h] = f; }
+    void set_vertex(Halfedge h, Vertex v) {
+        touch(h);
+        hvertex_[h] = v;
+    }
+    void set_face(Halfedge h, Face f) {
+        touch(h);
+        hface_[h] = f;
+    }
+
+    /// While an edit is recorded (MeshRecorder, mesh_change.h): the element's values, in
+    /// every property of its kind, are about to change. The setters above, position() and
+    /// mark_deleted() call it; code that writes a property through its handle (a crease
+    /// mark) calls it first. No effect when nothing records. A halfedge touches its edge too.
+    void touch(Vertex v) {
+        if (recorder_ != nullptr) [[unlikely]] {
+            record(0, v.idx());
+        }
+    }
+    void touch(Halfedge h) {
+        if (recorder_ != nullptr) [[unlikely]] {
+            record(1, h.idx());
+            record(2, h.idx() >> 1);
+        }
+    }
+    void touch(Edge e) {
+        if (recorder_ != nullptr) [[unlikely]] {
+            record(2, e.idx());
+        }
+    }
+    void touch(Face f) {
+        if (recorder_ != nullptr) [[unlikely]] {
+            record(3, f.idx());
+        }
+    }
 
     // ----------------------------------------------------------------- queries
 
@@ -186,10 +229,21 @@ public:
     // ----------------------------------------------------------------- geometry
 
     const Vec3& position(Vertex v) const { return vpoint_[v]; }
-    Vec3& position(Vertex v) { return vpoint_[v]; }
-    VertexProperty<Vec3> positions() { return vpoint_; }
+    Vec3& position(Vertex v) {
+        touch(v);
+        return vpoint_[v];
+    }
+    /// Whole-array access: not allowed while an edit is recorded (its writes would be
+    /// unseen; MeshRecorder::finish() then throws).
+    VertexProperty<Vec3> positions() {
+        untracked();
+        return vpoint_;
+    }
     const memory::Array<Vec3>& position_vector() const { return vpoint_.vector(); }
-    memory::Array<Vec3>& position_vector() { return vpoint_.vector(); }
+    memory::Array<Vec3>& position_vector() {
+        untracked();
+        return vpoint_.vector();
+    }
     BoundingBox bounds() const;
 
     // ----------------------------------------------------------------- ranges
@@ -243,6 +297,7 @@ public:
     template <class H, class T>
     void remove_property(Property<H, T>& p) {
         MESHEDIT_ASSERT(!is_connectivity(p.array()));
+        removing(p.array());
         container<H>().remove(p.array());
         p = Property<H, T>();
     }
@@ -270,11 +325,24 @@ private:
         }
     }
     bool is_connectivity(const BasePropertyArray* array) const;
+    friend class MeshRecorder;
+    friend class MeshChange;
+    friend bool bitwise_equal(const Mesh& a, const Mesh& b, std::string* why);
+    /// Out of line, so the setters stay small: `kind` 0 vertex, 1 halfedge, 2 edge, 3 face.
+    void record(int kind, std::uint32_t index);
+    /// A write the recorder cannot see is coming (whole arrays, renumbering, replacement).
+    void untracked() {
+        if (recorder_ != nullptr) [[unlikely]] {
+            record(-1, 0);
+        }
+    }
     /// Moves `other`'s arrays here and leaves `other` a valid empty mesh.
     void take_from(Mesh& other) noexcept;
     /// Resets every container to the connectivity properties only, at size 0.
     void add_connectivity();
     void bind_connectivity();
+    /// A recorded edit may remove only properties it added itself (scratch data).
+    void removing(const BasePropertyArray* array);
     void count_deleted();
 
     PropertyContainer vprops_;
@@ -299,6 +367,7 @@ private:
     std::size_t n_deleted_vertices_ = 0;
     std::size_t n_deleted_edges_ = 0;
     std::size_t n_deleted_faces_ = 0;
+    MeshRecorder* recorder_ = nullptr;  ///< the edit being recorded; never copied or moved
 };
 
 /// RAII temporary property for algorithm scratch data: removed when the scope ends, also

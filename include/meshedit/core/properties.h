@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -39,6 +40,11 @@ public:
     virtual std::unique_ptr<BasePropertyArray> clone() const = 0;
     virtual const std::type_info& type() const = 0;
     virtual std::size_t bytes() const = 0;
+    /// Bytes of one element, and its raw copy out of and back into the array (for recorded
+    /// edits, mesh_change.h: every element type is trivially copyable).
+    virtual std::size_t element_bytes() const = 0;
+    virtual void save(std::size_t i, std::byte* out) const = 0;
+    virtual void load(std::size_t i, const std::byte* in) = 0;
 
     const std::string& name() const { return name_; }
 
@@ -51,6 +57,7 @@ private:
 template <class T>
 class PropertyArray final : public BasePropertyArray {
     static_assert(!std::is_same_v<T, bool>, "use std::uint8_t for flag properties");
+    static_assert(std::is_trivially_copyable_v<T>, "properties hold trivially copyable types");
 
 public:
     PropertyArray(std::string name, T default_value)
@@ -73,6 +80,13 @@ public:
     }
     const std::type_info& type() const override { return typeid(T); }
     std::size_t bytes() const override { return data_.capacity() * sizeof(T); }
+    std::size_t element_bytes() const override { return sizeof(T); }
+    void save(std::size_t i, std::byte* out) const override {
+        std::memcpy(out, &data_[i], sizeof(T));
+    }
+    void load(std::size_t i, const std::byte* in) override {
+        std::memcpy(&data_[i], in, sizeof(T));
+    }
 
     T& operator[](std::size_t i) { return data_[i]; }
     const T& operator[](std::size_t i) const { return data_[i]; }
@@ -162,6 +176,16 @@ public:
     }
 
     bool exists(std::string_view name) const { return find(name) != nullptr; }
+
+    /// The arrays in the order they were added (connectivity first).
+    BasePropertyArray& array(std::size_t i) { return *arrays_[i]; }
+    const BasePropertyArray& array(std::size_t i) const { return *arrays_[i]; }
+    /// Adds a whole array (of size() elements), e.g. one an undone edit had added.
+    void add_array(std::unique_ptr<BasePropertyArray> array) {
+        arrays_.push_back(std::move(array));
+    }
+    /// Removes every array after the first `n`.
+    void truncate_arrays(std::size_t n) { arrays_.resize(std::min(n, arrays_.size())); }
 
     /// Removes the array (no-op for nullptr or an array of another container).
     void remove(const BasePropertyArray* array) {

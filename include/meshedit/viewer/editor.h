@@ -300,8 +300,16 @@ private:
     /// edit refused with the reason; otherwise the snapshot becomes one undo step, deleted
     /// elements are collected (the selection remapped), and the result is selected and
     /// described.
+    ///
+    /// A `local` edit (one that changes what it touches: the element verbs) is recorded
+    /// instead (core/mesh_change.h): no snapshot, no garbage collection, so it costs what it
+    /// touches at any mesh size; a failure rolls the recording back.
     Outcome edit(const std::function<std::string()>& check,
-                 const std::function<Edited(Document&)>& apply);
+                 const std::function<Edited(Document&)>& apply, bool local = false);
+    /// edit() for a local edit: records it, or rolls it back on an exception.
+    Outcome edit_recorded(const std::function<Edited(Document&)>& apply);
+    /// What edit() does after any successful edit: revision, selection, session.
+    void settle(Edited& edited);
     /// Records the document as an undo step and gives it a new revision; call before
     /// mutating doc_ (edit() and the first move of a drag).
     void snapshot();

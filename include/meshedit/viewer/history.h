@@ -1,23 +1,45 @@
 #pragma once
 /// \file
-/// Undo/redo by whole-document snapshots, bounded in bytes and in steps.
+/// Undo/redo: each step is either a recorded change (a local edit: what it touched, before
+/// and after, core/mesh_change.h) or a whole-document snapshot (a global operation, a drag, a
+/// curve edit: whatever replaces too much to record), bounded in bytes and in steps.
 ///
-/// A snapshot is the document before an edit (mesh, patches, curve, selection), so undo is
-/// exact bit for bit and every edit — local op, Loop, crease, drag, retessellation — is
-/// undone the same way. Memory: the stacks together hold at most `max_bytes` (default
-/// 512 MiB) and `max_steps` (default 200) snapshots; the oldest undo steps go first. At
-/// least one undo step is always kept, so a document larger than the budget still undoes
-/// its last edit (then the bound is one snapshot).
+/// Either way undo is exact bit for bit. A change applies only to the document its edit
+/// left, which the stacks guarantee: undo takes the newest undo step, redo the newest redo
+/// step, and any new edit clears the redo stack. Memory: the stacks together hold at most
+/// `max_bytes` (default 512 MiB) and `max_steps` (default 200) steps; the oldest undo steps
+/// go first. A flip at 1M faces is a few hundred bytes, so 200 local edits cost well under a
+/// megabyte; a snapshot costs the whole document (about 70 MB at 1M triangles). At least one
+/// undo step is always kept, so a document larger than the budget still undoes its last
+/// edit.
 
 #include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <optional>
+#include <string>
+#include <variant>
 #include <vector>
 
+#include "meshedit/core/mesh_change.h"
 #include "meshedit/viewer/document.h"
 
 namespace meshedit::viewer {
+
+/// A local edit of the mesh as recorded: the mesh's change and the document's small state
+/// around it (selection, session, revision), before and after.
+struct DocumentChange {
+    MeshChange mesh;
+    ElementRef selection_before, selection_after;
+    std::vector<ElementRef> also_before, also_after;
+    std::vector<std::string> session_added;  ///< the steps the edit appended to the session
+    std::uint64_t revision_before = 0, revision_after = 0;
+
+    /// Each keeps the selection of the side it leaves, for the way back.
+    void undo(Document& doc);
+    void redo(Document& doc);
+    std::size_t bytes() const;
+};
 
 struct HistoryLimits {
     std::size_t max_bytes = std::size_t{512} << 20;
@@ -30,9 +52,13 @@ public:
 
     /// Records `before` (the document as it was before an edit) and clears the redo stack.
     void push(Document before);
-    /// Swaps `current` with the last undo step (current goes to redo). False if none.
+    /// Records a local edit's change (applied already to the current document) and clears
+    /// the redo stack.
+    void push(DocumentChange change);
+    /// Takes `current` back one step (undoing a change, or swapping in a snapshot, current
+    /// going to redo). False if none.
     bool undo(Document& current);
-    /// Swaps `current` with the last redo step. False if none.
+    /// Takes `current` forward one step. False if none.
     bool redo(Document& current);
     void clear();
 
@@ -41,12 +67,25 @@ public:
     std::size_t bytes() const { return bytes_; }
     const HistoryLimits& limits() const { return limits_; }
 
+    /// Whether the last undo step is a recorded change (not a snapshot); for tests.
+    bool last_is_change() const {
+        return !undo_.empty() && std::holds_alternative<DocumentChange>(undo_.back());
+    }
+
 private:
+    using Step = std::variant<Document, DocumentChange>;
+    static std::size_t bytes_of(const Step& step);
+    /// A new edit's step: clears the redo stack.
+    void push_step(Step step);
+    /// Moves the newest step of `from` onto `to`, applying it to `current` in `forward`
+    /// direction (redo) or backward (undo).
+    template <class From, class To>
+    bool move_step(From& from, To& to, Document& current, bool forward);
     void trim();
 
     HistoryLimits limits_;
-    std::deque<Document> undo_;
-    std::vector<Document> redo_;
+    std::deque<Step> undo_;
+    std::vector<Step> redo_;
     std::size_t bytes_ = 0;  ///< of undo_ and redo_ together
 };
 

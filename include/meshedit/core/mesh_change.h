@@ -1,0 +1,117 @@
+#pragma once
+/// \file
+/// What a local edit changed in a mesh, recorded while it runs: undo and redo in the time and
+/// memory of what it touched, not of the mesh (a flip at 1M faces: a few hundred bytes
+/// instead of a 70 MB copy).
+///
+///     MeshRecorder recorder(mesh);     // from here on the mesh reports what it overwrites
+///     flip(mesh, e);                   // any local operation
+///     MeshChange change = recorder.finish();
+///     change.undo(mesh);               // bit for bit the mesh before the flip
+///     change.redo(mesh);               // bit for bit the mesh after it
+///
+/// How: every write to an element goes through a Mesh setter, position() or mark_deleted(),
+/// and each calls Mesh::touch() first. The first touch of an element that existed when the
+/// recording began copies its values in *every* property of its kind (connectivity,
+/// position, crease marks, user data); finish() copies the same elements' values again, and
+/// the elements appended meanwhile whole. Properties added meanwhile are kept whole (the
+/// first crease mark adds `e:crease`). Code that writes a property through its handle must
+/// call Mesh::touch() on the element first (the crease verb does).
+///
+/// What a recording cannot hold — a write to a whole array (MeshArrays, positions()), garbage
+/// collection, resize(), the mesh replaced or moved, a property that existed before removed —
+/// makes finish() throw std::logic_error: such operations are global and are undone from a
+/// whole copy instead. Tests check that every local verb records completely
+/// (tests/core/mesh_change_test.cpp).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "meshedit/core/mesh.h"
+
+namespace meshedit {
+
+/// A finished recording: the values that changed, before and after, of one edit.
+class MeshChange {
+public:
+    /// Puts `mesh` back as it was before the edit. \pre `mesh` is as the edit left it.
+    void undo(Mesh& mesh) const;
+    /// Puts `mesh` back as the edit left it. \pre `mesh` is as it was before the edit.
+    void redo(Mesh& mesh) const;
+
+    /// Bytes held (for the undo history's budget).
+    std::size_t bytes() const;
+    /// Faces whose loop or corners' positions may differ (touched, created or deleted; indices
+    /// in the mesh after the edit, some possibly deleted), for partial GPU and BVH updates.
+    std::vector<Face> affected_faces(const Mesh& after) const;
+    /// Number of elements recorded (touched before plus appended), per kind V, H, E, F.
+    std::array<std::size_t, 4> counts() const;
+
+private:
+    friend class MeshRecorder;
+    struct Kind {
+        std::size_t size_before = 0;
+        std::size_t size_after = 0;
+        std::size_t n_arrays = 0;            ///< arrays that existed when the recording began
+        std::size_t stride = 0;              ///< bytes of one element over those arrays
+        std::vector<std::uint32_t> touched;  ///< indices < size_before, first-touch order
+        std::vector<std::byte> before;       ///< touched.size() × stride
+        std::vector<std::byte> after;        ///< touched.size() × stride
+        std::vector<std::byte> appended;     ///< (size_after − size_before) × stride
+        std::vector<std::unique_ptr<BasePropertyArray>> added;  ///< whole, as left
+    };
+    static void restore(PropertyContainer& c, const Kind& k, bool forward);
+
+    std::array<Kind, 4> kinds_;  ///< vertex, halfedge, edge, face
+    std::array<std::size_t, 3> deleted_before_{};
+    std::array<std::size_t, 3> deleted_after_{};
+};
+
+/// Records the edits made to one mesh from construction to finish() (see the file comment).
+/// One recorder per mesh at a time; copies of the mesh are not recorded.
+class MeshRecorder {
+public:
+    /// \throws std::logic_error if `mesh` is already being recorded.
+    explicit MeshRecorder(Mesh& mesh);
+    /// Stops recording; an unfinished recording is dropped (the mesh keeps its changes).
+    ~MeshRecorder();
+    MeshRecorder(const MeshRecorder&) = delete;
+    MeshRecorder& operator=(const MeshRecorder&) = delete;
+
+    /// Stops recording and returns the change.
+    /// \throws std::logic_error naming what the edit did that a change cannot hold.
+    MeshChange finish();
+    /// Stops recording and puts the mesh back as it was when the recording began (an edit
+    /// that failed half-way). \throws std::logic_error as finish() does.
+    void roll_back();
+
+    /// Called by Mesh::touch() (`kind` 0–3) and on untracked writes (`kind` −1).
+    void record(int kind, std::uint32_t index) noexcept;
+    /// Called by Mesh::remove_property(): only arrays added since the recording began may go.
+    void removing(const BasePropertyArray* array) noexcept;
+
+private:
+    struct Seen {  // open addressing over uint32 indices; ~0u is empty
+        std::vector<std::uint32_t> slots = std::vector<std::uint32_t>(64, ~0u);
+        std::size_t n = 0;
+        bool insert(std::uint32_t i);
+    };
+    PropertyContainer& container(int kind) const;
+    void stop();
+
+    Mesh* mesh_;
+    MeshChange change_;
+    std::array<Seen, 4> seen_;
+    std::string problem_;  ///< the first untracked write, or a failed allocation
+};
+
+/// True when both meshes hold the same properties (names, kinds, order) with the same bytes
+/// in every element, deleted ones included, and the same deletion counts; otherwise false
+/// with the first difference in `why`. For tests of recorded edits and undo.
+bool bitwise_equal(const Mesh& a, const Mesh& b, std::string* why = nullptr);
+
+}  // namespace meshedit
