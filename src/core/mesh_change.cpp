@@ -39,26 +39,35 @@ void load(PropertyContainer& c, std::size_t n_arrays, std::size_t i, const std::
 
 // --------------------------------------------------------------------------- MeshChange
 
-void MeshChange::restore(PropertyContainer& c, const Kind& k, bool forward) {
+std::uint32_t MeshChange::touched(int kind, std::size_t i) const {
+    std::uint32_t index = 0;
+    std::memcpy(&index, &data_[kinds_[kind].offset + i * sizeof(index)], sizeof(index));
+    return index;
+}
+
+void MeshChange::restore(PropertyContainer& c, int kind, bool forward) const {
+    const Kind& k = kinds_[kind];
     if (c.n_properties() < k.n_arrays || stride_of(c, k.n_arrays) != k.stride) {
         throw std::logic_error("a recorded change applied to a mesh with other properties");
     }
     if (forward) {
         c.resize(k.size_after);
         for (std::size_t i = 0; i < k.size_after - k.size_before; ++i) {
-            load(c, k.n_arrays, k.size_before + i, &k.appended[i * k.stride]);
+            load(c, k.n_arrays, k.size_before + i, &data_[k.appended_at() + i * k.stride]);
         }
-        for (std::size_t i = 0; i < k.touched.size(); ++i) {
-            load(c, k.n_arrays, k.touched[i], &k.after[i * k.stride]);
+        for (std::size_t i = 0; i < k.n_touched; ++i) {
+            load(c, k.n_arrays, touched(kind, i), &data_[k.after_at() + i * k.stride]);
         }
-        for (const auto& a : k.added) {
-            c.add_array(a->clone());
+        if (added_) {
+            for (const auto& a : (*added_)[kind]) {
+                c.add_array(a->clone());
+            }
         }
     } else {
         c.truncate_arrays(k.n_arrays);
         c.resize(k.size_before);
-        for (std::size_t i = 0; i < k.touched.size(); ++i) {
-            load(c, k.n_arrays, k.touched[i], &k.before[i * k.stride]);
+        for (std::size_t i = 0; i < k.n_touched; ++i) {
+            load(c, k.n_arrays, touched(kind, i), &data_[k.before_at() + i * k.stride]);
         }
     }
 }
@@ -66,7 +75,7 @@ void MeshChange::restore(PropertyContainer& c, const Kind& k, bool forward) {
 void MeshChange::undo(Mesh& mesh) const {
     PropertyContainer* c[] = {&mesh.vprops_, &mesh.hprops_, &mesh.eprops_, &mesh.fprops_};
     for (int k = 0; k < 4; ++k) {
-        restore(*c[k], kinds_[k], false);
+        restore(*c[k], k, false);
     }
     mesh.n_deleted_vertices_ = deleted_before_[0];
     mesh.n_deleted_edges_ = deleted_before_[1];
@@ -76,7 +85,7 @@ void MeshChange::undo(Mesh& mesh) const {
 void MeshChange::redo(Mesh& mesh) const {
     PropertyContainer* c[] = {&mesh.vprops_, &mesh.hprops_, &mesh.eprops_, &mesh.fprops_};
     for (int k = 0; k < 4; ++k) {
-        restore(*c[k], kinds_[k], true);
+        restore(*c[k], k, true);
     }
     mesh.n_deleted_vertices_ = deleted_after_[0];
     mesh.n_deleted_edges_ = deleted_after_[1];
@@ -84,12 +93,13 @@ void MeshChange::redo(Mesh& mesh) const {
 }
 
 std::size_t MeshChange::bytes() const {
-    std::size_t total = sizeof(*this);
-    for (const Kind& k : kinds_) {
-        total += k.touched.capacity() * sizeof(std::uint32_t) + k.before.capacity() +
-                 k.after.capacity() + k.appended.capacity();
-        for (const auto& a : k.added) {
-            total += a->bytes();
+    std::size_t total = sizeof(*this) + data_.capacity();
+    if (added_) {
+        total += sizeof(AddedArrays);
+        for (const auto& kind : *added_) {
+            for (const auto& a : kind) {
+                total += a->bytes();
+            }
         }
     }
     return total;
@@ -98,7 +108,7 @@ std::size_t MeshChange::bytes() const {
 std::array<std::size_t, 4> MeshChange::counts() const {
     std::array<std::size_t, 4> n{};
     for (int k = 0; k < 4; ++k) {
-        n[k] = kinds_[k].touched.size() + (kinds_[k].size_after - kinds_[k].size_before);
+        n[k] = kinds_[k].n_touched + (kinds_[k].size_after - kinds_[k].size_before);
     }
     return n;
 }
@@ -110,28 +120,30 @@ std::vector<Face> MeshChange::affected_faces(const Mesh& after) const {
             faces.push_back(f);
         }
     };
-    for (const std::uint32_t f : kinds_[3].touched) {
+    const Kind& fk = kinds_[3];
+    for (std::size_t i = 0; i < fk.n_touched; ++i) {
+        add(Face(touched(3, i)));
+    }
+    for (std::uint32_t f = fk.size_before; f < fk.size_after; ++f) {
         add(Face(f));
     }
-    for (std::size_t f = kinds_[3].size_before; f < kinds_[3].size_after; ++f) {
-        add(Face(static_cast<std::uint32_t>(f)));
-    }
     // A face whose halfedges changed, or whose corner moved, keeps its index but not its look;
-    // its face pointer before the edit names it too (a relinked halfedge may have left it).
-    const Kind& h = kinds_[1];
+    // a relinked halfedge's face before the edit names one too (the halfedge may have left it).
+    const Kind& hk = kinds_[1];
     std::size_t face_offset = 0;  // of h:face within a halfedge's saved values
-    for (std::size_t a = 0; a < h.n_arrays && after.hprops_.array(a).name() != "h:face"; ++a) {
+    for (std::size_t a = 0; a < hk.n_arrays && after.hprops_.array(a).name() != "h:face"; ++a) {
         face_offset += after.hprops_.array(a).element_bytes();
     }
-    for (std::size_t i = 0; i < h.touched.size(); ++i) {
+    for (std::size_t i = 0; i < hk.n_touched; ++i) {
         Face before;
-        std::memcpy(&before, &h.before[i * h.stride + face_offset], sizeof(Face));
+        std::memcpy(&before, &data_[hk.before_at() + i * hk.stride + face_offset], sizeof(Face));
         add(before);
-        add(after.face(Halfedge(h.touched[i])));
+        add(after.face(Halfedge(touched(1, i))));
     }
-    for (const std::uint32_t v : kinds_[0].touched) {
-        if (!after.is_deleted(Vertex(v))) {
-            for (const Face f : after.faces(Vertex(v))) {
+    for (std::size_t i = 0; i < kinds_[0].n_touched; ++i) {
+        const Vertex v(touched(0, i));
+        if (!after.is_deleted(v)) {
+            for (const Face f : after.faces(v)) {
                 add(f);
             }
         }
@@ -173,13 +185,12 @@ MeshRecorder::MeshRecorder(Mesh& mesh) : mesh_(&mesh) {
     }
     for (int k = 0; k < 4; ++k) {
         const PropertyContainer& c = container(k);
-        MeshChange::Kind& kind = change_.kinds_[k];
-        kind.size_before = c.size();
-        kind.n_arrays = c.n_properties();
-        kind.stride = stride_of(c, kind.n_arrays);
+        Log& log = logs_[k];
+        log.size_before = c.size();
+        log.n_arrays = c.n_properties();
+        log.stride = stride_of(c, log.n_arrays);
     }
-    change_.deleted_before_ = {mesh.n_deleted_vertices_, mesh.n_deleted_edges_,
-                               mesh.n_deleted_faces_};
+    deleted_before_ = {mesh.n_deleted_vertices_, mesh.n_deleted_edges_, mesh.n_deleted_faces_};
     mesh.recorder_ = this;
 }
 
@@ -205,20 +216,31 @@ void MeshRecorder::record(int kind, std::uint32_t index) noexcept {
         }
         return;
     }
-    MeshChange::Kind& k = change_.kinds_[kind];
-    if (index >= k.size_before) {
+    Log& log = logs_[kind];
+    if (index >= log.size_before) {
         return;  // appended during the edit: kept whole by finish()
     }
     try {
-        if (!seen_[kind].insert(index)) {
+        if (!log.seen.insert(index)) {
             return;
         }
-        k.touched.push_back(index);
-        k.before.resize(k.before.size() + k.stride);
-        save(container(kind), k.n_arrays, index, &k.before[k.before.size() - k.stride]);
+        log.touched.push_back(index);
+        log.before.resize(log.before.size() + log.stride);
+        save(container(kind), log.n_arrays, index, &log.before[log.before.size() - log.stride]);
     } catch (const std::bad_alloc&) {
         if (problem_.empty()) {
             problem_ = std::string("no memory to record a ") + kKindNames[kind];
+        }
+    }
+}
+
+void MeshRecorder::removing(const BasePropertyArray* array) noexcept {
+    for (int k = 0; k < 4; ++k) {
+        const PropertyContainer& c = container(k);
+        for (std::size_t i = 0; i < logs_[k].n_arrays; ++i) {
+            if (&c.array(i) == array && problem_.empty()) {
+                problem_ = "property '" + array->name() + "' removed";
+            }
         }
     }
 }
@@ -228,42 +250,55 @@ MeshChange MeshRecorder::finish() {
     if (!problem_.empty()) {
         throw std::logic_error("the edit cannot be recorded: " + problem_);
     }
+    MeshChange change;
+    std::size_t offset = 0;
     for (int k = 0; k < 4; ++k) {
         const PropertyContainer& c = container(k);
-        MeshChange::Kind& kind = change_.kinds_[k];
-        if (c.n_properties() < kind.n_arrays || stride_of(c, kind.n_arrays) != kind.stride) {
+        const Log& log = logs_[k];
+        if (c.n_properties() < log.n_arrays || stride_of(c, log.n_arrays) != log.stride) {
             throw std::logic_error(std::string("the edit removed a ") + kKindNames[k] +
                                    " property it had not added");
         }
-        kind.size_after = c.size();
-        kind.after.resize(kind.before.size());
-        for (std::size_t i = 0; i < kind.touched.size(); ++i) {
-            save(c, kind.n_arrays, kind.touched[i], &kind.after[i * kind.stride]);
-        }
-        kind.appended.resize((kind.size_after - kind.size_before) * kind.stride);
-        for (std::size_t i = kind.size_before; i < kind.size_after; ++i) {
-            save(c, kind.n_arrays, i, &kind.appended[(i - kind.size_before) * kind.stride]);
-        }
-        for (std::size_t a = kind.n_arrays; a < c.n_properties(); ++a) {
-            kind.added.push_back(c.array(a).clone());
-        }
-        kind.touched.shrink_to_fit();
-        kind.before.shrink_to_fit();
+        MeshChange::Kind& kind = change.kinds_[k];
+        kind.size_before = static_cast<std::uint32_t>(log.size_before);
+        kind.size_after = static_cast<std::uint32_t>(c.size());
+        kind.n_arrays = static_cast<std::uint32_t>(log.n_arrays);
+        kind.stride = static_cast<std::uint32_t>(log.stride);
+        kind.n_touched = static_cast<std::uint32_t>(log.touched.size());
+        kind.offset = offset;
+        offset = kind.end();
     }
-    change_.deleted_after_ = {mesh_->n_deleted_vertices_, mesh_->n_deleted_edges_,
-                              mesh_->n_deleted_faces_};
-    return std::move(change_);
-}
-
-void MeshRecorder::removing(const BasePropertyArray* array) noexcept {
+    change.data_.resize(offset);
+    std::byte* data = change.data_.data();
     for (int k = 0; k < 4; ++k) {
         const PropertyContainer& c = container(k);
-        for (std::size_t i = 0; i < change_.kinds_[k].n_arrays; ++i) {
-            if (&c.array(i) == array && problem_.empty()) {
-                problem_ = "property '" + array->name() + "' removed";
+        const Log& log = logs_[k];
+        const MeshChange::Kind& kind = change.kinds_[k];
+        if (!log.touched.empty()) {
+            std::memcpy(data + kind.offset, log.touched.data(),
+                        log.touched.size() * sizeof(std::uint32_t));
+            std::memcpy(data + kind.before_at(), log.before.data(), log.before.size());
+        }
+        for (std::size_t i = 0; i < log.touched.size(); ++i) {
+            save(c, kind.n_arrays, log.touched[i], data + kind.after_at() + i * kind.stride);
+        }
+        for (std::size_t i = kind.size_before; i < kind.size_after; ++i) {
+            save(c, kind.n_arrays, i,
+                 data + kind.appended_at() + (i - kind.size_before) * kind.stride);
+        }
+        for (std::size_t a = kind.n_arrays; a < c.n_properties(); ++a) {
+            if (!change.added_) {
+                change.added_ = std::make_unique<MeshChange::AddedArrays>();
             }
+            (*change.added_)[k].push_back(c.array(a).clone());
         }
     }
+    const auto u32 = [](std::size_t n) { return static_cast<std::uint32_t>(n); };
+    change.deleted_before_ = {u32(deleted_before_[0]), u32(deleted_before_[1]),
+                              u32(deleted_before_[2])};
+    change.deleted_after_ = {u32(mesh_->n_deleted_vertices_), u32(mesh_->n_deleted_edges_),
+                             u32(mesh_->n_deleted_faces_)};
+    return change;
 }
 
 void MeshRecorder::roll_back() {

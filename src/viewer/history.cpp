@@ -51,7 +51,7 @@ void DocumentChange::redo(Document& doc) {
 }
 
 std::size_t DocumentChange::bytes() const {
-    std::size_t n = sizeof(*this) + mesh.bytes() +
+    std::size_t n = sizeof(*this) - sizeof(MeshChange) + mesh.bytes() +
                     (also_before.capacity() + also_after.capacity()) * sizeof(ElementRef);
     for (const std::string& step : session_added) {
         n += sizeof(std::string) + step.capacity();

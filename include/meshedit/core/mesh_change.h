@@ -53,22 +53,31 @@ public:
 
 private:
     friend class MeshRecorder;
+    /// One element kind's part: its sizes, and where its values lie in data_ (packed, so a
+    /// flip's change is a few hundred bytes with its bookkeeping).
     struct Kind {
-        std::size_t size_before = 0;
-        std::size_t size_after = 0;
-        std::size_t n_arrays = 0;            ///< arrays that existed when the recording began
-        std::size_t stride = 0;              ///< bytes of one element over those arrays
-        std::vector<std::uint32_t> touched;  ///< indices < size_before, first-touch order
-        std::vector<std::byte> before;       ///< touched.size() × stride
-        std::vector<std::byte> after;        ///< touched.size() × stride
-        std::vector<std::byte> appended;     ///< (size_after − size_before) × stride
-        std::vector<std::unique_ptr<BasePropertyArray>> added;  ///< whole, as left
+        std::uint32_t size_before = 0;
+        std::uint32_t size_after = 0;
+        std::uint32_t n_arrays = 0;   ///< arrays that existed when the recording began
+        std::uint32_t stride = 0;     ///< bytes of one element over those arrays
+        std::uint32_t n_touched = 0;  ///< elements < size_before written by the edit
+        std::size_t offset = 0;       ///< in data_: indices, values before, after, appended
+        std::size_t before_at() const { return offset + n_touched * sizeof(std::uint32_t); }
+        std::size_t after_at() const { return before_at() + std::size_t{n_touched} * stride; }
+        std::size_t appended_at() const { return after_at() + std::size_t{n_touched} * stride; }
+        std::size_t end() const {
+            return appended_at() + std::size_t{size_after - size_before} * stride;
+        }
     };
-    static void restore(PropertyContainer& c, const Kind& k, bool forward);
+    using AddedArrays = std::array<std::vector<std::unique_ptr<BasePropertyArray>>, 4>;
+    void restore(PropertyContainer& c, int kind, bool forward) const;
+    std::uint32_t touched(int kind, std::size_t i) const;
 
     std::array<Kind, 4> kinds_;  ///< vertex, halfedge, edge, face
-    std::array<std::size_t, 3> deleted_before_{};
-    std::array<std::size_t, 3> deleted_after_{};
+    std::array<std::uint32_t, 3> deleted_before_{};
+    std::array<std::uint32_t, 3> deleted_after_{};
+    std::vector<std::byte> data_;
+    std::unique_ptr<AddedArrays> added_;  ///< properties the edit added, whole; null if none
 };
 
 /// Records the edits made to one mesh from construction to finish() (see the file comment).
@@ -100,12 +109,20 @@ private:
         std::size_t n = 0;
         bool insert(std::uint32_t i);
     };
+    struct Log {  // one kind's recording so far
+        std::size_t size_before = 0;
+        std::size_t n_arrays = 0;
+        std::size_t stride = 0;
+        std::vector<std::uint32_t> touched;
+        std::vector<std::byte> before;
+        Seen seen;
+    };
     PropertyContainer& container(int kind) const;
     void stop();
 
     Mesh* mesh_;
-    MeshChange change_;
-    std::array<Seen, 4> seen_;
+    std::array<Log, 4> logs_;
+    std::array<std::size_t, 3> deleted_before_{};
     std::string problem_;  ///< the first untracked write, or a failed allocation
 };
 
