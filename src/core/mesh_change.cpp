@@ -113,44 +113,49 @@ std::array<std::size_t, 4> MeshChange::counts() const {
     return n;
 }
 
-std::vector<Face> MeshChange::affected_faces(const Mesh& after) const {
-    std::vector<Face> faces;
-    const auto add = [&](Face f) {
-        if (f.is_valid() && f.idx() < after.faces_size()) {
-            faces.push_back(f);
-        }
-    };
+MeshChange::Region MeshChange::region() const {
+    Region r;
+    const Kind& vk = kinds_[0];
+    const Kind& hk = kinds_[1];
     const Kind& fk = kinds_[3];
+    for (std::size_t i = 0; i < vk.n_touched; ++i) {
+        r.vertices.push_back(Vertex(touched(0, i)));
+    }
+    for (std::uint32_t v = vk.size_before; v < vk.size_after; ++v) {
+        r.vertices.push_back(Vertex(v));
+    }
     for (std::size_t i = 0; i < fk.n_touched; ++i) {
-        add(Face(touched(3, i)));
+        r.faces.push_back(Face(touched(3, i)));
     }
     for (std::uint32_t f = fk.size_before; f < fk.size_after; ++f) {
-        add(Face(f));
+        r.faces.push_back(Face(f));
     }
-    // A face whose halfedges changed, or whose corner moved, keeps its index but not its look;
-    // a relinked halfedge's face before the edit names one too (the halfedge may have left it).
-    const Kind& hk = kinds_[1];
-    std::size_t face_offset = 0;  // of h:face within a halfedge's saved values
-    for (std::size_t a = 0; a < hk.n_arrays && after.hprops_.array(a).name() != "h:face"; ++a) {
-        face_offset += after.hprops_.array(a).element_bytes();
-    }
-    for (std::size_t i = 0; i < hk.n_touched; ++i) {
-        Face before;
-        std::memcpy(&before, &data_[hk.before_at() + i * hk.stride + face_offset], sizeof(Face));
-        add(before);
-        add(after.face(Halfedge(touched(1, i))));
-    }
-    for (std::size_t i = 0; i < kinds_[0].n_touched; ++i) {
-        const Vertex v(touched(0, i));
-        if (!after.is_deleted(v)) {
-            for (const Face f : after.faces(v)) {
-                add(f);
-            }
+    // A halfedge's saved values begin with the connectivity arrays, in the order mesh.cpp
+    // adds them: next, prev, vertex, face.
+    const auto head_and_face = [&](std::size_t at) {
+        Vertex v;
+        Face f;
+        std::memcpy(&v, &data_[at + 2 * sizeof(Halfedge)], sizeof(Vertex));
+        std::memcpy(&f, &data_[at + 2 * sizeof(Halfedge) + sizeof(Vertex)], sizeof(Face));
+        if (v.is_valid()) {
+            r.vertices.push_back(v);
         }
+        if (f.is_valid()) {
+            r.faces.push_back(f);
+        }
+    };
+    for (std::size_t i = 0; i < hk.n_touched; ++i) {
+        head_and_face(hk.before_at() + i * hk.stride);
+        head_and_face(hk.after_at() + i * hk.stride);
     }
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    return faces;
+    for (std::size_t i = 0; i < hk.size_after - hk.size_before; ++i) {
+        head_and_face(hk.appended_at() + i * hk.stride);
+    }
+    std::sort(r.faces.begin(), r.faces.end());
+    r.faces.erase(std::unique(r.faces.begin(), r.faces.end()), r.faces.end());
+    std::sort(r.vertices.begin(), r.vertices.end());
+    r.vertices.erase(std::unique(r.vertices.begin(), r.vertices.end()), r.vertices.end());
+    return r;
 }
 
 // -------------------------------------------------------------------------- MeshRecorder

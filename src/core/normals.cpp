@@ -295,6 +295,117 @@ void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out) {
     compute_vertex_normals(mesh, out, 0);
 }
 
+namespace {
+
+// The full pass's vertex ranges for given sizes: chunk c of faces owns the vertices
+// [first(c), first(c + 1)).
+struct Ownership {
+    std::size_t nv, nf;
+    std::size_t chunks() const { return nf == 0 ? 0 : (nf + kChunk - 1) / kChunk; }
+    std::size_t first(std::size_t c) const {
+        const std::size_t x = std::min(c * kChunk, nf);
+        return nv / nf * x + nv % nf * x / nf;
+    }
+    std::size_t owner(std::size_t v) const {  // the last chunk whose range starts at or before v
+        std::size_t lo = 0, hi = chunks();
+        while (hi - lo > 1) {
+            const std::size_t mid = (lo + hi) / 2;
+            (first(mid) <= v ? lo : hi) = mid;
+        }
+        return lo;
+    }
+};
+
+// v's normal summed as compute_vertex_normals() sums it: its faces in the chunk that owns it
+// in face order, then its faces in the other chunks in face order (the unfinished lists).
+Vec3 vertex_normal_in_pass_order(const Mesh& mesh, Vertex v, const Ownership& own,
+                                 std::vector<std::uint32_t>& faces) {
+    faces.clear();
+    if (!mesh.is_isolated(v)) {
+        for (const Face f : mesh.faces(v)) {
+            faces.push_back(f.idx());
+        }
+    }
+    std::sort(faces.begin(), faces.end());
+    const std::size_t mine = own.owner(v.idx());
+    const FaceArrays arrays(mesh);
+    Vec3 sum{};
+    for (const bool own_chunk : {true, false}) {
+        for (const std::uint32_t f : faces) {
+            if ((f / kChunk == mine) == own_chunk) {
+                sum += face_corners(mesh, arrays, f).area;
+            }
+        }
+    }
+    return normalize(sum);
+}
+
+}  // namespace
+
+void update_vertex_normals(const Mesh& mesh, std::span<const Face> faces,
+                           std::span<const Vertex> vertices, std::size_t old_vertices,
+                           std::size_t old_faces, std::vector<Vec3>& out,
+                           std::vector<Vertex>& recomputed) {
+    const Ownership now{mesh.vertices_size(), mesh.faces_size()};
+    const Ownership before{old_vertices, old_faces};
+    out.resize(now.nv);
+    std::vector<Vertex> todo;
+    const auto add_corners = [&](Face f) {
+        if (f.idx() < now.nf && !mesh.is_deleted(f)) {
+            for (const Vertex c : mesh.vertices(f)) {
+                todo.push_back(c);
+            }
+        }
+    };
+    for (const Face f : faces) {
+        add_corners(f);
+    }
+    for (const Vertex v : vertices) {
+        todo.push_back(v);
+        if (v.idx() < now.nv && !mesh.is_deleted(v) && !mesh.is_isolated(v)) {
+            for (const Face f : mesh.faces(v)) {  // a moved vertex changes its faces' areas
+                add_corners(f);
+            }
+        }
+    }
+    // Where a chunk's range starts moved, the vertices in between changed owner.
+    if (now.nf != 0) {
+        for (std::size_t c = 1; c <= std::max(now.chunks(), before.chunks()); ++c) {
+            const std::size_t a = now.first(std::min(c, now.chunks()));
+            const std::size_t b = before.nf == 0 ? 0 : before.first(std::min(c, before.chunks()));
+            for (std::size_t v = std::min(a, b); v < std::max(a, b) && v < now.nv; ++v) {
+                todo.push_back(Vertex(static_cast<std::uint32_t>(v)));
+            }
+        }
+    }
+    // Vertices appended since: zero unless recomputed (as the full pass gives an isolated one).
+    for (std::size_t v = std::min(old_vertices, now.nv); v < now.nv; ++v) {
+        todo.push_back(Vertex(static_cast<std::uint32_t>(v)));
+    }
+    std::sort(todo.begin(), todo.end());
+    todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
+    std::vector<std::uint32_t> scratch;
+    for (const Vertex v : todo) {
+        if (v.idx() >= now.nv) {
+            continue;
+        }
+        Vec3 n{};
+        if (!mesh.is_deleted(v) && now.nf != 0) {
+            n = vertex_normal_in_pass_order(mesh, v, now, scratch);
+            if (!is_finite(n)) {  // an overflowing sum: the full pass rescales the mesh
+                compute_vertex_normals(mesh, out);
+                recomputed.clear();
+                for (const Vertex w : mesh.vertices()) {
+                    recomputed.push_back(w);
+                }
+                return;
+            }
+        }
+        out[v.idx()] = n;
+        recomputed.push_back(v);
+    }
+}
+
 std::vector<Vec3> face_normals(const Mesh& mesh) {
     std::vector<Vec3> out;
     compute_face_normals(mesh, out);

@@ -45,9 +45,16 @@ public:
 
     /// Bytes held (for the undo history's budget).
     std::size_t bytes() const;
-    /// Faces whose loop or corners' positions may differ (touched, created or deleted; indices
-    /// in the mesh after the edit, some possibly deleted), for partial GPU and BVH updates.
-    std::vector<Face> affected_faces(const Mesh& after) const;
+    /// Where the picture may differ, on either side of the change (so for undo as for
+    /// redo): the faces it touched, created or took halfedges from or gave them to, and the
+    /// vertices it moved, created, or that are the head of a relinked halfedge, before or
+    /// after. Indices may be deleted or, on the side where appended elements do not exist,
+    /// out of range. Sorted, unique. For partial GPU and picking updates.
+    struct Region {
+        std::vector<Face> faces;
+        std::vector<Vertex> vertices;
+    };
+    Region region() const;
     /// Number of elements recorded (touched before plus appended), per kind V, H, E, F.
     std::array<std::size_t, 4> counts() const;
 

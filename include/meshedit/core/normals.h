@@ -2,7 +2,9 @@
 /// \file
 /// Face and vertex normals, and the signed volume they enclose.
 
+#include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "meshedit/core/mesh.h"
@@ -29,6 +31,21 @@ void compute_face_normals(const Mesh& mesh, std::vector<Vec3>& out);
 void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out);
 /// The same with at most `max_threads` threads (0: no limit beyond the hardware's).
 void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out, unsigned max_threads);
+
+/// After a local edit: brings `out`, the vertex normals compute_vertex_normals() gave when the
+/// mesh had `old_vertices` and `old_faces` as vertices_size() and faces_size(), up to date,
+/// bit for bit as a full compute_vertex_normals() would give them now. The edit changed
+/// `faces` (their corners, or created or deleted them) and `vertices` (moved them, created
+/// them, or changed their faces): MeshChange::region() gives both; indices out of range or
+/// deleted are allowed. Every corner of those faces and of the faces around those vertices
+/// is summed again in the full pass's order, and so are the few vertices whose place in
+/// that order moved with the sizes (the parallel chunks' vertex ranges are proportional to
+/// the sizes). O(what changed). Appends every vertex it recomputed to `recomputed` (sorted,
+/// unique), around which the caller redraws.
+void update_vertex_normals(const Mesh& mesh, std::span<const Face> faces,
+                           std::span<const Vertex> vertices, std::size_t old_vertices,
+                           std::size_t old_faces, std::vector<Vec3>& out,
+                           std::vector<Vertex>& recomputed);
 
 /// Signed volume enclosed by the faces (each polygon fanned from its first corner): positive
 /// when a closed mesh's faces point outwards, negative when it is inside out. Meaningful for
