@@ -10,33 +10,13 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl.h"
+#include "mesh_gpu.h"
 #include "meshedit/core/display_fan.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/render/user_shaders.h"
 
 namespace meshedit {
 namespace {
-
-// Packs a unit vector as GL_INT_2_10_10_10_REV (x in the low bits, signed normalised).
-std::uint32_t pack_normal(const Vec3& n) {
-    auto component = [](double v) {
-        const long q = std::lround(std::clamp(v, -1.0, 1.0) * 511.0);
-        return static_cast<std::uint32_t>(q) & 0x3ffu;
-    };
-    return component(n.x) | (component(n.y) << 10) | (component(n.z) << 20);
-}
-
-// Grows `buffer` (bound to `target`) to at least `bytes`, keeping its size otherwise, then
-// uploads `data`. Growth doubles, so a slowly growing mesh does not reallocate every edit.
-void upload_buffer(GLenum target, std::size_t& capacity, const void* data, std::size_t bytes) {
-    if (bytes > capacity) {
-        capacity = std::max(bytes, capacity * 2);
-        glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_STATIC_DRAW);
-    }
-    if (bytes > 0) {
-        glBufferSubData(target, 0, static_cast<GLsizeiptr>(bytes), data);
-    }
-}
 
 void set_camera(const ShaderProgram& shader, const Camera& camera, float aspect) {
     const glm::mat4 view = camera.view();
@@ -113,24 +93,12 @@ void MeshRenderer::upload(const Mesh& mesh) {
     corner_halfedges_.clear();
     triangle_faces_.clear();
     pick_table_.clear();
+    face_first_.assign(mesh.faces_size(), 0);
+    face_slots_.assign(mesh.faces_size(), 0);
     for (Face f : mesh.faces()) {
-        const Halfedge h0 = mesh.halfedge(f);
-        const std::size_t n = mesh.valence(f);
-        for_each_fan_triangle(mesh, f, [&](std::size_t i, Vertex c0, Halfedge h) {
-            triangle_corners_.push_back(c0.idx());
-            triangle_corners_.push_back(mesh.from_vertex(h).idx());
-            triangle_corners_.push_back(mesh.to_vertex(h).idx());
-            corner_halfedges_.insert(corner_halfedges_.end(),
-                                     {mesh.prev(h0).idx(), mesh.prev(h).idx(), h.idx()});
-            triangle_faces_.push_back(f.idx());
-            // Halfedges c0->c1, c1->c2, c2->c0 of this fan triangle.
-            const std::uint32_t side0 = i == 1 ? h0.idx() : kInvalidIndex;
-            const std::uint32_t side1 = h.idx();
-            const std::uint32_t side2 = i + 2 == n ? mesh.next(h).idx() : kInvalidIndex;
-            pick_table_.insert(pick_table_.end(),
-                               {f.idx(), c0.idx(), mesh.from_vertex(h).idx(),
-                                mesh.to_vertex(h).idx(), side0, side1, side2, 0u});
-        });
+        face_first_[f.idx()] = static_cast<std::uint32_t>(triangle_faces_.size());
+        face_slots_[f.idx()] = static_cast<std::uint32_t>(mesh.valence(f) - 2);
+        append_fan(mesh, f);
     }
     triangle_count_ = triangle_faces_.size();
     fill_geometry(mesh);
@@ -153,8 +121,9 @@ void MeshRenderer::update_geometry(const Mesh& mesh) {
 
 void MeshRenderer::fill_geometry(const Mesh& mesh) {
     compute_vertex_normals(mesh, vertex_normals_);
+    normals_sizes_ = {mesh.vertices_size(), mesh.faces_size()};
     compute_face_normals(mesh, face_normals_);
-    const bool split =
+    split_normals_ =
         compute_corner_normals(mesh, normal_split_, vertex_normals_, corner_normals_);
     vertices_.resize(3 * triangle_count_);
     bounds_ = {};
@@ -163,7 +132,20 @@ void MeshRenderer::fill_geometry(const Mesh& mesh) {
     }
     closed_and_outward_ = is_closed_and_outward(mesh);
     for (std::size_t t = 0; t < triangle_count_; ++t) {
-        const std::uint32_t flat = pack_normal(face_normals_[triangle_faces_[t]]);
+        write_gpu_triangle(mesh, t);
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    upload_buffer(GL_ARRAY_BUFFER, vbo_capacity_, vertices_.data(),
+                  vertices_.size() * sizeof(MeshGpuVertex));
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void MeshRenderer::write_gpu_triangle(const Mesh& mesh, std::size_t t) {
+    const bool split = split_normals_;
+    {
+        const std::uint32_t face = triangle_faces_[t];  // invalid in an emptied slot
+        const std::uint32_t flat =
+            face < face_normals_.size() ? pack_normal(face_normals_[face]) : 0u;
         // Mask bit k: the side opposite corner k is a real edge. Side c1->c2 is opposite
         // corner 0, c2->c0 opposite 1, c0->c1 opposite 2.
         const std::uint32_t* sides = &pick_table_[8 * t + 4];
@@ -187,10 +169,6 @@ void MeshRenderer::fill_geometry(const Mesh& mesh) {
             out.corner[3] = mask;
         }
     }
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    upload_buffer(GL_ARRAY_BUFFER, vbo_capacity_, vertices_.data(),
-                  vertices_.size() * sizeof(MeshGpuVertex));
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions& options) {

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -52,6 +53,19 @@ public:
     /// buffer (glBufferSubData when the size does not grow), so repeated uploads allocate
     /// nothing once the largest size has been seen. \throws GlError on a GL failure.
     void upload(const Mesh& mesh);
+
+    /// After a local edit, or its undo or redo, recorded as a MeshChange (core/mesh_change.h):
+    /// redraws only what changed. `faces` and `vertices` are the change's region() (indices
+    /// may be deleted or out of range). Each face keeps a slot of triangles in the buffers
+    /// from upload(): a face that still fits is rewritten in place (the rest of its slot
+    /// degenerate), a grown or new face gets a slot at the end, a deleted face's slot turns
+    /// degenerate; vertex normals are brought up to date around the region bit for bit as
+    /// upload() computes them (update_vertex_normals), and only the triangles written go to
+    /// the GPU (glBufferSubData). Falls back to upload() — returning false — when nothing was
+    /// uploaded yet or some edge splits the normals (creases, Auto Smooth), whose wedges are
+    /// not updated locally. \pre the mesh was uploaded, then changed only by such changes
+    /// (no garbage collection). A field shown is cleared, as by upload().
+    bool update(const Mesh& mesh, std::span<const Face> faces, std::span<const Vertex> vertices);
 
     /// Re-uploads positions and normals only, for geometry-only edits (a vertex drag); the
     /// triangle list must be unchanged since upload(). Cheaper than upload(): no
@@ -121,6 +135,13 @@ public:
 private:
     void ensure_gl_objects();
     void fill_geometry(const Mesh& mesh);
+    /// Appends face f's fan triangles to the staging arrays.
+    void append_fan(const Mesh& mesh, Face f);
+    /// Writes f's fan into triangles [first, first + slots) of the staging arrays, the rest
+    /// degenerate (all of them when f is deleted or out of range).
+    void write_fan(const Mesh& mesh, Face f, std::size_t first, std::size_t slots);
+    /// Fills triangle t's GPU vertices from the staging arrays and the normals.
+    void write_gpu_triangle(const Mesh& mesh, std::size_t t);
     /// The mesh program for a shading mode and wireframe switch, compiled on first use.
     const ShaderProgram& shaded_program(int mode, bool wireframe);
     ShaderProgram build_program(int mode, bool wireframe) const;
@@ -163,6 +184,12 @@ private:
     std::filesystem::path user_shader_dir_;
     std::string user_shader_error_;
     std::vector<std::uint32_t> triangle_faces_;  ///< face index per triangle
+    /// Each face's slot of triangles (first, count), by face index; count 0 for a deleted face.
+    std::vector<std::uint32_t> face_first_;
+    std::vector<std::uint32_t> face_slots_;
+    /// vertices_size() and faces_size() when vertex_normals_ were last brought up to date.
+    std::pair<std::size_t, std::size_t> normals_sizes_{0, 0};
+    bool split_normals_ = false;  ///< corner normals in use (some edge splits)
 };
 
 }  // namespace meshedit
