@@ -245,7 +245,7 @@ void FaceBvh::build(const Mesh& mesh) {
     }
 
     if (n > 0) {
-        nodes_.reserve(2 * (n / 2 + 1));
+        nodes_.reserve(2 * (n / 2 + 1));  // trimmed below: about 0.6 n are used
         nodes_.push_back({root.lo, 0, root.hi, 0});
         // A SAH split moves its range between prims and spare; leaves copy theirs back.
         std::vector<Prim> spare(n);
@@ -289,6 +289,7 @@ void FaceBvh::build(const Mesh& mesh) {
         }
     }
 
+    nodes_.shrink_to_fit();
     tris_.resize(n);
     slots_.resize(n);
     for (std::uint32_t p = 0; p < n; ++p) {
