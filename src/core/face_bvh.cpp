@@ -126,7 +126,8 @@ std::optional<Split> split_sah(const std::vector<Prim>& from, std::vector<Prim>&
     const float scale = static_cast<float>(kBins) / extent;
     const auto bin_of = [&](const Prim& p) {
         const float k = (p.box.lo[axis] + p.box.hi[axis] - lo) * scale;
-        return static_cast<std::size_t>(std::min(std::max(k, 0.0f), kBins - 1.0f));
+        // max(0, NaN) is 0: a triangle with a NaN corner still gets a bin.
+        return static_cast<std::size_t>(std::min(std::max(0.0f, k), kBins - 1.0f));
     };
     const std::uint32_t count = end - begin;
     const std::size_t n_sets = count >= 1024 ? kBinSets : 2;
@@ -234,10 +235,17 @@ void FaceBvh::build(const Mesh& mesh) {
         const Vec3& b = mesh.position(Vertex(c[1]));
         const Vec3& d = mesh.position(Vertex(c[2]));
         Prim& p = prims[i];
+        bool finite = true;
         for (int k = 0; k < 3; ++k) {
             const auto z = static_cast<std::size_t>(k);
             p.box.lo[z] = round_down(std::min(a[k], std::min(b[k], d[k])));
             p.box.hi[z] = round_up(std::max(a[k], std::max(b[k], d[k])));
+            finite = finite && std::isfinite(a[k] + b[k] + d[k]);
+        }
+        if (!finite) {
+            // Never hit (the triangle test meets a NaN); a point box keeps NaN out of the
+            // bins and the median's comparisons.
+            p.box.lo = p.box.hi = {0.0f, 0.0f, 0.0f};
         }
         p.index = i;
         root.grow(p.box);

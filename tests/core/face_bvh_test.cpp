@@ -52,8 +52,7 @@ std::optional<FaceBvh::Hit> brute_force(const Mesh& mesh, const FaceBvh::Ray& ra
 }
 
 /// Rays from a box around the mesh towards points inside its bounds (most of them hit).
-std::vector<FaceBvh::Ray> random_rays(const Mesh& mesh, int count, unsigned seed) {
-    const BoundingBox box = mesh.bounds();
+std::vector<FaceBvh::Ray> random_rays(const BoundingBox& box, int count, unsigned seed) {
     const Vec3 size = box.max - box.min + Vec3{0.1, 0.1, 0.1};
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -78,10 +77,13 @@ std::vector<FaceBvh::Ray> random_rays(const Mesh& mesh, int count, unsigned seed
     return rays;
 }
 
-void expect_same(const Mesh& mesh, const FaceBvh& bvh, int count, unsigned seed) {
+/// `rays_around`: where to aim the rays, if not at the mesh's bounds.
+void expect_same(const Mesh& mesh, const FaceBvh& bvh, int count, unsigned seed,
+                 std::optional<BoundingBox> rays_around = {}) {
     int hits = 0;
     for (const Sides sides : {Sides::Both, Sides::FrontOnly}) {
-        for (const FaceBvh::Ray& ray : random_rays(mesh, count, seed)) {
+        for (const FaceBvh::Ray& ray :
+             random_rays(rays_around.value_or(mesh.bounds()), count, seed)) {
             const auto expected = brute_force(mesh, ray, sides);
             const auto got = bvh.intersect(mesh, ray, sides);
             ASSERT_EQ(expected.has_value(), got.has_value());
@@ -164,6 +166,16 @@ TEST(FaceBvh, SkipsDeletedFaces) {
     ASSERT_TRUE(mesh.has_garbage());
     const FaceBvh bvh(mesh);
     expect_same(mesh, bvh, 300, 5);
+}
+
+TEST(FaceBvh, NonFiniteCornersAreNeverHit) {
+    Mesh mesh = shapes::torus(24, 12);
+    const BoundingBox box = mesh.bounds();
+    mesh.position(Vertex(5)).x = NAN;
+    mesh.position(Vertex(77)).z = INFINITY;
+    mesh.position(Vertex(78)).y = -INFINITY;
+    const FaceBvh bvh(mesh);
+    expect_same(mesh, bvh, 400, 13, box);
 }
 
 /// The faces an edit of edge e may change: every face around either end, before the edit.

@@ -17,8 +17,8 @@
 /// shape or their deletion; for a moved vertex, every face around it). Their triangles in the
 /// tree are marked stale (skipped, their boxes kept), and the touched faces that are still
 /// live, with any face appended since, are fan-triangulated into a small overflow list that
-/// every query tests by brute force. When the overflow or the stale triangles exceed
-/// kUpdateLimit triangles, update() rebuilds the whole tree instead.
+/// every query tests by brute force. When the overflow exceeds kUpdateLimit triangles, or the
+/// stale ones exceed both that and a quarter of the tree, update() rebuilds the whole tree.
 
 #include <array>
 #include <cstddef>
@@ -60,8 +60,8 @@ public:
     /// Which triangles a ray may hit: both sides, or front sides only (back faces culled).
     enum class Sides { Both, FrontOnly };
 
-    /// update() rebuilds the tree once more triangles than this are in the overflow list or
-    /// stale.
+    /// update() rebuilds the tree once more triangles than this are in the overflow list (or
+    /// stale, and a quarter of the tree).
     static constexpr std::size_t kUpdateLimit = 4096;
 
     FaceBvh() = default;
