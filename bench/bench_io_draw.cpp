@@ -4,6 +4,7 @@
 //   bench_io_draw --job collada_load_1m_triangles --impl meshedit|assimp [--runs N] [--data DIR]
 //   bench_io_draw --job collada_load_1m_polylist  --impl meshedit|assimp [--runs N] [--data DIR]
 //   bench_io_draw --job draw_1m_triangles [--impl all] [--runs N] [--size WxH] [--samples S]
+//   bench_io_draw --job pick_1m [--impl all] [--positions N] [--size WxH]
 //   bench_io_draw --generate [--data DIR]     writes the COLLADA inputs (untimed, idempotent)
 //   bench_io_draw --list                      prints "JOB IMPL" per configuration
 //
@@ -14,21 +15,26 @@
 // (smooth Blinn-Phong; back faces culled, as the torus is closed and outward) and N through
 // MeshRenderer::draw_bare (transform-only shader, same vertex buffer, back faces drawn), and,
 // for reference, N bare draws with back faces culled too; glFinish after each frame, and a
-// RESULT line for each of the three.
+// RESULT line for each of the three. The pick job picks at the same random cursor positions
+// on that torus with the ID pass (MeshRenderer::pick) and on the CPU (cpu_pick, a ray into a
+// FaceBvh), one position after the other, and prints a RESULT line for each.
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <GL/gl.h>
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -36,9 +42,11 @@
 
 #include "../src/headless/osmesa_context.h"
 #include "bench_util.h"
+#include "meshedit/core/face_bvh.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/io/io.h"
 #include "meshedit/render/camera.h"
+#include "meshedit/render/cpu_pick.h"
 #include "meshedit/render/mesh_renderer.h"
 #include "meshedit/render/overlay_renderer.h"
 #include "meshedit/render/render_target.h"
@@ -342,6 +350,89 @@ void bench_draw(const std::string& job, const std::string& impl, int runs, int w
                         with({{"culls_back_faces", culls ? 1.0 : 0.0}}));
 }
 
+/// The nearest-rank percentile `q` (0 … 1) of `v`.
+double percentile(std::vector<double> v, double q) {
+    std::sort(v.begin(), v.end());
+    const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size())));
+    return v[std::clamp<std::size_t>(rank, 1, v.size()) - 1];
+}
+
+void bench_pick(const std::string& job, const std::string& impl, int positions, int width,
+                int height) {
+    if (impl != "all" && impl != "id_pass" && impl != "bvh") {
+        throw std::invalid_argument("unknown impl '" + impl + "' for " + job +
+                                    " (all, id_pass, bvh: one run measures both)");
+    }
+    const Mesh mesh = shapes::torus(kTorusRing, kTorusTube);
+    Camera camera;
+    camera.azimuth_deg = 30.0f;
+    camera.elevation_deg = 20.0f;
+    camera.frame_mesh(mesh, static_cast<float>(width) / static_cast<float>(height));
+
+    headless::OsMesaContext context(width, height);
+    RenderTarget target(width, height, 1);  // the viewer's pick target: one sample
+    target.bind();
+    MeshRenderer renderer;
+    renderer.upload(mesh);
+    context.finish();
+    std::printf("INFO gl_renderer: %s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+    const bool cull = renderer.culls_back_faces(camera);
+
+    // The BVH: built 5 times (a fresh object each time), the last one kept.
+    std::vector<double> build_ms;
+    std::optional<FaceBvh> bvh;
+    for (int i = 0; i < 5; ++i) {
+        bvh.reset();
+        const auto start = std::chrono::steady_clock::now();
+        bvh.emplace(mesh);
+        build_ms.push_back(ms_since(start));
+    }
+
+    // Random pixels on the torus (where the CPU pick finds something), fixed seed.
+    std::mt19937 rng(20);
+    std::uniform_int_distribution<int> px(0, width - 1), py(0, height - 1);
+    std::vector<std::pair<int, int>> at;
+    while (static_cast<int>(at.size()) < positions) {
+        const int x = px(rng), y = py(rng);
+        if (!cpu_pick(*bvh, mesh, camera, width, height, x, y, cull).is_none()) {
+            at.emplace_back(x, y);
+        }
+    }
+    (void)renderer.pick(camera, width, height, at[0].first, at[0].second);  // compiles pick.frag
+    std::vector<double> id_ms, bvh_ms;
+    int same = 0;
+    for (const auto& [x, y] : at) {
+        auto start = std::chrono::steady_clock::now();
+        const ElementRef gpu = renderer.pick(camera, width, height, x, y);  // reads back: waits
+        id_ms.push_back(ms_since(start));
+        start = std::chrono::steady_clock::now();
+        const ElementRef cpu = cpu_pick(*bvh, mesh, camera, width, height, x, y, cull);
+        bvh_ms.push_back(ms_since(start));
+        same += gpu == cpu ? 1 : 0;
+    }
+    if (glGetError() != GL_NO_ERROR) {
+        throw std::runtime_error("GL error while picking");
+    }
+    const auto extras = [&](const std::vector<double>& ms) {
+        return std::map<std::string, double>{
+            {"p50_ms", percentile(ms, 0.5)},
+            {"p99_ms", percentile(ms, 0.99)},
+            {"max_ms", percentile(ms, 1.0)},
+            {"positions", static_cast<double>(at.size())},
+            {"triangles", static_cast<double>(renderer.triangle_count())},
+            {"width", static_cast<double>(width)},
+            {"height", static_cast<double>(height)},
+            {"culls_back_faces", cull ? 1.0 : 0.0},
+            {"peak_rss_mb", bench::peak_rss_mb()}};
+    };
+    bench::print_result(job, "id_pass", id_ms, extras(id_ms));
+    auto bvh_extras = extras(bvh_ms);
+    bvh_extras["build_ms"] = bench::median_of(build_ms);
+    bvh_extras["build_min_ms"] = bench::min_of(build_ms);
+    bvh_extras["same_answer"] = same;
+    bench::print_result(job, "bvh", bvh_ms, bvh_extras);
+}
+
 struct Args {
     std::string job;
     std::string impl;
@@ -351,7 +442,8 @@ struct Args {
     bool list = false;
     int width = 1280;
     int height = 800;
-    int samples = 4;  // meshedit-render's default
+    int samples = 4;      // meshedit-render's default
+    int positions = 200;  // the pick job's cursor positions
 };
 
 int to_int(const std::string& s, const char* what) {
@@ -397,12 +489,14 @@ Args parse(int argc, char** argv) {
             a.height = to_int(v.substr(x + 1), "height");
         } else if (s == "--samples") {
             a.samples = to_int(value(i), "samples");
+        } else if (s == "--positions") {
+            a.positions = to_int(value(i), "position count");
         } else {
             throw std::invalid_argument("unknown argument '" + s + "'");
         }
     }
-    if (a.runs < 1) {
-        throw std::invalid_argument("--runs must be positive");
+    if (a.runs < 1 || a.positions < 1) {
+        throw std::invalid_argument("--runs and --positions must be positive");
     }
     return a;
 }
@@ -417,7 +511,7 @@ int main(int argc, char** argv) {
             for (const char* job : {"collada_load_1m_triangles", "collada_load_1m_polylist"}) {
                 std::printf("%s meshedit\n%s assimp\n", job, job);
             }
-            std::printf("draw_1m_triangles all\n");
+            std::printf("draw_1m_triangles all\npick_1m all\n");
             return 0;
         }
         if (a.generate) {
@@ -429,10 +523,12 @@ int main(int argc, char** argv) {
         } else if (a.job == "draw_1m_triangles") {
             bench_draw(a.job, a.impl.empty() ? "all" : a.impl, a.runs, a.width, a.height,
                        a.samples);
+        } else if (a.job == "pick_1m") {
+            bench_pick(a.job, a.impl.empty() ? "all" : a.impl, a.positions, a.width, a.height);
         } else {
             throw std::invalid_argument("unknown job '" + a.job +
                                         "' (collada_load_1m_triangles, collada_load_1m_polylist, "
-                                        "draw_1m_triangles; or --list, --generate)");
+                                        "draw_1m_triangles, pick_1m; or --list, --generate)");
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_io_draw: %s\n", e.what());

@@ -45,7 +45,8 @@ DEFAULT_CONFIGS = {
         for job in ("collada_load_1m_triangles", "collada_load_1m_polylist")
         for impl in ("meshedit", "assimp")
     ]
-    + [("draw_1m_triangles", "all")],  # one run measures "meshedit" and "bare"
+    + [("draw_1m_triangles", "all"),  # one run measures "meshedit" and "bare"
+       ("pick_1m", "all")],  # one run measures "id_pass" and "bvh"
     "bench_build": [
         (f"build_{shape}_{size}", "meshedit")
         for shape in ("fan_hub_first", "polygon") for size in ("100k", "300k", "1m")
@@ -123,6 +124,12 @@ JOB_TITLES = {
     "smooth Blinn-Phong renderer (which culls back faces of closed outward meshes) vs a trivial "
     "shader over the same vertex buffer (`bare`), and the trivial shader with back faces culled "
     "too (`bare_culled`, for reference); one process, glFinish after each frame",
+    "pick_1m": "The element under the cursor on the same torus at 1280×800: 200 random pixels on "
+    "the torus, picked by the ID pass (`id_pass`: `MeshRenderer::pick`, the pick shader over "
+    "every triangle scissored to the pixel, read back) and on the CPU (`bvh`: `cpu_pick`, a ray "
+    "into the face BVH, pick.frag's rules), one after the other at each position; `p50_ms`, "
+    "`p99_ms` per pick, `build_ms` the BVH's build (median of 5), `same_answer` the positions "
+    "where both agree",
 }
 
 
@@ -230,7 +237,7 @@ def run_all(args):
     for name in PROGRAMS:
         path = os.path.join(bench_dir, name)
         if not (os.path.isfile(path) and os.access(path, os.X_OK)):
-            wanted = [c for c in DEFAULT_CONFIGS[name] if matches(args.only, name, c[0])]
+            wanted = [c for c in DEFAULT_CONFIGS.get(name, []) if matches(args.only, name, c[0])]
             if wanted:
                 notes.append(f"`{name}` is not built ({path} missing): its "
                              f"{len(wanted)} configuration(s) were skipped.")
@@ -588,6 +595,21 @@ def targets_table(jobs):
     else:
         rows.append(("draw 1M triangles headless", "≤ 1.2 × the bare draw",
                      not_measured("draw_1m_triangles", "meshedit or bare missing"), "n/a"))
+
+    # Picking (issue 20): the CPU pick's p99 per pick.
+    picks = ok_results(jobs.get("pick_1m", []))
+    if "bvh" in picks and "p99_ms" in picks["bvh"]:
+        b = picks["bvh"]
+        gpu = picks.get("id_pass", {})
+        ref = (f"; ID pass p50 {gpu['p50_ms']:.0f} / p99 {gpu['p99_ms']:.0f} ms"
+               if "p99_ms" in gpu else "")
+        rows.append(("pick under the cursor, 1M triangles at 1280×800", "p99 ≤ 5 ms",
+                     f"p99 {b['p99_ms']:.3f} ms, p50 {b['p50_ms']:.3f} ms (BVH built once per "
+                     f"edit in {b.get('build_ms', 0):.0f} ms){ref}",
+                     "yes" if b["p99_ms"] <= 5 else "no"))
+    else:
+        rows.append(("pick under the cursor, 1M triangles at 1280×800", "p99 ≤ 5 ms",
+                     not_measured("pick_1m", "bvh missing"), "n/a"))
 
     # Loads that were once quadratic: the cost per face (per corner for the polygon) stays
     # flat from 100k to 1M.

@@ -16,6 +16,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "meshedit/files/io_error.h"
+#include "meshedit/render/cpu_pick.h"
 #include "meshedit/render/image.h"
 #include "meshedit/render/overlay.h"
 #include "meshedit/render/user_shaders.h"
@@ -108,7 +109,6 @@ App::App(const ViewerOptions& options) {
     glfwSetWindowCloseCallback(window_, [](GLFWwindow* w) { app_of(w).on_close_request(); });
     glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) {
         App& app = app_of(w);
-        app.pick_target_.reset();  // re-created at the new size on the next pick
         app.cursor_moved_ = true;
         app.redraw_frames_ = kSettleFrames;
     });
@@ -154,7 +154,6 @@ App::App(const ViewerOptions& options) {
 App::~App() {
     // GL objects go while their context is current.
     glfwMakeContextCurrent(window_);
-    pick_target_.reset();
     scene_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -176,8 +175,8 @@ int App::run() {
         if (glfwWindowShouldClose(window_)) {
             break;
         }
-        // Hover picking waits until the cursor rests a moment: on a big mesh without a GPU
-        // one ID pass costs the whole vertex stage, which must not run per motion event.
+        // Hover picking waits until the cursor rests a moment: the first pick after an edit
+        // rebuilds the face BVH (a fifth of a second per million triangles).
         if (cursor_moved_ && drag_ == DragMode::None &&
             glfwGetTime() - last_cursor_time_ >= kHoverDelaySeconds) {
             update_hover();
@@ -452,6 +451,9 @@ void App::apply(const Outcome& outcome) {
         set_status(outcome.message, outcome.refused);
     }
     const unsigned c = outcome.changes;
+    if (c & (kTopology | kGeometry | kDocument)) {
+        pick_bvh_stale_ = true;
+    }
     if (c & (kTopology | kDocument)) {
         upload_document();
     } else if (c & kGeometry) {
@@ -599,16 +601,20 @@ ElementRef App::pick_at_cursor() {
     if (!scene_->has_mesh()) {
         return {};
     }
-    if (!pick_target_ || pick_target_->width() != size.x || pick_target_->height() != size.y) {
-        pick_target_ = std::make_unique<RenderTarget>(size.x, size.y, 1);
-    }
     const auto start = std::chrono::steady_clock::now();
-    pick_target_->bind();
+    // On the CPU, by the ID pass's rules (cpu_pick.h). The BVH is rebuilt on the first pick
+    // after the document changes: a new revision, or geometry moved under the same one (a
+    // drag, an interactive edit; see apply()).
+    const Mesh& mesh = editor_.mesh();
+    if (pick_bvh_stale_ || pick_bvh_revision_ != editor_.document().revision) {
+        pick_bvh_.build(mesh);
+        pick_bvh_revision_ = editor_.document().revision;
+        pick_bvh_stale_ = false;
+    }
     const float scale = static_cast<float>(size.y) / std::max(1.0f, ImGui::GetIO().DisplaySize.y);
-    const ElementRef hit = scene_->mesh().pick(camera_, size.x, size.y, static_cast<int>(p.x),
-                                               static_cast<int>(p.y), 6.0f * scale, 4.0f * scale);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, size.x, size.y);
+    const ElementRef hit = cpu_pick(pick_bvh_, mesh, camera_, size.x, size.y, static_cast<int>(p.x),
+                                    static_cast<int>(p.y), scene_->mesh().culls_back_faces(camera_),
+                                    6.0f * scale, 4.0f * scale);
     last_pick_ms_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return is_live(editor_.mesh(), hit) ? hit : ElementRef{};

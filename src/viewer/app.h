@@ -2,12 +2,14 @@
 // Private: the viewer window. Owns the GLFW window, the GL renderers, the camera and the
 // mouse; everything about the document and its commands is the Editor's (editor.h).
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
 
 #include <glm/glm.hpp>
 
+#include "meshedit/core/face_bvh.h"
 #include "meshedit/render/camera.h"
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/scene.h"
@@ -97,7 +99,7 @@ private:
     Vec3 world_at(glm::dvec2 p, double ndc_z) const;
     void update_camera_planes();
 
-    /// The element under the cursor (ID pass for meshes, nearest control point for curves).
+    /// The element under the cursor (CPU pick for meshes, nearest control point for curves).
     ElementRef pick_at_cursor();
     void update_hover();
     /// Moves the dragged vertex or control point under the cursor, in the screen plane.
@@ -126,7 +128,9 @@ private:
     float scene_radius_ = 1.0f;
 
     std::unique_ptr<SceneRenderer> scene_;
-    std::unique_ptr<RenderTarget> pick_target_;
+    FaceBvh pick_bvh_;                     ///< picking's, of editor_.mesh()
+    std::uint64_t pick_bvh_revision_ = 0;  ///< the document revision it was built for
+    bool pick_bvh_stale_ = true;           ///< the mesh moved since (revision unchanged)
     FieldDisplay field_;
     std::filesystem::path user_shader_dir_;
     bool starters_checked_ = false;

@@ -22,7 +22,7 @@ namespace meshedit::viewer {
 
 struct FrameStats {
     double frame_ms = 0.0;  ///< CPU + GPU time of the last drawn frame
-    double pick_ms = 0.0;   ///< the last ID-pass pick (one scissored pixel, read back)
+    double pick_ms = 0.0;   ///< the last pick (a ray into the face BVH; a rebuild included)
     int width = 0, height = 0;
     std::size_t triangles = 0;
 };
