@@ -307,19 +307,15 @@ void FaceBvh::build(const Mesh& mesh) {
 }
 
 void FaceBvh::update(const Mesh& mesh, std::span<const Face> touched) {
-    if (mesh.faces_size() < faces_known_) {
-        build(mesh);  // renumbered (garbage collection): nothing of the tree is valid
-        ++rebuilds_;
-        return;
-    }
     std::vector<std::uint32_t> changed;
-    changed.reserve(touched.size() + (mesh.faces_size() - faces_known_));
     for (const Face f : touched) {
-        if (f.idx() < mesh.faces_size()) {
+        if (f.idx() < std::max(faces_known_, mesh.faces_size())) {
             changed.push_back(f.idx());
         }
     }
-    for (std::size_t f = faces_known_; f < mesh.faces_size(); ++f) {
+    // Appended since, or (an undone creation) gone past the end: changed either way.
+    for (std::size_t f = std::min(faces_known_, mesh.faces_size());
+         f < std::max(faces_known_, mesh.faces_size()); ++f) {
         changed.push_back(static_cast<std::uint32_t>(f));
     }
     faces_known_ = mesh.faces_size();
@@ -343,7 +339,7 @@ void FaceBvh::update(const Mesh& mesh, std::span<const Face> touched) {
         return std::binary_search(changed.begin(), changed.end(), tri.face);
     });
     for (const std::uint32_t f : changed) {
-        if (!mesh.is_deleted(Face(f))) {
+        if (f < mesh.faces_size() && !mesh.is_deleted(Face(f))) {
             append_fan(mesh, Face(f), overflow_);
         }
     }

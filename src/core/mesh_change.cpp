@@ -158,6 +158,20 @@ MeshChange::Region MeshChange::region() const {
     return r;
 }
 
+std::vector<Face> faces_to_redraw(const Mesh& mesh, const MeshChange::Region& region) {
+    std::vector<Face> faces = region.faces;
+    for (const Vertex v : region.vertices) {
+        if (v.idx() < mesh.vertices_size() && !mesh.is_deleted(v) && !mesh.is_isolated(v)) {
+            for (const Face f : mesh.faces(v)) {
+                faces.push_back(f);
+            }
+        }
+    }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    return faces;
+}
+
 // -------------------------------------------------------------------------- MeshRecorder
 
 bool MeshRecorder::Seen::insert(std::uint32_t i) {

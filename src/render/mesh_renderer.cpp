@@ -123,8 +123,7 @@ void MeshRenderer::fill_geometry(const Mesh& mesh) {
     compute_vertex_normals(mesh, vertex_normals_);
     normals_sizes_ = {mesh.vertices_size(), mesh.faces_size()};
     compute_face_normals(mesh, face_normals_);
-    split_normals_ =
-        compute_corner_normals(mesh, normal_split_, vertex_normals_, corner_normals_);
+    split_normals_ = compute_corner_normals(mesh, normal_split_, vertex_normals_, corner_normals_);
     vertices_.resize(3 * triangle_count_);
     bounds_ = {};
     for (Vertex v : mesh.vertices()) {

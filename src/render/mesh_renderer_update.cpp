@@ -29,9 +29,8 @@ void MeshRenderer::append_fan(const Mesh& mesh, Face f) {
         const std::uint32_t side0 = i == 1 ? h0.idx() : kInvalidIndex;
         const std::uint32_t side1 = h.idx();
         const std::uint32_t side2 = i + 2 == n ? mesh.next(h).idx() : kInvalidIndex;
-        pick_table_.insert(pick_table_.end(),
-                           {f.idx(), c0.idx(), mesh.from_vertex(h).idx(), mesh.to_vertex(h).idx(),
-                            side0, side1, side2, 0u});
+        pick_table_.insert(pick_table_.end(), {f.idx(), c0.idx(), mesh.from_vertex(h).idx(),
+                                               mesh.to_vertex(h).idx(), side0, side1, side2, 0u});
     });
 }
 
@@ -56,7 +55,7 @@ void MeshRenderer::write_fan(const Mesh& mesh, Face f, std::size_t first, std::s
             const std::uint32_t c = made > 0 ? triangle_corners_[3 * end] : 0;
             std::fill_n(&triangle_corners_[3 * t], 3, c);
             std::fill_n(&corner_halfedges_[3 * t], 3, 0u);
-            const std::uint32_t row[8] = {f.idx(),       c,  c, c, kInvalidIndex, kInvalidIndex,
+            const std::uint32_t row[8] = {f.idx(),       c, c, c, kInvalidIndex, kInvalidIndex,
                                           kInvalidIndex, 0u};
             std::copy_n(row, 8, &pick_table_[8 * t]);
             triangle_faces_[t] = f.idx();

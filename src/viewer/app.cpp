@@ -451,10 +451,28 @@ void App::apply(const Outcome& outcome) {
         set_status(outcome.message, outcome.refused);
     }
     const unsigned c = outcome.changes;
-    if (c & (kTopology | kGeometry | kDocument)) {
+    // A recorded local edit (or its undo or redo) names where it changed the mesh: the GPU
+    // buffers and the picking tree follow in the time of what it touched.
+    const std::optional<MeshChange::Region> region = editor_.take_region();
+    const bool local =
+        region && (c & kTopology) != 0 && (c & kDocument) == 0 && mesh_mode() && scene_->has_mesh();
+    if (local) {
+        // The tree is brought along only if it showed the document just before this command.
+        if (!pick_bvh_stale_ && pick_bvh_revision_ == applied_revision_) {
+            pick_bvh_.update(editor_.mesh(), faces_to_redraw(editor_.mesh(), *region));
+            pick_bvh_revision_ = editor_.document().revision;
+        } else {
+            pick_bvh_stale_ = true;
+        }
+        scene_->mesh().update(editor_.mesh(), region->faces, region->vertices);
+        editor_.set_hover({});
+        cursor_moved_ = true;
+    } else if (c & (kTopology | kGeometry | kDocument)) {
         pick_bvh_stale_ = true;
     }
-    if (c & (kTopology | kDocument)) {
+    if (local) {
+        // updated above
+    } else if (c & (kTopology | kDocument)) {
         upload_document();
     } else if (c & kGeometry) {
         scene_->mesh().update_geometry(editor_.mesh());
@@ -500,6 +518,7 @@ void App::apply(const Outcome& outcome) {
     if (c & kAskOpenPath) {
         panels_.ask_path(Panels::Prompt::Open, editor_.path());
     }
+    applied_revision_ = editor_.document().revision;
     if (c & kQuit) {
         quit_ = true;
     }

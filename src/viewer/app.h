@@ -131,6 +131,7 @@ private:
     FaceBvh pick_bvh_;                     ///< picking's, of editor_.mesh()
     std::uint64_t pick_bvh_revision_ = 0;  ///< the document revision it was built for
     bool pick_bvh_stale_ = true;           ///< the mesh moved since (revision unchanged)
+    std::uint64_t applied_revision_ = 0;   ///< the document's revision after the last apply()
     FieldDisplay field_;
     std::filesystem::path user_shader_dir_;
     bool starters_checked_ = false;

@@ -43,6 +43,7 @@ Outcome Editor::press(Key key, unsigned mods) {
 
 Outcome Editor::run(Action action) {
     const Command c = action.command;
+    region_.reset();  // set again below only by a recorded edit, its undo or redo
     if (modal_.kind != Modal::None) {
         // A key the interactive edit does not take (modal_key) applies it first, as in
         // Blender.
@@ -305,6 +306,7 @@ Outcome Editor::edit_recorded(const std::function<Edited(Document&)>& apply) {
     change.session_added.assign(doc_.session.begin() + static_cast<std::ptrdiff_t>(session_before),
                                 doc_.session.end());
     change.revision_after = doc_.revision;
+    region_ = change.mesh.region();
     history_.push(std::move(change));
     return {edited.changes, std::move(edited.message)};
 }
@@ -339,6 +341,7 @@ Outcome Editor::undo() {
     if (!history_.undo(doc_)) {
         return refused("nothing to undo");
     }
+    region_ = history_.take_region();
     hover_ = {};
     if (doc_.mode == Mode::Curve) {
         view_.level = std::min(view_.level, doc_.curve.degree());
@@ -354,6 +357,7 @@ Outcome Editor::redo() {
     if (!history_.redo(doc_)) {
         return refused("nothing to redo");
     }
+    region_ = history_.take_region();
     hover_ = {};
     if (doc_.mode == Mode::Curve) {
         view_.level = std::min(view_.level, doc_.curve.degree());

@@ -89,7 +89,9 @@ bool History::move_step(From& from, To& to, Document& current, bool forward) {
     Step step = std::move(from.back());
     from.pop_back();
     bytes_ -= bytes_of(step);
+    region_.reset();
     if (auto* change = std::get_if<DocumentChange>(&step)) {
+        region_ = change->mesh.region();
         if (forward) {
             change->redo(current);
         } else {

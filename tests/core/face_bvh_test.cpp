@@ -11,6 +11,7 @@
 #include "meshedit/core/display_fan.h"
 #include "meshedit/core/face_bvh.h"
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/mesh_change.h"
 #include "meshedit/core/shapes.h"
 #include "support/fixtures.h"
 
@@ -244,15 +245,24 @@ TEST(FaceBvh, UpdateRebuildsPastTheLimit) {
     EXPECT_EQ(bvh.overflow_size(), 0u);
     EXPECT_EQ(bvh.stale_count(), 0u);
     expect_same(mesh, bvh, 300, 8);
+}
 
-    // Garbage collection renumbers: update() notices the shrink and rebuilds.
-    for (int i = 0; i < 50; ++i) {
-        (void)collapse(mesh, Edge(static_cast<std::uint32_t>(7 * i)));
+// Undoing a recorded edit removes the faces it appended: update() drops them (no rebuild).
+TEST(FaceBvh, UpdateFollowsAnUndoneEdit) {
+    Mesh mesh = shapes::torus(30, 20);
+    FaceBvh bvh(mesh);
+    MeshRecorder recorder(mesh);
+    for (std::uint32_t e = 0; e < 40; e += 4) {
+        ASSERT_TRUE(split(mesh, Edge(e)));
     }
-    mesh.garbage_collection();
-    bvh.update(mesh, {});
-    EXPECT_EQ(bvh.rebuilds(), 2u);
-    expect_same(mesh, bvh, 300, 9);
+    const MeshChange change = recorder.finish();
+    const MeshChange::Region region = change.region();
+    bvh.update(mesh, faces_to_redraw(mesh, region));
+    expect_same(mesh, bvh, 300, 10);
+    change.undo(mesh);
+    bvh.update(mesh, faces_to_redraw(mesh, region));
+    EXPECT_EQ(bvh.rebuilds(), 0u);
+    expect_same(mesh, bvh, 300, 11);
 }
 
 }  // namespace

@@ -11,7 +11,8 @@
 /// The tree holds indices only (a face, its fan position and three vertices per triangle);
 /// positions are read from the mesh at query time, so the mesh passed to intersect() must be
 /// the one built or updated, with no vertex moved since unless its faces were passed to
-/// update(). After garbage_collection() (which renumbers) call build() again.
+/// update(). After garbage_collection() (which renumbers) call build() again: update() takes
+/// faces past the mesh's end for ones an undo took away, not for renumbered ones.
 ///
 /// Local edits: update(mesh, touched) takes the faces an edit changed (their corners, their
 /// shape or their deletion; for a moved vertex, every face around it). Their triangles in the
@@ -73,7 +74,8 @@ public:
 
     /// Brings the tree up to date after a local edit: `touched` are the faces whose corners,
     /// shape or liveness changed (deleted ones included, any order, repeats allowed); faces
-    /// appended since the last build or update are taken as touched. O(touched + overflow)
+    /// appended since the last build or update are taken as touched, and so are faces past
+    /// the mesh's end (an undone creation: gone). O(touched + overflow)
     /// unless it rebuilds (see the file comment).
     void update(const Mesh& mesh, std::span<const Face> touched);
 

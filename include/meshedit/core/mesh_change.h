@@ -133,6 +133,11 @@ private:
     std::string problem_;  ///< the first untracked write, or a failed allocation
 };
 
+/// The faces whose picture a change may have altered in `mesh` (either side of it): the
+/// region's faces and every live face around its live vertices (a moved vertex reshapes
+/// them). Sorted, unique; may include deleted or out-of-range indices from the region.
+std::vector<Face> faces_to_redraw(const Mesh& mesh, const MeshChange::Region& region);
+
 /// True when both meshes hold the same properties (names, kinds, order) with the same bytes
 /// in every element, deleted ones included, and the same deletion counts; otherwise false
 /// with the first difference in `why`. For tests of recorded edits and undo.

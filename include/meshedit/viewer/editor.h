@@ -273,6 +273,10 @@ public:
     using ProgressHook = std::function<void(std::string_view verb, double fraction)>;
     void set_progress_hook(ProgressHook hook) { progress_hook_ = std::move(hook); }
     const History& history() const { return history_; }
+    /// Where the last command changed the mesh when that was a recorded local edit, its undo
+    /// or its redo (MeshChange::region(): for MeshRenderer::update()); empty after anything
+    /// else. Taken once: the window takes it after every command.
+    std::optional<MeshChange::Region> take_region() { return std::exchange(region_, {}); }
     const std::filesystem::path& path() const { return path_; }
     /// Unsaved changes: the content differs from what was last opened or saved (undoing
     /// back to the saved state makes it clean again).
@@ -367,6 +371,7 @@ private:
     ProgressHook progress_hook_;
     ElementRef hover_;
     std::optional<OpDiagram> diagram_;
+    std::optional<MeshChange::Region> region_;  ///< see take_region()
     std::filesystem::path path_;
     /// The file the session starts from and its content_hash() (set by open()).
     std::filesystem::path session_source_;

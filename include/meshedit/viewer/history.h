@@ -18,6 +18,7 @@
 #include <deque>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -67,6 +68,10 @@ public:
     std::size_t bytes() const { return bytes_; }
     const HistoryLimits& limits() const { return limits_; }
 
+    /// After undo() or redo() moved a recorded change: where the mesh changed
+    /// (MeshChange::region()), once; empty after a snapshot or when taken already.
+    std::optional<MeshChange::Region> take_region() { return std::exchange(region_, {}); }
+
     /// Whether the last undo step is a recorded change (not a snapshot); for tests.
     bool last_is_change() const {
         return !undo_.empty() && std::holds_alternative<DocumentChange>(undo_.back());
@@ -87,6 +92,7 @@ private:
     std::deque<Step> undo_;
     std::vector<Step> redo_;
     std::size_t bytes_ = 0;  ///< of undo_ and redo_ together
+    std::optional<MeshChange::Region> region_;
 };
 
 }  // namespace meshedit::viewer

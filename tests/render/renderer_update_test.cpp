@@ -1,0 +1,105 @@
+// MeshRenderer::update() after recorded local edits, and after their undo, draws exactly what a
+// fresh upload() of the same mesh draws: same pixels, smooth and flat, wireframe on, on
+// triangle meshes, an open grid and polygons (OSMesa, one sample, so no resolve differs).
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "../../src/headless/osmesa_context.h"
+#include "meshedit/core/local_ops.h"
+#include "meshedit/core/mesh_change.h"
+#include "meshedit/core/shapes.h"
+#include "meshedit/render/image.h"
+#include "meshedit/render/mesh_renderer.h"
+#include "meshedit/render/overlay_renderer.h"
+#include "meshedit/render/render_target.h"
+#include "support/fixtures.h"
+
+namespace meshedit {
+namespace {
+
+constexpr int kSize = 160;
+
+Image draw(BackgroundRenderer& background, MeshRenderer& renderer, const Camera& camera,
+           bool smooth) {
+    const float black[3] = {0, 0, 0};  // the background clears colour and depth
+    background.draw(black, black);
+    RenderOptions options;
+    options.smooth = smooth;
+    options.wireframe = true;
+    renderer.draw(camera, 1.0f, options);
+    return read_framebuffer(kSize, kSize);
+}
+
+// Random flips, splits, collapses, dissolves and pokes; after each, and after undoing it,
+// the updated renderer and a fresh one must draw the same picture.
+void check(Mesh mesh, unsigned seed, int edits) {
+    headless::OsMesaContext context(kSize, kSize);
+    RenderTarget target(kSize, kSize, 1);
+    target.bind();
+    Camera camera;
+    camera.frame_mesh(mesh, 1.0f);
+    BackgroundRenderer background;
+    MeshRenderer updated;
+    updated.upload(mesh);
+    std::mt19937 rng(seed);
+    int incremental = 0, compared = 0;
+    for (int i = 0; i < edits; ++i) {
+        const Edge e(static_cast<std::uint32_t>(rng() % mesh.edges_size()));
+        const Face f(static_cast<std::uint32_t>(rng() % mesh.faces_size()));
+        const int op = static_cast<int>(rng() % 5);
+        MeshRecorder recorder(mesh);
+        bool ok = false;
+        if (op < 4 && !mesh.is_deleted(e)) {
+            ok = op == 0   ? flip(mesh, e).ok()
+                 : op == 1 ? split(mesh, e).ok()
+                 : op == 2 ? collapse(mesh, e).ok()
+                           : dissolve_edge(mesh, e).ok();
+        } else if (op == 4 && !mesh.is_deleted(f)) {
+            ok = poke(mesh, f).ok();
+        }
+        MeshChange change = recorder.finish();
+        if (!ok) {
+            continue;
+        }
+        const MeshChange::Region region = change.region();
+        for (const bool undo : {false, true}) {
+            if (undo && rng() % 3 != 0) {
+                break;  // undo a third of them; the rest stay and the mesh evolves
+            }
+            if (undo) {
+                change.undo(mesh);
+            }
+            incremental += updated.update(mesh, region.faces, region.vertices) ? 1 : 0;
+            MeshRenderer fresh;
+            fresh.upload(mesh);
+            for (const bool smooth : {true, false}) {
+                const Image a = draw(background, updated, camera, smooth);
+                const Image b = draw(background, fresh, camera, smooth);
+                ASSERT_TRUE(a.rgba == b.rgba)
+                    << "edit " << i << (undo ? " undone" : "") << (smooth ? ", smooth" : ", flat");
+                ++compared;
+            }
+        }
+    }
+    EXPECT_GT(compared, edits / 2);
+    EXPECT_EQ(incremental * 2, compared);  // every update was incremental
+}
+
+TEST(RendererUpdate, TriangleMeshDrawsAsAFreshUpload) {
+    check(shapes::torus(16, 10), 1, 60);
+}
+
+TEST(RendererUpdate, OpenGridDrawsAsAFreshUpload) {
+    check(shapes::grid(8, 6), 2, 60);
+}
+
+TEST(RendererUpdate, PolygonsDrawAsAFreshUpload) {
+    check(shapes::quad_sphere(3), 3, 60);
+}
+
+}  // namespace
+}  // namespace meshedit
