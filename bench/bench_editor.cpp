@@ -10,7 +10,8 @@
 // selected first as a click would), then that many undos and redos. One process prints one
 // RESULT line per measure, each over every applied edit (p50 as median_ms, p99_ms, max_ms):
 //   command          Editor::run (check, apply, undo record, garbage collection), no GPU
-//   command_upload   the same plus the renderer's buffer update after it (glFinish)
+//   command_upload   the same plus the renderer's buffer update after it, as the window does
+//                    it (MeshRenderer::update from the change's region; glFinish)
 //   undo, redo       Editor::undo / redo, no GPU; undo_upload: plus the buffer update
 // and extras: undo bytes per flip (History::bytes() growth), undo steps still held after the
 // edits, the history's total.
@@ -77,6 +78,17 @@ void upload(MeshRenderer& renderer, const Editor& editor, const headless::OsMesa
     gl.finish();
 }
 
+// What the window does after a command (App::apply): the buffers updated from the change's
+// region when the command was a recorded edit, its undo or redo; uploaded whole otherwise.
+void follow(MeshRenderer& renderer, Editor& editor, const headless::OsMesaContext& gl) {
+    if (const auto region = editor.take_region()) {
+        renderer.update(editor.mesh(), region->faces, region->vertices);
+        gl.finish();
+    } else {
+        upload(renderer, editor, gl);
+    }
+}
+
 int run_edits(const std::string& job, int runs, const std::filesystem::path& data) {
     Editor editor;
     viewer::Document doc;
@@ -116,7 +128,7 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
             }
             command.push_back(ms);
             start = std::chrono::steady_clock::now();
-            upload(renderer, editor, gl);
+            follow(renderer, editor, gl);
             command_upload.push_back(ms + ms_since(start));
             // Only while nothing was dropped is the growth this step's size.
             if (verb == "flip" && editor.history().undo_steps() == steps_before + 1) {
@@ -133,7 +145,7 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
             const double ms = ms_since(start);
             undo.push_back(ms);
             start = std::chrono::steady_clock::now();
-            upload(renderer, editor, gl);
+            follow(renderer, editor, gl);
             undo_upload.push_back(ms + ms_since(start));
         }
         for (std::size_t i = 0; i < applied_here; ++i) {
@@ -142,6 +154,7 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
                 break;
             }
             redo.push_back(ms_since(start));
+            follow(renderer, editor, gl);
         }
         upload(renderer, editor, gl);
     }
@@ -191,7 +204,7 @@ int run_loop(const std::string& impl, int runs) {
         }
         const double command = ms_since(start);
         const auto up = std::chrono::steady_clock::now();
-        upload(renderer, editor, gl);
+        follow(renderer, editor, gl);
         upload_ms.push_back(ms_since(up));
         ms.push_back(command + upload_ms.back());
     }
