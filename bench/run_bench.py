@@ -515,6 +515,52 @@ def remesh_target_rows(jobs):
     return [(label, target, measured, "yes" if all(checks) else "no")]
 
 
+def editor_target_rows(jobs, not_measured):
+    """Issue 20: the viewer's command layer and renderer at a million faces (bench_editor)."""
+    rows = []
+    for job, mesh in (("editor_edits_torus_1m", "1M torus"), ("editor_edits_scan_1m",
+                                                                "1.2M scan")):
+        r = ok_results(jobs.get(job, []))
+        if "command" not in r:
+            rows.append((f"F/S/C, {mesh}", "p99 ≤ 1 ms", not_measured(job, "not run"), "n/a"))
+            continue
+        for impl, label, limit in (
+                ("command", "F/S/C with undo record, no draw", 1.0),
+                ("command_upload", "F/S/C plus GPU buffer update", 5.0),
+                ("undo", "undo of such an edit", 1.0),
+                ("undo_upload", "undo plus GPU buffer update", 5.0),
+                ("redo", "redo of such an edit", 1.0)):
+            x = r.get(impl, {})
+            if "p99_ms" in x:
+                rows.append((f"{label}, {mesh}", f"p99 ≤ {limit:g} ms",
+                             f"p99 {x['p99_ms']:.3f} ms, p50 {x['median_ms']:.3f} ms",
+                             "yes" if x["p99_ms"] <= limit else "no"))
+        c = r["command"]
+        if "bytes_per_flip" in c:
+            rows.append((f"undo memory per flip, {mesh}", "≤ 1 KiB",
+                         f"{c['bytes_per_flip']:.0f} B (max {c.get('bytes_per_flip_max', 0):.0f})",
+                         "yes" if c.get("bytes_per_flip_max", c["bytes_per_flip"]) <= 1024
+                         else "no"))
+        if "undo_steps_held" in c:
+            held = c["undo_steps_held"]
+            rows.append((f"200 undo steps of local edits, {mesh}", "all kept",
+                         f"{held:.0f} kept, history {c.get('history_mib', 0):.2f} MiB",
+                         "yes" if held >= 200 else "no"))
+    loop = ok_results(jobs.get("editor_loop_1m", []))
+    if "core" in loop and "viewer" in loop and "command_ms" in loop["viewer"]:
+        core = loop["core"]["median_ms"]
+        v = loop["viewer"]
+        rows.append(("Loop in the viewer, 1M faces (command, without the upload)",
+                     "≤ 2 × core Loop (+ upload)",
+                     f"{v['command_ms']:.0f} ms vs core {core:.0f} ms = "
+                     f"{v['command_ms'] / core:.2f}× (upload {v.get('upload_ms', 0):.0f} ms)",
+                     "yes" if v["command_ms"] <= 2 * core else "no"))
+    else:
+        rows.append(("Loop in the viewer, 1M faces", "≤ 2 × core Loop (+ upload)",
+                     not_measured("editor_loop_1m", "core or viewer missing"), "n/a"))
+    return rows
+
+
 def targets_table(jobs):
     rows = []
 
@@ -610,6 +656,8 @@ def targets_table(jobs):
     else:
         rows.append(("pick under the cursor, 1M triangles at 1280×800", "p99 ≤ 5 ms",
                      not_measured("pick_1m", "bvh missing"), "n/a"))
+
+    rows += editor_target_rows(jobs, not_measured)
 
     # Loads that were once quadratic: the cost per face (per corner for the polygon) stays
     # flat from 100k to 1M.
