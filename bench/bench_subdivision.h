@@ -109,7 +109,9 @@ inline int run_subdivision_job(const std::string& job, const std::string& impl, 
         double rss_before = -1;
         const BeforeCopy before_copy = [&] {
             if (rss_before < 0) {
-                malloc_trim(0);  // freed heap pages of the input preparation would hide the copy
+                if (!warm_protocol()) {  // warm: what the preparation freed is there to reuse
+                    malloc_trim(0);  // freed heap pages of the preparation would hide the copy
+                }
                 rss_before = current_rss_mb();
             }
         };

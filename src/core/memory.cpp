@@ -6,7 +6,10 @@
 #include "meshedit/core/memory.h"
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
+#include <mutex>
+#include <vector>
 
 #if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
 #define MESHEDIT_MAP_BIG 1
@@ -39,8 +42,31 @@ void set_huge_pages_enabled(bool enabled) {
 
 #if MESHEDIT_MAP_BIG
 
+namespace {
+
+// Freed big buffers kept for reuse (set_reuse_freed), with their mapped length.
+struct Kept {
+    void* data;
+    std::size_t length;
+};
+std::mutex g_kept_mutex;
+std::vector<Kept> g_kept;
+std::atomic<bool> g_reuse{false};
+
+}  // namespace
+
 void* map_big(std::size_t bytes) {
     const std::size_t length = round_up(bytes, kPage);
+    if (g_reuse.load(std::memory_order_relaxed)) {
+        const std::lock_guard lock(g_kept_mutex);
+        for (std::size_t i = 0; i < g_kept.size(); ++i) {
+            if (g_kept[i].length == length) {
+                void* data = g_kept[i].data;
+                g_kept.erase(g_kept.begin() + static_cast<std::ptrdiff_t>(i));
+                return data;
+            }
+        }
+    }
     // Map 2 MiB more than needed, then unmap the ends so that the buffer starts on a 2 MiB
     // boundary (the kernel places a mapping on any 4 KiB boundary).
     void* raw =
@@ -67,7 +93,26 @@ void* map_big(std::size_t bytes) {
 }
 
 void unmap_big(void* data, std::size_t bytes) noexcept {
+    if (g_reuse.load(std::memory_order_relaxed)) {
+        try {
+            const std::lock_guard lock(g_kept_mutex);
+            g_kept.push_back({data, round_up(bytes, kPage)});
+            return;
+        } catch (...) {  // no room to remember it: give it back
+        }
+    }
     ::munmap(data, round_up(bytes, kPage));
+}
+
+void set_reuse_freed(bool reuse) {
+    g_reuse.store(reuse, std::memory_order_relaxed);
+    if (!reuse) {
+        const std::lock_guard lock(g_kept_mutex);
+        for (const Kept& k : g_kept) {
+            ::munmap(k.data, k.length);
+        }
+        g_kept.clear();
+    }
 }
 
 void advise_huge_pages(const void* data, std::size_t bytes) {
@@ -92,6 +137,8 @@ void unmap_big(void* data, std::size_t /*bytes*/) noexcept {
 }
 
 void advise_huge_pages(const void* /*data*/, std::size_t /*bytes*/) {}
+
+void set_reuse_freed(bool /*reuse*/) {}  // operator new's buffers: the allocator decides
 
 #endif
 

@@ -35,6 +35,12 @@ void unmap_big(void* data, std::size_t bytes) noexcept;
 bool huge_pages_enabled();
 void set_huge_pages_enabled(bool enabled);
 
+/// Whether unmap_big() keeps what it frees for the next map_big() of the same size instead of
+/// returning it to the system (default: no). A benchmark's warm protocol turns it on, so that
+/// repetitions reuse memory already faulted in, as a long-running program's allocator would;
+/// turning it off releases what is kept. Thread-safe.
+void set_reuse_freed(bool reuse);
+
 /// Asks for huge pages on the whole 2 MiB pages inside [data, data + bytes) of a buffer this
 /// module did not map (a std::string, say), when it spans at least two. Refusals are ignored.
 void advise_huge_pages(const void* data, std::size_t bytes);
