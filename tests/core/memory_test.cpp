@@ -109,5 +109,28 @@ TEST(Memory, MeshesAreTheSameWithAndWithoutHugePages) {
     EXPECT_TRUE(test::identical(with, without));
 }
 
+// The warm benchmark protocol: a freed big buffer comes back for the next request of the same
+// size (under ASan big buffers come from operator new, and reuse is the allocator's business).
+TEST(Memory, ReuseKeepsFreedBigBuffersForTheSameSize) {
+#if !defined(__SANITIZE_ADDRESS__)
+    const std::size_t bytes = 3 * memory::kBigBytes + 12345;
+    memory::set_reuse_freed(true);
+    void* a = memory::map_big(bytes);
+    static_cast<char*>(a)[bytes - 1] = 7;
+    memory::unmap_big(a, bytes);
+    void* b = memory::map_big(bytes);
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(static_cast<char*>(b)[bytes - 1], 7);  // the same pages, not fresh ones
+    void* c = memory::map_big(bytes);                // none kept now: a new mapping
+    EXPECT_NE(c, b);
+    memory::unmap_big(b, bytes);
+    memory::unmap_big(c, bytes);
+    memory::set_reuse_freed(false);  // releases both
+    void* d = memory::map_big(bytes);
+    EXPECT_EQ(static_cast<char*>(d)[bytes - 1], 0);  // fresh pages are zero
+    memory::unmap_big(d, bytes);
+#endif
+}
+
 }  // namespace
 }  // namespace meshedit
