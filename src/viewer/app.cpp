@@ -455,7 +455,7 @@ void App::apply(const Outcome& outcome) {
     // buffers and the picking tree follow in the time of what it touched.
     const std::optional<MeshChange::Region> region = editor_.take_region();
     const bool local =
-        region && (c & kTopology) != 0 && (c & kDocument) == 0 && mesh_mode() && scene_->has_mesh();
+        region && (c & (kTopology | kDocument)) != 0 && mesh_mode() && scene_->has_mesh();
     if (local) {
         // The tree is brought along only if it showed the document just before this command.
         if (!pick_bvh_stale_ && pick_bvh_revision_ == applied_revision_) {
