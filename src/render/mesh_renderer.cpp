@@ -100,7 +100,7 @@ void MeshRenderer::upload(const Mesh& mesh) {
         face_slots_[f.idx()] = static_cast<std::uint32_t>(mesh.valence(f) - 2);
         append_fan(mesh, f);
     }
-    triangle_count_ = triangle_faces_.size();
+    triangle_count_ = live_triangles_ = triangle_faces_.size();
     fill_geometry(mesh);
 
     glBindBuffer(GL_TEXTURE_BUFFER, pick_tbo_buffer_);

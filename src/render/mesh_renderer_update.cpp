@@ -127,6 +127,11 @@ bool MeshRenderer::update(const Mesh& mesh, std::span<const Face> faces,
         }
         std::size_t first = face_first_[f.idx()];
         std::size_t slots = face_slots_[f.idx()];
+        for (std::size_t t = first; t < first + slots; ++t) {  // live before: not degenerate
+            const std::uint32_t* c = &triangle_corners_[3 * t];
+            live_triangles_ -= c[0] != c[1] || c[1] != c[2] ? 1 : 0;
+        }
+        live_triangles_ += need;
         if (need > slots) {
             if (slots > 0) {
                 write_fan(mesh, Face(kInvalidIndex), first, slots);  // the old slot: nothing

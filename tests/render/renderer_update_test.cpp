@@ -76,6 +76,7 @@ void check(Mesh mesh, unsigned seed, int edits) {
             incremental += updated.update(mesh, region.faces, region.vertices) ? 1 : 0;
             MeshRenderer fresh;
             fresh.upload(mesh);
+            ASSERT_EQ(updated.triangle_count(), fresh.triangle_count());
             for (const bool smooth : {true, false}) {
                 const Image a = draw(background, updated, camera, smooth);
                 const Image b = draw(background, fresh, camera, smooth);

@@ -98,7 +98,8 @@ public:
     /// `cull_back_faces` (draw() culls them when culls_back_faces() says so).
     void draw_bare(const Camera& camera, float aspect, bool cull_back_faces = false);
 
-    std::size_t triangle_count() const { return triangle_count_; }
+    /// Triangles of the live faces (after update() the buffers hold some degenerate ones too).
+    std::size_t triangle_count() const { return live_triangles_; }
 
     /// Colours the surface by a scalar field (core/fields.h) of the uploaded mesh: a vertex
     /// field interpolated across the faces, a face field flat per face, an edge field on the
@@ -154,9 +155,10 @@ private:
     unsigned vbo_ = 0;
     unsigned pick_tbo_buffer_ = 0;
     unsigned pick_tbo_texture_ = 0;
-    std::size_t vbo_capacity_ = 0;   ///< bytes allocated in vbo_
-    std::size_t pick_capacity_ = 0;  ///< bytes allocated in pick_tbo_buffer_
-    std::size_t triangle_count_ = 0;
+    std::size_t vbo_capacity_ = 0;    ///< bytes allocated in vbo_
+    std::size_t pick_capacity_ = 0;   ///< bytes allocated in pick_tbo_buffer_
+    std::size_t triangle_count_ = 0;  ///< in the buffers, degenerate slots included
+    std::size_t live_triangles_ = 0;
     bool closed_and_outward_ = false;  ///< is_closed_and_outward(), set by upload and
                                        ///< update_geometry
     BoundingBox bounds_;               ///< of the live vertices (same)
