@@ -48,6 +48,32 @@ TEST(Editor, BrokenFileLeavesTheDocumentUntouched) {
     EXPECT_EQ(ed.selection().kind, Kind::Edge);
 }
 
+// Local edits leave tombstones; saving collects them first, as an undo step of its own and a
+// `compact` in the session, so the file and the info panel number elements alike.
+TEST(Editor, SavingCollectsTheTombstonesOfLocalEditsAsAnUndoStep) {
+    TempDir dir;
+    const Mesh ico = shapes::icosphere(1);
+    Editor ed = editor_with(ico);
+    ed.select(ElementRef::edge(Edge(17)));
+    ASSERT_FALSE(ed.press(key_of('C'), 0).refused);
+    ASSERT_TRUE(ed.mesh().has_garbage());
+    const Mesh collapsed = ed.mesh();
+    const Outcome out = ed.save_as(dir / "ico.obj");
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_FALSE(ed.mesh().has_garbage());
+    EXPECT_FALSE(ed.dirty());
+    EXPECT_EQ(ed.document().session.back(), "compact");
+    EXPECT_EQ(ed.history().undo_steps(), 2u);
+    Mesh compacted = collapsed;
+    compacted.garbage_collection();
+    EXPECT_TRUE(test::identical(ed.mesh(), compacted));
+    EXPECT_TRUE(test::same_faces_by_position(read_mesh(dir / "ico.obj").mesh, compacted, 1e-6));
+    ASSERT_FALSE(ed.run({Command::Undo}).refused);  // the renumbering
+    EXPECT_TRUE(test::identical(ed.mesh(), collapsed));
+    ASSERT_FALSE(ed.run({Command::Undo}).refused);  // the collapse
+    EXPECT_TRUE(test::identical(ed.mesh(), ico));
+}
+
 TEST(Editor, OpenClearsHistoryAndSelection) {
     TempDir dir;
     write_mesh(shapes::icosahedron(), dir / "ico.obj");
