@@ -13,6 +13,7 @@
 //   command_upload   the same plus the renderer's buffer update after it, as the window does
 //                    it (MeshRenderer::update from the change's region; glFinish)
 //   undo, redo       Editor::undo / redo, no GPU; undo_upload: plus the buffer update
+//   drag_move_upload one mouse move of a vertex drag (Editor::drag_to) plus the buffer update
 // and extras: undo bytes per flip (History::bytes() growth), undo steps still held after the
 // edits, the history's total.
 // editor_loop_1m: Loop on the 1M torus: `core` loop_subdivide() on a copy; `viewer` the L
@@ -158,6 +159,25 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
         }
         upload(renderer, editor, gl);
     }
+    // A vertex dragged across 200 mouse moves: each move with its GPU update.
+    std::vector<double> drag;
+    {
+        const Mesh& mesh = editor.mesh();
+        Vertex v(static_cast<std::uint32_t>(rng() % mesh.vertices_size()));
+        while (mesh.is_deleted(v)) {
+            v = Vertex(static_cast<std::uint32_t>(rng() % mesh.vertices_size()));
+        }
+        editor.select(ElementRef::vertex(v));
+        editor.begin_drag();
+        const Vec3 from = mesh.position(v);
+        for (int i = 1; i <= kEditsPerRun; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            editor.drag_to(from + Vec3{1e-4 * i, 0.0, 0.0});
+            follow(renderer, editor, gl);
+            drag.push_back(ms_since(start));
+        }
+        editor.end_drag();
+    }
     const auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
     const std::map<std::string, double> sizes = {
         {"faces", static_cast<double>(faces)},
@@ -172,6 +192,7 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
     print_series(job, "undo", undo, {{"undone", static_cast<double>(undo.size())}});
     print_series(job, "undo_upload", undo_upload);
     print_series(job, "redo", redo, {{"redone", static_cast<double>(redo.size())}});
+    print_series(job, "drag_move_upload", drag);
     return 0;
 }
 

@@ -545,7 +545,8 @@ def editor_target_rows(jobs, not_measured):
                 ("command_upload", "F/S/C plus GPU buffer update", 5.0),
                 ("undo", "undo of such an edit", 1.0),
                 ("undo_upload", "undo plus GPU buffer update", 5.0),
-                ("redo", "redo of such an edit", 1.0)):
+                ("redo", "redo of such an edit", 1.0),
+                ("drag_move_upload", "one move of a vertex drag plus GPU buffer update", 5.0)):
             x = r.get(impl, {})
             if "p99_ms" in x:
                 rows.append((f"{label}, {mesh}", f"p99 ≤ {limit:g} ms",

@@ -92,6 +92,16 @@ void MeshChange::redo(Mesh& mesh) const {
     mesh.n_deleted_faces_ = deleted_after_[2];
 }
 
+void MeshChange::refresh_after(const Mesh& mesh) {
+    const PropertyContainer* c[] = {&mesh.vprops_, &mesh.hprops_, &mesh.eprops_, &mesh.fprops_};
+    for (int k = 0; k < 4; ++k) {
+        const Kind& kind = kinds_[k];
+        for (std::size_t i = 0; i < kind.n_touched; ++i) {
+            save(*c[k], kind.n_arrays, touched(k, i), &data_[kind.after_at() + i * kind.stride]);
+        }
+    }
+}
+
 std::size_t MeshChange::bytes() const {
     std::size_t total = sizeof(*this) + data_.capacity();
     if (added_) {

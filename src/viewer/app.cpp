@@ -454,8 +454,8 @@ void App::apply(const Outcome& outcome) {
     // A recorded local edit (or its undo or redo) names where it changed the mesh: the GPU
     // buffers and the picking tree follow in the time of what it touched.
     const std::optional<MeshChange::Region> region = editor_.take_region();
-    const bool local =
-        region && (c & (kTopology | kDocument)) != 0 && mesh_mode() && scene_->has_mesh();
+    const bool local = region && (c & (kTopology | kGeometry | kDocument)) != 0 && mesh_mode() &&
+                       scene_->has_mesh();
     if (local) {
         // The tree is brought along only if it showed the document just before this command.
         if (!pick_bvh_stale_ && pick_bvh_revision_ == applied_revision_) {
@@ -465,7 +465,9 @@ void App::apply(const Outcome& outcome) {
             pick_bvh_stale_ = true;
         }
         scene_->mesh().update(editor_.mesh(), region->faces, region->vertices);
-        editor_.set_hover({});
+        if ((c & kGeometry) == 0) {
+            editor_.set_hover({});  // a drag keeps the hover it has
+        }
         cursor_moved_ = true;
     } else if (c & (kTopology | kGeometry | kDocument)) {
         pick_bvh_stale_ = true;

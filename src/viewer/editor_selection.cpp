@@ -320,25 +320,55 @@ Outcome Editor::drag_to(const Vec3& position, double pixel) {
     if (*target == wanted) {
         return {};
     }
+    const bool curve = doc_.mode == Mode::Curve;
     if (!drag_moved_) {
-        snapshot();  // one undo step per drag; invalidates nothing: doc_ is copied, not moved
+        // One undo step per drag, taken on its first move. A mesh vertex's drag is recorded
+        // (the vertex's values, a few dozen bytes, whatever the mesh); a control point's
+        // curve is small enough to snapshot.
+        if (curve) {
+            snapshot();
+        } else {
+            begin_recorded_drag();
+        }
         drag_moved_ = true;
-        target = doc_.mode == Mode::Curve ? &doc_.curve.control_points[drag_index_]
-                                          : &doc_.mesh.position(Vertex(drag_index_));
+        target = curve ? &doc_.curve.control_points[drag_index_]
+                       : &doc_.mesh.position(Vertex(drag_index_));
         drag_from_ = *target;
         drag_session_step_ = doc_.session.size();
     }
     *target = wanted;
-    const bool curve = doc_.mode == Mode::Curve;
     if (!curve) {
         // One step per drag: the first move adds it, the others update where it ends.
         if (drag_session_step_ == doc_.session.size()) {
             doc_.session.emplace_back();
         }
         doc_.session[drag_session_step_] = move_step(doc_.mesh, drag_index_);
+        // The undo step follows at every move, so it is right whenever undo comes.
+        history_.amend_last([&](DocumentChange& change) {
+            change.mesh.refresh_after(doc_.mesh);
+            change.session_added = {doc_.session[drag_session_step_]};
+        });
+        region_ = MeshChange::Region{{}, {Vertex(drag_index_)}};
     }
     return {curve ? unsigned{kCurve} : unsigned{kGeometry},
             "moving " + moved_by(curve, drag_index_, wanted - drag_from_)};
+}
+
+void Editor::begin_recorded_drag() {
+    DocumentChange change;
+    change.selection_before = change.selection_after = doc_.selection;
+    change.also_before = change.also_after = doc_.also_selected;
+    change.revision_before = doc_.revision;
+    {
+        MeshRecorder recorder(doc_.mesh);
+        doc_.mesh.touch(Vertex(drag_index_));  // its values now: the drag's "before"
+        change.mesh = recorder.finish();
+    }
+    doc_.revision = next_revision_++;
+    change.revision_after = doc_.revision;
+    history_.push(std::move(change));
+    quit_armed_ = false;
+    replace_armed_ = false;
 }
 
 Outcome Editor::end_drag() {

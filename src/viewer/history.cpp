@@ -81,6 +81,16 @@ void History::push_step(Step step) {
     trim();
 }
 
+bool History::amend_last(const std::function<void(DocumentChange&)>& amend) {
+    if (!last_is_change()) {
+        return false;
+    }
+    bytes_ -= bytes_of(undo_.back());
+    amend(std::get<DocumentChange>(undo_.back()));
+    bytes_ += bytes_of(undo_.back());
+    return true;
+}
+
 template <class From, class To>
 bool History::move_step(From& from, To& to, Document& current, bool forward) {
     if (from.empty()) {

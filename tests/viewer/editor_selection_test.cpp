@@ -211,11 +211,17 @@ TEST(Editor, DragIsOneUndoStep) {
               "moved vertex 7 by (1.0000, 1.0000, 1.0000), 1.7321 (Ctrl+Z undoes it)");
     EXPECT_FALSE(ed.dragging());
     EXPECT_EQ(ed.history().undo_steps(), 1u);
+    EXPECT_TRUE(ed.history().last_is_change()) << "recorded: the vertex, not the mesh";
+    EXPECT_LT(ed.history().bytes(), 1024u);
     EXPECT_TRUE(ed.dirty());
     EXPECT_EQ(ed.mesh().position(Vertex(7)), (Vec3{2, 2, 2}));
+    const Mesh dragged = ed.mesh();
     ed.press(key_of('Z'), kCtrl);
     EXPECT_TRUE(test::identical(ed.mesh(), cube));
     EXPECT_FALSE(ed.dirty());
+    ed.press(key_of('Z'), kCtrl | kShift);  // redo: where the drag ended, not its first move
+    EXPECT_TRUE(test::identical(ed.mesh(), dragged));
+    ed.press(key_of('Z'), kCtrl);
 
     // A click without a move (or a "move" to the same place) leaves no step.
     ed.select(ElementRef::vertex(Vertex(7)));

@@ -43,6 +43,11 @@ public:
     /// Puts `mesh` back as the edit left it. \pre `mesh` is as it was before the edit.
     void redo(Mesh& mesh) const;
 
+    /// Takes the touched elements' values after the edit again from `mesh`, where only they
+    /// changed since (an edit still under way, e.g. a drag: recorded at its first move,
+    /// brought up to date at every move). \pre no element was appended.
+    void refresh_after(const Mesh& mesh);
+
     /// Bytes held (for the undo history's budget).
     std::size_t bytes() const;
     /// Where the picture may differ, on either side of the change (so for undo as for

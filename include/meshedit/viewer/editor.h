@@ -315,8 +315,11 @@ private:
     /// What edit() does after any successful edit: revision, selection, session.
     void settle(Edited& edited);
     /// Records the document as an undo step and gives it a new revision; call before
-    /// mutating doc_ (edit() and the first move of a drag).
+    /// mutating doc_ (edit() and the first move of a curve's drag).
     void snapshot();
+    /// The first move of a mesh vertex's drag: a recorded change of that vertex as the undo
+    /// step (drag_to() brings it up to date at every move), and a new revision.
+    void begin_recorded_drag();
     /// Garbage-collects the mesh, remapping the selection, when it has deleted elements;
     /// true if it did (the session then records a `compact`).
     bool compact();

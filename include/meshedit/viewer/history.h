@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -56,6 +57,10 @@ public:
     /// Records a local edit's change (applied already to the current document) and clears
     /// the redo stack.
     void push(DocumentChange change);
+    /// Lets an edit still under way (a drag) bring its recorded change, the newest undo step,
+    /// up to date. False (nothing called) when the newest undo step is not a change.
+    bool amend_last(const std::function<void(DocumentChange&)>& amend);
+
     /// Takes `current` back one step (undoing a change, or swapping in a snapshot, current
     /// going to redo). False if none.
     bool undo(Document& current);
