@@ -14,6 +14,7 @@
 //                    it (MeshRenderer::update from the change's region; glFinish)
 //   undo, redo       Editor::undo / redo, no GPU; undo_upload: plus the buffer update
 //   drag_move_upload one mouse move of a vertex drag (Editor::drag_to) plus the buffer update
+//   extrude_move_upload  one mouse move of an interactive extrude (modal_input) plus the update
 // and extras: undo bytes per flip (History::bytes() growth), undo steps still held after the
 // edits, the history's total.
 // editor_loop_1m: Loop on the 1M torus: `core` loop_subdivide() on a copy; `viewer` the L
@@ -178,6 +179,33 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
         }
         editor.end_drag();
     }
+    // An interactive extrude of a face (X, then the mouse): each mouse move re-runs the
+    // extrude on the document before it, with its GPU update; then Enter.
+    std::vector<double> extrude;
+    std::size_t extruded_faces = 0;
+    {
+        const std::size_t faces_before = editor.mesh().n_faces();
+        const Mesh& mesh = editor.mesh();
+        Face f(static_cast<std::uint32_t>(rng() % mesh.faces_size()));
+        while (mesh.is_deleted(f)) {
+            f = Face(static_cast<std::uint32_t>(rng() % mesh.faces_size()));
+        }
+        editor.select(ElementRef::face(f));
+        editor.run(viewer::interactive(viewer::Modal::Extrude));
+        follow(renderer, editor, gl);
+        for (int i = 1; i <= kEditsPerRun; ++i) {
+            viewer::ModalInput in;
+            in.dy = 0.5 * i;
+            in.pixel = 1e-4;
+            const auto start = std::chrono::steady_clock::now();
+            editor.modal_input(in);
+            follow(renderer, editor, gl);
+            extrude.push_back(ms_since(start));
+        }
+        editor.confirm_modal();
+        follow(renderer, editor, gl);
+        extruded_faces = editor.mesh().n_faces() - faces_before;  // a triangle: 3 sides more
+    }
     const auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
     const std::map<std::string, double> sizes = {
         {"faces", static_cast<double>(faces)},
@@ -193,6 +221,8 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
     print_series(job, "undo_upload", undo_upload);
     print_series(job, "redo", redo, {{"redone", static_cast<double>(redo.size())}});
     print_series(job, "drag_move_upload", drag);
+    print_series(job, "extrude_move_upload", extrude,
+                 {{"faces_added", static_cast<double>(extruded_faces)}});
     return 0;
 }
 

@@ -546,7 +546,9 @@ def editor_target_rows(jobs, not_measured):
                 ("undo", "undo of such an edit", 1.0),
                 ("undo_upload", "undo plus GPU buffer update", 5.0),
                 ("redo", "redo of such an edit", 1.0),
-                ("drag_move_upload", "one move of a vertex drag plus GPU buffer update", 5.0)):
+                ("drag_move_upload", "one move of a vertex drag plus GPU buffer update", 5.0),
+                ("extrude_move_upload", "one move of an interactive extrude plus GPU update",
+                 5.0)):
             x = r.get(impl, {})
             if "p99_ms" in x:
                 rows.append((f"{label}, {mesh}", f"p99 ≤ {limit:g} ms",

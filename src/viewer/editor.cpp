@@ -335,35 +335,38 @@ void Editor::snapshot() {
 // ------------------------------------------------------------------------------ history
 
 Outcome Editor::undo() {
-    end_drag();
-    cancel_modal();
-    diagram_.reset();
-    if (!history_.undo(doc_)) {
-        return refused("nothing to undo");
-    }
-    region_ = history_.take_region();
-    hover_ = {};
-    if (doc_.mode == Mode::Curve) {
-        view_.level = std::min(view_.level, doc_.curve.degree());
-    }
-    return {kDocument | kTopology | kSelection | kCurve | kDisplay,
-            "undo (" + std::to_string(history_.undo_steps()) + " left)"};
+    return step_history(false);
 }
 
 Outcome Editor::redo() {
+    return step_history(true);
+}
+
+Outcome Editor::step_history(bool forward) {
     end_drag();
+    // An interactive edit under way is cancelled first; where its preview was must be
+    // redrawn too.
+    const bool was_modal = modal_.kind != Modal::None;
     cancel_modal();
+    std::optional<MeshChange::Region> cancelled = std::exchange(region_, std::nullopt);
     diagram_.reset();
-    if (!history_.redo(doc_)) {
-        return refused("nothing to redo");
+    if (!(forward ? history_.redo(doc_) : history_.undo(doc_))) {
+        region_ = std::move(cancelled);
+        Outcome out = refused(forward ? "nothing to redo" : "nothing to undo");
+        out.changes = was_modal ? kTopology | kSelection : kNothing;
+        return out;
     }
-    region_ = history_.take_region();
+    region_ = history_.take_region();  // none after a snapshot: the window redraws it all
+    if (region_ && cancelled) {
+        region_->add(*cancelled);
+    }
     hover_ = {};
     if (doc_.mode == Mode::Curve) {
         view_.level = std::min(view_.level, doc_.curve.degree());
     }
     return {kDocument | kTopology | kSelection | kCurve | kDisplay,
-            "redo (" + std::to_string(history_.redo_steps()) + " left)"};
+            std::string(forward ? "redo (" : "undo (") +
+                std::to_string(forward ? history_.redo_steps() : history_.undo_steps()) + " left)"};
 }
 
 Outcome Editor::quit() {

@@ -110,14 +110,27 @@ Outcome Editor::begin_modal(Modal kind) {
         }
         for (const std::uint32_t v : m.vertices) {
             m.center += doc_.mesh.position(Vertex(v));
+            m.base_positions.push_back(doc_.mesh.position(Vertex(v)));
         }
         m.center /= static_cast<double>(m.vertices.size());
         m.amounts = {kind == Modal::Scale ? 1.0 : 0.0, 0.0};
     }
-    m.base = doc_;
     end_drag();
+    m.base_selection = doc_.selection;
+    m.base_also = doc_.also_selected;
     modal_ = std::move(m);
     return apply_modal();
+}
+
+void Editor::undo_preview() {
+    ModalState& m = modal_;
+    if (m.preview) {
+        m.preview->undo(doc_.mesh);
+        region_ = m.preview->region();  // the window redraws what the preview had changed
+        m.preview.reset();
+    }
+    doc_.selection = m.base_selection;
+    doc_.also_selected = m.base_also;
 }
 
 std::optional<Outcome> Editor::modal_key(Key key, unsigned mods) {
@@ -246,97 +259,122 @@ Outcome Editor::modal_axis(int axis) {
 Outcome Editor::apply_modal() {
     ModalState& m = modal_;
     m.refusal.clear();
+    // Back to the document before the edit (in the time of what the last preview touched),
+    // then the new preview, recorded: no copy of the mesh per mouse move.
+    undo_preview();
+    const std::optional<MeshChange::Region> undone = std::exchange(region_, std::nullopt);
+    std::optional<MeshRecorder> recorder(std::in_place, doc_.mesh);
+    Outcome out;
     if (const char* verb = verb_of(m.kind)) {
-        Document doc = m.base;
         std::string hint;
         const ops::Verb& v = *ops::find_verb(verb);
         const std::size_t n = v.max_amounts;
         const std::vector<ops::Step> steps = steps_for_selection(
-            doc.mesh, v, m.targets, std::span<const double>(m.amounts.data(), n), hint);
-        const StepsRun run = run_steps(doc.mesh, steps, verb);
+            doc_.mesh, v, m.targets, std::span<const double>(m.amounts.data(), n), hint);
+        const StepsRun run = run_steps(doc_.mesh, steps, verb);
         m.steps.clear();
         if (run.ran == 0) {
             m.refusal = run.first_refusal;
-            doc = m.base;
         } else {
-            select_made(doc, run.made);
+            select_made(doc_, run.made);
             m.steps = run.steps;
         }
-        doc_ = std::move(doc);
         hover_ = {};
-        return {kTopology | kSelection, modal_status()};
-    }
-    const Mesh& base = m.base.mesh;
-    if (m.kind == Modal::Rotate) {
-        m.rotation_axis = m.axis >= 0 ? unit_axis(m.axis) : m.last.toward_viewer;
-        if (!(sqrnorm(m.rotation_axis) > 0.0)) {
-            m.rotation_axis = unit_axis(2);  // no view yet (tests): about Z
+        out = {kTopology | kSelection, modal_status()};
+    } else {
+        if (m.kind == Modal::Rotate) {
+            m.rotation_axis = m.axis >= 0 ? unit_axis(m.axis) : m.last.toward_viewer;
+            if (!(sqrnorm(m.rotation_axis) > 0.0)) {
+                m.rotation_axis = unit_axis(2);  // no view yet (tests): about Z
+            }
         }
-    }
-    for (const std::uint32_t i : m.vertices) {
-        const Vec3& p = base.position(Vertex(i));
-        Vec3 q = p;
-        switch (m.kind) {
-            case Modal::Move:
-                q = p + m.offset;
-                break;
-            case Modal::Rotate:
-                q = rotated(p, m.center, m.rotation_axis, m.amounts[0] * kPi / 180.0);
-                break;
-            case Modal::Scale:
-                if (m.axis >= 0) {
-                    q[m.axis] = m.center[m.axis] + (p[m.axis] - m.center[m.axis]) * m.amounts[0];
-                } else {
-                    q = m.center + (p - m.center) * m.amounts[0];
-                }
-                break;
-            default:
-                break;
+        for (std::size_t k = 0; k < m.vertices.size(); ++k) {
+            const Vec3& p = m.base_positions[k];
+            Vec3 q = p;
+            switch (m.kind) {
+                case Modal::Move:
+                    q = p + m.offset;
+                    break;
+                case Modal::Rotate:
+                    q = rotated(p, m.center, m.rotation_axis, m.amounts[0] * kPi / 180.0);
+                    break;
+                case Modal::Scale:
+                    if (m.axis >= 0) {
+                        q[m.axis] =
+                            m.center[m.axis] + (p[m.axis] - m.center[m.axis]) * m.amounts[0];
+                    } else {
+                        q = m.center + (p - m.center) * m.amounts[0];
+                    }
+                    break;
+                default:
+                    break;
+            }
+            if (!std::isfinite(sqrnorm(q))) {  // as extrude: squares (normals, areas) must fit
+                m.refusal = "the amount puts corners beyond the range of numbers";
+                q = p;
+            }
+            doc_.mesh.position(Vertex(m.vertices[k])) = q;
         }
-        if (!std::isfinite(sqrnorm(q))) {  // as extrude: squares (normals, areas) must fit
-            m.refusal = "the amount puts corners beyond the range of numbers";
-            q = p;
-        }
-        doc_.mesh.position(Vertex(i)) = q;
+        out = {kGeometry | kSelection, modal_status()};
     }
-    return {kGeometry | kSelection, modal_status()};
+    m.preview = recorder->finish();
+    recorder.reset();
+    // What the window redraws: what the last preview changed and what this one changes.
+    MeshChange::Region region = m.preview->region();
+    if (undone) {
+        region.add(*undone);
+    }
+    region_ = std::move(region);
+    return out;
 }
 
 Outcome Editor::confirm_modal() {
     if (modal_.kind == Modal::None) {
         return {};
     }
+    if (!modal_.refusal.empty()) {
+        const std::string why =
+            std::string(name_of(modal_.kind)) + " not applied: " + modal_.refusal;
+        undo_preview();
+        modal_ = {};
+        return {kTopology | kSelection, why, true};
+    }
     ModalState m = std::move(modal_);
     modal_ = {};
-    if (!m.refusal.empty()) {
-        doc_ = std::move(m.base);
-        return {kTopology | kSelection, std::string(name_of(m.kind)) + " not applied: " + m.refusal,
-                true};
+    const bool positions = verb_of(m.kind) == nullptr;
+    bool unchanged = positions;
+    for (std::size_t k = 0; k < m.vertices.size() && unchanged; ++k) {
+        unchanged = doc_.mesh.position(Vertex(m.vertices[k])) == m.base_positions[k];
     }
-    const bool unchanged =
-        verb_of(m.kind) == nullptr &&
-        std::all_of(m.vertices.begin(), m.vertices.end(), [&](std::uint32_t v) {
-            return doc_.mesh.position(Vertex(v)) == m.base.mesh.position(Vertex(v));
-        });
     if (unchanged) {
+        m.preview->undo(doc_.mesh);  // bit for bit the document before (nothing moved)
         return {kSelection, "nothing moved"};
     }
     const std::string what = std::string(name_of(m.kind)) + " applied (Ctrl+Z undoes it)";
-    if (verb_of(m.kind) != nullptr) {
-        doc_.session.insert(doc_.session.end(), m.steps.begin(), m.steps.end());
+    DocumentChange change;
+    change.selection_before = m.base_selection;
+    change.also_before = m.base_also;
+    change.revision_before = doc_.revision;
+    if (!positions) {
+        change.session_added = m.steps;
     } else {
-        for (const std::uint32_t v : m.vertices) {
-            const Vec3& p = doc_.mesh.position(Vertex(v));
-            if (p != m.base.mesh.position(Vertex(v))) {
-                doc_.session.push_back(move_step(doc_.mesh, v));
+        for (std::size_t k = 0; k < m.vertices.size(); ++k) {
+            if (doc_.mesh.position(Vertex(m.vertices[k])) != m.base_positions[k]) {
+                change.session_added.push_back(move_step(doc_.mesh, m.vertices[k]));
             }
         }
     }
-    history_.push(std::move(m.base));
+    doc_.session.insert(doc_.session.end(), change.session_added.begin(),
+                        change.session_added.end());
     doc_.revision = next_revision_++;
+    change.revision_after = doc_.revision;
+    change.selection_after = doc_.selection;
+    change.also_after = doc_.also_selected;
+    change.mesh = std::move(*m.preview);
+    history_.push(std::move(change));
     quit_armed_ = false;
     replace_armed_ = false;
-    return {verb_of(m.kind) != nullptr ? kTopology | kSelection : kGeometry | kSelection, what};
+    return {positions ? kGeometry | kSelection : kTopology | kSelection, what};
 }
 
 Outcome Editor::cancel_modal() {
@@ -344,7 +382,7 @@ Outcome Editor::cancel_modal() {
         return {};
     }
     const Modal kind = modal_.kind;
-    doc_ = std::move(modal_.base);
+    undo_preview();
     modal_ = {};
     hover_ = {};
     return {kTopology | kSelection, std::string(name_of(kind)) + " cancelled"};

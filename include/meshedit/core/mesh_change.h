@@ -58,6 +58,11 @@ public:
     struct Region {
         std::vector<Face> faces;
         std::vector<Vertex> vertices;
+        /// Adds `other`'s elements (two changes redrawn as one; order and repeats allowed).
+        void add(const Region& other) {
+            faces.insert(faces.end(), other.faces.begin(), other.faces.end());
+            vertices.insert(vertices.end(), other.vertices.begin(), other.vertices.end());
+        }
     };
     Region region() const;
     /// Number of elements recorded (touched before plus appended), per kind V, H, E, F.

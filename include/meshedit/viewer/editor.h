@@ -327,7 +327,12 @@ private:
     /// The interactive edit under way (kind None: none).
     struct ModalState {
         Modal kind = Modal::None;
-        Document base;                        ///< the document before it
+        /// The preview: the recorded change from the document before the edit to the one
+        /// shown (undone to try other amounts, and at a cancel; the undo step at a confirm).
+        std::optional<MeshChange> preview;
+        ElementRef base_selection;            ///< the selection before the edit
+        std::vector<ElementRef> base_also;    ///< and the rest of it
+        std::vector<Vec3> base_positions;     ///< Move, Rotate, Scale: where `vertices` were
         std::vector<ElementRef> targets;      ///< Extrude, Inset, Bevel: the elements
         std::vector<std::uint32_t> vertices;  ///< Move, Rotate, Scale: the vertices moved
         Vec3 center;                          ///< Rotate, Scale: the pivot
@@ -342,8 +347,12 @@ private:
         std::string refusal;             ///< why the amounts now cannot apply, or empty
         std::vector<std::string> steps;  ///< Extrude, Inset, Bevel: the steps now, for the session
     };
-    /// Runs the modal edit with its amounts on a copy of its base.
+    /// Runs the modal edit with its amounts: undoes the preview, records the new one.
     Outcome apply_modal();
+    /// Puts the document back as before the modal edit (its preview undone, its selection).
+    void undo_preview();
+    /// Undo (`forward` false) or redo, after ending a drag and cancelling an interactive edit.
+    Outcome step_history(bool forward);
 
     /// Runs `steps` one after another through the edit funnel as one undo step and selects
     /// what they made (edit_mesh, delete_selection); refused with the first reason if none
