@@ -296,4 +296,50 @@ double surface_area(const Mesh& mesh) {
     return area;
 }
 
+std::vector<std::pair<ElementRef, double>> field_values_at(const Mesh& mesh, FieldSite site,
+                                                           std::span<const double> values,
+                                                           ElementRef element) {
+    std::vector<std::pair<ElementRef, double>> out;
+    if (!is_live(mesh, element)) {
+        return out;
+    }
+    const auto add = [&](ElementRef r) {
+        if (r.index < values.size() && is_live(mesh, r)) {
+            out.emplace_back(r, values[r.index]);
+        }
+    };
+    const auto of_site = [&](Halfedge h) {  // the site's element of halfedge h
+        return site == FieldSite::Vertex ? ElementRef::vertex(mesh.to_vertex(h))
+               : site == FieldSite::Edge ? ElementRef::edge(Mesh::edge(h))
+                                         : ElementRef::face(mesh.face(h));
+    };
+    using Kind = ElementRef::Kind;
+    const Kind own = site == FieldSite::Vertex ? Kind::Vertex
+                     : site == FieldSite::Edge ? Kind::Edge
+                                               : Kind::Face;
+    if (element.kind == own) {
+        add(element);
+    } else if (element.kind == Kind::Halfedge) {
+        add(of_site(Halfedge(element.index)));
+    } else if (element.kind == Kind::Face) {
+        for (const Halfedge h : mesh.halfedges(Face(element.index))) {
+            add(of_site(h));
+        }
+    } else if (element.kind == Kind::Edge) {
+        for (unsigned i = 0; i < 2; ++i) {
+            const Halfedge h = Mesh::halfedge(Edge(element.index), i);
+            if (site == FieldSite::Vertex || !mesh.is_boundary(h)) {
+                add(of_site(h));
+            }
+        }
+    } else if (element.kind == Kind::Vertex && !mesh.is_isolated(Vertex(element.index))) {
+        for (const Halfedge h : mesh.halfedges(Vertex(element.index))) {
+            if (site == FieldSite::Edge || !mesh.is_boundary(h)) {
+                add(of_site(h));
+            }
+        }
+    }
+    return out;
+}
+
 }  // namespace meshedit

@@ -126,16 +126,22 @@ void Panels::draw_field(Editor& editor, const FieldDisplay& field, PanelRequests
     ImGui::TextWrapped("min %.4g  mean %.4g  max %.4g  (%zu values)", field.stats.min,
                        field.stats.mean, field.stats.max, field.stats.count);
 
-    // Under the cursor: the hovered element's value, when it is of the field's kind.
+    // Under the cursor: the hovered element's value, or those of the field's elements it
+    // touches (a face's corners for a vertex field, say).
     const ElementRef& hover = editor.hover();
-    const ElementRef::Kind kind = info.site == FieldSite::Vertex ? ElementRef::Kind::Vertex
-                                  : info.site == FieldSite::Edge ? ElementRef::Kind::Edge
-                                                                 : ElementRef::Kind::Face;
-    if (hover.kind == kind && hover.index < field.values.size()) {
-        ImGui::Text("under the cursor: %s %u: %.6g", kind_name(kind), hover.index,
-                    field.values[hover.index]);
+    const auto near = field_values_at(editor.mesh(), info.site, field.values, hover);
+    if (near.empty()) {
+        ImGui::TextDisabled("hover the mesh to read the values under the cursor");
     } else {
-        ImGui::TextDisabled("hover a %s to read its value", kind_name(kind));
+        ImGui::TextUnformatted("under the cursor:");
+        constexpr std::size_t kShown = 6;
+        for (std::size_t i = 0; i < std::min(near.size(), kShown); ++i) {
+            ImGui::Text("  %s %u: %.6g", kind_name(near[i].first.kind), near[i].first.index,
+                        near[i].second);
+        }
+        if (near.size() > kShown) {
+            ImGui::TextDisabled("  … and %zu more", near.size() - kShown);
+        }
     }
 
     // A histogram of the values within the range.

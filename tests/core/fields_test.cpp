@@ -126,5 +126,41 @@ TEST(Fields, ValenceStatsAndPercentiles) {
     EXPECT_NEAR(surface_area(test::quad_cube()), 24.0, 1e-12);
 }
 
+// The viewer's hover: an element of the field's kind reads its own value; any other reads the
+// values of the field's elements it touches.
+TEST(Fields, ValuesAtAnElementOfAnyKind) {
+    const Mesh cube = test::quad_cube();
+    std::vector<double> per_vertex(cube.vertices_size()), per_face(cube.faces_size());
+    for (std::size_t i = 0; i < per_vertex.size(); ++i) {
+        per_vertex[i] = 10.0 + static_cast<double>(i);
+    }
+    for (std::size_t i = 0; i < per_face.size(); ++i) {
+        per_face[i] = 100.0 + static_cast<double>(i);
+    }
+    using Kind = ElementRef::Kind;
+    const auto at = [&](FieldSite site, const std::vector<double>& v, ElementRef e) {
+        return field_values_at(cube, site, v, e);
+    };
+    const auto own = at(FieldSite::Vertex, per_vertex, ElementRef::vertex(Vertex(3)));
+    ASSERT_EQ(own.size(), 1u);
+    EXPECT_EQ(own[0].second, 13.0);
+    // A quad's four corners, each with its value.
+    const auto corners = at(FieldSite::Vertex, per_vertex, ElementRef::face(Face(2)));
+    ASSERT_EQ(corners.size(), 4u);
+    for (const auto& [r, value] : corners) {
+        EXPECT_EQ(r.kind, Kind::Vertex);
+        EXPECT_EQ(value, per_vertex[r.index]);
+    }
+    // An edge between two faces reads both faces; a vertex of the cube its three faces.
+    EXPECT_EQ(at(FieldSite::Face, per_face, ElementRef::edge(Edge(0))).size(), 2u);
+    EXPECT_EQ(at(FieldSite::Face, per_face, ElementRef::vertex(Vertex(0))).size(), 3u);
+    // A halfedge reads its face.
+    const Halfedge h(5);
+    const auto face = at(FieldSite::Face, per_face, ElementRef::halfedge(h));
+    ASSERT_EQ(face.size(), 1u);
+    EXPECT_EQ(face[0].first, ElementRef::face(cube.face(h)));
+    EXPECT_TRUE(at(FieldSite::Face, per_face, ElementRef{}).empty());
+}
+
 }  // namespace
 }  // namespace meshedit

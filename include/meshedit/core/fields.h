@@ -15,8 +15,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
 
 namespace meshedit {
@@ -58,6 +60,14 @@ FieldStats field_stats(std::span<const double> values);
 /// The value below which `fraction` (0…1) of the finite values lie (nearest rank); 0 for
 /// none. For clamping a colour map's range to percentiles.
 double field_percentile(std::span<const double> values, double fraction);
+
+/// A field's values at `element` of any kind (the viewer's hover): its own value when it is of
+/// the field's site; otherwise those of the site's elements it touches — a face's corners or
+/// sides, an edge's ends or faces, a halfedge's edge, head or face, a vertex's edges or faces
+/// — in the mesh's order around it. Empty for none or a deleted element.
+std::vector<std::pair<ElementRef, double>> field_values_at(const Mesh& mesh, FieldSite site,
+                                                           std::span<const double> values,
+                                                           ElementRef element);
 
 /// The sum of the angle defects (2π − the angles at each interior vertex; π − them at a
 /// boundary vertex) over every vertex: 2π times the Euler characteristic, exactly up to
