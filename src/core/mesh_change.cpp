@@ -73,23 +73,22 @@ void MeshChange::restore(PropertyContainer& c, int kind, bool forward) const {
 }
 
 void MeshChange::undo(Mesh& mesh) const {
-    PropertyContainer* c[] = {&mesh.vprops_, &mesh.hprops_, &mesh.eprops_, &mesh.fprops_};
-    for (int k = 0; k < 4; ++k) {
-        restore(*c[k], k, false);
-    }
-    mesh.n_deleted_vertices_ = deleted_before_[0];
-    mesh.n_deleted_edges_ = deleted_before_[1];
-    mesh.n_deleted_faces_ = deleted_before_[2];
+    apply(mesh, false);
 }
 
 void MeshChange::redo(Mesh& mesh) const {
+    apply(mesh, true);
+}
+
+void MeshChange::apply(Mesh& mesh, bool forward) const {
     PropertyContainer* c[] = {&mesh.vprops_, &mesh.hprops_, &mesh.eprops_, &mesh.fprops_};
     for (int k = 0; k < 4; ++k) {
-        restore(*c[k], k, true);
+        restore(*c[k], k, forward);
     }
-    mesh.n_deleted_vertices_ = deleted_after_[0];
-    mesh.n_deleted_edges_ = deleted_after_[1];
-    mesh.n_deleted_faces_ = deleted_after_[2];
+    const std::array<std::uint32_t, 3>& deleted = forward ? deleted_after_ : deleted_before_;
+    mesh.n_deleted_vertices_ = deleted[0];
+    mesh.n_deleted_edges_ = deleted[1];
+    mesh.n_deleted_faces_ = deleted[2];
 }
 
 void MeshChange::refresh_after(const Mesh& mesh) {

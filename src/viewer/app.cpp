@@ -16,7 +16,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "meshedit/files/io_error.h"
-#include "meshedit/render/cpu_pick.h"
 #include "meshedit/render/image.h"
 #include "meshedit/render/overlay.h"
 #include "meshedit/render/user_shaders.h"
@@ -36,15 +35,10 @@ static_assert(kShift == GLFW_MOD_SHIFT && kCtrl == GLFW_MOD_CONTROL && kAlt == G
 constexpr float kOrbitDegreesPerPixel = 0.4f;
 constexpr float kZoomPerWheelStep = 0.85f;
 constexpr double kClickSlopPixels = 3.0;
-constexpr float kControlPointPickPixels = 12.0f;
 constexpr double kHoverDelaySeconds = 0.03;
 
 App& app_of(GLFWwindow* window) {
     return *static_cast<App*>(glfwGetWindowUserPointer(window));
-}
-
-glm::vec3 to_glm(const Vec3& p) {
-    return {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
 }
 
 // DejaVu Sans (Debian's fonts-dejavu-core) for arrows and dashes in the panels; ImGui's
@@ -451,34 +445,16 @@ void App::apply(const Outcome& outcome) {
         set_status(outcome.message, outcome.refused);
     }
     const unsigned c = outcome.changes;
-    // A recorded local edit (or its undo or redo) names where it changed the mesh: the GPU
-    // buffers and the picking tree follow in the time of what it touched.
-    const std::optional<MeshChange::Region> region = editor_.take_region();
-    const bool local = region && (c & (kTopology | kGeometry | kDocument)) != 0 && mesh_mode() &&
-                       scene_->has_mesh();
-    if (local) {
-        // The tree is brought along only if it showed the document just before this command.
-        if (!pick_bvh_stale_ && pick_bvh_revision_ == applied_revision_) {
-            pick_bvh_.update(editor_.mesh(), faces_to_redraw(editor_.mesh(), *region));
-            pick_bvh_revision_ = editor_.document().revision;
-        } else {
+    if (!follow_mesh_change(c)) {  // not a recorded change: upload, rebuild the tree lazily
+        if (c & (kTopology | kGeometry | kDocument)) {
             pick_bvh_stale_ = true;
         }
-        scene_->mesh().update(editor_.mesh(), region->faces, region->vertices);
-        if ((c & kGeometry) == 0) {
-            editor_.set_hover({});  // a drag keeps the hover it has
+        if (c & (kTopology | kDocument)) {
+            upload_document();
+        } else if (c & kGeometry) {
+            scene_->mesh().update_geometry(editor_.mesh());
+            cursor_moved_ = true;
         }
-        cursor_moved_ = true;
-    } else if (c & (kTopology | kGeometry | kDocument)) {
-        pick_bvh_stale_ = true;
-    }
-    if (local) {
-        // updated above
-    } else if (c & (kTopology | kDocument)) {
-        upload_document();
-    } else if (c & kGeometry) {
-        scene_->mesh().update_geometry(editor_.mesh());
-        cursor_moved_ = true;
     }
     if (c & (kTopology | kGeometry | kDocument | kDisplay | kSelection)) {
         refresh_field((c & (kTopology | kGeometry | kDocument)) != 0);
@@ -597,63 +573,7 @@ glm::vec3 App::unproject(glm::vec2 p, float ndc_z) const {
     return glm::vec3(world) / world.w;
 }
 
-// ---------------------------------------------------------------------------- picking
-
-ElementRef App::pick_at_cursor() {
-    const glm::vec2 p = cursor_pixels();
-    const glm::ivec2 size = framebuffer_size();
-    if (!mesh_mode()) {
-        // Control points: the nearest within a few pixels.
-        const glm::mat4 clip = camera_.projection(aspect()) * camera_.view();
-        const auto& points = editor_.document().curve.control_points;
-        ElementRef best;
-        float best_distance = kControlPointPickPixels;
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const glm::vec4 c = clip * glm::vec4(to_glm(points[i]), 1.0f);
-            const glm::vec2 s((c.x / c.w * 0.5f + 0.5f) * static_cast<float>(size.x),
-                              (0.5f - c.y / c.w * 0.5f) * static_cast<float>(size.y));
-            if (const float d = glm::length(s - p); d < best_distance) {
-                best_distance = d;
-                best = ElementRef::vertex(Vertex(static_cast<std::uint32_t>(i)));
-            }
-        }
-        return best;
-    }
-    if (!scene_->has_mesh()) {
-        return {};
-    }
-    const auto start = std::chrono::steady_clock::now();
-    // On the CPU, by the ID pass's rules (cpu_pick.h). The BVH is rebuilt on the first pick
-    // after the document changes: a new revision, or geometry moved under the same one (a
-    // drag, an interactive edit; see apply()).
-    const Mesh& mesh = editor_.mesh();
-    if (pick_bvh_stale_ || pick_bvh_revision_ != editor_.document().revision) {
-        pick_bvh_.build(mesh);
-        pick_bvh_revision_ = editor_.document().revision;
-        pick_bvh_stale_ = false;
-    }
-    const float scale = static_cast<float>(size.y) / std::max(1.0f, ImGui::GetIO().DisplaySize.y);
-    const ElementRef hit = cpu_pick(pick_bvh_, mesh, camera_, size.x, size.y, static_cast<int>(p.x),
-                                    static_cast<int>(p.y), scene_->mesh().culls_back_faces(camera_),
-                                    6.0f * scale, 4.0f * scale);
-    last_pick_ms_ =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return is_live(editor_.mesh(), hit) ? hit : ElementRef{};
-}
-
-void App::update_hover() {
-    cursor_moved_ = false;
-    // Over a panel (or with a prompt open) nothing in the scene is under the cursor.
-    const bool over_ui = ImGui::GetIO().WantCaptureMouse || panels_.prompting() ||
-                         panels_.contains(glm::vec2(cursor_)) ||
-                         glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_FALSE;
-    const ElementRef hit = over_ui ? ElementRef{} : pick_at_cursor();
-    const ElementRef& old = editor_.hover();
-    if (hit.kind != old.kind || hit.index != old.index) {
-        editor_.set_hover(hit);
-        rebuild_overlay();
-    }
-}
+// ---------------------------------------------------------------------------- dragging
 
 void App::drag_element_to_cursor() {
     const ElementRef& s = editor_.selection();

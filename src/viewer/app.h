@@ -102,6 +102,10 @@ private:
     /// The element under the cursor (CPU pick for meshes, nearest control point for curves).
     ElementRef pick_at_cursor();
     void update_hover();
+    /// After a command: when it was a recorded change (the editor names its region), updates
+    /// the GPU buffers and the picking tree around it and returns true; else false
+    /// (app_picking.cpp).
+    bool follow_mesh_change(unsigned changes);
     /// Moves the dragged vertex or control point under the cursor, in the screen plane.
     void drag_element_to_cursor();
 

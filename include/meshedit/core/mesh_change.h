@@ -88,6 +88,8 @@ private:
     };
     using AddedArrays = std::array<std::vector<std::unique_ptr<BasePropertyArray>>, 4>;
     void restore(PropertyContainer& c, int kind, bool forward) const;
+    /// redo() when `forward`, else undo().
+    void apply(Mesh& mesh, bool forward) const;
     std::uint32_t touched(int kind, std::size_t i) const;
 
     std::array<Kind, 4> kinds_;  ///< vertex, halfedge, edge, face
