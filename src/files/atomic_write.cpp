@@ -1,7 +1,8 @@
 // The atomic write every writer goes through (files.h): a temporary file beside the real
 // target (through symbolic links, as editors do), flushed, given the old file's mode and owner,
 // then renamed over it. Temporary files that a killed process left behind are recognised by
-// their name (they carry the writer's pid) and removed by the next write into that folder.
+// their name (they carry the target's name and the writer's pid) and removed by the next write
+// of the same target by the same user.
 
 #include <fcntl.h>
 #include <signal.h>
@@ -81,27 +82,75 @@ long temporary_pid(const std::string& name) {
     return fields[0];
 }
 
-// Removes the temporary files of writers that are gone (killed mid-write: SIGKILL, power
-// loss). A live pid keeps its files, even if it is another program's now: never remove what
-// might be in use.
-void remove_stale_temporaries(const fs::path& folder) {
+// Removes the temporary files of writers of the same target that are gone (killed
+// mid-write: SIGKILL, power loss). Only ours: the same output name, owned by the running user
+// (a shared folder holds other users' and other programs' files); a live pid keeps its files,
+// even if it is another program's now: never remove what might be in use.
+void remove_stale_temporaries(const fs::path& folder, const fs::path& target) {
+    // Appended piecewise: `"." + string` trips a GCC 12 -Wrestrict false positive.
+    std::string prefix(1, '.');
+    prefix += target.filename().string();
+    prefix += ".tmp-";
     std::error_code ec;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        const long pid = temporary_pid(it->path().filename().string());
-        if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 &&
-            errno == ESRCH) {
+        const std::string name = it->path().filename().string();
+        if (name.compare(0, prefix.size(), prefix) != 0) {
+            continue;
+        }
+        const long pid = temporary_pid(name);
+        struct stat info {};
+        if (pid > 0 && pid != ::getpid() && ::lstat(it->path().c_str(), &info) == 0 &&
+            S_ISREG(info.st_mode) && info.st_uid == ::geteuid() &&
+            ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
             std::error_code ignored;
             fs::remove(it->path(), ignored);
         }
     }
 }
 
+// Why a write must not go through the symbolic link `link`, or empty. A link is followed only
+// when it and its folder belong to the running user or to root: a link another user planted
+// (in the system temporary folder, say) would otherwise make us replace whatever it names —
+// as root, any file. The kernel's fs.protected_symlinks does not help: the link is never
+// opened, only read.
+std::string untrusted_link(const fs::path& link) {
+    const uid_t me = ::geteuid();
+    struct stat info {};
+    if (::lstat(link.c_str(), &info) != 0) {
+        return "cannot inspect the symbolic link '" + link.string() + "': " + std::strerror(errno);
+    }
+    if (info.st_uid != me && info.st_uid != 0) {
+        return "will not write through the symbolic link '" + link.string() +
+               "': it belongs to another user (uid " + std::to_string(info.st_uid) + ")";
+    }
+    const fs::path folder = link.has_parent_path() ? link.parent_path() : fs::path(".");
+    struct stat dir {};
+    if (::stat(folder.c_str(), &dir) != 0) {
+        return "cannot inspect the folder '" + folder.string() + "': " + std::strerror(errno);
+    }
+    if (dir.st_uid != me && dir.st_uid != 0) {
+        return "will not write through the symbolic link '" + link.string() +
+               "': its folder belongs to another user (uid " + std::to_string(dir.st_uid) + ")";
+    }
+    // A world-writable sticky folder not ours (the system temporary folder, as a normal user):
+    // only links we made ourselves.
+    if ((dir.st_mode & S_IWOTH) != 0 && dir.st_uid != me && info.st_uid != me) {
+        return "will not write through the symbolic link '" + link.string() +
+               "': it lies in a folder everyone may write to and is not yours";
+    }
+    return {};
+}
+
 // The file a write to `target` must replace: `target` itself, or the file its chain of
 // symbolic links ends at (which need not exist yet), so that the links survive the write.
+// \throws IoError when a link on the way is not to be trusted (untrusted_link()).
 fs::path real_target(const fs::path& target) {
     fs::path real = target;
     std::error_code ec;
     for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(real, ec)); ++hops) {
+        if (std::string why = untrusted_link(real); !why.empty()) {
+            throw IoError(target.string(), "", why);
+        }
         const fs::path link = fs::read_symlink(real, ec);
         if (ec) {
             break;
@@ -132,7 +181,7 @@ void write_atomically(const fs::path& target,
     if (fs::is_directory(fs::status(real, ec))) {
         throw IoError(name, "", "is a folder");
     }
-    remove_stale_temporaries(folder);
+    remove_stale_temporaries(folder, real);
 
     // Create the temporary file exclusively ("x"): this claims the name and proves the folder
     // is writable before any work is done.

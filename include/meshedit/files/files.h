@@ -34,8 +34,12 @@ std::string content_hash(std::string_view bytes);
 void write_file(const std::filesystem::path& path, std::string_view bytes);
 
 /// Runs `write(tmp)` on a temporary path in `target`'s folder, then renames it over
-/// `target`; on any failure the temporary file is removed and `target` is untouched.
-/// \throws IoError naming `target` if the folder is not writable or the rename fails.
+/// `target`; on any failure the temporary file is removed and `target` is untouched. A
+/// symbolic link is written through (the file it names is replaced, the link kept) only when
+/// the link and its folder belong to the running user or to root. Temporaries a killed writer
+/// of the same target left behind are removed first, if they are the running user's.
+/// \throws IoError naming `target` if the folder is not writable, a link on the way is not to
+/// be trusted, or the rename fails.
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& tmp)>& write);
 
