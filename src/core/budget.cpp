@@ -15,6 +15,7 @@ namespace {
 constexpr std::size_t kMinimum = std::size_t{64} << 20;
 
 std::atomic<std::size_t> g_budget{0};  // 0: not set
+std::atomic<bool> g_floor{true};       // false: g_budget may be below kMinimum
 
 }  // namespace
 
@@ -65,7 +66,7 @@ std::optional<std::size_t> parse_byte_size(const std::string& text) {
 
 std::size_t memory_budget() {
     if (const std::size_t set = g_budget.load(std::memory_order_relaxed); set != 0) {
-        return std::max(set, kMinimum);
+        return g_floor.load(std::memory_order_relaxed) ? std::max(set, kMinimum) : set;
     }
     if (const char* env = std::getenv("MESHEDIT_MEMORY_BUDGET"); env != nullptr && *env != 0) {
         if (const auto bytes = parse_byte_size(env)) {
@@ -78,6 +79,12 @@ std::size_t memory_budget() {
 }
 
 void set_memory_budget(std::size_t bytes) {
+    g_floor.store(true, std::memory_order_relaxed);
+    g_budget.store(bytes, std::memory_order_relaxed);
+}
+
+void set_memory_budget_without_floor(std::size_t bytes) {
+    g_floor.store(false, std::memory_order_relaxed);
     g_budget.store(bytes, std::memory_order_relaxed);
 }
 

@@ -23,6 +23,7 @@
 
 #include "collapse_guard.h"
 #include "meshedit/core/attributes.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/normals.h"
@@ -375,6 +376,13 @@ std::string check_simplify(const Mesh& mesh, const SimplifyOptions& options) {
     }
     if (!(options.max_normal_change_deg > 0.0 && options.max_normal_change_deg <= 180.0)) {
         return "cannot simplify: the normal-change limit must be above 0 and at most 180 degrees";
+    }
+    // What the simplifier holds beside the mesh, per face: half a vertex's quadric (88 bytes
+    // each) and 1.5 edges' heap entry, place and initial cost (20 bytes each), rounded up.
+    const double faces = static_cast<double>(mesh.n_faces());
+    if (const auto over = over_budget(100.0 * faces)) {
+        return "cannot simplify: the quadrics and the queue of " + std::to_string(mesh.n_faces()) +
+               " faces " + *over;
     }
     return {};
 }

@@ -22,8 +22,11 @@ std::size_t physical_memory();
 
 /// The budget in bytes (see the file comment); at least 64 MiB.
 std::size_t memory_budget();
-/// Sets the budget for this process; 0 goes back to the default.
+/// Sets the budget for this process (at least 64 MiB); 0 goes back to the default.
 void set_memory_budget(std::size_t bytes);
+/// Sets the budget below the 64 MiB floor too: for tests that drive an operation past a small
+/// budget without building a big mesh. 0 goes back to the default.
+void set_memory_budget_without_floor(std::size_t bytes);
 /// "8G", "512M", "64K", "1.5G" or plain bytes → bytes; nullopt if not such a size.
 std::optional<std::size_t> parse_byte_size(const std::string& text);
 
