@@ -13,6 +13,8 @@
 
 #include "meshedit/ops/ops.h"
 
+#include "meshedit/core/loop_steps.h"
+
 namespace meshedit::ops {
 namespace {
 
@@ -286,17 +288,25 @@ std::vector<Step> parse(std::string_view list) {
     return steps;
 }
 
+namespace {
+
+// The line of `text` that starts at `start`, without its end; `start` moves to the next line.
+// Lines end with LF, CRLF or a lone CR (old Mac files: read as one comment line they would
+// run nothing).
+std::string_view next_line(std::string_view text, std::size_t& start) {
+    const std::size_t end = std::min(text.find_first_of("\r\n", start), text.size());
+    const std::string_view line = text.substr(start, end - start);
+    start = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+    return line;
+}
+
+}  // namespace
+
 std::vector<Step> parse_session(std::string_view text) {
     std::vector<Step> steps;
     std::size_t line_number = 0;
     for (std::size_t start = 0; start < text.size();) {
-        const std::size_t end = std::min(text.find('\n', start), text.size());
-        std::string_view line = text.substr(start, end - start);
-        if (!line.empty() && line.back() == '\r') {
-            line.remove_suffix(1);  // CRLF
-        }
-        line = trim(line);
-        start = end + 1;
+        const std::string_view line = trim(next_line(text, start));
         ++line_number;
         if (line.empty() || line.front() == '#') {
             continue;
@@ -327,9 +337,7 @@ std::string session_text(const std::vector<std::string>& header,
 std::optional<std::string> session_header_value(std::string_view text, std::string_view key) {
     const std::string prefix = "# " + std::string(key) + ": ";
     for (std::size_t start = 0; start < text.size();) {
-        const std::size_t end = std::min(text.find('\n', start), text.size());
-        const std::string_view line = trim(text.substr(start, end - start));
-        start = end + 1;
+        const std::string_view line = trim(next_line(text, start));
         if (!line.empty() && line.front() != '#') {
             break;  // the header is the comment lines before the first step
         }
@@ -448,13 +456,60 @@ ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOp
     // Every subdivision level of the list must fit before any work is done (the local steps
     // barely change the size; each level of any scheme about quadruples the faces, so the
     // levels so far are planned with the step's own scheme); each step is checked again
-    // when it runs.
+    // when it runs. A phased verb counts phases: four make one level, whose second (the split)
+    // is the one that grows the mesh; a phased Loop may be under way (next_loop_phase()).
+    struct Planned {
+        std::size_t step;
+        int levels;
+    };
+    std::vector<Planned> planned;
     int levels = 0;
-    for (const Step& step : steps) {
-        if (step.verb->plan != nullptr) {
+    int phase = next_loop_phase(mesh) - 1;  // 0 to 3: the next phase's place in its level
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const Step& step = steps[i];
+        if (step.verb->plan == nullptr) {
+            continue;
+        }
+        if (step.verb->phases) {
+            for (int k = 0; k < step.levels; ++k) {
+                levels += phase == 1 ? 1 : 0;
+                phase = (phase + 1) % 4;
+            }
+        } else {
             levels += step.levels;
-            if (const SubdivisionPlan plan = step.verb->plan(mesh, levels); !plan.ok()) {
-                throw OpError(step.text + " refused: " + plan.refusal, true);
+        }
+        planned.push_back({i, levels});
+    }
+    // One plan per scheme, for its deepest step, is a pass over the mesh each; only when one
+    // is refused are the steps walked to name the first that does not fit.
+    std::vector<Planned> deepest;
+    for (const Planned& p : planned) {
+        const auto same = std::find_if(deepest.begin(), deepest.end(), [&](const Planned& d) {
+            return steps[d.step].verb->plan == steps[p.step].verb->plan;
+        });
+        if (same == deepest.end()) {
+            deepest.push_back(p);
+        } else {
+            *same = p;
+        }
+    }
+    const auto refusal = [&](const Planned& p) {
+        return steps[p.step].verb->plan(mesh, std::max(p.levels, 1));
+    };
+    if (std::any_of(deepest.begin(), deepest.end(),
+                    [&](const Planned& p) { return p.levels > 0 && !refusal(p).ok(); })) {
+        int checked = 0;
+        for (const Planned& p : planned) {
+            if (p.levels > checked) {
+                checked = p.levels;
+                if (const SubdivisionPlan plan = refusal(p); !plan.ok()) {
+                    throw OpError(steps[p.step].text + " refused: " + plan.refusal, true);
+                }
+            }
+        }
+        for (const Planned& p : deepest) {
+            if (const SubdivisionPlan plan = refusal(p); p.levels > 0 && !plan.ok()) {
+                throw OpError(steps[p.step].text + " refused: " + plan.refusal, true);
             }
         }
     }

@@ -341,9 +341,9 @@ StepResult run_loop_step(Mesh& mesh, const Step& step, const RunOptions& options
     }
     return result;
 }
-// A phased Loop makes what one level makes.
-SubdivisionPlan plan_loop_step(const Mesh& mesh, int) {
-    return plan_loop(mesh, 1);
+// A phased Loop's levels make what Loop's make (apply_steps() counts four phases a level).
+SubdivisionPlan plan_loop_step(const Mesh& mesh, int levels) {
+    return plan_loop(mesh, levels);
 }
 
 std::string check_quads(const Mesh& mesh, const Step& step) {
@@ -553,7 +553,7 @@ constexpr std::array kVerbs{
          "2 split every edge, 3 flip the new edges that join an old and a new vertex, 4 move "
          "every vertex; four phases make one `loop`",
          "Loop one phase at a time (positions, split, flip, move)", check_loop_step_verb,
-         run_loop_step, plan_loop_step},
+         run_loop_step, plan_loop_step, true},
     Verb{"catmull_clark", kWholeMesh | kLevels, 0, 0, kNoDefaults,
          "catmull_clark, catmull_clark:K",
          "K levels (default 1) of Catmull-Clark subdivision (OpenSubdiv's Catmark rules, "

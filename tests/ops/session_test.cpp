@@ -68,6 +68,17 @@ TEST(OpsSession, SessionTextRoundTripsAndNamesBadLines) {
     // Hand-written: comma lists, blank lines, CRLF, indented comments.
     EXPECT_EQ(parse_session("\r\nflip:0-6, split:0-1\r\n   # why\r\nloop:2\r\n").size(), 3u);
     EXPECT_TRUE(parse_session("# only a header\n").empty());
+    // Old Mac line endings (a lone CR): each line still one line, not one long comment.
+    const std::string mac = "# MeshEdit session\r# input-fnv1a64: 12\rflip:0-6\rloop\r";
+    ASSERT_EQ(parse_session(mac).size(), 2u);
+    EXPECT_EQ(parse_session(mac)[1].text, "loop");
+    EXPECT_EQ(session_header_value(mac, "input-fnv1a64"), "12");
+    try {
+        parse_session("# h\rflip:0-6\r\rflop:1-2\r");
+        ADD_FAILURE() << "parsed";
+    } catch (const SyntaxError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("line 4: unknown op", 0), 0u) << e.what();
+    }
     try {
         parse_session("# h\nflip:0-6\n\nflop:1-2\n");
         ADD_FAILURE() << "parsed";

@@ -103,6 +103,9 @@ struct Verb {
     /// For subdivision verbs (kLevels): what K levels would make and whether they fit, asked
     /// for a whole list before any step runs; null for the others.
     SubdivisionPlan (*plan)(const Mesh& mesh, int levels) = nullptr;
+    /// Whether the verb's count is of phases of a level (`loop_step:N`: four phases make one
+    /// level) rather than of levels, for planning a list.
+    bool phases = false;
 
     bool accepts(Target target) const;
 };
