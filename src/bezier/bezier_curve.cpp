@@ -44,12 +44,16 @@ Vec3 de_casteljau_reduce(std::vector<Vec3>& points, double t, Vec3* derivative) 
     return lerp(points[0], points[1], t);
 }
 
-std::vector<std::vector<Vec3>> de_casteljau_levels(std::span<const Vec3> control, double t) {
+std::vector<std::vector<Vec3>> de_casteljau_levels(std::span<const Vec3> control, double t,
+                                                   int max_level) {
     MESHEDIT_ASSERT(!control.empty());
+    const std::size_t count =
+        max_level < 0 ? control.size()
+                      : std::min(control.size(), static_cast<std::size_t>(max_level) + 1);
     std::vector<std::vector<Vec3>> levels;
-    levels.reserve(control.size());
+    levels.reserve(count);
     levels.emplace_back(control.begin(), control.end());
-    while (levels.back().size() > 1) {
+    while (levels.size() < count) {
         std::vector<Vec3> next;
         de_casteljau_step(levels.back(), t, next);
         levels.push_back(std::move(next));

@@ -209,9 +209,10 @@ void add_bezier_curve(const BezierCurve& curve, double t, int max_level, bool sh
     if (curve.control_points.empty()) {
         return;
     }
-    const auto levels = de_casteljau_levels(curve.control_points, t);
-    const int last = static_cast<int>(levels.size()) - 1;
+    // Only the levels shown: all of a long curve's levels hold n(n+1)/2 points.
+    const int last = static_cast<int>(curve.control_points.size()) - 1;
     const int shown = max_level < 0 || max_level > last ? last : max_level;
+    const auto levels = de_casteljau_levels(curve.control_points, t, shown);
     for (int k = 0; k <= shown; ++k) {
         const auto& level = levels[static_cast<std::size_t>(k)];
         if (k == last) {

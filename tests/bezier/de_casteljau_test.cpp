@@ -73,6 +73,25 @@ TEST(DeCasteljau, LevelsShrinkByOneAndAreLerps) {
     }
 }
 
+TEST(DeCasteljau, OnlyTheLevelsAskedForAreComputed) {
+    std::mt19937_64 rng(12);
+    const std::vector<Vec3> p = random_points(rng, 8);
+    const auto all = de_casteljau_levels(p, 0.3);
+    for (int max_level : {0, 1, 3, 7, 8, 100}) {
+        const auto some = de_casteljau_levels(p, 0.3, max_level);
+        ASSERT_EQ(some.size(), std::min<std::size_t>(static_cast<std::size_t>(max_level) + 1, 8));
+        for (std::size_t k = 0; k < some.size(); ++k) {
+            EXPECT_EQ(some[k], all[k]) << max_level << " " << k;
+        }
+    }
+    // A curve of a million points: its first two levels, not the 5·10¹¹ points of all of them
+    // (which took the renderer to std::bad_alloc on a 390 KB file).
+    const std::vector<Vec3> long_curve = random_points(rng, 1'000'000);
+    const auto first = de_casteljau_levels(long_curve, 0.5, 1);
+    ASSERT_EQ(first.size(), 2u);
+    EXPECT_EQ(first[1].size(), 999'999u);
+}
+
 TEST(DeCasteljau, StepWorksInPlace) {
     std::vector<Vec3> p{{0, 0, 0}, {2, 0, 0}, {2, 4, 0}};
     de_casteljau_step(p, 0.25, p);

@@ -25,10 +25,13 @@ void de_casteljau_step(std::span<const Vec3> in, double t, std::vector<Vec3>& ou
 /// \pre !points.empty().
 Vec3 de_casteljau_reduce(std::vector<Vec3>& points, double t, Vec3* derivative = nullptr);
 
-/// Every level of de Casteljau's algorithm at `t`: `levels[0]` are the control points,
-/// `levels[k]` has one point fewer than `levels[k-1]`, `levels.back()` is the single point
-/// B(t). \pre control.size() >= 1.
-std::vector<std::vector<Vec3>> de_casteljau_levels(std::span<const Vec3> control, double t);
+/// Levels 0 … `max_level` of de Casteljau's algorithm at `t` (`max_level` < 0 or past the
+/// last: every level): `levels[0]` are the control points, `levels[k]` has one point fewer
+/// than `levels[k-1]`; with every level, `levels.back()` is the single point B(t). Only the
+/// levels asked for are computed (a long curve's all levels hold n(n+1)/2 points).
+/// \pre control.size() >= 1.
+std::vector<std::vector<Vec3>> de_casteljau_levels(std::span<const Vec3> control, double t,
+                                                   int max_level = -1);
 
 /// How many points levels 0 … `max_level` of a curve of `n_points` control points hold
 /// together (`max_level` < 0: all, n(n+1)/2): the size every caller that shows or prints
