@@ -2,13 +2,14 @@
 // file name and the driver's log.
 
 #include "meshedit/render/shader_program.h"
+#include "meshedit/files/files.h"
+#include "meshedit/render/shader_log.h"
 
 #include <unistd.h>
 
 #include <array>
 #include <cstdlib>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -26,14 +27,14 @@ std::filesystem::path executable_directory() {
     return ec ? std::filesystem::path() : self.parent_path();
 }
 
+// Through read_file(): a FIFO or a device named as a user shader is refused, not read
+// forever; a shader is source text, so 1 MiB is plenty.
 std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw GlError("cannot read shader " + path.string());
+    try {
+        return read_file(path, std::size_t{1} << 20);
+    } catch (const IoError& e) {
+        throw GlError("cannot read shader " + std::string(e.what()));
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 std::string shader_log(GLuint shader) {
@@ -54,22 +55,6 @@ std::string program_log(GLuint program) {
     return log;
 }
 
-// The log on one line ("a; b"), for the one-line error convention of the executables.
-std::string trimmed(std::string s) {
-    while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) {
-        s.pop_back();
-    }
-    std::string out;
-    for (char c : s) {
-        if (c == '\n') {
-            out += "; ";
-        } else if (c != '\r') {
-            out += c;
-        }
-    }
-    return out;
-}
-
 GLuint compile(GLenum type, const std::filesystem::path& path, std::string_view defines) {
     std::string source = read_text(path);
     if (!defines.empty()) {
@@ -88,9 +73,7 @@ GLuint compile(GLenum type, const std::filesystem::path& path, std::string_view 
     if (ok != GL_TRUE) {
         // Mesa writes "0:36(15): error: …": name the line and column as a reader looks
         // them up.
-        const std::string log =
-            std::regex_replace(trimmed(shader_log(shader)), std::regex(R"(\b0:(\d+)\((\d+)\): )"),
-                               "line $1, column $2: ");
+        const std::string log = readable_shader_log(shader_log(shader));
         glDeleteShader(shader);
         throw GlError("shader " + path.string() + " does not compile: " + log);
     }
@@ -156,7 +139,7 @@ ShaderProgram ShaderProgram::from_files(const std::filesystem::path& vert_path,
     GLint ok = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (ok != GL_TRUE) {
-        const std::string log = trimmed(program_log(program));
+        const std::string log = readable_shader_log(program_log(program));
         glDeleteProgram(program);
         throw GlError("shaders " + vert_path.string() + " + " + frag_path.string() +
                       " do not link: " + log);
