@@ -5,8 +5,11 @@
 #include "meshedit/core/fields.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "command_line.h"
@@ -23,7 +26,33 @@ T parse_number(std::string_view text, std::string_view what) {
     if (ec != std::errc() || ptr != end || text.empty()) {
         throw UsageError("bad " + std::string(what) + " '" + std::string(text) + "'");
     }
+    if constexpr (std::is_floating_point_v<T>) {
+        // from_chars reads "nan" and "inf", and 1e39 as a float is infinite: a camera there
+        // draws a blank image.
+        if (!std::isfinite(value)) {
+            throw UsageError("bad " + std::string(what) + " '" + std::string(text) +
+                             "': not a finite number");
+        }
+    }
     return value;
+}
+
+// A CLI11 check: a finite number from `lo` to `hi` (CLI::Range lets NaN through).
+CLI::Validator finite_range(double lo, double hi) {
+    return CLI::Validator(
+        [lo, hi](const std::string& text) -> std::string {
+            double value = 0.0;
+            const char* end = text.data() + text.size();
+            const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+            if (ec != std::errc() || ptr != end || !std::isfinite(value) || value < lo ||
+                value > hi) {
+                char range[64];
+                std::snprintf(range, sizeof range, "%g to %g", lo, hi);
+                return "'" + text + "' is not a number from " + std::string(range);
+            }
+            return {};
+        },
+        "");
 }
 
 std::vector<std::string_view> split(std::string_view text, char separator) {
@@ -164,7 +193,7 @@ int parse_options(int argc, char** argv, Options& o) {
            "smooth shading also splits at edges whose faces turn by more than DEG degrees "
            "(Blender's Auto Smooth; crease edges always split)")
         ->type_name("DEG")
-        ->check(CLI::Range(0.0, 180.0));
+        ->check(finite_range(0.0, 180.0));
     app.add_flag_callback(
         "--no-crease-split", [&o] { o.normals.creases = false; },
         "smooth shading across crease edges too (as before crease-aware normals)");
@@ -177,7 +206,7 @@ int parse_options(int argc, char** argv, Options& o) {
         ->type_name("DIR");
     app.add_option("--exposure", o.exposure, "shading 7: the environment's brightness in stops")
         ->type_name("EV")
-        ->check(CLI::Range(-16.0, 16.0));
+        ->check(finite_range(-16.0, 16.0));
     std::string field_names;
     for (const FieldInfo& info : field_infos()) {
         field_names += (field_names.empty() ? "" : "|") + std::string(info.name);
@@ -220,7 +249,9 @@ int parse_options(int argc, char** argv, Options& o) {
         ->type_name("N")
         ->check(CLI::Range(1, 256));
     app.add_flag("--net", o.net, ".bez: draw the control nets");
-    app.add_option("--t", o.t, ".bzc: the de Casteljau parameter (default 0.5)")->type_name("T");
+    app.add_option("--t", o.t, ".bzc: the de Casteljau parameter (default 0.5)")
+        ->type_name("T")
+        ->check(finite_range(0.0, 1.0));
     app.add_option("--level", o.level, ".bzc: draw levels 0..K only (default all, with B(t))")
         ->type_name("K");
     app.add_flag_callback(

@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
+#include <vector>
 
+#include "meshedit/core/budget.h"
 #include "meshedit/files/io_error.h"
 
 namespace meshedit {
@@ -153,6 +156,15 @@ std::vector<std::vector<float>> cube_faces(const EnvironmentImage& image, int si
 
 EnvironmentImage read_environment(const std::filesystem::path& path) {
     namespace OIIO = OIIO_NAMESPACE;
+    // A FIFO or a device would block or never end: only regular files, as the mesh readers.
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) {
+        throw IoError(path.string(), "", "no such file");
+    }
+    if (!std::filesystem::is_regular_file(status)) {
+        throw IoError(path.string(), "", "is not a regular file (a FIFO, a device or a folder)");
+    }
     auto in = OIIO::ImageInput::open(path.string());
     if (!in) {
         throw IoError(path.string(), "", "cannot read the environment image: " + OIIO::geterror());
@@ -168,25 +180,42 @@ EnvironmentImage read_environment(const std::filesystem::path& path) {
                       "not equirectangular: it should be twice as wide as high, it is " +
                           std::to_string(spec.width) + " × " + std::to_string(spec.height));
     }
+    const int channels = spec.nchannels;
+    if (channels < 1 || channels > 64) {
+        throw IoError(path.string(), "",
+                      "an image of " + std::to_string(channels) + " channels is not a picture");
+    }
+    // What the header promises, checked against the budget before anything is allocated: the
+    // linear RGB kept (12 bytes a pixel) and the cube map made from it (as much again).
+    const double pixels = static_cast<double>(spec.width) * spec.height;
+    if (const auto over = over_budget(24.0 * pixels)) {
+        throw IoError(path.string(), "",
+                      "an environment image of " + std::to_string(spec.width) + " × " +
+                          std::to_string(spec.height) + " pixels " + *over);
+    }
     EnvironmentImage env;
     env.width = spec.width;
     env.height = spec.height;
-    const int channels = spec.nchannels;
-    std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-        throw IoError(path.string(), "", "cannot read the environment image: " + in->geterror());
-    }
     const bool srgb = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
                       spec.format.basetype == OIIO::TypeDesc::UINT16;
-    env.rgb.resize(static_cast<std::size_t>(3 * env.width * env.height));
-    for (std::size_t i = 0; i < static_cast<std::size_t>(env.width * env.height); ++i) {
-        for (int k = 0; k < 3; ++k) {
-            const float c =
-                pixels[i * channels + static_cast<std::size_t>(std::min(k, channels - 1))];
-            env.rgb[3 * i + static_cast<std::size_t>(k)] =
-                !std::isfinite(c) ? 0.0f
-                : srgb            ? static_cast<float>(srgb_to_linear(c))
-                                  : std::max(c, 0.0f);
+    // Row by row, the kept pixels growing with the rows read: a header that promises more
+    // than the file holds fails at its end instead of allocating gigabytes first.
+    const auto width = static_cast<std::size_t>(spec.width);
+    std::vector<float> row(width * static_cast<std::size_t>(channels));
+    for (int y = 0; y < spec.height; ++y) {
+        if (!in->read_scanline(y + spec.y, spec.z, OIIO::TypeDesc::FLOAT, row.data())) {
+            throw IoError(path.string(), "",
+                          "cannot read row " + std::to_string(y) +
+                              " of the environment image: " + in->geterror());
+        }
+        for (std::size_t x = 0; x < width; ++x) {
+            for (int k = 0; k < 3; ++k) {
+                const float c = row[x * static_cast<std::size_t>(channels) +
+                                    static_cast<std::size_t>(std::min(k, channels - 1))];
+                env.rgb.push_back(!std::isfinite(c) ? 0.0f
+                                  : srgb            ? static_cast<float>(srgb_to_linear(c))
+                                                    : std::max(c, 0.0f));
+            }
         }
     }
     return env;
