@@ -113,6 +113,7 @@ private:
         for (const std::string_view p : {"ST", "C", "N"}) {
             if (prefix.substr(0, p.size()) == p) {
                 normals_ = normals_ || p == "N";
+                extras_ = extras_ || p != "N";
                 prefix.remove_prefix(p.size());
             }
         }
@@ -176,8 +177,30 @@ private:
         return l;
     }
 
+    // Whether `l` reads as a face line ("3 0 1 2": a corner count k of at least 3, then k
+    // whole numbers), where a vertex line of a file without colours or texture coordinates
+    // was due: the header announced more vertices than the file has, and taking a face as a
+    // vertex would silently lose it.
+    static bool reads_as_face(std::string_view l, std::size_t vertex_numbers) {
+        const std::optional<std::size_t> k = whole(io_util::next_token(l));
+        if (!k || *k < 3 || *k + 1 <= vertex_numbers) {
+            return false;
+        }
+        for (std::size_t i = 0; i < *k; ++i) {
+            if (!whole(io_util::next_token(l))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     void read_vertex(std::size_t v) {
         std::string_view l = record_line(v, nv_, "vertices");
+        if (!extras_ && reads_as_face(l, normals_ ? 6 : 3)) {
+            fail("vertex " + std::to_string(v) + " reads as a face line ('" +
+                 std::string(io_util::next_token(l)) + " …'): the header announces " +
+                 std::to_string(nv_) + " vertices, more than the file has");
+        }
         const std::string what = "vertex " + std::to_string(v);
         Vec3 p;
         for (int i = 0; i < 3; ++i) {
@@ -233,6 +256,7 @@ private:
     std::size_t pos_ = 0;
     std::size_t line_ = 0;
     bool normals_ = false;
+    bool extras_ = false;  // C or ST: colours or texture coordinates follow a vertex
     std::size_t nv_ = 0;
     std::size_t nf_ = 0;
     std::size_t extra_lines_ = 0;

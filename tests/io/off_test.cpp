@@ -124,6 +124,10 @@ TEST(Off, Errors) {
               "t.off: line 6: face 0 has 4000000 corners but its line lists 3 vertex indices");
     EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\nthree 0 1 2\n"),
               "t.off: line 6: face 0 should start with its number of corners, found 'three'");
+    // A header that over-counts vertices: the first face line is not eaten as a vertex.
+    EXPECT_EQ(off_error("OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
+              "t.off: line 6: vertex 3 reads as a face line ('3 …'): the header announces 4 "
+              "vertices, more than the file has");
     const std::string nul("OFF\n3 1 0\n\0\0", 12);
     EXPECT_EQ(off_error(nul), "t.off: line 3: binary data (a NUL byte): not an ASCII OFF file");
     test::ScratchDir dir;
