@@ -219,6 +219,9 @@ MeshRecorder::MeshRecorder(Mesh& mesh) : mesh_(&mesh) {
         log.stride = stride_of(c, log.n_arrays);
     }
     deleted_before_ = {mesh.n_deleted_vertices_, mesh.n_deleted_edges_, mesh.n_deleted_faces_};
+    if constexpr (kSelfCheck) {
+        start_ = std::make_unique<Mesh>(mesh);  // before recorder_ is set: the copy is not
+    }
     mesh.recorder_ = this;
 }
 
@@ -326,10 +329,26 @@ MeshChange MeshRecorder::finish() {
                               u32(deleted_before_[2])};
     change.deleted_after_ = {u32(mesh_->n_deleted_vertices_), u32(mesh_->n_deleted_edges_),
                              u32(mesh_->n_deleted_faces_)};
+    if (start_) {
+        // The self-check: undoing the change must give back the mesh as it began, bit for bit.
+        // A write the recorder was not told about (a property written through its handle
+        // without touch()) is missing from the change and shows here.
+        Mesh undone = *mesh_;
+        change.undo(undone);
+        std::string why;
+        if (!bitwise_equal(undone, *start_, &why)) {
+            throw std::logic_error(
+                "the recorder's self-check failed: the edit changed what it did not record (" +
+                why +
+                "); write through the Mesh setters, or call touch() before a property "
+                "write");
+        }
+    }
     return change;
 }
 
 void MeshRecorder::roll_back() {
+    start_.reset();  // rolling back an edit that failed half-way: no self-check
     MeshChange change = finish();
     change.undo(*mesh_);
 }

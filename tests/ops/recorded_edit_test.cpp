@@ -189,5 +189,39 @@ TEST(RecordedEdit, RollBackRestoresAHalfDoneEdit) {
     EXPECT_TRUE(bitwise_equal(mesh, before, &why)) << why;
 }
 
+// An op that writes a property through its handle without touch(): the recording misses the
+// write, so its undo would not give the mesh back. In Debug and sanitizer builds the recorder
+// catches it at finish(); every test that records checks the contract this way.
+TEST(RecordedEdit, SelfCheckCatchesAWriteTheRecorderWasNotToldAbout) {
+    if (!MeshRecorder::kSelfCheck) {
+        GTEST_SKIP() << "the recorder checks itself in Debug and sanitizer builds";
+    }
+    Mesh mesh = shapes::torus(6, 5);
+    auto weight = mesh.add_property<Vertex, double>("v:weight", 1.0);
+    {
+        MeshRecorder recorder(mesh);
+        ASSERT_TRUE(split(mesh, Edge(3)));  // recorded through the setters
+        weight[Vertex(7)] = 2.0;            // an existing element, written through the handle
+        try {
+            recorder.finish();
+            ADD_FAILURE() << "the self-check did not notice the untold write";
+        } catch (const std::logic_error& e) {
+            EXPECT_NE(std::string(e.what()).find("self-check"), std::string::npos) << e.what();
+        }
+    }
+    {
+        // The same op with touch() records completely and passes.
+        Mesh fixed = shapes::torus(6, 5);
+        auto w = fixed.add_property<Vertex, double>("v:weight", 1.0);
+        MeshRecorder recorder(fixed);
+        ASSERT_TRUE(split(fixed, Edge(3)));
+        fixed.touch(Vertex(7));
+        w[Vertex(7)] = 2.0;
+        const MeshChange change = recorder.finish();
+        change.undo(fixed);
+        EXPECT_EQ(w[Vertex(7)], 1.0);
+    }
+}
+
 }  // namespace
 }  // namespace meshedit

@@ -12,4 +12,14 @@ namespace meshedit {
 /// `<extra>`, the renderer draws them green.
 inline constexpr const char* kCreaseProperty = "e:crease";
 
+/// The properties a phased Loop leaves on the mesh between phases (loop_steps.h), which the
+/// renderer's overlay draws: where each vertex goes, and which vertices and edges the phases
+/// made or flipped.
+inline constexpr const char* kLoopTarget = "v:loop_target";        ///< Vec3: where it goes
+inline constexpr const char* kLoopHasTarget = "v:loop_has";        ///< uint8: 1 if it has one
+inline constexpr const char* kLoopEdgePoint = "e:loop_point";      ///< Vec3 (phase 1 only)
+inline constexpr const char* kLoopNewVertex = "v:loop_new";        ///< uint8: made by a split
+inline constexpr const char* kLoopNewEdge = "e:loop_new";          ///< uint8: crosses an old face
+inline constexpr const char* kLoopFlippedEdge = "e:loop_flipped";  ///< uint8: flipped in 3
+
 }  // namespace meshedit

@@ -17,18 +17,13 @@
 #include <cstddef>
 #include <string>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/subdivision.h"
 
 namespace meshedit {
 
-/// The properties a phased Loop leaves on the mesh between phases.
-inline constexpr const char* kLoopTarget = "v:loop_target";        ///< Vec3: where it goes
-inline constexpr const char* kLoopHasTarget = "v:loop_has";        ///< uint8: 1 if it has one
-inline constexpr const char* kLoopEdgePoint = "e:loop_point";      ///< Vec3 (phase 1 only)
-inline constexpr const char* kLoopNewVertex = "v:loop_new";        ///< uint8: made by a split
-inline constexpr const char* kLoopNewEdge = "e:loop_new";          ///< uint8: crosses an old face
-inline constexpr const char* kLoopFlippedEdge = "e:loop_flipped";  ///< uint8: flipped in 3
+// The properties the phases leave on the mesh (kLoopTarget …) are in attributes.h.
 
 /// The phase loop_step() runs next on `mesh`: 1 when no phased Loop is under way, else 2–4.
 int next_loop_phase(const Mesh& mesh);

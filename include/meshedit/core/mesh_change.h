@@ -103,6 +103,16 @@ private:
 /// One recorder per mesh at a time; copies of the mesh are not recorded.
 class MeshRecorder {
 public:
+    /// Whether recorders check themselves (Debug and sanitizer builds): each keeps a copy of
+    /// the mesh from its start, and finish() fails when undoing the change does not give it
+    /// back bit for bit — an element changed that the recording was not told about. Every
+    /// test that records then checks the contract for free.
+#ifdef NDEBUG
+    static constexpr bool kSelfCheck = false;
+#else
+    static constexpr bool kSelfCheck = true;
+#endif
+
     /// \throws std::logic_error if `mesh` is already being recorded.
     explicit MeshRecorder(Mesh& mesh);
     /// Stops recording; an unfinished recording is dropped (the mesh keeps its changes).
@@ -111,7 +121,8 @@ public:
     MeshRecorder& operator=(const MeshRecorder&) = delete;
 
     /// Stops recording and returns the change.
-    /// \throws std::logic_error naming what the edit did that a change cannot hold.
+    /// \throws std::logic_error naming what the edit did that a change cannot hold, or (with
+    /// kSelfCheck) what it changed without telling the recorder.
     MeshChange finish();
     /// Stops recording and puts the mesh back as it was when the recording began (an edit
     /// that failed half-way). \throws std::logic_error as finish() does.
@@ -142,7 +153,8 @@ private:
     Mesh* mesh_;
     std::array<Log, 4> logs_;
     std::array<std::size_t, 3> deleted_before_{};
-    std::string problem_;  ///< the first untracked write, or a failed allocation
+    std::string problem_;          ///< the first untracked write, or a failed allocation
+    std::unique_ptr<Mesh> start_;  ///< kSelfCheck: the mesh as the recording began
 };
 
 /// The faces whose picture a change may have altered in `mesh` (either side of it): the
