@@ -260,6 +260,14 @@ bool looks_like_text(std::string_view bytes) {
     return true;
 }
 
+// ASCII STL starts with "solid" (after a UTF-8 byte-order mark, which some editors add).
+bool starts_solid(std::string_view bytes) {
+    if (bytes.substr(0, 3) == "\xEF\xBB\xBF") {
+        bytes.remove_prefix(3);
+    }
+    return bytes.substr(0, 5) == "solid";
+}
+
 void put_float(std::string& out, float x) {
     std::uint32_t u = std::bit_cast<std::uint32_t>(x);
     if constexpr (std::endian::native == std::endian::big) {
@@ -276,15 +284,14 @@ MeshSoup parse_stl(std::string_view bytes, const std::string& name) {
         if (kHeader + kRecord * n == bytes.size()) {
             return parse_binary(bytes, name);
         }
-        const std::string_view start = bytes.substr(0, 5);
-        if (start != "solid" || !looks_like_text(bytes)) {
+        if (!starts_solid(bytes) || !looks_like_text(bytes)) {
             throw IoError(name, "",
                           "binary STL whose header announces " + std::to_string(n) +
                               " triangles (84 + 50 × " + std::to_string(n) + " = " +
                               std::to_string(kHeader + kRecord * n) + " bytes), but the file is " +
                               std::to_string(bytes.size()) + " bytes");
         }
-    } else if (!looks_like_text(bytes) || bytes.substr(0, 5) != "solid") {
+    } else if (!looks_like_text(bytes) || !starts_solid(bytes)) {
         throw IoError(name, "",
                       bytes.empty() ? "empty file: no STL data"
                                     : "too short for binary STL (" + std::to_string(bytes.size()) +

@@ -82,6 +82,14 @@ TEST(Stl, AsciiWithSeveralSolidsAndAnEmptyOne) {
     EXPECT_EQ(faces_of(s.soup), (Faces{{0, 1, 2}, {0, 2, 3}}));
     // A zero normal does not count as disagreeing.
     EXPECT_EQ(s.notices, std::vector<std::string>{"welded 2 vertices by exact position"});
+    // A byte-order mark before "solid"; text coordinates are the floats they mean, said once.
+    const MeshSoup bom = parse_stl(
+        "\xEF\xBB\xBFsolid\nfacet normal 0 0 1\nouter loop\nvertex 0.1 0 0\nvertex 1 0 0\n"
+        "vertex 1 1 0\nendloop\nendfacet\nendsolid\n",
+        "bom.stl");
+    EXPECT_EQ(bom.soup.positions[0], Vec3(test::to_float(0.1), 0, 0));
+    EXPECT_EQ(bom.notices,
+              std::vector<std::string>{"coordinates rounded to 32-bit floats (STL stores floats)"});
 }
 
 TEST(Stl, RoundTripAtFloatPrecisionInBinaryAndAscii) {
