@@ -140,6 +140,39 @@ TEST(Stl, RoundTripAtFloatPrecisionInBinaryAndAscii) {
     }
 }
 
+// Every truncation and many single-byte changes of valid files: a soup or an IoError, never
+// a crash or another exception (run under ASan in the sanitizer build).
+TEST(Stl, TruncatedAndDamagedFilesGiveASoupOrAnIoError) {
+    const std::vector<std::string> files = {
+        binary_stl("solid binary", kSquare, 2),
+        "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n"
+        "endloop\nendfacet\nendsolid s\n"};
+    std::size_t soups = 0;
+    std::size_t errors = 0;
+    const auto attempt = [&](const std::string& bytes) {
+        try {
+            parse_stl(bytes, "d.stl");
+            ++soups;
+        } catch (const IoError&) {
+            ++errors;
+        }
+    };
+    for (const std::string& file : files) {
+        for (std::size_t n = 0; n < file.size(); ++n) {
+            attempt(file.substr(0, n));
+        }
+        for (std::size_t i = 0; i < file.size(); ++i) {
+            for (const char c : {'\0', '\xFF', '\x7F', '9', ' '}) {
+                std::string damaged = file;
+                damaged[i] = c;
+                attempt(damaged);
+            }
+        }
+    }
+    EXPECT_GT(errors, 0u);
+    EXPECT_GT(soups, 0u);
+}
+
 TEST(Stl, SizesThatLieAndTruncatedTextAreRefused) {
     const std::string good = binary_stl("tool", kSquare, 2);
     EXPECT_EQ(stl_error(binary_stl("tool", kSquare, 3)),
