@@ -16,7 +16,6 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "io_util.h"
@@ -28,36 +27,32 @@ namespace {
 constexpr std::size_t kHeader = 84;
 constexpr std::size_t kRecord = 50;
 
-struct BitsHash {
-    std::size_t operator()(const std::array<std::uint64_t, 3>& k) const {
-        std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
-        h ^= (k[1] + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
-        h ^= (k[2] + 0x165667B19E3779F9ull) * 0xD6E8FEB86659FD93ull;
-        return static_cast<std::size_t>(h ^ (h >> 29));
-    }
-};
+std::uint64_t hash_of(const Vec3& p) {
+    std::uint64_t h = std::bit_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull;
+    h ^= (std::bit_cast<std::uint64_t>(p.y) + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
+    h ^= (std::bit_cast<std::uint64_t>(p.z) + 0x165667B19E3779F9ull) * 0xD6E8FEB86659FD93ull;
+    return h ^ (h >> 29);
+}
 
-// Collects triangles, welding corners and checking stored normals against the winding.
+// Collects triangles, welding corners and checking stored normals against the winding. The
+// weld is an open-addressing table of vertex numbers keyed by position (NaN is refused before
+// and −0 made +0, so == on the coordinates is equality of their bits).
 class Welder {
 public:
     explicit Welder(std::size_t triangles) {
         out_.soup.indices.reserve(triangles * 3);
         out_.soup.face_offsets.reserve(triangles + 1);
-        index_.reserve(triangles / 2 + 1);
+        std::size_t capacity = 64;
+        while (capacity < triangles) {  // half a vertex per triangle when closed; grow() if more
+            capacity *= 2;
+        }
+        slots_.assign(capacity * 4, kEmpty);
     }
 
     void add(const Vec3& normal, const Vec3 (&corners)[3]) {
         for (const Vec3& c : corners) {
             const Vec3 p(c.x + 0.0, c.y + 0.0, c.z + 0.0);  // −0 → +0: one vertex
-            const std::array<std::uint64_t, 3> key{std::bit_cast<std::uint64_t>(p.x),
-                                                   std::bit_cast<std::uint64_t>(p.y),
-                                                   std::bit_cast<std::uint64_t>(p.z)};
-            const auto [it, fresh] =
-                index_.try_emplace(key, static_cast<std::uint32_t>(out_.soup.positions.size()));
-            if (fresh) {
-                out_.soup.positions.push_back(p);
-            }
-            out_.soup.indices.push_back(it->second);
+            out_.soup.indices.push_back(vertex_of(p));
         }
         out_.soup.face_offsets.push_back(static_cast<std::uint32_t>(out_.soup.indices.size()));
         const Vec3 winding = cross(corners[1] - corners[0], corners[2] - corners[0]);
@@ -80,7 +75,39 @@ public:
     }
 
 private:
-    std::unordered_map<std::array<std::uint64_t, 3>, std::uint32_t, BitsHash> index_;
+    static constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
+
+    std::uint32_t vertex_of(const Vec3& p) {
+        std::vector<Vec3>& positions = out_.soup.positions;
+        const std::size_t mask = slots_.size() - 1;
+        for (std::size_t i = hash_of(p) & mask;; i = (i + 1) & mask) {
+            if (slots_[i] == kEmpty) {
+                slots_[i] = static_cast<std::uint32_t>(positions.size());
+                positions.push_back(p);
+                if (positions.size() * 2 > slots_.size()) {
+                    grow();
+                }
+                return static_cast<std::uint32_t>(positions.size() - 1);
+            }
+            if (positions[slots_[i]] == p) {
+                return slots_[i];
+            }
+        }
+    }
+
+    void grow() {
+        slots_.assign(slots_.size() * 2, kEmpty);
+        const std::size_t mask = slots_.size() - 1;
+        for (std::uint32_t v = 0; v < out_.soup.positions.size(); ++v) {
+            std::size_t i = hash_of(out_.soup.positions[v]) & mask;
+            while (slots_[i] != kEmpty) {
+                i = (i + 1) & mask;
+            }
+            slots_[i] = v;
+        }
+    }
+
+    std::vector<std::uint32_t> slots_;
     std::size_t opposite_ = 0;
     MeshSoup out_;
 };
