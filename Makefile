@@ -77,8 +77,8 @@ fuzz:
 	./scripts/install-deps.sh --fuzz
 	cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	    -DCMAKE_CXX_COMPILER=clang++ -DMESHEDIT_FUZZ=ON -DMESHEDIT_BUILD_VIEWER=OFF $(CMAKE_FLAGS)
-	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_collada fuzz_obj fuzz_off fuzz_gltf fuzz_bez \
-	    fuzz_bzc fuzz_ops meshedit
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_collada fuzz_obj fuzz_off fuzz_ply fuzz_stl fuzz_gltf \
+	    fuzz_bez fuzz_bzc fuzz_ops meshedit
 	FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_RUNS=$(FUZZ_RUNS) ./scripts/fuzz.sh $(FUZZ_DIR)
 
 # Regenerates the sample meshes in dae/ with the project's own code (docs/samples.md).

@@ -17,7 +17,7 @@ else
     seconds=${FUZZ_SECONDS:-60}
 fi
 jobs=${FUZZ_JOBS:-$(nproc)}
-targets=${FUZZ_TARGETS:-"collada obj off gltf bez bzc ops"}
+targets=${FUZZ_TARGETS:-"collada obj off ply stl gltf bez bzc ops"}
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 

@@ -92,6 +92,7 @@ Command add_convert(CLI::App& meshedit) {
         std::string ops;
         CLI::Option* ops_option = nullptr;
         int density = 8;
+        bool ascii = false;
     };
     auto s = std::make_shared<Settings>();
     CLI::App* app = meshedit.add_subcommand(
@@ -106,11 +107,11 @@ Command add_convert(CLI::App& meshedit) {
                             ops::help_lines())
             ->type_name("LIST");
     add_density_option(*app, s->density);
+    app->add_flag("--ascii", s->ascii, "write PLY and STL as text rather than binary");
     app->footer(
-        "Reads IN (.dae .gltf .glb .obj .off, or a .bez tessellated at --density), applies the "
-        "--ops\n"
-        "edits in order and writes OUT in the format of its extension (.dae .gltf .glb .obj "
-        ".off).\n"
+        "Reads IN (.dae .gltf .glb .obj .off .ply .stl, or a .bez tessellated at --density),\n"
+        "applies the --ops edits in order and writes OUT in the format of its extension (.dae\n"
+        ".gltf .glb .obj .off .ply .stl; PLY and STL binary unless --ascii).\n"
         "A .bzc curve converts only to .bzc, and a .bez to .bez keeps its patches (both written\n"
         "as the CS184 course's skeleton reads them). OUT is written to a temporary file and\n"
         "renamed, so a failed run never leaves a partial OUT.\n"
@@ -159,7 +160,9 @@ Command add_convert(CLI::App& meshedit) {
                         rethrow_with_file(e, s->in);
                     }
                 }
-                report_unkept(s->out, write_mesh(input.mesh, s->out));
+                IoFlags flags;
+                flags.ascii = s->ascii;
+                report_unkept(s->out, write_mesh(input.mesh, s->out, flags));
                 return 0;
             }};
 }

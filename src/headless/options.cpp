@@ -145,10 +145,11 @@ int parse_options(int argc, char** argv, Options& o) {
         "meshedit-render");
     command_line::style(app);
     Raw raw;
-    app.add_option("FILE", o.input,
-                   "a mesh (.dae .gltf .glb .obj .off: smooth shaded, boundary and crease edges "
-                   "drawn), Bezier patches (.bez, tessellated) or a Bezier curve (.bzc, in the "
-                   "[0,1]^2 square)")
+    app.add_option(
+           "FILE", o.input,
+           "a mesh (.dae .gltf .glb .obj .off .ply .stl: smooth shaded, boundary and crease edges "
+           "drawn), Bezier patches (.bez, tessellated) or a Bezier curve (.bzc, in the "
+           "[0,1]^2 square)")
         ->required();
     app.add_option("-o,--output", o.output, "the image to write")->type_name("OUT.png")->required();
     app.add_option("--size", raw.size, "image size in pixels (default 512x384)")->type_name("WxH");

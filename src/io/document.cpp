@@ -25,7 +25,7 @@ bool is_document_extension(const std::string& extension) {
 }
 
 const char* document_extensions() {
-    return ".dae, .gltf, .glb, .obj, .off, .bez or .bzc";
+    return ".dae, .gltf, .glb, .obj, .off, .ply, .stl, .bez or .bzc";
 }
 
 LoadedDocument read_document(const std::filesystem::path& path, const ReadOptions& options) {

@@ -12,6 +12,8 @@
 #include "meshedit/io/gltf.h"
 #include "meshedit/io/obj.h"
 #include "meshedit/io/off.h"
+#include "meshedit/io/ply.h"
+#include "meshedit/io/stl.h"
 
 namespace fs = std::filesystem;
 
@@ -21,11 +23,11 @@ namespace meshedit {
 
 bool is_mesh_extension(const std::string& extension) {
     return extension == ".dae" || extension == ".gltf" || extension == ".glb" ||
-           extension == ".obj" || extension == ".off";
+           extension == ".obj" || extension == ".off" || extension == ".ply" || extension == ".stl";
 }
 
 const char* mesh_extensions() {
-    return ".dae, .gltf, .glb, .obj or .off";
+    return ".dae, .gltf, .glb, .obj, .off, .ply or .stl";
 }
 
 MeshSoup read_soup(const fs::path& path) {
@@ -44,6 +46,8 @@ MeshSoup read_soup(const fs::path& path) {
     MeshSoup soup = ext == ".dae"   ? read_collada(path)
                     : ext == ".obj" ? read_obj(path)
                     : ext == ".off" ? read_off(path)
+                    : ext == ".ply" ? read_ply(path)
+                    : ext == ".stl" ? read_stl(path)
                                     : read_gltf(path);
     // One wording, whatever the format, for a file with nothing to load (an empty OBJ, a
     // text file named .obj, a glTF of lines only): never an empty mesh from a file.
@@ -98,7 +102,9 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
     const bool obj = ext == ".obj";
     const bool off = ext == ".off";
     const bool gltf = ext == ".gltf" || ext == ".glb";
-    if (!obj && !off && !gltf) {
+    const bool ply = ext == ".ply";
+    const bool stl = ext == ".stl";
+    if (!obj && !off && !gltf && !ply && !stl) {
         return unkept;  // COLLADA keeps polygons, creases and every double
     }
     std::size_t creases = 0;
@@ -107,26 +113,27 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
             creases += crease[e] != 0 ? 1 : 0;
         }
     }
-    const std::string format = obj ? "OBJ" : off ? "OFF" : "glTF";
+    const std::string format = obj ? "OBJ" : off ? "OFF" : ply ? "PLY" : stl ? "STL" : "glTF";
     if (creases > 0) {
         unkept.push_back(std::to_string(creases) + " crease mark" + (creases == 1 ? "" : "s") +
                          " (" + format + " has no crease edges)");
     }
-    if (gltf) {
+    if (gltf || stl) {
         std::size_t polygons = 0;
         for (const Face f : mesh.faces()) {
             polygons += mesh.is_triangle(f) ? 0 : 1;
         }
         if (polygons > 0) {
             unkept.push_back(std::to_string(polygons) + " polygon" + (polygons == 1 ? "" : "s") +
-                             " (glTF stores triangles: each is fanned)");
+                             " (" + format + " stores triangles: each is fanned)");
         }
         for (const Vertex v : mesh.vertices()) {
             const Vec3& p = mesh.position(v);
             if (static_cast<double>(static_cast<float>(p.x)) != p.x ||
                 static_cast<double>(static_cast<float>(p.y)) != p.y ||
                 static_cast<double>(static_cast<float>(p.z)) != p.z) {
-                unkept.push_back("coordinates beyond 32-bit float precision (glTF stores floats)");
+                unkept.push_back("coordinates beyond 32-bit float precision (" + format +
+                                 " stores floats)");
                 break;
             }
         }
@@ -146,6 +153,10 @@ std::vector<std::string> write_mesh(const Mesh& mesh, const fs::path& path, cons
         write_obj(dense, path, flags);
     } else if (ext == ".off") {
         write_off(dense, path);
+    } else if (ext == ".ply") {
+        write_ply(dense, path, flags);
+    } else if (ext == ".stl") {
+        write_stl(dense, path, flags);
     } else {
         throw IoError(path.string(), "",
                       ext.empty()

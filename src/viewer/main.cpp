@@ -30,7 +30,8 @@ bool parse_size(std::string_view text, int& width, int& height) {
 int main(int argc, char** argv) {
     meshedit::viewer::ViewerOptions options;
     CLI::App app(
-        "Opens FILE (.dae .gltf .glb .obj .off mesh, .bez Bezier patches, .bzc Bezier curve) in "
+        "Opens FILE (.dae .gltf .glb .obj .off .ply .stl mesh, .bez Bezier patches, .bzc Bezier "
+        "curve) in "
         "the interactive editor. Press ? or F1 in the window for every key and mouse action.",
         "meshedit [view]");
     meshedit::command_line::style(app);

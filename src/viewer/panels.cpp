@@ -496,10 +496,10 @@ void Panels::draw_prompt(PanelRequests& requests) {
     if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::TextUnformatted(
             prompt_ == Prompt::SaveAs
-                ? "File name (.dae .obj .off .gltf .glb for meshes, .bzc for curves):"
+                ? "File name (.dae .obj .off .ply .stl .gltf .glb for meshes, .bzc for curves):"
             : prompt_ == Prompt::ExportSession
                 ? "Session file (meshedit convert IN OUT --ops @FILE replays it):"
-                : "File to open (.dae .obj .off .gltf .glb .bez .bzc):");
+                : "File to open (.dae .obj .off .ply .stl .gltf .glb .bez .bzc):");
         if (prompt_fresh_) {
             ImGui::SetKeyboardFocusHere();
             prompt_fresh_ = false;

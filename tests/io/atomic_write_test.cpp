@@ -81,10 +81,10 @@ TEST(AtomicWrite, FolderThatIsARegularFileFailsEvenForRoot) {
 
 TEST(AtomicWrite, UnknownExtensionWritesNothing) {
     test::ScratchDir dir;
-    EXPECT_CONTAINS(io_error_of([&] { write_mesh(shapes::cube(), dir / "cube.stl"); }),
-                    "cube.stl: cannot write '.stl' files");
-    EXPECT_CONTAINS(io_error_of([&] { read_soup(dir / "cube.stl"); }),
-                    "cube.stl: unknown extension '.stl'");
+    EXPECT_CONTAINS(io_error_of([&] { write_mesh(shapes::cube(), dir / "cube.3mf"); }),
+                    "cube.3mf: cannot write '.3mf' files");
+    EXPECT_CONTAINS(io_error_of([&] { read_soup(dir / "cube.3mf"); }),
+                    "cube.3mf: unknown extension '.3mf'");
     EXPECT_TRUE(dir.entries().empty());
 }
 

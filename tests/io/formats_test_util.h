@@ -31,6 +31,13 @@ inline void spit(const std::filesystem::path& path, const std::string& bytes) {
     out << bytes;
 }
 
+/// `x` rounded to float. Through a volatile: GCC 12 at -O3 (its SLP vectorizer) was seen to
+/// drop the rounding of `Vec3(float(p.x), float(p.y), float(p.z))` inlined into EXPECT_EQ.
+inline double to_float(double x) {
+    volatile float f = static_cast<float>(x);
+    return f;
+}
+
 /// A file of tests/io/data.
 inline std::filesystem::path data_file(const std::string& name) {
     return std::filesystem::path(MESHEDIT_TEST_DATA) / name;

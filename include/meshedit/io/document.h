@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Opening any file the programs open: a mesh (.dae .gltf .glb .obj .off), Bezier patches (.bez,
-/// tessellated and welded into a mesh that every mesh command accepts) or a Bezier curve
+/// Opening any file the programs open: a mesh (.dae .gltf .glb .obj .off .ply .stl), Bezier patches
+/// (.bez, tessellated and welded into a mesh that every mesh command accepts) or a Bezier curve
 /// (.bzc). The viewer, the `meshedit` commands and `meshedit-render` all open files through
 /// read_document(), so they accept the same files and say the same things about them.
 
@@ -51,7 +51,7 @@ LoadedDocument read_document(const std::filesystem::path& path, const ReadOption
 /// Whether `extension` (lower-case, with dot) is a file read_document() opens.
 bool is_document_extension(const std::string& extension);
 
-/// ".dae, .gltf, .glb, .obj, .off, .bez or .bzc", for messages.
+/// ".dae, .gltf, .glb, .obj, .off, .ply, .stl, .bez or .bzc", for messages.
 const char* document_extensions();
 
 }  // namespace meshedit

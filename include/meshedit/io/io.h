@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// Reading and writing meshes and Bezier data, dispatched by file extension. Each format has
-/// its own read_X/write_X pair (collada.h, gltf.h, obj.h, off.h; the Bezier formats below); this is
-/// the front door. document.h reads any file the programs open (mesh, patches or curve).
+/// its own read_X/write_X pair (collada.h, gltf.h, obj.h, off.h, ply.h, stl.h; the Bezier formats
+/// below); this is the front door. document.h reads any file the programs open (mesh, patches or
+/// curve).
 ///
 /// Readers produce a MeshSoup (an indexed polygon soup plus what the file said about it);
 /// only build_mesh() turns it into a halfedge mesh. Writers always write a temporary file in
@@ -43,11 +44,13 @@ struct MeshSoup {
 /// Options for writers.
 struct IoFlags {
     bool write_normals = true;  ///< area-weighted vertex normals, where the format has them
+    bool ascii = false;         ///< text rather than binary, for formats that have both (PLY, STL)
 };
 
-/// Formats by extension (lower-case, with dot): ".dae", ".gltf", ".glb", ".obj", ".off".
+/// Formats by extension (lower-case, with dot): ".dae", ".gltf", ".glb", ".obj", ".off", ".ply",
+/// ".stl".
 bool is_mesh_extension(const std::string& extension);
-/// ".dae, .gltf, .glb, .obj or .off", for messages.
+/// ".dae, .gltf, .glb, .obj, .off, .ply or .stl", for messages.
 const char* mesh_extensions();
 
 /// Reads a mesh file into a soup. \throws IoError (unknown extension, missing file, bad

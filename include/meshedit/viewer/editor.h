@@ -143,9 +143,9 @@ public:
 
     // ------------------------------------------------------------- files (editor_files.cpp)
 
-    /// Opens `path` (.dae .gltf .glb .obj .off → Mesh, .bez → Surface, .bzc → Curve). With unsaved
-    /// changes it is refused once, as quitting is (every way a document is replaced — Ctrl+O,
-    /// a dropped file — comes here); the next open goes through. On failure throws IoError
+    /// Opens `path` (.dae .gltf .glb .obj .off .ply .stl → Mesh, .bez → Surface, .bzc → Curve).
+    /// With unsaved changes it is refused once, as quitting is (every way a document is replaced —
+    /// Ctrl+O, a dropped file — comes here); the next open goes through. On failure throws IoError
     /// and leaves the current document untouched. Clears history and selection; the document
     /// is clean (not dirty).
     Outcome open(const std::filesystem::path& path);

@@ -1,0 +1,27 @@
+#pragma once
+/// \file
+/// Stanford PLY (.ply), the format of 3D scanners, MeshLab and the Stanford repository: a text
+/// header naming elements and their typed properties, then the data as ASCII or binary (either
+/// endianness). Read by MeshEdit's own parser: every count, list length and index checked
+/// against the bytes that are really there.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "meshedit/io/io.h"
+
+namespace meshedit {
+
+/// Positions, normals (nx ny nz) and faces (`vertex_indices` or `vertex_index`); colours,
+/// texture coordinates and other properties or elements are read past, with a notice.
+/// \throws IoError naming the file and the line (ASCII) or the element.
+MeshSoup read_ply(const std::filesystem::path& path);
+/// The same from the file's bytes; `name` names it in errors.
+MeshSoup parse_ply(std::string_view bytes, const std::string& name);
+/// Writes binary little-endian PLY with double positions (exact), or ASCII with shortest
+/// round-trip decimals when `flags.ascii`; float vertex normals when `flags.write_normals`;
+/// polygons kept. Atomic. \throws IoError.
+void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags = {});
+
+}  // namespace meshedit
