@@ -82,8 +82,9 @@ void upload(MeshRenderer& renderer, const Editor& editor, const headless::OsMesa
 
 // What the window does after a command (App::apply): the buffers updated from the change's
 // region when the command was a recorded edit, its undo or redo; uploaded whole otherwise.
-void follow(MeshRenderer& renderer, Editor& editor, const headless::OsMesaContext& gl) {
-    if (const auto region = editor.take_region()) {
+void follow(MeshRenderer& renderer, const Editor& editor, const viewer::Outcome& outcome,
+            const headless::OsMesaContext& gl) {
+    if (const auto& region = outcome.region) {
         renderer.update(editor.mesh(), region->faces, region->vertices);
         gl.finish();
     } else {
@@ -130,7 +131,7 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
             }
             command.push_back(ms);
             start = std::chrono::steady_clock::now();
-            follow(renderer, editor, gl);
+            follow(renderer, editor, outcome, gl);
             command_upload.push_back(ms + ms_since(start));
             // Only while nothing was dropped is the growth this step's size.
             if (verb == "flip" && editor.history().undo_steps() == steps_before + 1) {
@@ -141,22 +142,24 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
         applied += applied_here;
         for (std::size_t i = 0; i < applied_here; ++i) {
             auto start = std::chrono::steady_clock::now();
-            if (editor.run({viewer::Command::Undo}).refused) {
+            const viewer::Outcome undone = editor.run({viewer::Command::Undo});
+            if (undone.refused) {
                 break;  // the history's bound dropped the older steps
             }
             const double ms = ms_since(start);
             undo.push_back(ms);
             start = std::chrono::steady_clock::now();
-            follow(renderer, editor, gl);
+            follow(renderer, editor, undone, gl);
             undo_upload.push_back(ms + ms_since(start));
         }
         for (std::size_t i = 0; i < applied_here; ++i) {
             const auto start = std::chrono::steady_clock::now();
-            if (editor.run({viewer::Command::Redo}).refused) {
+            const viewer::Outcome redone = editor.run({viewer::Command::Redo});
+            if (redone.refused) {
                 break;
             }
             redo.push_back(ms_since(start));
-            follow(renderer, editor, gl);
+            follow(renderer, editor, redone, gl);
         }
         upload(renderer, editor, gl);
     }
@@ -173,8 +176,8 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
         const Vec3 from = mesh.position(v);
         for (int i = 1; i <= kEditsPerRun; ++i) {
             const auto start = std::chrono::steady_clock::now();
-            editor.drag_to(from + Vec3{1e-4 * i, 0.0, 0.0});
-            follow(renderer, editor, gl);
+            const viewer::Outcome moved = editor.drag_to(from + Vec3{1e-4 * i, 0.0, 0.0});
+            follow(renderer, editor, moved, gl);
             drag.push_back(ms_since(start));
         }
         editor.end_drag();
@@ -191,19 +194,16 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
             f = Face(static_cast<std::uint32_t>(rng() % mesh.faces_size()));
         }
         editor.select(ElementRef::face(f));
-        editor.run(viewer::interactive(viewer::Modal::Extrude));
-        follow(renderer, editor, gl);
+        follow(renderer, editor, editor.run(viewer::interactive(viewer::Modal::Extrude)), gl);
         for (int i = 1; i <= kEditsPerRun; ++i) {
             viewer::ModalInput in;
             in.dy = 0.5 * i;
             in.pixel = 1e-4;
             const auto start = std::chrono::steady_clock::now();
-            editor.modal_input(in);
-            follow(renderer, editor, gl);
+            follow(renderer, editor, editor.modal_input(in), gl);
             extrude.push_back(ms_since(start));
         }
-        editor.confirm_modal();
-        follow(renderer, editor, gl);
+        follow(renderer, editor, editor.confirm_modal(), gl);
         extruded_faces = editor.mesh().n_faces() - faces_before;  // a triangle: 3 sides more
     }
     const auto mib = [](std::size_t b) { return static_cast<double>(b) / (1024.0 * 1024.0); };
@@ -253,13 +253,14 @@ int run_loop(const std::string& impl, int runs) {
         editor.set_document(std::move(doc));
         upload(renderer, editor, gl);
         const auto start = std::chrono::steady_clock::now();
-        if (editor.run(viewer::edit("loop")).refused) {
+        const viewer::Outcome looped = editor.run(viewer::edit("loop"));
+        if (looped.refused) {
             std::fprintf(stderr, "bench_editor: Loop was refused\n");
             return 1;
         }
         const double command = ms_since(start);
         const auto up = std::chrono::steady_clock::now();
-        follow(renderer, editor, gl);
+        follow(renderer, editor, looped, gl);
         if (r >= 0) {
             upload_ms.push_back(ms_since(up));
             ms.push_back(command + upload_ms.back());

@@ -197,9 +197,9 @@ public:
                     // STL's coordinates are floats (binary stores nothing else): text is read
                     // as the floats it means, so ASCII and binary copies of a file agree.
                     for (int i = 0; i < 3; ++i) {
-                        const float f = static_cast<float>(corners[c][i]);
-                        rounded_ = rounded_ || static_cast<double>(f) != corners[c][i];
-                        corners[c][i] = f;
+                        const float single = static_cast<float>(corners[c][i]);
+                        rounded_ = rounded_ || static_cast<double>(single) != corners[c][i];
+                        corners[c][i] = single;
                     }
                     if (!is_finite(corners[c])) {
                         fail("a vertex is not finite (NaN or infinity)");

@@ -445,7 +445,7 @@ void App::apply(const Outcome& outcome) {
         set_status(outcome.message, outcome.refused);
     }
     const unsigned c = outcome.changes;
-    if (!follow_mesh_change(c)) {  // not a recorded change: upload, rebuild the tree lazily
+    if (!follow_mesh_change(outcome)) {  // not a recorded change: upload, rebuild the tree lazily
         if (c & (kTopology | kGeometry | kDocument)) {
             pick_bvh_stale_ = true;
         }

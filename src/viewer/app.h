@@ -105,7 +105,7 @@ private:
     /// After a command: when it was a recorded change (the editor names its region), updates
     /// the GPU buffers and the picking tree around it and returns true; else false
     /// (app_picking.cpp).
-    bool follow_mesh_change(unsigned changes);
+    bool follow_mesh_change(const Outcome& outcome);
     /// Moves the dragged vertex or control point under the cursor, in the screen plane.
     void drag_element_to_cursor();
 

@@ -80,11 +80,12 @@ void App::update_hover() {
     }
 }
 
-bool App::follow_mesh_change(unsigned changes) {
+bool App::follow_mesh_change(const Outcome& outcome) {
     // A recorded local edit (or its undo or redo, a drag's move, an interactive edit's
     // preview) names where it changed the mesh: the GPU buffers and the picking tree follow
     // in the time of what it touched.
-    const std::optional<MeshChange::Region> region = editor_.take_region();
+    const unsigned changes = outcome.changes;
+    const std::optional<MeshChange::Region>& region = outcome.region;
     const bool local = region && (changes & (kTopology | kGeometry | kDocument)) != 0 &&
                        mesh_mode() && scene_->has_mesh();
     if (!local) {

@@ -26,7 +26,7 @@ bool available(Command command, Mode mode) {
 
 }  // namespace
 
-Editor::Editor(HistoryLimits limits) : history_(limits) {}
+Editor::Editor(HistoryLimits limits) : ledger_(limits) {}
 
 // ---------------------------------------------------------------------------- commands
 
@@ -43,7 +43,7 @@ Outcome Editor::press(Key key, unsigned mods) {
 
 Outcome Editor::run(Action action) {
     const Command c = action.command;
-    region_.reset();  // set again below only by a recorded edit, its undo or redo
+    end_drag();  // a key during a drag ends it (its transaction commits) before it runs
     if (modal_.kind != Modal::None) {
         // A key the interactive edit does not take (modal_key) applies it first, as in
         // Blender.
@@ -52,10 +52,10 @@ Outcome Editor::run(Action action) {
         }
     }
     if (c != Command::Escape && c != Command::Quit) {
-        quit_armed_ = false;
+        ledger_.quit_armed = false;
     }
     if (c != Command::Open) {
-        replace_armed_ = false;
+        ledger_.replace_armed = false;
     }
     if (c != Command::Save && c != Command::SaveAs) {
         lossy_armed_.clear();
@@ -204,7 +204,7 @@ Outcome Editor::run_display(Action action) {
 
 namespace {
 
-// Above this the rewiring diagram of a local edit is skipped: it needs a copy of the mesh.
+// Above this the rewiring diagram of an edit is skipped: it needs a copy of the mesh.
 constexpr std::size_t kDiagramMaxFaces = 200000;
 
 // The diagram of an edit that was one local operation on the connectivity; none for
@@ -235,86 +235,40 @@ Outcome Editor::edit(const std::function<std::string()>& check,
     if (std::string reason = check(); !reason.empty()) {
         return refused(std::move(reason));
     }
-    if (local && doc_.mode != Mode::Curve) {
-        return edit_recorded(apply);
+    const bool recorded = local && doc_.mode != Mode::Curve;
+    // The rewiring diagram of a local edit compares the mesh before with the mesh after: a
+    // copy, so only where a copy costs little (a teaching-sized mesh).
+    std::optional<Mesh> before;
+    if (recorded && doc_.mesh.n_faces() <= kDiagramMaxFaces) {
+        before = doc_.mesh;
     }
-    Document before = doc_;
+    Transaction transaction(ledger_, doc_,
+                            recorded ? Transaction::Kind::Recorded : Transaction::Kind::Snapshot);
     Edited edited;
     try {
         edited = apply(doc_);
     } catch (const std::bad_alloc&) {
-        doc_ = std::move(before);
+        transaction.roll_back();
         return refused("not enough memory: nothing changed");
     } catch (const std::exception& e) {
-        doc_ = std::move(before);
+        transaction.roll_back();
         return refused(e.what());
     }
-    // Before collect_garbage renumbers: the diagram names elements by their indices.
-    diagram_ = rewiring_of(before.mesh, doc_.mesh, edited.steps);
-    history_.push(std::move(before));
-    settle(edited);
-    if (compact()) {
-        doc_.session.emplace_back("compact");
-    }
-    return {edited.changes, std::move(edited.message)};
-}
-
-Outcome Editor::edit_recorded(const std::function<Edited(Document&)>& apply) {
-    DocumentChange change;
-    change.selection_before = doc_.selection;
-    change.also_before = doc_.also_selected;
-    change.revision_before = doc_.revision;
-    const std::size_t session_before = doc_.session.size();
-    // The rewiring diagram compares the mesh before with the mesh after: a copy, so only
-    // where a copy costs little (a teaching-sized mesh).
-    std::optional<Mesh> before;
-    if (doc_.mesh.n_faces() <= kDiagramMaxFaces) {
-        before = doc_.mesh;
-    }
-    Edited edited;
-    {
-        MeshRecorder recorder(doc_.mesh);
-        const auto roll_back = [&](std::string reason) {
-            recorder.roll_back();
-            doc_.selection = change.selection_before;
-            doc_.also_selected = change.also_before;
-            return refused(std::move(reason));
-        };
-        try {
-            edited = apply(doc_);
-        } catch (const std::bad_alloc&) {
-            return roll_back("not enough memory: nothing changed");
-        } catch (const std::exception& e) {
-            return roll_back(e.what());
-        }
-        try {
-            change.mesh = recorder.finish();
-        } catch (const std::logic_error& e) {
-            // A verb wrote what its recording cannot see (a bug the recorded-edit tests are
-            // there to catch): the edit stands, but nothing before it can be undone.
-            history_.clear();
-            edited.message += std::string(" — cannot be undone: ") + e.what();
-            diagram_.reset();
-            settle(edited);
-            return {edited.changes, std::move(edited.message)};
-        }
-    }
+    // Before compact() renumbers: the diagram names elements by their indices.
     diagram_ = before ? rewiring_of(*before, doc_.mesh, edited.steps) : std::nullopt;
     settle(edited);
-    change.selection_after = doc_.selection;
-    change.also_after = doc_.also_selected;
-    change.session_added.assign(doc_.session.begin() + static_cast<std::ptrdiff_t>(session_before),
-                                doc_.session.end());
-    change.revision_after = doc_.revision;
-    region_ = change.mesh.region();
-    history_.push(std::move(change));
-    return {edited.changes, std::move(edited.message)};
+    if (!recorded && compact()) {
+        edited.steps.emplace_back("compact");
+    }
+    Outcome out =
+        transaction.commit(edited.changes, std::move(edited.message), std::move(edited.steps));
+    if (out.message.find(" — cannot be undone: ") != std::string::npos) {
+        diagram_.reset();
+    }
+    return out;
 }
 
 void Editor::settle(Edited& edited) {
-    doc_.revision = next_revision_++;
-    quit_armed_ = false;
-    replace_armed_ = false;
     if (edited.select) {
         doc_.selection = *edited.select;
         doc_.also_selected.clear();
@@ -322,14 +276,6 @@ void Editor::settle(Edited& edited) {
     if ((edited.changes & kTopology) != 0) {
         hover_ = {};
     }
-    doc_.session.insert(doc_.session.end(), edited.steps.begin(), edited.steps.end());
-}
-
-void Editor::snapshot() {
-    history_.push(doc_);
-    doc_.revision = next_revision_++;
-    quit_armed_ = false;
-    replace_armed_ = false;
 }
 
 // ------------------------------------------------------------------------------ history
@@ -347,33 +293,35 @@ Outcome Editor::step_history(bool forward) {
     // An interactive edit under way is cancelled first; where its preview was must be
     // redrawn too.
     const bool was_modal = modal_.kind != Modal::None;
-    cancel_modal();
-    std::optional<MeshChange::Region> cancelled = std::exchange(region_, std::nullopt);
+    std::optional<MeshChange::Region> cancelled = cancel_modal().region;
     diagram_.reset();
-    if (!(forward ? history_.redo(doc_) : history_.undo(doc_))) {
-        region_ = std::move(cancelled);
+    std::optional<std::optional<MeshChange::Region>> moved = ledger_.step(doc_, forward);
+    if (!moved) {
         Outcome out = refused(forward ? "nothing to redo" : "nothing to undo");
         out.changes = was_modal ? kTopology | kSelection : kNothing;
+        out.region = std::move(cancelled);
         return out;
     }
-    region_ = history_.take_region();  // none after a snapshot: the window redraws it all
-    if (region_ && cancelled) {
-        region_->add(*cancelled);
+    Outcome out{kDocument | kTopology | kSelection | kCurve | kDisplay,
+                std::string(forward ? "redo (" : "undo (") +
+                    std::to_string(forward ? history().redo_steps() : history().undo_steps()) +
+                    " left)",
+                false, std::move(*moved)};  // none after a snapshot: the window redraws it all
+    if (out.region && cancelled) {
+        out.region->add(*cancelled);
     }
     hover_ = {};
     if (doc_.mode == Mode::Curve) {
         view_.level = std::min(view_.level, doc_.curve.degree());
     }
-    return {kDocument | kTopology | kSelection | kCurve | kDisplay,
-            std::string(forward ? "redo (" : "undo (") +
-                std::to_string(forward ? history_.redo_steps() : history_.undo_steps()) + " left)"};
+    return out;
 }
 
 Outcome Editor::quit() {
-    if (!dirty() || quit_armed_) {
+    if (!dirty() || ledger_.quit_armed) {
         return {kQuit, ""};
     }
-    quit_armed_ = true;
+    ledger_.quit_armed = true;
     return refused(
         "unsaved changes: press Esc or Ctrl+Q again to quit without saving, or Ctrl+S to save");
 }

@@ -42,8 +42,8 @@ std::string one_line(std::string text) {
 }  // namespace
 
 Outcome Editor::open(const std::filesystem::path& path) {
-    if (dirty() && !replace_armed_) {
-        replace_armed_ = true;
+    if (dirty() && !ledger_.replace_armed) {
+        ledger_.replace_armed = true;
         return refused("unsaved changes to " + file_name(path_) +
                        ": open again to discard them, or Ctrl+S to save first");
     }
@@ -81,11 +81,10 @@ Outcome Editor::open(const std::filesystem::path& path) {
 }
 
 void Editor::set_document(Document document, std::filesystem::path path) {
-    doc_ = std::move(document);
-    doc_.revision = next_revision_++;
-    doc_.selection = {};
-    saved_revision_ = doc_.revision;
-    history_.clear();
+    end_drag();
+    cancel_modal();
+    document.selection = {};
+    ledger_.start(doc_, std::move(document));
     pristine_revisions_.clear();
     hover_ = {};
     diagram_.reset();
@@ -97,9 +96,6 @@ void Editor::set_document(Document document, std::filesystem::path path) {
     // Flat below kSmoothFromFaces faces, as CS184 starts: on a cube or an icosahedron the
     // facets are what one edits. Smooth above, where the faces approximate a curved shape.
     view_.render.smooth = doc_.mode != Mode::Curve && doc_.mesh.n_faces() >= kSmoothFromFaces;
-    dragging_ = false;
-    drag_moved_ = false;
-    quit_armed_ = false;
 }
 
 Outcome Editor::save() {
@@ -164,10 +160,10 @@ Outcome Editor::write_to(const std::filesystem::path& path) {
             // the info panel shows them from now on. Renumbering is an undo step of its own
             // (the recorded changes before it name the old numbers) and a session step.
             if (doc_.mesh.has_garbage()) {
-                snapshot();
+                Transaction transaction(ledger_, doc_, Transaction::Kind::Snapshot);
                 compact();
-                doc_.session.emplace_back("compact");
-                outcome.changes |= kTopology | kSelection;
+                outcome.changes |=
+                    transaction.commit(kTopology | kSelection, "", {"compact"}).changes;
             }
             write_mesh(doc_.mesh, path);  // atomic: temporary file + rename
         }
@@ -176,8 +172,8 @@ Outcome Editor::write_to(const std::filesystem::path& path) {
         outcome.refused = true;
         return outcome;
     }
-    saved_revision_ = doc_.revision;
-    quit_armed_ = false;
+    ledger_.mark_saved(doc_);
+    ledger_.quit_armed = false;
     outcome.changes |= kDisplay;  // the title loses its '*'
     outcome.message = "saved " + file_name(path);
     if (!unkept.empty()) {

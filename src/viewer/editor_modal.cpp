@@ -118,19 +118,9 @@ Outcome Editor::begin_modal(Modal kind) {
     end_drag();
     m.base_selection = doc_.selection;
     m.base_also = doc_.also_selected;
+    m.transaction = std::make_unique<Transaction>(ledger_, doc_, Transaction::Kind::Recorded);
     modal_ = std::move(m);
     return apply_modal();
-}
-
-void Editor::undo_preview() {
-    ModalState& m = modal_;
-    if (m.preview) {
-        m.preview->undo(doc_.mesh);
-        region_ = m.preview->region();  // the window redraws what the preview had changed
-        m.preview.reset();
-    }
-    doc_.selection = m.base_selection;
-    doc_.also_selected = m.base_also;
 }
 
 std::optional<Outcome> Editor::modal_key(Key key, unsigned mods) {
@@ -261,9 +251,7 @@ Outcome Editor::apply_modal() {
     m.refusal.clear();
     // Back to the document before the edit (in the time of what the last preview touched),
     // then the new preview, recorded: no copy of the mesh per mouse move.
-    undo_preview();
-    const std::optional<MeshChange::Region> undone = std::exchange(region_, std::nullopt);
-    std::optional<MeshRecorder> recorder(std::in_place, doc_.mesh);
+    MeshChange::Region region = m.transaction->rewind();
     Outcome out;
     if (const char* verb = verb_of(m.kind)) {
         std::string hint;
@@ -317,14 +305,9 @@ Outcome Editor::apply_modal() {
         }
         out = {kGeometry | kSelection, modal_status()};
     }
-    m.preview = recorder->finish();
-    recorder.reset();
     // What the window redraws: what the last preview changed and what this one changes.
-    MeshChange::Region region = m.preview->region();
-    if (undone) {
-        region.add(*undone);
-    }
-    region_ = std::move(region);
+    region.add(m.transaction->preview());
+    out.region = std::move(region);
     return out;
 }
 
@@ -332,60 +315,48 @@ Outcome Editor::confirm_modal() {
     if (modal_.kind == Modal::None) {
         return {};
     }
-    if (!modal_.refusal.empty()) {
-        const std::string why =
-            std::string(name_of(modal_.kind)) + " not applied: " + modal_.refusal;
-        undo_preview();
-        modal_ = {};
-        return {kTopology | kSelection, why, true};
-    }
     ModalState m = std::move(modal_);
     modal_ = {};
+    if (!m.refusal.empty()) {
+        const std::string why = std::string(name_of(m.kind)) + " not applied: " + m.refusal;
+        Outcome out{kTopology | kSelection, why, true, m.transaction->roll_back()};
+        return out;
+    }
     const bool positions = verb_of(m.kind) == nullptr;
     bool unchanged = positions;
     for (std::size_t k = 0; k < m.vertices.size() && unchanged; ++k) {
         unchanged = doc_.mesh.position(Vertex(m.vertices[k])) == m.base_positions[k];
     }
     if (unchanged) {
-        m.preview->undo(doc_.mesh);  // bit for bit the document before (nothing moved)
-        return {kSelection, "nothing moved"};
+        // Bit for bit the document before (nothing moved).
+        return {kSelection, "nothing moved", false, m.transaction->roll_back()};
     }
-    const std::string what = std::string(name_of(m.kind)) + " applied (Ctrl+Z undoes it)";
-    DocumentChange change;
-    change.selection_before = m.base_selection;
-    change.also_before = m.base_also;
-    change.revision_before = doc_.revision;
+    std::vector<std::string> steps;
     if (!positions) {
-        change.session_added = m.steps;
+        steps = m.steps;
     } else {
         for (std::size_t k = 0; k < m.vertices.size(); ++k) {
             if (doc_.mesh.position(Vertex(m.vertices[k])) != m.base_positions[k]) {
-                change.session_added.push_back(move_step(doc_.mesh, m.vertices[k]));
+                steps.push_back(move_step(doc_.mesh, m.vertices[k]));
             }
         }
     }
-    doc_.session.insert(doc_.session.end(), change.session_added.begin(),
-                        change.session_added.end());
-    doc_.revision = next_revision_++;
-    change.revision_after = doc_.revision;
-    change.selection_after = doc_.selection;
-    change.also_after = doc_.also_selected;
-    change.mesh = std::move(*m.preview);
-    history_.push(std::move(change));
-    quit_armed_ = false;
-    replace_armed_ = false;
-    return {positions ? kGeometry | kSelection : kTopology | kSelection, what};
+    Outcome out = m.transaction->commit(
+        positions ? kGeometry | kSelection : kTopology | kSelection,
+        std::string(name_of(m.kind)) + " applied (Ctrl+Z undoes it)", std::move(steps));
+    out.region.reset();  // the preview drew it already
+    return out;
 }
 
 Outcome Editor::cancel_modal() {
     if (modal_.kind == Modal::None) {
         return {};
     }
-    const Modal kind = modal_.kind;
-    undo_preview();
+    ModalState m = std::move(modal_);
     modal_ = {};
     hover_ = {};
-    return {kTopology | kSelection, std::string(name_of(kind)) + " cancelled"};
+    return {kTopology | kSelection, std::string(name_of(m.kind)) + " cancelled", false,
+            m.transaction->roll_back()};
 }
 
 std::string Editor::modal_status() const {

@@ -263,10 +263,10 @@ bool Editor::begin_drag() {
     if (!ok) {
         return false;
     }
-    // The snapshot is taken on the first real move (the document cannot change before
-    // it), so a click without a move costs no copy and leaves no undo step.
+    // The transaction begins on the first real move (the document cannot change before
+    // it), so a click without a move costs nothing and leaves no undo step.
+    end_drag();
     dragging_ = true;
-    drag_moved_ = false;
     drag_index_ = s.index;
     return true;
 }
@@ -321,68 +321,47 @@ Outcome Editor::drag_to(const Vec3& position, double pixel) {
         return {};
     }
     const bool curve = doc_.mode == Mode::Curve;
-    if (!drag_moved_) {
-        // One undo step per drag, taken on its first move. A mesh vertex's drag is recorded
+    if (!drag_) {
+        // One undo step per drag, begun on its first move. A mesh vertex's drag is recorded
         // (the vertex's values, a few dozen bytes, whatever the mesh); a control point's
         // curve is small enough to snapshot.
-        if (curve) {
-            snapshot();
-        } else {
-            begin_recorded_drag();
+        drag_ = std::make_unique<Transaction>(
+            ledger_, doc_, curve ? Transaction::Kind::Snapshot : Transaction::Kind::Positions);
+        if (!curve) {
+            drag_->touch(Vertex(drag_index_));
         }
-        drag_moved_ = true;
         target = curve ? &doc_.curve.control_points[drag_index_]
                        : &doc_.mesh.position(Vertex(drag_index_));
         drag_from_ = *target;
-        drag_session_step_ = doc_.session.size();
     }
     *target = wanted;
+    Outcome out{curve ? unsigned{kCurve} : unsigned{kGeometry},
+                "moving " + moved_by(curve, drag_index_, wanted - drag_from_)};
     if (!curve) {
-        // One step per drag: the first move adds it, the others update where it ends.
-        if (drag_session_step_ == doc_.session.size()) {
-            doc_.session.emplace_back();
-        }
-        doc_.session[drag_session_step_] = move_step(doc_.mesh, drag_index_);
-        // The undo step follows at every move, so it is right whenever undo comes.
-        history_.amend_last([&](DocumentChange& change) {
-            change.mesh.refresh_after(doc_.mesh);
-            change.session_added = {doc_.session[drag_session_step_]};
-        });
-        region_ = MeshChange::Region{{}, {Vertex(drag_index_)}};
+        out.region = MeshChange::Region{{}, {Vertex(drag_index_)}};
     }
-    return {curve ? unsigned{kCurve} : unsigned{kGeometry},
-            "moving " + moved_by(curve, drag_index_, wanted - drag_from_)};
-}
-
-void Editor::begin_recorded_drag() {
-    DocumentChange change;
-    change.selection_before = change.selection_after = doc_.selection;
-    change.also_before = change.also_after = doc_.also_selected;
-    change.revision_before = doc_.revision;
-    {
-        MeshRecorder recorder(doc_.mesh);
-        doc_.mesh.touch(Vertex(drag_index_));  // its values now: the drag's "before"
-        change.mesh = recorder.finish();
-    }
-    doc_.revision = next_revision_++;
-    change.revision_after = doc_.revision;
-    history_.push(std::move(change));
-    quit_armed_ = false;
-    replace_armed_ = false;
+    return out;
 }
 
 Outcome Editor::end_drag() {
-    const bool moved = dragging_ && drag_moved_;
     dragging_ = false;
-    drag_moved_ = false;
-    if (!moved) {
+    if (!drag_) {
         return {};
     }
+    std::unique_ptr<Transaction> transaction = std::move(drag_);
     const bool curve = doc_.mode == Mode::Curve;
     const Vec3 now =
         curve ? doc_.curve.control_points[drag_index_] : doc_.mesh.position(Vertex(drag_index_));
-    return {kSelection,
-            "moved " + moved_by(curve, drag_index_, now - drag_from_) + " (Ctrl+Z undoes it)"};
+    std::vector<std::string> steps;
+    if (!curve) {
+        steps.push_back(move_step(doc_.mesh, drag_index_));  // one step per drag: where it ends
+    }
+    Outcome out = transaction->commit(
+        kSelection,
+        "moved " + moved_by(curve, drag_index_, now - drag_from_) + " (Ctrl+Z undoes it)",
+        std::move(steps));
+    out.region.reset();  // every move drew itself already
+    return out;
 }
 
 Outcome Editor::run_navigation(Command command) {

@@ -81,27 +81,17 @@ void History::push_step(Step step) {
     trim();
 }
 
-bool History::amend_last(const std::function<void(DocumentChange&)>& amend) {
-    if (!last_is_change()) {
-        return false;
-    }
-    bytes_ -= bytes_of(undo_.back());
-    amend(std::get<DocumentChange>(undo_.back()));
-    bytes_ += bytes_of(undo_.back());
-    return true;
-}
-
 template <class From, class To>
-bool History::move_step(From& from, To& to, Document& current, bool forward) {
+History::Moved History::move_step(From& from, To& to, Document& current, bool forward) {
     if (from.empty()) {
-        return false;
+        return {};
     }
+    Moved moved{true, std::nullopt};
     Step step = std::move(from.back());
     from.pop_back();
     bytes_ -= bytes_of(step);
-    region_.reset();
     if (auto* change = std::get_if<DocumentChange>(&step)) {
-        region_ = change->mesh.region();
+        moved.region = change->mesh.region();
         if (forward) {
             change->redo(current);
         } else {
@@ -114,14 +104,14 @@ bool History::move_step(From& from, To& to, Document& current, bool forward) {
     bytes_ += bytes_of(step);
     to.push_back(std::move(step));
     trim();
-    return true;
+    return moved;
 }
 
-bool History::undo(Document& current) {
+History::Moved History::undo(Document& current) {
     return move_step(undo_, redo_, current, false);
 }
 
-bool History::redo(Document& current) {
+History::Moved History::redo(Document& current) {
     return move_step(redo_, undo_, current, true);
 }
 

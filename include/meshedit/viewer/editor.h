@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,33 +26,14 @@
 #include "meshedit/render/shading.h"
 #include "meshedit/viewer/bindings.h"
 #include "meshedit/viewer/history.h"
+#include "meshedit/viewer/outcome.h"
+#include "meshedit/viewer/transaction.h"
 
 namespace meshedit::ops {
 struct Step;
 }
 
 namespace meshedit::viewer {
-
-/// What a command changed, so the window knows what to re-upload or do.
-enum Change : unsigned {
-    kNothing = 0,
-    kTopology = 1u << 0,   ///< the mesh's elements changed: full upload
-    kGeometry = 1u << 1,   ///< positions only (same triangles): update_geometry()
-    kSelection = 1u << 2,  ///< selection or hover overlay
-    kDisplay = 1u << 3,    ///< render options, panels, curve level/t, nets
-    kCurve = 1u << 4,      ///< curve control points
-    kResetCamera = 1u << 5,
-    kScreenshot = 1u << 6,   ///< the window should write a screenshot
-    kAskSavePath = 1u << 7,  ///< the window should ask for a path, then call save_as()
-    kAskOpenPath = 1u << 8,  ///< the window should ask for a path, then call open()
-    kQuit = 1u << 9,
-    kDocument = 1u << 10,        ///< a different document (open, undo/redo): reframe nothing,
-                                 ///< re-upload everything
-    kFrameSelection = 1u << 11,  ///< the camera should centre on selection_bounds()
-    kFrameMesh = 1u << 12,       ///< the camera should frame the whole mesh, keeping its angle
-    kAskSessionPath = 1u << 13,  ///< the window should ask for a path, then export_session()
-    kReloadShaders = 1u << 14,   ///< the window should recompile every shader from disk
-};
 
 /// What the window measured since the interactive edit began.
 struct ModalInput {
@@ -63,19 +45,6 @@ struct ModalInput {
     double scale = 1.0;  ///< the cursor's distance from the centre on screen, now / at the start
     Vec3 toward_viewer;  ///< unit vector from the selection's centre toward the eye
 };
-
-/// The result of a command: what changed, and a status line for the user (empty when there
-/// is nothing to say). `refused` marks a command that did nothing and says why.
-struct Outcome {
-    unsigned changes = kNothing;
-    std::string message;
-    bool refused = false;
-};
-
-/// A refused command: nothing changed, and `message` says why.
-inline Outcome refused(std::string message) {
-    return {kNothing, std::move(message), true};
-}
 
 /// The viewer's render defaults: the renderer's, with the wireframe on.
 inline RenderOptions with_wireframe() {
@@ -272,18 +241,14 @@ public:
     /// half built at that moment.
     using ProgressHook = std::function<void(std::string_view verb, double fraction)>;
     void set_progress_hook(ProgressHook hook) { progress_hook_ = std::move(hook); }
-    const History& history() const { return history_; }
-    /// Where the last command changed the mesh when that was a recorded local edit, its undo
-    /// or its redo (MeshChange::region(): for MeshRenderer::update()); empty after anything
-    /// else. Taken once: the window takes it after every command.
-    std::optional<MeshChange::Region> take_region() { return std::exchange(region_, {}); }
+    const History& history() const { return ledger_.history(); }
     const std::filesystem::path& path() const { return path_; }
     /// Unsaved changes: the content differs from what was last opened or saved (undoing
     /// back to the saved state makes it clean again).
-    bool dirty() const { return doc_.revision != saved_revision_; }
+    bool dirty() const { return ledger_.dirty(doc_); }
     /// Quitting with unsaved changes is refused once with a warning; this says whether the
     /// next Quit/Escape-quit will go through.
-    bool quit_armed() const { return quit_armed_; }
+    bool quit_armed() const { return ledger_.quit_armed; }
 
 private:
     /// What an edit did, as the function edit() runs reports it.
@@ -297,29 +262,21 @@ private:
         std::vector<std::string> steps;
     };
 
-    /// The edit funnel (editor.cpp), the one way the document changes, as Scotty3D's
-    /// Model::update_mesh: `check` says why the edit cannot run (empty: it can) without
-    /// touching anything; then the document is snapshotted, `apply` changes it, and on an
-    /// exception (no memory, a file that cannot be read) the snapshot is put back and the
-    /// edit refused with the reason; otherwise the snapshot becomes one undo step, deleted
-    /// elements are collected (the selection remapped), and the result is selected and
-    /// described.
+    /// The edit funnel (editor.cpp), as Scotty3D's Model::update_mesh: `check` says why the
+    /// edit cannot run (empty: it can) without touching anything; then a Transaction begins
+    /// (transaction.h), `apply` changes the document, and on an exception (no memory, a file
+    /// that cannot be read) the transaction rolls back and the edit is refused with the
+    /// reason; otherwise deleted elements are collected (the selection remapped), the result
+    /// is selected and described, and the transaction commits as one undo step.
     ///
-    /// A `local` edit (one that changes what it touches: the element verbs) is recorded
-    /// instead (core/mesh_change.h): no snapshot, no garbage collection, so it costs what it
-    /// touches at any mesh size; a failure rolls the recording back.
+    /// A `local` edit (one that changes what it touches: the element verbs) is a Recorded
+    /// transaction (core/mesh_change.h): no snapshot, no garbage collection, so it costs what
+    /// it touches at any mesh size. Any other is a Snapshot.
     Outcome edit(const std::function<std::string()>& check,
                  const std::function<Edited(Document&)>& apply, bool local = false);
-    /// edit() for a local edit: records it, or rolls it back on an exception.
-    Outcome edit_recorded(const std::function<Edited(Document&)>& apply);
-    /// What edit() does after any successful edit: revision, selection, session.
+    /// What edit() does to the document's own state after a successful edit: selection,
+    /// hover.
     void settle(Edited& edited);
-    /// Records the document as an undo step and gives it a new revision; call before
-    /// mutating doc_ (edit() and the first move of a curve's drag).
-    void snapshot();
-    /// The first move of a mesh vertex's drag: a recorded change of that vertex as the undo
-    /// step (drag_to() brings it up to date at every move), and a new revision.
-    void begin_recorded_drag();
     /// Garbage-collects the mesh, remapping the selection, when it has deleted elements;
     /// true if it did (the session then records a `compact`).
     bool compact();
@@ -327,9 +284,9 @@ private:
     /// The interactive edit under way (kind None: none).
     struct ModalState {
         Modal kind = Modal::None;
-        /// The preview: the recorded change from the document before the edit to the one
-        /// shown (undone to try other amounts, and at a cancel; the undo step at a confirm).
-        std::optional<MeshChange> preview;
+        /// The edit's transaction: the preview shown is what it recorded so far (rewound to
+        /// try other amounts, rolled back at a cancel, committed at a confirm).
+        std::unique_ptr<Transaction> transaction;
         ElementRef base_selection;            ///< the selection before the edit
         std::vector<ElementRef> base_also;    ///< and the rest of it
         std::vector<Vec3> base_positions;     ///< Move, Rotate, Scale: where `vertices` were
@@ -347,10 +304,8 @@ private:
         std::string refusal;             ///< why the amounts now cannot apply, or empty
         std::vector<std::string> steps;  ///< Extrude, Inset, Bevel: the steps now, for the session
     };
-    /// Runs the modal edit with its amounts: undoes the preview, records the new one.
+    /// Runs the modal edit with its amounts: rewinds the preview, records the new one.
     Outcome apply_modal();
-    /// Puts the document back as before the modal edit (its preview undone, its selection).
-    void undo_preview();
     /// Undo (`forward` false) or redo, after ending a drag and cancelling an interactive edit.
     Outcome step_history(bool forward);
 
@@ -377,26 +332,22 @@ private:
     Outcome write_to(const std::filesystem::path& path);
 
     Document doc_;
-    History history_;
+    Ledger ledger_;
     ViewState view_;
     ToolSettings tools_;
     ProgressHook progress_hook_;
     ElementRef hover_;
     std::optional<OpDiagram> diagram_;
-    std::optional<MeshChange::Region> region_;  ///< see take_region()
     std::filesystem::path path_;
     /// The file the session starts from and its content_hash() (set by open()).
     std::filesystem::path session_source_;
     std::string session_source_hash_;
-    std::uint64_t saved_revision_ = 0;
-    std::uint64_t next_revision_ = 1;
     ModalState modal_;
     bool dragging_ = false;
-    bool drag_moved_ = false;
+    /// The drag's transaction, begun at its first move (a click without a move leaves no
+    /// undo step), committed when it ends.
+    std::unique_ptr<Transaction> drag_;
     Vec3 drag_from_;                     ///< where the dragged point was before the drag
-    std::size_t drag_session_step_ = 0;  ///< the drag's `move` in doc_.session
-    bool quit_armed_ = false;
-    bool replace_armed_ = false;         ///< the next open() may discard unsaved changes
     std::filesystem::path lossy_armed_;  ///< the next save to this path may lose what it said
     std::uint32_t drag_index_ = 0;       ///< the vertex or control point being dragged
     /// Surface mode: revisions whose mesh is exactly tessellate(patches, density), so a

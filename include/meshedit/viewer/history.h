@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// Undo/redo: each step is either a recorded change (a local edit: what it touched, before
-/// and after, core/mesh_change.h) or a whole-document snapshot (a global operation, a drag, a
-/// curve edit: whatever replaces too much to record), bounded in bytes and in steps.
+/// Undo/redo (written only through viewer/transaction.h): each step is either a recorded change (a
+/// local edit: what it touched, before and after, core/mesh_change.h) or a whole-document snapshot
+/// (a global operation, a drag, a curve edit: whatever replaces too much to record), bounded in
+/// bytes and in steps.
 ///
 /// Either way undo is exact bit for bit. A change applies only to the document its edit
 /// left, which the stacks guarantee: undo takes the newest undo step, redo the newest redo
@@ -57,25 +58,24 @@ public:
     /// Records a local edit's change (applied already to the current document) and clears
     /// the redo stack.
     void push(DocumentChange change);
-    /// Lets an edit still under way (a drag) bring its recorded change, the newest undo step,
-    /// up to date. False (nothing called) when the newest undo step is not a change.
-    bool amend_last(const std::function<void(DocumentChange&)>& amend);
-
+    /// What undo() or redo() did: whether there was a step, and where a recorded change
+    /// changed the mesh (MeshChange::region(); none after a snapshot).
+    struct Moved {
+        bool moved = false;
+        std::optional<MeshChange::Region> region;
+        explicit operator bool() const { return moved; }
+    };
     /// Takes `current` back one step (undoing a change, or swapping in a snapshot, current
-    /// going to redo). False if none.
-    bool undo(Document& current);
-    /// Takes `current` forward one step. False if none.
-    bool redo(Document& current);
+    /// going to redo).
+    Moved undo(Document& current);
+    /// Takes `current` forward one step.
+    Moved redo(Document& current);
     void clear();
 
     std::size_t undo_steps() const { return undo_.size(); }
     std::size_t redo_steps() const { return redo_.size(); }
     std::size_t bytes() const { return bytes_; }
     const HistoryLimits& limits() const { return limits_; }
-
-    /// After undo() or redo() moved a recorded change: where the mesh changed
-    /// (MeshChange::region()), once; empty after a snapshot or when taken already.
-    std::optional<MeshChange::Region> take_region() { return std::exchange(region_, {}); }
 
     /// Whether the last undo step is a recorded change (not a snapshot); for tests.
     bool last_is_change() const {
@@ -90,14 +90,13 @@ private:
     /// Moves the newest step of `from` onto `to`, applying it to `current` in `forward`
     /// direction (redo) or backward (undo).
     template <class From, class To>
-    bool move_step(From& from, To& to, Document& current, bool forward);
+    Moved move_step(From& from, To& to, Document& current, bool forward);
     void trim();
 
     HistoryLimits limits_;
     std::deque<Step> undo_;
     std::vector<Step> redo_;
     std::size_t bytes_ = 0;  ///< of undo_ and redo_ together
-    std::optional<MeshChange::Region> region_;
 };
 
 }  // namespace meshedit::viewer
