@@ -26,6 +26,8 @@ set(rules
     "tools|^tools/|^(core|bezier|files|io|ops)/|^$"
 )
 
+# The floors of src/core, lowest first (src/core/CMakeLists.txt).
+set(core_floors mesh local_ops algorithms teaching)
 set(bad "")
 set(unassigned "")
 file(GLOB_RECURSE sources RELATIVE ${ROOT}
@@ -54,6 +56,20 @@ foreach(file ${sources})
             set(header "${CMAKE_MATCH_1}")
             if(NOT header MATCHES "/")
                 continue()  # a private header beside the file
+            endif()
+            if(file MATCHES "^src/core/([a-z_]+)/" AND header MATCHES "^([a-z_]+)/[a-z_]+\\.h$")
+                # The core's floors: a private header of the same floor or one below.
+                string(REGEX MATCH "^src/core/([a-z_]+)/" _ "${file}")
+                set(from "${CMAKE_MATCH_1}")
+                string(REGEX MATCH "^([a-z_]+)/" _ "${header}")
+                set(to "${CMAKE_MATCH_1}")
+                list(FIND core_floors "${from}" from_floor)
+                list(FIND core_floors "${to}" to_floor)
+                if(from_floor LESS 0 OR to_floor LESS 0 OR to_floor GREATER from_floor OR
+                   NOT EXISTS "${ROOT}/src/core/${header}")
+                    list(APPEND bad "${file}: ${line}  (the core's floor ${from} may include private headers of its own floor or those below: ${core_floors})")
+                endif()
+                continue()
             endif()
             if(header MATCHES "^meshedit/(.*)$")
                 set(inside "${CMAKE_MATCH_1}")

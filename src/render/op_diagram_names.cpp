@@ -1,5 +1,5 @@
-// The names flip(), split() and collapse() give their elements (src/core/flip_split.cpp,
-// src/core/collapse.cpp: the ASCII diagrams above the code), derived here the way that code
+// The names flip(), split() and collapse() give their elements (src/core/local_ops/flip_split.cpp,
+// src/core/local_ops/collapse.cpp: the ASCII diagrams above the code), derived here the way that code
 // derives them, so the rewiring diagram (op_diagram.h) labels what a student reads there.
 // A test checks that each name lands on the element the diagram in the source shows.
 

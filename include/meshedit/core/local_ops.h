@@ -4,7 +4,7 @@
 /// it): each op either succeeds, or returns a refusal with a reason and leaves the mesh
 /// exactly as it was. Each has a pure predicate (`is_*_ok`) the UI can call to grey out a
 /// command; the op calls the same predicate first. Diagrams: docs/halfedge.md and above each
-/// op in src/core/flip_split.cpp, collapse.cpp and triangulate.cpp.
+/// op in src/core/local_ops/flip_split.cpp, collapse.cpp and triangulate.cpp.
 
 #include <string_view>
 
@@ -117,7 +117,7 @@ OpResult<Face> triangulate(Mesh& mesh, Face f);
 /// as they are. \return how many faces were triangulated.
 std::size_t triangulate(Mesh& mesh);
 
-// ------------------------------------------- removing and filling (src/core/dissolve.cpp)
+// ------------------------------------------- removing and filling (src/core/local_ops/dissolve.cpp)
 
 /// \return ok if `f` is live and no corner of it would be on two holes once it is gone (a
 /// corner already on the boundary must have a side of `f` on that boundary).
@@ -150,7 +150,7 @@ OpStatus is_dissolve_vertex_ok(const Mesh& mesh, Vertex v);
 /// face does not swallow the hole. \return the merged face.
 OpResult<Face> dissolve_vertex(Mesh& mesh, Vertex v);
 
-// ------------------------------------------------------------- welding (src/core/weld.cpp)
+// ------------------------------------------------------------- welding (src/core/local_ops/weld.cpp)
 
 /// \return ok if `e1` and `e2` are two live boundary edges of different faces whose weld
 /// would not make a face visit a vertex twice, nor an edge join a vertex to itself, nor two
@@ -162,7 +162,7 @@ OpStatus is_weld_ok(const Mesh& mesh, Edge e1, Edge e2);
 /// at a vertex are zipped there. \return `e1`.
 OpResult<Edge> weld(Mesh& mesh, Edge e1, Edge e2);
 
-// ------------------------------------------------------------ faces (src/core/poke.cpp)
+// ------------------------------------------------------------ faces (src/core/local_ops/poke.cpp)
 
 /// \return ok if `f` is live.
 OpStatus is_poke_ok(const Mesh& mesh, Face f);
@@ -172,7 +172,7 @@ OpStatus is_poke_ok(const Mesh& mesh, Face f);
 /// \return c; `halfedge(c)` runs from c to `from_vertex(halfedge(f))`.
 OpResult<Vertex> poke(Mesh& mesh, Face f);
 
-// ------------------------------------------------ inset and extrude (src/core/extrude.cpp)
+// ------------------------------------------------ inset and extrude (src/core/local_ops/extrude.cpp)
 
 /// \return ok if `f` is live, the amounts are finite, `shrink` is below 1 and, for a height
 /// other than 0, `f` has an area (so a normal).
@@ -187,7 +187,7 @@ OpStatus is_inset_ok(const Mesh& mesh, Face f, double shrink);
 /// extrude_face() with height 0: a ring of quads inside `f`. \return `f`, the inner face.
 OpResult<Face> inset_face(Mesh& mesh, Face f, double shrink);
 
-// ------------------------------------------------------------ bevel (src/core/bevel.cpp)
+// ------------------------------------------------------------ bevel (src/core/local_ops/bevel.cpp)
 
 /// \return ok if `v` is live with at least three edges and 0 <= t < 1.
 OpStatus is_bevel_vertex_ok(const Mesh& mesh, Vertex v, double t);
@@ -204,7 +204,7 @@ OpStatus is_bevel_edge_ok(const Mesh& mesh, Edge e, double t);
 /// \return the new face.
 OpResult<Face> bevel_edge(Mesh& mesh, Edge e, double t);
 
-// ----------------------------------------------------- orientation (src/core/orientation.cpp)
+// ----------------------------------------------------- orientation (src/core/local_ops/orientation.cpp)
 
 /// Reverses every face and boundary loop (Scotty3D's flip_orientation): each halfedge
 /// runs the other way, so outward becomes inward. Never refuses; creates and deletes

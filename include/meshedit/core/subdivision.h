@@ -73,7 +73,7 @@ SubdivisionPlan plan_loop(const Mesh& mesh, int levels = 1);
 /// Properties: vertex properties keep their values on the old vertices, new vertices get the
 /// default. Halfedge, edge and face properties other than kCreaseProperty are reset to their
 /// defaults (the elements they described no longer exist).
-/// The edge and face layout of the result is documented in src/core/subdivision.cpp.
+/// The edge and face layout of the result is documented in src/core/algorithms/subdivision.cpp.
 /// \throws std::invalid_argument with the reason if is_loop_ok() refuses (nothing changed).
 /// \throws std::length_error if the result would not fit 32-bit indices (checked before
 ///         anything but the triangulation and collection above changes). If building the

@@ -8,7 +8,7 @@
 
 #include <cstddef>
 
-#include "loop_rules.h"
+#include "algorithms/loop_rules.h"
 #include "meshedit/core/math.h"
 #include "meshedit/core/quad_subdivision.h"
 

@@ -10,12 +10,12 @@
 #include <cstdint>
 #include <string>
 
-#include "loop_rules.h"
-#include "mesh_arrays.h"
+#include "algorithms/loop_rules.h"
+#include "mesh/mesh_arrays.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/subdivision.h"
-#include "parallel.h"
+#include "mesh/parallel.h"
 
 namespace meshedit::refine {
 

@@ -42,14 +42,14 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "catmark_rules.h"
-#include "loop_rules.h"
-#include "mesh_arrays.h"
+#include "algorithms/catmark_rules.h"
+#include "algorithms/loop_rules.h"
+#include "mesh/mesh_arrays.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/validate.h"
-#include "parallel.h"
-#include "refine_util.h"
+#include "mesh/parallel.h"
+#include "algorithms/refine_util.h"
 
 namespace meshedit {
 namespace {

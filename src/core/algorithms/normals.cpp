@@ -9,10 +9,10 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "mesh_arrays.h"
+#include "mesh/mesh_arrays.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/topology.h"
-#include "parallel.h"
+#include "mesh/parallel.h"
 
 namespace meshedit {
 

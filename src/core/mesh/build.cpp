@@ -16,7 +16,7 @@
 #include <sstream>
 
 #include "meshedit/core/memory.h"
-#include "parallel.h"
+#include "mesh/parallel.h"
 
 namespace meshedit {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "mesh_arrays.h"
+#include "mesh/mesh_arrays.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 

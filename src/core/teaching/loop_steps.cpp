@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "loop_rules.h"
+#include "algorithms/loop_rules.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/validate.h"

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <utility>
 
-#include "mesh_arrays.h"
+#include "mesh/mesh_arrays.h"
 #include "meshedit/core/local_ops.h"
 
 namespace meshedit {

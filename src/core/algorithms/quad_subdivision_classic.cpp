@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "catmark_rules.h"
-#include "loop_rules.h"
+#include "algorithms/catmark_rules.h"
+#include "algorithms/loop_rules.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/quad_subdivision.h"
 

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "local_op_helpers.h"
+#include "local_ops/local_op_helpers.h"
 #include "meshedit/core/local_ops.h"
 
 namespace meshedit {

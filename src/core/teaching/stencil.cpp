@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "catmark_rules.h"
-#include "loop_rules.h"
+#include "algorithms/catmark_rules.h"
+#include "algorithms/loop_rules.h"
 #include "meshedit/core/attributes.h"
 
 namespace meshedit {

@@ -50,14 +50,14 @@
 #include <stdexcept>
 #include <vector>
 
-#include "loop_rules.h"
-#include "mesh_arrays.h"
+#include "algorithms/loop_rules.h"
+#include "mesh/mesh_arrays.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
-#include "parallel.h"
-#include "refine_util.h"
+#include "mesh/parallel.h"
+#include "algorithms/refine_util.h"
 
 namespace meshedit {
 namespace {
