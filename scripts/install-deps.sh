@@ -23,7 +23,7 @@ packages=(
     clang-format
     libpugixml-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
     assimp-utils assimp-testmodels
-    libosmesa6-dev libgl-dev libglm-dev libopenimageio-dev openimageio-tools
+    libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libglm-dev libopenimageio-dev openimageio-tools
     libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri
     libosd-dev libcgal-demo
     fonts-dejavu-core xvfb xdotool imagemagick x11-utils
