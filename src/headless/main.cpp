@@ -235,6 +235,8 @@ int run(const Options& options) {
     if (options.verbose) {
         std::fprintf(stderr, "meshedit-render: backend %s, GL renderer %s\n",
                      context->backend().c_str(), headless::gl_description().c_str());
+        std::fprintf(stderr, "meshedit-render: shaders from %s\n",
+                     shader_directory().string().c_str());
     }
     RenderTarget target(w, h, options.samples);
     target.bind();
