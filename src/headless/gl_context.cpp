@@ -4,6 +4,7 @@
 
 #include <GL/glcorearb.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #if MESHEDIT_HAVE_EGL
@@ -35,7 +36,10 @@ std::unique_ptr<GlContext> try_backend(Backend backend, const ContextRequest& re
         }
 #endif
         failures += std::string(failures.empty() ? "" : "; ") +
-                    (backend == Backend::Egl ? "egl" : "osmesa") + ": not compiled in";
+                    (backend == Backend::Egl
+                         ? "egl: not in this build (libegl-dev was missing when it was configured)"
+                         : "osmesa: not in this build (libosmesa6-dev was missing when it was "
+                           "configured)");
     } catch (const ContextError& e) {
         if (request.verbose) {
             std::fprintf(stderr, "meshedit-render: %s\n", e.what());
@@ -56,6 +60,17 @@ std::unique_ptr<GlContext> make_context(const ContextRequest& request) {
     const bool auto_choice = request.backend == Backend::Auto;
     if (request.backend == Backend::OsMesa && request.device) {
         throw ContextError("--device picks an EGL device; --backend osmesa has none");
+    }
+    // Installing a library cannot help a backend this binary was built without.
+    if (request.backend != Backend::Auto) {
+        const std::string name = request.backend == Backend::Egl ? "egl" : "osmesa";
+        const std::vector<std::string> built = compiled_backends();
+        if (std::find(built.begin(), built.end(), name) == built.end()) {
+            throw ContextError("--backend " + name + ": not in this build (" +
+                               (name == "egl" ? "libegl-dev" : "libosmesa6-dev") +
+                               " was missing when it was configured; --version lists the "
+                               "backends it has)");
+        }
     }
     if (auto_choice || request.backend == Backend::Egl) {
         if (auto context = try_backend(Backend::Egl, request, failures)) {
