@@ -5,12 +5,13 @@ PREFIX        ?= $(HOME)/.local
 # What a user runs; `make run` and `make install` build only these, `make test` everything.
 PROGRAMS      := meshedit meshedit-render meshedit-view
 ASAN_DIR      ?= build-asan
+CLANG_DIR     ?= build-clang
 BENCH_DIR     ?= build-bench
 JOBS          ?= $(shell nproc)
 CMAKE_FLAGS   ?=
 
-.PHONY: all deps build programs run install test test-release test-sanitize bench fuzz format \
-	clean
+.PHONY: all deps build programs run install test test-release test-sanitize test-clang bench \
+	fuzz format clean
 
 all: build
 
@@ -50,6 +51,18 @@ test-sanitize: deps
 	    -DMESHEDIT_BUILD_BENCH=OFF -DMESHEDIT_BUILD_VIEWER=OFF $(CMAKE_FLAGS)
 	cmake --build $(ASAN_DIR) -j $(JOBS)
 	cd $(ASAN_DIR) && ctest --output-on-failure -j $(JOBS) -L "core|io|viewer"
+
+# The second compiler: the core, file-format and edit-language tests (and what they link)
+# built with clang in CLANG_DIR, warnings as errors, and run. `make test` keeps gcc.
+CLANG_TESTS := mesh_tests local_ops_tests loop_tests opensubdiv_tests geometry_tests \
+	bezier_tests ops_tests overlay_tests collada_tests formats_tests \
+	$(addprefix fuzz_,collada obj off gltf bez bzc ops)
+test-clang:
+	./scripts/install-deps.sh --clang
+	cmake -S . -B $(CLANG_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+	    -DMESHEDIT_WERROR=ON -DMESHEDIT_BUILD_VIEWER=OFF $(CMAKE_FLAGS)
+	cmake --build $(CLANG_DIR) -j $(JOBS) --target $(CLANG_TESTS)
+	cd $(CLANG_DIR) && ctest --output-on-failure -j $(JOBS) -L "core|io"
 
 # Every comparison of issue 6 (bench/README.md): installs the anchors, builds the benchmark
 # programs in Release (only those; a program not declared yet is skipped by run_bench.py) and

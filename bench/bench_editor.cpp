@@ -1,6 +1,7 @@
 // The editor around the core at a million faces (issue 20): what a person pressing F, S or C
 // on a big mesh waits for. It drives the viewer's command layer (viewer::Editor, the same
-// object the window drives) and its renderer (MeshRenderer in an OSMesa context) headless.
+// object the window drives) and its renderer (MeshRenderer in a headless EGL or OSMesa context)
+// headless.
 //
 //   bench_editor --job editor_edits_torus_1m|editor_edits_scan_1m [--impl all] [--runs N]
 //   bench_editor --job editor_loop_1m --impl core|viewer [--runs N]
@@ -29,11 +30,11 @@
 
 #include "bench_real_meshes.h"
 #include "bench_util.h"
+#include "gl_context.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/render/mesh_renderer.h"
 #include "meshedit/viewer/editor.h"
-#include "osmesa_context.h"
 
 namespace mb = meshedit::bench;
 using namespace meshedit;
@@ -75,7 +76,7 @@ Mesh input_mesh(const std::string& job, const std::filesystem::path& data) {
     return shapes::torus(1000, 500);  // 500,000 vertices, 1,000,000 triangles
 }
 
-void upload(MeshRenderer& renderer, const Editor& editor, const headless::OsMesaContext& gl) {
+void upload(MeshRenderer& renderer, const Editor& editor, const headless::GlContext& gl) {
     renderer.upload(editor.mesh());
     gl.finish();
 }
@@ -83,7 +84,7 @@ void upload(MeshRenderer& renderer, const Editor& editor, const headless::OsMesa
 // What the window does after a command (App::apply): the buffers updated from the change's
 // region when the command was a recorded edit, its undo or redo; uploaded whole otherwise.
 void follow(MeshRenderer& renderer, const Editor& editor, const viewer::Outcome& outcome,
-            const headless::OsMesaContext& gl) {
+            const headless::GlContext& gl) {
     if (const auto& region = outcome.region) {
         renderer.update(editor.mesh(), region->faces, region->vertices);
         gl.finish();
@@ -97,7 +98,8 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
     viewer::Document doc;
     doc.mesh = input_mesh(job, data);
     editor.set_document(std::move(doc));
-    headless::OsMesaContext gl(64, 64);
+    const auto context = headless::make_context({.width = 64, .height = 64});
+    const headless::GlContext& gl = *context;
     MeshRenderer renderer;
     upload(renderer, editor, gl);
     const std::size_t faces = editor.mesh().n_faces();
@@ -244,7 +246,8 @@ int run_loop(const std::string& impl, int runs) {
         mb::print_result("editor_loop_1m", impl, ms, {{"peak_rss_mb", mb::peak_rss_mb()}});
         return 0;
     }
-    headless::OsMesaContext gl(64, 64);
+    const auto context = headless::make_context({.width = 64, .height = 64});
+    const headless::GlContext& gl = *context;
     MeshRenderer renderer;
     for (int r = first; r < runs; ++r) {
         Editor editor;

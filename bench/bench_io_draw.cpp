@@ -11,11 +11,11 @@
 // The inputs are generated, never committed: shapes::torus(1000, 500) (500,000 vertices,
 // 1,000,000 triangles) as a COLLADA <triangles> file (~34 MB) and as a <polylist> with one
 // normal per face (NORMAL at offset 1, so every corner has two indices). The draw job renders
-// the same torus at 1280x800 in one OSMesa context: N frames through MeshRenderer::draw
-// (smooth Blinn-Phong; back faces culled, as the torus is closed and outward) and N through
-// MeshRenderer::draw_bare (transform-only shader, same vertex buffer, back faces drawn), and,
-// for reference, N bare draws with back faces culled too; glFinish after each frame, and a
-// RESULT line for each of the three. The pick job picks at the same random cursor positions
+// the same torus at 1280x800 in one headless context (EGL, else OSMesa): N frames through
+// MeshRenderer::draw (smooth Blinn-Phong; back faces culled, as the torus is closed and outward)
+// and N through MeshRenderer::draw_bare (transform-only shader, same vertex buffer, back faces
+// drawn), and, for reference, N bare draws with back faces culled too; glFinish after each frame,
+// and a RESULT line for each of the three. The pick job picks at the same random cursor positions
 // on that torus with the ID pass (MeshRenderer::pick) and on the CPU (cpu_pick, a ray into a
 // FaceBvh), one position after the other, and prints a RESULT line for each.
 
@@ -40,7 +40,7 @@
 #include <string_view>
 #include <vector>
 
-#include "../src/headless/osmesa_context.h"
+#include "../src/headless/gl_context.h"
 #include "bench_util.h"
 #include "meshedit/core/face_bvh.h"
 #include "meshedit/core/shapes.h"
@@ -284,7 +284,8 @@ void bench_draw(const std::string& job, const std::string& impl, int runs, int w
     camera.elevation_deg = 20.0f;
     camera.frame_mesh(mesh, aspect);
 
-    headless::OsMesaContext context(width, height);
+    const auto gl = headless::make_context({.width = width, .height = height});
+    const headless::GlContext& context = *gl;
     RenderTarget target(width, height, samples);
     target.bind();
     BackgroundRenderer background;
@@ -369,7 +370,8 @@ void bench_pick(const std::string& job, const std::string& impl, int positions, 
     camera.elevation_deg = 20.0f;
     camera.frame_mesh(mesh, static_cast<float>(width) / static_cast<float>(height));
 
-    headless::OsMesaContext context(width, height);
+    const auto gl = headless::make_context({.width = width, .height = height});
+    const headless::GlContext& context = *gl;
     RenderTarget target(width, height, 1);  // the viewer's pick target: one sample
     target.bind();
     MeshRenderer renderer;

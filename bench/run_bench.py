@@ -128,7 +128,7 @@ JOB_TITLES = {
     "editor_edits_scan_1m": "The same on bunny00 Loop-subdivided twice (1,206,530 triangles)",
     "editor_loop_1m": "Loop on the 1M torus: `core` loop_subdivide(), `viewer` the L key "
     "through viewer::Editor plus the upload of the new buffers (target: ≤ 2× core + upload)",
-    "draw_1m_triangles": "Headless draw of a 1M-triangle torus at 1280×800 (OSMesa); MeshEdit's "
+    "draw_1m_triangles": "Headless draw of a 1M-triangle torus at 1280×800 (llvmpipe via EGL, else OSMesa); MeshEdit's "
     "smooth Blinn-Phong renderer (which culls back faces of closed outward meshes) vs a trivial "
     "shader over the same vertex buffer (`bare`), and the trivial shader with back faces culled "
     "too (`bare_culled`, for reference); one process, glFinish after each frame",
@@ -348,7 +348,7 @@ def machine_description(build):
         pass
     packages = []
     for pkg in ("libassimp-dev", "libopenmesh-dev", "libcgal-dev", "libosd-dev",
-                "libosmesa6"):
+                "libegl-mesa0", "libosmesa6"):
         version = command_output(["dpkg-query", "-W", "-f=${Version}", pkg]).strip()
         if version:
             packages.append(f"{pkg} {version}")

@@ -3,17 +3,19 @@
 # subdivision oracle; libcgal-demo holds the scanned bunny of the simplify and remesh golden
 # images); with --bench also the other benchmark anchors (OpenMesh, CGAL, Eigen for its quadric
 # policies, Assimp, meshoptimizer) and perf, which only `make bench` needs; with --fuzz clang
-# and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs
-# dpkg queries (well under a second).
+# and its libFuzzer runtime (`make fuzz`); with --clang clang alone (`make test-clang`).
+# Idempotent: when everything is present it only runs dpkg queries (well under a second).
 set -euo pipefail
 
 bench=0
 fuzz=0
+clang=0
 for arg in "$@"; do
     case "$arg" in
         --bench) bench=1 ;;
         --fuzz) fuzz=1 ;;
-        *) echo "usage: $0 [--bench] [--fuzz]" >&2; exit 2 ;;
+        --clang) clang=1 ;;
+        *) echo "usage: $0 [--bench] [--fuzz] [--clang]" >&2; exit 2 ;;
     esac
 done
 
@@ -23,13 +25,16 @@ packages=(
     clang-format
     libpugixml-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
     assimp-utils assimp-testmodels
-    libosmesa6-dev libgl-dev libglm-dev libopenimageio-dev openimageio-tools
+    libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libglm-dev libopenimageio-dev openimageio-tools
     libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri
     libosd-dev libcgal-demo
     fonts-dejavu-core xvfb xdotool imagemagick x11-utils
 )
 if [ "$fuzz" -eq 1 ]; then
     packages+=(clang libclang-rt-14-dev)
+fi
+if [ "$clang" -eq 1 ]; then
+    packages+=(clang)
 fi
 if [ "$bench" -eq 1 ]; then
     packages+=(libopenmesh-dev libcgal-dev libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf)

@@ -22,7 +22,7 @@ set(rules
     "viewer window|^src/viewer/|^(core|bezier|files|io|ops|render|viewer)/|^(${gl}|GLFW/glfw3\\.h|imgui\\.h|imgui_stdlib\\.h|backends/imgui_impl_(glfw|opengl3)\\.h)$"
     "command line style|^src/command_line/|^core/|^CLI/CLI\\.hpp$"
     "cli (meshedit)|^src/cli/|^(core|bezier|files|io|ops)/|^(CLI/CLI\\.hpp|nlohmann/json\\.hpp|unistd\\.h)$"
-    "headless (meshedit-render)|^src/headless/|^(core|bezier|files|io|ops|render)/|^(CLI/CLI\\.hpp|GL/osmesa\\.h)$"
+    "headless (meshedit-render)|^src/headless/|^(core|bezier|files|io|ops|render)/|^(CLI/CLI\\.hpp|GL/osmesa\\.h|GL/glcorearb\\.h|EGL/egl(ext)?\\.h|dlfcn\\.h)$"
     "tools|^tools/|^(core|bezier|files|io|ops)/|^$"
 )
 

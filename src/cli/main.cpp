@@ -128,7 +128,7 @@ int dispatch(int argc, char** argv) {
     if (command == "render") {
         exec_external(command, argv);
         print_error(
-            "meshedit-render is not installed beside meshedit (it needs libOSMesa at build "
+            "meshedit-render is not installed beside meshedit (it needs EGL or OSMesa at build "
             "time); use 'meshedit info FILE' for a description");
         return 1;
     }

@@ -1,7 +1,7 @@
 // `meshedit-render` (also `meshedit render`): renders a mesh, Bezier surface or Bezier curve
-// to PNG through OSMesa with the same renderer and shaders as the viewer. Errors are one
-// line "meshedit-render: <message>"; exit 2 for bad usage or input, 1 for GL failures and
-// refused ops (docs/rendering.md).
+// to PNG through EGL or OSMesa (gl_context.h) with the same renderer and shaders as the
+// viewer. Errors are one line "meshedit-render: <message>"; exit 2 for bad usage or input and
+// for no GL context, 1 for GL failures and refused ops (docs/rendering.md).
 
 #include <algorithm>
 #include <charconv>
@@ -9,12 +9,14 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "gl_context.h"
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/fields.h"
@@ -32,7 +34,6 @@
 #include "meshedit/render/shader_program.h"
 #include "meshedit/render/shading.h"
 #include "options.h"
-#include "osmesa_context.h"
 
 namespace {
 
@@ -224,7 +225,19 @@ int run(const Options& options) {
     }
 
     lap("overlay");
-    headless::OsMesaContext context(w, h);
+    headless::ContextRequest request;
+    request.backend = options.backend;
+    request.device = options.device;
+    request.width = w;
+    request.height = h;
+    request.verbose = options.verbose;
+    const std::unique_ptr<headless::GlContext> context = headless::make_context(request);
+    if (options.verbose) {
+        std::fprintf(stderr, "meshedit-render: backend %s, GL renderer %s\n",
+                     context->backend().c_str(), headless::gl_description().c_str());
+        std::fprintf(stderr, "meshedit-render: shaders from %s\n",
+                     shader_directory().string().c_str());
+    }
     RenderTarget target(w, h, options.samples);
     target.bind();
     lap("context");
@@ -249,11 +262,11 @@ int run(const Options& options) {
         renderer.mesh().set_field(field->site, field_values, coloring);
     }
     renderer.overlay().upload(overlay);
-    context.finish();
+    context->finish();
     lap("upload");
     auto draw_frame = [&] { renderer.draw(camera, w, h, render_options); };
     draw_frame();
-    context.finish();
+    context->finish();
     check_gl("rendering");
     if (!renderer.mesh().user_shader_error().empty()) {
         throw GlError(renderer.mesh().user_shader_error());
@@ -276,13 +289,13 @@ int run(const Options& options) {
         for (int i = 0; i < options.benchmark; ++i) {
             const Clock::time_point start = Clock::now();
             draw_frame();
-            context.finish();
+            context->finish();
             shaded.push_back(ms_since(start));
         }
         for (int i = 0; i < options.benchmark; ++i) {
             const Clock::time_point start = Clock::now();
             renderer.draw_bare(camera, w, h);
-            context.finish();
+            context->finish();
             bare.push_back(ms_since(start));
         }
         std::printf("triangles %zu size %dx%d samples %d shaded_ms %.1f bare_ms %.1f\n",
@@ -325,6 +338,9 @@ int main(int argc, char** argv) {
     } catch (const ops::OpError& e) {
         print_error(e.what());
         return e.refused() ? 1 : 2;
+    } catch (const headless::ContextError& e) {
+        print_error(e.what());
+        return 2;
     } catch (const BudgetError& e) {
         print_error(e.what());
         return 1;

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -140,8 +141,8 @@ void finish(const Raw& raw, Options& o) {
 
 int parse_options(int argc, char** argv, Options& o) {
     CLI::App app(
-        "Renders FILE headless (OSMesa, OpenGL 3.3 core) to a PNG, with the viewer's renderer "
-        "and shaders. Same command, same bytes.",
+        "Renders FILE headless (EGL or OSMesa, OpenGL 3.3 core) to a PNG, with the viewer's "
+        "renderer and shaders. Same command, same bytes.",
         "meshedit-render");
     command_line::style(app);
     Raw raw;
@@ -262,6 +263,30 @@ int parse_options(int argc, char** argv, Options& o) {
         ->check(CLI::Range(1, 64));
     app.add_option("--pick", raw.pick, "also print the element under pixel (X, Y) (ID pass)")
         ->type_name("X,Y");
+    app.add_option_function<std::string>(
+           "--backend",
+           [&o](const std::string& v) {
+               o.backend = v == "egl"      ? Backend::Egl
+                           : v == "osmesa" ? Backend::OsMesa
+                                           : Backend::Auto;
+           },
+           "where the GL context comes from: egl (a GPU's EGL device, else Mesa's surfaceless "
+           "platform), osmesa, or auto (EGL if it gives a context, else OSMesa; the default)")
+        ->type_name("auto|egl|osmesa")
+        ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    app.add_option("--device", o.device,
+                   "render on EGL device N, as --verbose lists them (default: the first GPU, "
+                   "else Mesa's surfaceless platform)")
+        ->type_name("N")
+        ->check(CLI::NonNegativeNumber);
+    app.add_flag("--verbose", o.verbose,
+                 "say on stderr which backend, EGL device and GL renderer drew the image");
+    std::string backends;
+    for (const std::string& name : compiled_backends()) {
+        backends += (backends.empty() ? "" : " ") + name;
+    }
+    app.set_version_flag("--version", std::string("meshedit-render ") + MESHEDIT_VERSION +
+                                          "\nbackends: " + backends);
     app.add_flag("--timings", o.timings, "print the time of each phase on stderr");
     command_line::add_memory_budget_option(app);
     app.add_option("--benchmark", o.benchmark,
@@ -272,6 +297,16 @@ int parse_options(int argc, char** argv, Options& o) {
     app.footer(
         "Also run as 'meshedit render FILE -o OUT.png …'.\n"
         "Exit status: 0 success, 1 GL failure or refused op, 2 bad usage or input.");
+    // The test suites run once per backend by setting this (tests/render/CMakeLists.txt).
+    if (const char* env = std::getenv("MESHEDIT_RENDER_BACKEND"); env != nullptr && *env != 0) {
+        const std::string name = env;
+        if (name != "auto" && name != "egl" && name != "osmesa") {
+            throw UsageError("MESHEDIT_RENDER_BACKEND=" + name + ": wants auto, egl or osmesa");
+        }
+        o.backend = name == "egl"      ? Backend::Egl
+                    : name == "osmesa" ? Backend::OsMesa
+                                       : Backend::Auto;
+    }
     if (const int status = command_line::parse(app, argc, argv, "meshedit-render"); status >= 0) {
         return status;
     }

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "gl_context.h"
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
@@ -54,6 +55,9 @@ struct Options {
     std::optional<std::pair<int, int>> pick;
     bool timings = false;
     int benchmark = 0;
+    Backend backend = Backend::Auto;  ///< --backend auto|egl|osmesa
+    std::optional<int> device;        ///< --device N: an EGL device
+    bool verbose = false;             ///< --verbose: the backend and GL renderer used
 };
 
 /// Parses the command line into `options`. \return -1 to go on, else the exit status after

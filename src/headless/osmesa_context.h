@@ -1,28 +1,16 @@
 #pragma once
-// An OSMesa GL 3.3 core context, current on construction. Only this folder sees OSMesa; the
-// renderer draws into whatever context is current.
+// An OSMesa GL 3.3 core context (Mesa's software rasteriser, llvmpipe). OSMesa left Mesa in
+// 25.1; it stays the fallback while distributions ship it.
 
-#include <cstdint>
-#include <vector>
+#include <memory>
+
+#include "gl_context.h"
 
 namespace meshedit::headless {
 
-class OsMesaContext {
-public:
-    /// Creates a core-profile 3.3 context with a `width` × `height` RGBA default buffer
-    /// (the renderer draws into its own FBO; the buffer only makes the context current).
-    /// \throws GlError if OSMesa cannot create or bind the context.
-    OsMesaContext(int width, int height);
-    OsMesaContext(const OsMesaContext&) = delete;
-    OsMesaContext& operator=(const OsMesaContext&) = delete;
-    ~OsMesaContext();
-
-    /// Waits until every GL command has finished (glFinish), for timings.
-    void finish() const;
-
-private:
-    void* context_ = nullptr;  ///< OSMesaContext, kept opaque so the header needs no GL
-    std::vector<std::uint8_t> buffer_;
-};
+/// Opens libOSMesa.so.8 and makes a core-profile 3.3 context current with a
+/// `request.width` × `request.height` RGBA default buffer (the renderer draws into its own
+/// FBO; the buffer only makes the context current). \throws ContextError.
+std::unique_ptr<GlContext> make_osmesa_context(const ContextRequest& request);
 
 }  // namespace meshedit::headless

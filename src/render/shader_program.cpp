@@ -92,15 +92,15 @@ std::filesystem::path shader_directory() {
         candidates.push_back(exe / "shaders");
         candidates.push_back(exe.parent_path() / "share" / "meshedit" / "shaders");
     }
-    candidates.emplace_back(MESHEDIT_SHADER_SOURCE_DIR);
     for (const auto& dir : candidates) {
         std::error_code ec;
         if (std::filesystem::is_regular_file(dir / "mesh.vert", ec)) {
             return dir;
         }
     }
-    throw GlError("no shader folder found (looked beside the executable and in " +
-                  std::string(MESHEDIT_SHADER_SOURCE_DIR) + ")");
+    throw GlError("no shader folder found (looked in $MESHEDIT_SHADER_DIR, " +
+                  (exe / "shaders").string() + " and " +
+                  (exe.parent_path() / "share" / "meshedit" / "shaders").string() + ")");
 }
 
 void check_gl(std::string_view what) {

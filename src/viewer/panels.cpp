@@ -35,8 +35,9 @@ void rows_table(const char* id, const std::vector<std::pair<std::string, std::st
         ImGui::TableNextColumn();
         ImGui::TextDisabled("%s", name.c_str());
         ImGui::TableNextColumn();
-        const auto row_links = std::find_if(links.begin(), links.end(),
-                                            [&](const auto& l) { return l.first == name; });
+        // An init-capture: clang 14 cannot capture a structured binding itself.
+        const auto row_links = std::find_if(
+            links.begin(), links.end(), [&row = name](const auto& l) { return l.first == row; });
         if (row_links == links.end() || row_links->second.empty()) {
             ImGui::TextWrapped("%s", value.c_str());
             continue;

@@ -298,6 +298,13 @@ std::string render_exe() {
     return env != nullptr && *env != '\0' ? env : MESHEDIT_RENDER_EXE;
 }
 
+// MESHEDIT_RENDER_BACKEND (ctest sets it: the suite runs once per backend) goes to
+// meshedit-render through the environment; here it only keeps each backend's files apart.
+std::string backend_suffix() {
+    const char* env = std::getenv("MESHEDIT_RENDER_BACKEND");
+    return env != nullptr && *env != '\0' ? std::string(".") + env : std::string();
+}
+
 bool update_mode() {
     const char* env = std::getenv("MESHEDIT_UPDATE_GOLDEN");
     return env != nullptr && std::string(env) == "1";
@@ -331,7 +338,7 @@ TEST_P(Golden, MatchesReference) {
     const GoldenCase& c = GetParam();
     const fs::path render_dir = out_dir() / "render";
     fs::create_directories(render_dir);
-    const fs::path rendered = render_dir / (c.name + ".png");
+    const fs::path rendered = render_dir / (c.name + backend_suffix() + ".png");
     fs::remove(rendered);  // a stale file must not pass for a fresh render
 
     std::vector<std::string> args = {input_path(c.input).string(), "-o", rendered.string(),
@@ -371,7 +378,8 @@ TEST_P(Golden, MatchesReference) {
         << "`MESHEDIT_UPDATE_GOLDEN=1 make test` (or `MESHEDIT_UPDATE_GOLDEN=1 ctest -L golden` "
         << "in the build folder), then open the PNG and check it shows the right thing before "
         << "committing it";
-    EXPECT_TRUE(images_match(rendered, reference, out_dir(), c.name)) << "command: " << command;
+    EXPECT_TRUE(images_match(rendered, reference, out_dir(), c.name + backend_suffix()))
+        << "command: " << command;
 }
 
 INSTANTIATE_TEST_SUITE_P(Renders, Golden, ::testing::ValuesIn(golden_cases()),

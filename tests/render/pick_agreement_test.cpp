@@ -1,4 +1,4 @@
-// The CPU pick (cpu_pick.h) against the ID pass it replaces (MeshRenderer::pick(), OSMesa):
+// The CPU pick (cpu_pick.h) against the ID pass it replaces (MeshRenderer::pick(), EGL or OSMesa):
 // on triangle and polygon meshes, closed and open, under perspective and orthographic
 // cameras, with back faces culled and not, and with the near and far planes cutting the mesh, every
 // 7th pixel of a 320x200 viewport must get the same answer from both. The only exceptions
@@ -14,7 +14,6 @@
 #include <string>
 #include <vector>
 
-#include "../../src/headless/osmesa_context.h"
 #include "meshedit/core/face_bvh.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/io/io.h"
@@ -22,6 +21,7 @@
 #include "meshedit/render/mesh_renderer.h"
 #include "meshedit/render/render_target.h"
 #include "support/fixtures.h"
+#include "test_context.h"
 
 namespace meshedit {
 namespace {
@@ -168,7 +168,7 @@ struct Tally {
 };
 
 TEST(PickAgreement, CpuPickAnswersAsTheIdPass) {
-    headless::OsMesaContext context(kWidth, kHeight);
+    const auto context = test::make_test_context(kWidth, kHeight);
     RenderTarget target(kWidth, kHeight, 1);
     const PickRadii radii;
     Tally total;

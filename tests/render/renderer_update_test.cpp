@@ -1,6 +1,6 @@
 // MeshRenderer::update() after recorded local edits, and after their undo, draws exactly what a
 // fresh upload() of the same mesh draws: same pixels, smooth and flat, wireframe on, on
-// triangle meshes, an open grid and polygons (OSMesa, one sample, so no resolve differs).
+// triangle meshes, an open grid and polygons (EGL or OSMesa, one sample, so no resolve differs).
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "../../src/headless/osmesa_context.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh_change.h"
 #include "meshedit/core/shapes.h"
@@ -17,6 +16,7 @@
 #include "meshedit/render/overlay_renderer.h"
 #include "meshedit/render/render_target.h"
 #include "support/fixtures.h"
+#include "test_context.h"
 
 namespace meshedit {
 namespace {
@@ -37,7 +37,7 @@ Image draw(BackgroundRenderer& background, MeshRenderer& renderer, const Camera&
 // Random flips, splits, collapses, dissolves and pokes; after each, and after undoing it,
 // the updated renderer and a fresh one must draw the same picture.
 void check(Mesh mesh, unsigned seed, int edits) {
-    headless::OsMesaContext context(kSize, kSize);
+    const auto context = test::make_test_context(kSize, kSize);
     RenderTarget target(kSize, kSize, 1);
     target.bind();
     Camera camera;

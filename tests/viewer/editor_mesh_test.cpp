@@ -382,8 +382,9 @@ TEST(EditorLoopSteps, FourPressesAreLoopAndUndoWalksBack) {
     Editor ed = editor_with(shapes::icosahedron());
     std::vector<Mesh> states = {ed.mesh()};
     const char* const messages[] = {
-        "Loop 1/4: computed the new position of 12 vertices and 30 edge points (nothing moved "
-        "yet)",
+        // One message over two lines: the parentheses tell clang the joined literals are meant.
+        ("Loop 1/4: computed the new position of 12 vertices and 30 edge points (nothing moved "
+         "yet)"),
         "Loop 2/4: split 30 edges",
         "Loop 3/4: flipped 20 new edges that join an old and a new vertex",
         "Loop 4/4: moved 42 vertices to their new positions"};

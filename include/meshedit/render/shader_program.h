@@ -4,8 +4,9 @@
 ///
 /// Shaders live in `shaders/` as plain files so they can be edited without recompiling. The
 /// folder is looked up in this order: `$MESHEDIT_SHADER_DIR`, `<exe dir>/shaders`,
-/// `<exe dir>/../share/meshedit/shaders` (an installed tree), then the source tree
-/// (`MESHEDIT_SHADER_SOURCE_DIR`, set at compile time). Needs a current GL 3.3 core context.
+/// `<exe dir>/../share/meshedit/shaders` (an installed tree; the build tree links its
+/// `src/share`, `tests/share` and `share` to the source's `shaders/` for the same lookup). No
+/// path is compiled in, so an installed tree can move. Needs a current GL 3.3 core context.
 
 #include <filesystem>
 #include <stdexcept>
