@@ -7,6 +7,7 @@
 # on the path after "meshedit/"; and the other headers it may include, as a regex on the text
 # between < and >. Standard headers (no '/' and no '.') are always allowed, and so are private
 # headers beside the file ("name.h", no '/').
+cmake_policy(SET CMP0007 NEW)
 set(std_posix "fcntl\\.h|unistd\\.h|signal\\.h|sys/(stat|mman|types)\\.h")
 set(gl "GL/glcorearb\\.h|glm/.*")
 set(rules
