@@ -32,8 +32,13 @@ run: programs
 	@./scripts/run.sh $(BUILD_DIR)
 
 # The programs and their shaders into PREFIX (default ~/.local: bin/ is on Debian's PATH once
-# it exists, after logging in again).
+# it exists, after logging in again), with the C++ library (headers, static libraries, CMake
+# package, meshedit.pc) and the Python module (docs/python.md), which is built here too.
+LIBRARY_TARGETS := meshedit_python
 install: programs
+	targets=$$(cmake --build $(BUILD_DIR) --target help | sed -n 's/: phony$$//p' | \
+	    grep -xF $(addprefix -e ,$(LIBRARY_TARGETS))); \
+	    if [ -n "$$targets" ]; then cmake --build $(BUILD_DIR) -j $(JOBS) --target $$targets; fi
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 	@case ":$$PATH:" in *":$(PREFIX)/bin:"*) ;; \
 	    *) echo "make install: add $(PREFIX)/bin to PATH to run meshedit by name";; esac

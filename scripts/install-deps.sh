@@ -27,6 +27,7 @@ packages=(
     libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri
     libosd-dev libcgal-demo
     fonts-dejavu-core xvfb xdotool imagemagick x11-utils
+    pybind11-dev python3-dev python3-numpy python3-pytest
 )
 if [ "$fuzz" -eq 1 ]; then
     packages+=(clang libclang-rt-14-dev)
