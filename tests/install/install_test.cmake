@@ -61,9 +61,10 @@ endif()
 if(PYTHON)
     set(ENV{PYTHONPATH} ${prefix}/${PYTHON_DIR})
     file(WRITE ${WORK}/import.py "import sys\nimport meshedit\nm = meshedit.read(sys.argv[1])\n"
-        "m.flip(0, 6)\nm.loop()\nprint(meshedit.__file__, m.info()['vertices'])\n")
+        "m.flip(0, 6)\nm.loop()\nimage = meshedit.render(m, 16, 12)\n"
+        "print(meshedit.__file__, m.info()['vertices'], image.shape)\n")
     run(${PYTHON} ${WORK}/import.py ${SOURCE}/dae/cube.dae)
-    if(NOT out MATCHES "^${prefix}/.* 26\n$")
+    if(NOT out MATCHES "^${prefix}/.* 26 \\(12, 16, 4\\)\n$")
         message(FATAL_ERROR "python from the prefix printed '${out}'")
     endif()
     message(STATUS "python: ${out}")

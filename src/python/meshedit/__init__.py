@@ -32,7 +32,7 @@ for _cls in (BadStep, Document, IoError, Mesh, Refused, SyntaxError):
     _cls.__module__ = "meshedit"  # tracebacks say meshedit.Refused, not meshedit._meshedit.Refused
 
 __all__ = ["read", "Mesh", "Document", "IoError", "Refused", "BadStep", "SyntaxError",
-           "Notice", "verbs", "field_names", "step_text"]
+           "Notice", "verbs", "field_names", "step_text", "render"]
 
 
 class Notice(UserWarning):
@@ -181,3 +181,6 @@ def _subdivide(self, levels=1, scheme="loop"):
 
 Mesh.subdivide = _subdivide
 Document.subdivide = _subdivide
+
+
+from ._render import render  # noqa: E402
