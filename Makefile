@@ -60,7 +60,7 @@ test-sanitize: deps
 # programs in Release (only those; a program not declared yet is skipped by run_bench.py) and
 # writes docs/performance.md. BENCH_BUDGET bounds the measurements (seconds; whatever is left
 # is reported as skipped), so that build + run stays under 20 minutes on 2 cores.
-BENCH_TARGETS ?= bench_loop bench_ops bench_io_draw bench_build bench_local_ops bench_catmark bench_simplify bench_remesh bench_editor
+BENCH_TARGETS ?= bench_loop bench_ops bench_io_draw bench_build bench_local_ops bench_catmark bench_simplify bench_remesh bench_editor meshedit_python
 BENCH_BUDGET  ?= 1200
 bench:
 	./scripts/install-deps.sh --bench

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs every Debian package MeshEdit needs to build and test (OpenSubdiv is the tests'
 # subdivision oracle; libcgal-demo holds the scanned bunny of the simplify and remesh golden
-# images); with --bench also the other benchmark anchors (OpenMesh, CGAL, Eigen for its quadric
-# policies, Assimp, meshoptimizer) and perf, which only `make bench` needs; with --fuzz clang
-# and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs
+# images; pybind11, numpy and pytest build and test the Python module); with --bench also the
+# other benchmark anchors (OpenMesh, CGAL, Eigen for its quadric policies, Assimp,
+# meshoptimizer, Open3D for the Python rows) and perf, which only `make bench` needs; with
+# --fuzz clang and its libFuzzer runtime (`make fuzz`). Idempotent: when everything is present it only runs
 # dpkg queries (well under a second).
 set -euo pipefail
 
@@ -33,7 +34,7 @@ if [ "$fuzz" -eq 1 ]; then
     packages+=(clang libclang-rt-14-dev)
 fi
 if [ "$bench" -eq 1 ]; then
-    packages+=(libopenmesh-dev libcgal-dev libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf)
+    packages+=(libopenmesh-dev libcgal-dev libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf python3-open3d)
 fi
 
 missing=()
