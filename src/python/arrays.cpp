@@ -34,7 +34,10 @@ py::array numbers(const py::object& value, const char* name, const char* kinds,
     } catch (const py::error_already_set&) {
         a = py::array();
     }
-    if (!a || std::string(kinds).find(a.dtype().kind()) == std::string::npos) {
+    // An empty list is float64 to numpy: any empty array of numbers will do.
+    const bool empty_numbers =
+        a && a.size() == 0 && std::string("fiu").find(a.dtype().kind()) != std::string::npos;
+    if (!a || (!empty_numbers && std::string(kinds).find(a.dtype().kind()) == std::string::npos)) {
         const std::string got =
             a ? "dtype " + std::string(py::str(a.dtype())) : std::string(py::str(value.get_type()));
         throw py::type_error(std::string(name) + ": expected " + wanted + ", got " + got);

@@ -86,6 +86,10 @@ def test_edges_and_empty_mesh():
     assert mesh.edges().shape == (5, 2)
     empty = meshedit.Mesh()
     assert empty.V.shape == (0, 3) and empty.info()["vertices"] == 0
+    assert meshedit.Mesh.from_arrays(np.zeros((0, 3)), np.zeros((0, 3), int)).info()["faces"] == 0
+    assert meshedit.Mesh.from_arrays(SQUARE, [0], []).info()["vertices"] == 4
+    with pytest.raises(meshedit.Refused, match="loop refused: cannot subdivide: the mesh has no faces"):
+        empty.loop()
 
 
 def test_a_view_kept_across_edits_stays_readable():
