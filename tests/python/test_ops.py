@@ -49,6 +49,12 @@ def test_bad_calls_are_type_errors():
         meshedit.step_text("flip", 0, 1, 0.5)
     with pytest.raises(TypeError, match="extrude\\(\\) needs height"):
         meshedit.step_text("extrude", f=1, shrink=0.5)
+    with pytest.raises(TypeError, match="amounts are numbers"):
+        meshedit.step_text("extrude", 1, "high")
+    with pytest.raises(TypeError, match="height must be a number"):
+        meshedit.step_text("extrude", f=1, height=None)
+    with pytest.raises(TypeError, match="at most 0 amounts"):
+        meshedit.step_text("dissolve", 12)
 
 
 def test_methods_run_the_same_steps_as_the_cli(sample, cli, tmp_path):

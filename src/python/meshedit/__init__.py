@@ -117,7 +117,11 @@ def step_text(verb, *args, v=None, f=None, e=None, levels=None, **amounts):
             return f"{verb}:{int(levels)}"
 
     names = AMOUNT_NAMES.get(verb, ())
-    values = [float(x) for x in args]
+    values = []
+    for x in args:
+        if not isinstance(x, _numbers.Real) or isinstance(x, bool):
+            raise TypeError(f"{verb}(): amounts are numbers ({info['syntax']}), got {x!r}")
+        values.append(float(x))
     for name in amounts:
         if name not in names:
             raise TypeError(f"{verb}() got an unexpected keyword argument {name!r}")
@@ -129,6 +133,8 @@ def step_text(verb, *args, v=None, f=None, e=None, levels=None, **amounts):
                 if len(values) < info["min_amounts"]:
                     raise TypeError(f"{verb}() needs {names[len(values)]}")
                 values.append(info["defaults"][len(values)])
+            if not isinstance(amounts[name], _numbers.Real) or isinstance(amounts[name], bool):
+                raise TypeError(f"{verb}(): {name} must be a number, got {amounts[name]!r}")
             values.append(float(amounts[name]))
     if len(values) > info["max_amounts"]:
         raise TypeError(f"{verb}() takes at most {info['max_amounts']} amounts "
