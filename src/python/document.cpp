@@ -31,7 +31,16 @@ public:
 
     py::object mesh() const { return mesh_object_; }
 
-    std::vector<std::string> apply(const std::string& text) {
+    std::vector<std::string> apply(const std::string& text) { return apply_step(text, nullptr); }
+
+    // apply() that also says what the last step selected (for the verb methods).
+    py::tuple step(const std::string& text) {
+        ElementRef last;
+        std::vector<std::string> notices = apply_step(text, &last);
+        return py::make_tuple(element_of(target().mesh, last), notices);
+    }
+
+    std::vector<std::string> apply_step(const std::string& text, ElementRef* last) {
         check_in_step(false);
         PyMesh& m = target();
         const std::vector<ops::Step> steps = ops::parse(text);
@@ -46,7 +55,7 @@ public:
         if (local) {
             MeshRecorder recorder(m.mesh);
             try {
-                notices = run(m, steps);
+                notices = run(m, steps, last);
             } catch (...) {
                 recorder.roll_back();
                 throw;
@@ -54,7 +63,7 @@ public:
             entry.change = recorder.finish();
         } else {
             entry.other = m.mesh;  // a copy: undo swaps it back in
-            notices = apply_text(m, text, false);
+            notices = apply_text(m, text, false, last);
         }
         ++m.version;
         version_ = m.version;
@@ -123,12 +132,16 @@ private:
 
     // Runs a list of local steps one by one under the document's recorder (apply_text() would
     // copy the mesh for a list; the recorder's roll_back() undoes a failed list instead).
-    static std::vector<std::string> run(PyMesh& m, const std::vector<ops::Step>& steps) {
+    static std::vector<std::string> run(PyMesh& m, const std::vector<ops::Step>& steps,
+                                        ElementRef* last) {
         std::vector<std::string> notices;
         ops::ApplyOptions options;
         options.notice = [&notices](const std::string& line) { notices.push_back(line); };
         try {
-            ops::apply_steps(m.mesh, steps, options);
+            const ElementRef selected = ops::apply_steps(m.mesh, steps, options);
+            if (last != nullptr) {
+                *last = selected;
+            }
         } catch (const ops::OpError& e) {
             if (e.refused()) {
                 throw Refused(e.what());
@@ -166,6 +179,7 @@ void bind_document(py::module_& m) {
         .def(py::init<py::object>(), py::arg("mesh"))
         .def_property_readonly("mesh", &Document::mesh)
         .def("apply", &Document::apply, py::arg("steps"))
+        .def("_step", &Document::step, py::arg("step"))
         .def("undo", &Document::undo)
         .def("redo", &Document::redo)
         .def_property_readonly("session", &Document::session)

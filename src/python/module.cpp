@@ -31,6 +31,22 @@ namespace meshedit::python {
 
 void bind_document(py::module_& m);
 
+py::object element_of(const Mesh& mesh, const ElementRef& e) {
+    switch (e.kind) {
+        case ElementRef::Kind::Vertex:
+        case ElementRef::Kind::Face:
+            return py::int_(e.index);
+        case ElementRef::Kind::Edge:
+            if (is_live(mesh, e)) {
+                return py::make_tuple(mesh.vertex(Edge(e.index), 0).idx(),
+                                      mesh.vertex(Edge(e.index), 1).idx());
+            }
+            return py::none();
+        default:
+            return py::none();
+    }
+}
+
 namespace {
 
 // "line one\nline two" → one entry per non-empty line.
@@ -159,20 +175,32 @@ py::array field(const PyMesh& self, const std::string& name, std::uint32_t sourc
     return out;
 }
 
-py::object element_of(const Mesh& mesh, const ElementRef& e) {
-    switch (e.kind) {
-        case ElementRef::Kind::Vertex:
-        case ElementRef::Kind::Face:
-            return py::int_(e.index);
-        case ElementRef::Kind::Edge:
-            if (is_live(mesh, e)) {
-                return py::make_tuple(mesh.vertex(Edge(e.index), 0).idx(),
-                                      mesh.vertex(Edge(e.index), 1).idx());
-            }
-            return py::none();
-        default:
-            return py::none();
+// Vec3s as an (n, 3) float64 array (a copy).
+py::array vec3_array(const std::vector<Vec3>& values) {
+    py::array_t<double> out({static_cast<py::ssize_t>(values.size()), py::ssize_t{3}});
+    double* p = out.mutable_data();
+    for (const Vec3& v : values) {
+        *p++ = v.x;
+        *p++ = v.y;
+        *p++ = v.z;
     }
+    return out;
+}
+
+// The crease edges (the e:crease mark Loop keeps sharp) as an (n, 2) array of vertex indices.
+py::array creases_of(const Mesh& mesh) {
+    std::vector<std::int64_t> ends;
+    if (const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+        for (const Edge e : mesh.edges()) {
+            if (crease[e] != 0) {
+                ends.push_back(mesh.vertex(e, 0).idx());
+                ends.push_back(mesh.vertex(e, 1).idx());
+            }
+        }
+    }
+    py::array_t<std::int64_t> out({static_cast<py::ssize_t>(ends.size() / 2), py::ssize_t{2}});
+    std::copy(ends.begin(), ends.end(), out.mutable_data());
+    return out;
 }
 
 py::list verb_table() {
@@ -242,6 +270,18 @@ PYBIND11_MODULE(_meshedit, m) {
             "their rows until compact()). Take it again after an edit that adds vertices.")
         .def("faces", [](const PyMesh& self) { return faces_of(self.mesh); })
         .def("edges", [](const PyMesh& self) { return edges_of(self.mesh); })
+        .def("creases", [](const PyMesh& self) { return creases_of(self.mesh); })
+        .def(
+            "vertex_normals",
+            [](const PyMesh& self) {
+                std::vector<Vec3> normals;
+                compute_vertex_normals(self.mesh, normals);
+                return vec3_array(normals);
+            },
+            "Area-weighted unit vertex normals by vertex index, (vertices_size, 3).")
+        .def(
+            "face_normals", [](const PyMesh& self) { return vec3_array(face_normals(self.mesh)); },
+            "Unit face normals by face index, (faces_size, 3); zero for deleted faces.")
         .def_readonly("notices", &PyMesh::notices)
         .def_property_readonly("n_vertices", [](const PyMesh& s) { return s.mesh.n_vertices(); })
         .def_property_readonly("n_edges", [](const PyMesh& s) { return s.mesh.n_edges(); })

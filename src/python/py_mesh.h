@@ -40,6 +40,10 @@ struct PositionsPin {
     memory::Array<Vec3> detached;
 };
 
+/// What a step selected, as the Python methods return it: a vertex or face index, an edge as
+/// its two vertex indices, or None.
+pybind11::object element_of(const Mesh& mesh, const ElementRef& element);
+
 /// Detaches the live `V` views of `mesh` (see PositionsPin). Call before every edit.
 void release_views(PyMesh& mesh);
 

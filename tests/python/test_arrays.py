@@ -110,3 +110,17 @@ def test_a_view_kept_across_edits_stays_readable():
     doc.undo()
     doc.redo()
     assert view.shape[1] == 3 and np.isfinite(view).all()
+
+
+def test_normals_and_creases(sample):
+    mesh = meshedit.read(sample("cube.dae"))
+    normals = mesh.vertex_normals()
+    assert normals.shape == (8, 3)
+    assert np.allclose(np.linalg.norm(normals, axis=1), 1)
+    assert ((normals * mesh.V).sum(axis=1) > 0.5).all()  # outward: the cube is centred on 0
+    faces = mesh.face_normals()
+    assert faces.shape == (12, 3) and np.allclose(np.abs(faces).sum(axis=1), 1)
+    assert mesh.creases().shape == (0, 2)
+    mesh.crease(0, 6)
+    assert sorted(mesh.creases()[0]) == [0, 6]
+    assert meshedit.read(sample("creased.dae")).creases().shape[0] > 0

@@ -17,7 +17,7 @@ def same(a, b):
 def test_undo_redo_local_and_whole_mesh_steps(sample):
     doc = meshedit.Document(meshedit.read(sample("cube.dae")))
     states = [state(doc.mesh)]
-    doc.flip(0, 6)
+    assert doc.flip(0, 6) == (4, 2)  # what the step selected, as Mesh methods return it
     states.append(state(doc.mesh))
     doc.apply("split:0-1,poke:f3")
     states.append(state(doc.mesh))

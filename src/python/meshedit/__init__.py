@@ -161,21 +161,17 @@ def _verb_method(name, run):
     return method
 
 
-def _run_on_mesh(mesh, text):
-    selected, notices = mesh._step(text)
+def _run_step(target, text):
+    """Runs one step on a Mesh or a Document; returns what it selected, warns its notices."""
+    selected, notices = target._step(text)
     for notice in notices:
         _warnings.warn(notice, Notice, stacklevel=3)
     return selected
 
 
-def _run_on_document(document, text):
-    for notice in document.apply(text):
-        _warnings.warn(notice, Notice, stacklevel=3)
-
-
 for _name in _VERBS:
-    setattr(Mesh, _name, _verb_method(_name, _run_on_mesh))
-    setattr(Document, _name, _verb_method(_name, _run_on_document))
+    setattr(Mesh, _name, _verb_method(_name, _run_step))
+    setattr(Document, _name, _verb_method(_name, _run_step))
 
 
 def _subdivide(self, levels=1, scheme="loop"):
