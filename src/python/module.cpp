@@ -20,6 +20,7 @@
 #include "meshedit/core/validate.h"
 #include "meshedit/files/files.h"
 #include "meshedit/files/io_error.h"
+#include "meshedit/io/document.h"
 #include "meshedit/io/io.h"
 #include "meshedit/ops/ops.h"
 #include "py_arrays.h"
@@ -64,9 +65,22 @@ std::vector<std::string> lines_of(const std::string& text) {
     return out;
 }
 
-PyMesh read_path(const std::filesystem::path& path) {
-    LoadedMesh loaded = read_mesh(path);
+// A mesh file, or a .bez file's welded tessellation (as `meshedit info` reads it).
+PyMesh read_path(const std::filesystem::path& path, int density) {
+    if (density < 1 || density > 256) {
+        throw py::value_error("density: expected 1 to 256, got " + std::to_string(density));
+    }
+    ReadOptions options;
+    options.density = density;
+    LoadedDocument loaded = read_document(path, options);
+    if (loaded.kind == DocumentKind::Curve) {
+        throw IoError(path.string(), "", "a Bezier curve, not a mesh");
+    }
     PyMesh out(std::move(loaded.mesh), std::move(loaded.notices));
+    if (loaded.kind == DocumentKind::Surface) {
+        out.notices.push_back("tessellated " + std::to_string(loaded.patches.size()) +
+                              " Bezier patches at density " + std::to_string(density));
+    }
     for (std::string& line : lines_of(loaded.repairs.summary())) {
         out.notices.push_back(std::move(line));
     }
@@ -232,6 +246,7 @@ using namespace meshedit::python;
 
 PYBIND11_MODULE(_meshedit, m) {
     m.doc() = "MeshEdit's halfedge meshes, file formats and edit language (docs/python.md)";
+    m.attr("__version__") = MESHEDIT_VERSION;
 
     // IoError is an OSError; Refused a RuntimeError; BadStep and SyntaxError ValueErrors.
     static py::exception<IoError> io_error(m, "IoError", PyExc_OSError);
@@ -333,7 +348,7 @@ PYBIND11_MODULE(_meshedit, m) {
                    " F=" + std::to_string(self.mesh.n_faces()) + ">";
         });
 
-    m.def("read", &read_path, py::arg("path"),
+    m.def("read", &read_path, py::arg("path"), py::arg("density") = 8,
           "Reads a mesh file (.dae .gltf .glb .obj .off .ply .stl).");
     m.def("verbs", &verb_table, "The edit language's verb table.");
     m.def("field_names", [] {

@@ -82,3 +82,20 @@ def test_write_to_a_bad_place_raises(sample, tmp_path):
         mesh.write(tmp_path / "no_such_folder" / "cube.obj")
     with pytest.raises(meshedit.IoError):
         mesh.write(tmp_path / "cube.xyz")
+
+
+def test_bezier_patches_read_as_their_tessellation(cli):
+    from conftest import SOURCE
+    import json
+    mesh = meshedit.read(SOURCE / "bez" / "teapot.bez", density=4)
+    status, out, _ = cli("info", SOURCE / "bez" / "teapot.bez", "--json", "--density", "4")
+    assert status == 0
+    assert mesh.info()["vertices"] == json.loads(out)["vertices"]
+    assert any("Bezier patches at density 4" in line for line in mesh.notices)
+    with pytest.raises(ValueError, match="density: expected 1 to 256"):
+        meshedit.read(SOURCE / "bez" / "teapot.bez", density=0)
+    curves = sorted((SOURCE / "bez").glob("*.bzc"))
+    if curves:
+        with pytest.raises(meshedit.IoError, match="a Bezier curve, not a mesh"):
+            meshedit.read(curves[0])
+    assert meshedit.__version__.count(".") == 2

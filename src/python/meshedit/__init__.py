@@ -22,6 +22,7 @@ from ._meshedit import (  # noqa: F401
     Mesh,
     Refused,
     SyntaxError,
+    __version__,
     amount_text,
     field_names,
     read,
