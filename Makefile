@@ -33,8 +33,13 @@ run: programs
 	@./scripts/run.sh $(BUILD_DIR)
 
 # The programs and their shaders into PREFIX (default ~/.local: bin/ is on Debian's PATH once
-# it exists, after logging in again).
+# it exists, after logging in again), with the C++ library (headers, static libraries, CMake
+# package, meshedit.pc) and the Python module (docs/python.md), which is built here too.
+LIBRARY_TARGETS := meshedit_python
 install: programs
+	targets=$$(cmake --build $(BUILD_DIR) --target help | sed -n 's/: phony$$//p' | \
+	    grep -xF $(addprefix -e ,$(LIBRARY_TARGETS))); \
+	    if [ -n "$$targets" ]; then cmake --build $(BUILD_DIR) -j $(JOBS) --target $$targets; fi
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 	@case ":$$PATH:" in *":$(PREFIX)/bin:"*) ;; \
 	    *) echo "make install: add $(PREFIX)/bin to PATH to run meshedit by name";; esac
@@ -68,7 +73,7 @@ test-clang:
 # programs in Release (only those; a program not declared yet is skipped by run_bench.py) and
 # writes docs/performance.md. BENCH_BUDGET bounds the measurements (seconds; whatever is left
 # is reported as skipped), so that build + run stays under 20 minutes on 2 cores.
-BENCH_TARGETS ?= bench_loop bench_ops bench_io_draw bench_build bench_local_ops bench_catmark bench_simplify bench_remesh bench_editor
+BENCH_TARGETS ?= bench_loop bench_ops bench_io_draw bench_build bench_local_ops bench_catmark bench_simplify bench_remesh bench_editor meshedit_python
 BENCH_BUDGET  ?= 1200
 bench:
 	./scripts/install-deps.sh --bench

@@ -28,6 +28,10 @@ import time
 
 # Default configurations when a program does not answer --list.
 DEFAULT_CONFIGS = {
+    "bench_python": [("py_from_arrays_1m", i) for i in ("meshedit", "numpy_copy", "open3d")]
+    + [("py_positions_1m", i) for i in ("view", "copy")]
+    + [("py_flip_1000", i) for i in ("python_calls", "one_apply")]
+    + [("py_read_ply_1m", i) for i in ("meshedit", "numpy", "open3d")],
     "bench_loop": [
         (job, impl)
         for job in ["loop_1m_1level"]
@@ -67,7 +71,7 @@ DEFAULT_CONFIGS = {
     ],
 }
 PROGRAMS = ["bench_loop", "bench_catmark", "bench_simplify", "bench_remesh", "bench_ops",
-            "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor"]
+            "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor", "bench_python"]
 QEM_JOBS = ("qem_torus_1m_to_100k", "qem_bunny_1m_to_100k")
 BUILD_SIZES = ("100k", "300k", "1m")
 # bench_local_ops (issue 16): no anchor, no target; the cost per op at each size, side by side.
@@ -90,6 +94,15 @@ WARM_JOBS = (["loop_1m_1level"] + [f"loop_100k_levels_{k}" for k in range(1, 5)]
 PREPARE = {"bench_io_draw": ["--generate"]}
 
 JOB_TITLES = {
+    "py_from_arrays_1m": "Python: Mesh.from_arrays() of a 1M-triangle torus (numpy arrays in; "
+    "numpy_copy: copying the two arrays, the floor of any conversion; open3d: a TriangleMesh, "
+    "no halfedges)",
+    "py_positions_1m": "Python: mesh.V on 1M triangles (view: no copy) against np.array(mesh.V)",
+    "py_flip_1000": "Python: 1000 flips on a 100k-triangle torus, one mesh.flip() call each "
+    "against one mesh.apply() of the same 1000 steps (parsed and run in C++); the difference / "
+    "1000 is Python's cost per call",
+    "py_read_ply_1m": "Python: reading a 1M-triangle binary PLY: meshedit.read() (with the "
+    "halfedge build), numpy alone (the body as structured arrays, no mesh), Open3D",
     "loop_1m_1level": "Loop subdivision, 1 level, 1M-face torus (→ 4M faces)",
     "cc_1m_1level": "Catmull-Clark, 1 level, a closed torus of 1M quads (→ 4M quads)",
     **{f"cc_100k_levels_{k}": f"Catmull-Clark, {k} level(s), a closed torus of 99,825 faces "

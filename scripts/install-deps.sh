@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Installs every Debian package MeshEdit needs to build and test (OpenSubdiv is the tests'
 # subdivision oracle; libcgal-demo holds the scanned bunny of the simplify and remesh golden
-# images); with --bench also the other benchmark anchors (OpenMesh, CGAL, Eigen for its quadric
-# policies, Assimp, meshoptimizer) and perf, which only `make bench` needs; with --fuzz clang
-# and its libFuzzer runtime (`make fuzz`); with --clang clang alone (`make test-clang`).
-# Idempotent: when everything is present it only runs dpkg queries (well under a second).
+# images; pybind11, numpy and pytest build and test the Python module); with --bench also the
+# other benchmark anchors (OpenMesh, CGAL, Eigen for its quadric policies, Assimp,
+# meshoptimizer, Open3D for the Python rows) and perf, which only `make bench` needs; with
+# --fuzz clang and its libFuzzer runtime (`make fuzz`); with --clang clang alone (`make
+# test-clang`). Idempotent: when everything is present it only runs dpkg queries (well under a
+# second).
 set -euo pipefail
 
 bench=0
@@ -29,6 +31,7 @@ packages=(
     libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri
     libosd-dev libcgal-demo
     fonts-dejavu-core xvfb xdotool imagemagick x11-utils
+    pybind11-dev python3-dev python3-numpy python3-pytest
 )
 if [ "$fuzz" -eq 1 ]; then
     packages+=(clang libclang-rt-14-dev)
@@ -37,7 +40,7 @@ if [ "$clang" -eq 1 ]; then
     packages+=(clang)
 fi
 if [ "$bench" -eq 1 ]; then
-    packages+=(libopenmesh-dev libcgal-dev libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf)
+    packages+=(libopenmesh-dev libcgal-dev libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf python3-open3d)
 fi
 
 missing=()

@@ -25,6 +25,7 @@ set(rules
     "cli (meshedit)|^src/cli/|^(core|bezier|files|io|ops)/|^(CLI/CLI\\.hpp|nlohmann/json\\.hpp|unistd\\.h)$"
     "headless (meshedit-render)|^src/headless/|^(core|bezier|files|io|ops|render)/|^(CLI/CLI\\.hpp|GL/osmesa\\.h|GL/glcorearb\\.h|EGL/egl(ext)?\\.h|dlfcn\\.h)$"
     "tools|^tools/|^(core|bezier|files|io|ops)/|^$"
+    "python (the meshedit module)|^src/python/|^(core|bezier|files|io|ops)/|^pybind11/.*$"
 )
 
 # The floors of src/core, lowest first (src/core/CMakeLists.txt).
