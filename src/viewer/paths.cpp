@@ -42,7 +42,18 @@ std::string prompt_start(const fs::path& document, bool save_as) {
 }
 
 fs::path resolve_prompt_path(const std::string& text, const fs::path& folder) {
-    const fs::path path = expand_home(text);
+    // The prompt starts filled with a folder ending in '/'. A path typed after it without
+    // clearing it (Ctrl+A lost at a low frame rate, or simply not pressed) reads
+    // "<folder>//abs/path" or "<folder>/~/path": the typed absolute path is what was meant,
+    // as in a shell, where "//" never separates two real folder names.
+    std::string typed = text;
+    if (const std::size_t doubled = typed.rfind("//"); doubled != std::string::npos) {
+        typed.erase(0, doubled + 1);
+    }
+    if (const std::size_t home = typed.rfind("/~/"); home != std::string::npos) {
+        typed.erase(0, home + 1);
+    }
+    const fs::path path = expand_home(typed);
     return (path.is_absolute() ? path : folder / path).lexically_normal();
 }
 

@@ -36,6 +36,12 @@ TEST(PromptPaths, RelativeHomeAndDotsResolve) {
               fs::path("/data/models/teapot.dae"));
     EXPECT_EQ(resolve_prompt_path("a/../b/../c.obj", "/data"), fs::path("/data/c.obj"));
     EXPECT_EQ(resolve_prompt_path("/abs/./x.obj", "/data"), fs::path("/abs/x.obj"));
+    // An absolute path typed after the prefilled folder replaces it (a lost Ctrl+A).
+    EXPECT_EQ(resolve_prompt_path("/data/models//tmp/w/ico.dae", "/data/models"),
+              fs::path("/tmp/w/ico.dae"));
+    EXPECT_EQ(resolve_prompt_path(prompt_start("/data/models/x.dae", false) + "/tmp/ico.dae",
+                                  "/data/models"),
+              fs::path("/tmp/ico.dae"));
     const char* home = std::getenv("HOME");
     ASSERT_NE(home, nullptr);
     EXPECT_EQ(resolve_prompt_path("~/m.dae", "/data"), fs::path(home) / "m.dae");

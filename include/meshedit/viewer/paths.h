@@ -17,7 +17,8 @@ std::string prompt_start(const std::filesystem::path& document, bool save_as);
 
 /// What a prompt's text names: a leading `~` is the home folder, a relative path is taken
 /// relative to `folder` (the folder the prompt started in), and `.` and `..` are resolved
-/// ("a/../b/./c" → "b/c").
+/// ("a/../b/./c" → "b/c"). An absolute path typed after the prompt's folder without clearing
+/// it ("/data//tmp/x.obj", "/data/~/x.obj") replaces the folder.
 std::filesystem::path resolve_prompt_path(const std::string& text,
                                           const std::filesystem::path& folder);
 
