@@ -6,7 +6,8 @@
 # meshoptimizer, Open3D for the Python rows) and perf, which only `make bench` needs; with
 # --fuzz clang and its libFuzzer runtime (`make fuzz`); with --clang clang alone (`make
 # test-clang`). Idempotent: when everything is present it only runs dpkg queries (well under a
-# second).
+# second). Without apt-get it prints the package names for dnf, pacman or Homebrew and stops
+# (docs/building.md).
 set -euo pipefail
 
 bench=0
@@ -41,6 +42,25 @@ if [ "$clang" -eq 1 ]; then
 fi
 if [ "$bench" -eq 1 ]; then
     packages+=(libopenmesh-dev libcgal-dev libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf python3-open3d)
+fi
+
+# Not Debian or Ubuntu: name the packages for the manager found (a best effort, untested here;
+# docs/building.md lists every dependency) and stop. CMake names whatever is still missing.
+if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
+    if command -v dnf >/dev/null 2>&1; then
+        echo "install-deps: this is not Debian; on Fedora install:" >&2
+        echo "  sudo dnf install gcc-c++ cmake ninja-build pkgconf-pkg-config gtest-devel gmock-devel google-benchmark-devel clang-tools-extra pugixml-devel tinygltf-devel json-devel cli11-devel mesa-libOSMesa-devel libglvnd-devel mesa-libEGL-devel glm-devel OpenImageIO-devel glfw-devel imgui-devel stb-devel opensubdiv-devel dejavu-sans-fonts xorg-x11-server-Xvfb xdotool ImageMagick xorg-x11-utils pybind11-devel python3-devel python3-numpy python3-pytest" >&2
+    elif command -v pacman >/dev/null 2>&1; then
+        echo "install-deps: this is not Debian; on Arch install:" >&2
+        echo "  sudo pacman -S --needed base-devel cmake ninja pkgconf gtest benchmark clang pugixml tinygltf nlohmann-json cli11 mesa libglvnd glm openimageio glfw imgui opensubdiv ttf-dejavu xorg-server-xvfb xdotool imagemagick xorg-xdpyinfo pybind11 python-numpy python-pytest" >&2
+    elif command -v brew >/dev/null 2>&1; then
+        echo "install-deps: this is not Debian; with Homebrew install:" >&2
+        echo "  brew install cmake ninja pkg-config googletest google-benchmark clang-format pugixml nlohmann-json cli11 mesa glm openimageio glfw opensubdiv pybind11 numpy" >&2
+        echo "  (tinygltf, Dear ImGui and stb: from their sources; EGL/OSMesa headless rendering needs Mesa)" >&2
+    else
+        echo "install-deps: no apt-get, dnf, pacman or brew found; docs/building.md lists what MeshEdit needs" >&2
+    fi
+    exit 1
 fi
 
 missing=()

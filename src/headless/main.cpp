@@ -237,6 +237,7 @@ int run(const Options& options) {
                      context->backend().c_str(), headless::gl_description().c_str());
         std::fprintf(stderr, "meshedit-render: shaders from %s\n",
                      shader_directory().string().c_str());
+        std::fprintf(stderr, "meshedit-render: font from %s\n", label_font().string().c_str());
     }
     RenderTarget target(w, h, options.samples);
     target.bind();

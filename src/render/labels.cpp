@@ -6,10 +6,12 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "meshedit/files/files.h"
 
@@ -50,14 +52,34 @@ std::string oiio_safe(const std::string& text) {
 
 }  // namespace
 
+std::filesystem::path label_font() {
+    std::vector<std::filesystem::path> candidates;
+    if (const char* env = std::getenv("MESHEDIT_FONT"); env != nullptr && *env != '\0') {
+        candidates.emplace_back(env);
+    }
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        candidates.push_back(self.parent_path().parent_path() / "share" / "meshedit" / "fonts" /
+                             "DejaVuSans.ttf");
+    }
+    candidates.emplace_back("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+    for (const auto& path : candidates) {
+        if (std::filesystem::is_regular_file(path, ec)) {
+            return path;
+        }
+    }
+    return candidates.back();
+}
+
 void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, const Camera& camera,
                  int font_px) {
     if (labels.empty()) {
         return;
     }
-    if (!std::filesystem::exists(kLabelFont)) {
-        throw IoError(kLabelFont, "",
-                      "the labels' font is missing (apt-get install fonts-dejavu-core)");
+    const std::string font = label_font().string();
+    if (!std::filesystem::exists(font)) {
+        throw IoError(font, "", "the labels' font is missing (apt-get install fonts-dejavu-core)");
     }
     namespace OIIO = OIIO_NAMESPACE;
     const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
@@ -72,9 +94,9 @@ void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, cons
         }
         // Light text on a translucent dark box: readable on any shading.
         const std::string text = oiio_safe(label.text);
-        const OIIO::ROI box = OIIO::ImageBufAlgo::text_size(text, font_px, kLabelFont);
+        const OIIO::ROI box = OIIO::ImageBufAlgo::text_size(text, font_px, font);
         if (!box.defined()) {
-            throw IoError(kLabelFont, "", "cannot measure text: " + OIIO::geterror());
+            throw IoError(font, "", "cannot measure text: " + OIIO::geterror());
         }
         const int gap = font_px / 2;
         const int ax = static_cast<int>(std::lround(at->x));
@@ -93,23 +115,22 @@ void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, cons
                                          0.5f + 0.5f * label.color[2], 1.0f};
         if (!OIIO::ImageBufAlgo::render_box(buffer, x + box.xbegin - pad, y + box.ybegin - pad,
                                             x + box.xend + pad, y + box.yend + pad, shade, true) ||
-            !OIIO::ImageBufAlgo::render_text(buffer, x, y, text, font_px, kLabelFont, color)) {
-            throw IoError(kLabelFont, "", "cannot draw text: " + buffer.geterror());
+            !OIIO::ImageBufAlgo::render_text(buffer, x, y, text, font_px, font, color)) {
+            throw IoError(font, "", "cannot draw text: " + buffer.geterror());
         }
     }
 }
 
 void draw_legend(Image& image, const FieldColoring& coloring, const std::string& title) {
-    if (!std::filesystem::exists(kLabelFont)) {
-        throw IoError(kLabelFont, "",
-                      "the legend's font is missing (apt-get install fonts-dejavu-core)");
+    const std::string font = label_font().string();
+    if (!std::filesystem::exists(font)) {
+        throw IoError(font, "", "the legend's font is missing (apt-get install fonts-dejavu-core)");
     }
     namespace OIIO = OIIO_NAMESPACE;
     const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
     OIIO::ImageBuf buffer(spec, image.rgba.data());
     const int font_px = std::max(12, image.height / 32);
-    const OIIO::ROI title_box =
-        OIIO::ImageBufAlgo::text_size(oiio_safe(title), font_px, kLabelFont);
+    const OIIO::ROI title_box = OIIO::ImageBufAlgo::text_size(oiio_safe(title), font_px, font);
     const int bar_w = std::max({60, image.width / 4, title_box.defined() ? title_box.xend : 0});
     const int bar_h = std::max(8, font_px * 2 / 3);
     const int margin = font_px;
@@ -141,14 +162,14 @@ void draw_legend(Image& image, const FieldColoring& coloring, const std::string&
         return std::string(text);
     };
     const std::string lo = value(coloring.lo), hi = value(coloring.hi);
-    const OIIO::ROI hi_box = OIIO::ImageBufAlgo::text_size(hi, font_px, kLabelFont);
+    const OIIO::ROI hi_box = OIIO::ImageBufAlgo::text_size(hi, font_px, font);
     const int below = y0 + bar_h + font_px;
     if (!OIIO::ImageBufAlgo::render_text(buffer, x0, y0 - font_px / 2, oiio_safe(title), font_px,
-                                         kLabelFont, ink) ||
-        !OIIO::ImageBufAlgo::render_text(buffer, x0, below, lo, font_px, kLabelFont, ink) ||
+                                         font, ink) ||
+        !OIIO::ImageBufAlgo::render_text(buffer, x0, below, lo, font_px, font, ink) ||
         !OIIO::ImageBufAlgo::render_text(buffer, x0 + bar_w - (hi_box.defined() ? hi_box.xend : 0),
-                                         below, hi, font_px, kLabelFont, ink)) {
-        throw IoError(kLabelFont, "", "cannot draw text: " + buffer.geterror());
+                                         below, hi, font_px, font, ink)) {
+        throw IoError(font, "", "cannot draw text: " + buffer.geterror());
     }
 }
 

@@ -17,6 +17,7 @@
 
 #include "meshedit/files/io_error.h"
 #include "meshedit/render/image.h"
+#include "meshedit/render/labels.h"
 #include "meshedit/render/overlay.h"
 #include "meshedit/render/user_shaders.h"
 #include "meshedit/viewer/paths.h"
@@ -41,7 +42,7 @@ App& app_of(GLFWwindow* window) {
     return *static_cast<App*>(glfwGetWindowUserPointer(window));
 }
 
-// DejaVu Sans (Debian's fonts-dejavu-core) for arrows and dashes in the panels; ImGui's
+// DejaVu Sans (render/labels.h: label_font()) for arrows and dashes in the panels; ImGui's
 // built-in font is ASCII only and stays the fallback.
 void load_ui_font(float scale) {
     static const ImWchar ranges[] = {0x0020, 0x00FF,  // Latin-1
@@ -49,10 +50,10 @@ void load_ui_font(float scale) {
                                      0x2190, 0x21FF,  // arrows
                                      0x2200, 0x22FF,  // maths (≤, ×)
                                      0};
-    const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    const std::string path = label_font().string();  // installed beside the program, or Debian's
     ImGuiIO& io = ImGui::GetIO();
     if (std::filesystem::exists(path) &&
-        io.Fonts->AddFontFromFileTTF(path, 15.0f * scale, nullptr, ranges) != nullptr) {
+        io.Fonts->AddFontFromFileTTF(path.c_str(), 15.0f * scale, nullptr, ranges) != nullptr) {
         return;
     }
     ImFontConfig config;
