@@ -1,10 +1,10 @@
 // Number formatting, notices and input loading shared by the subcommands.
 
-#include <charconv>
 #include <cstdio>
 
 #include "cli.h"
 #include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/number_text.h"
 #include "meshedit/io/io.h"
 
 namespace meshedit::cli {
@@ -13,9 +13,7 @@ std::string format_number(double x) {
     if (x == 0.0) {
         return "0";  // also for -0, which would only confuse readers
     }
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return ec == std::errc() ? std::string(buffer, end) : std::to_string(x);
+    return number_text(x);
 }
 
 void print_notice(const std::string& text) {

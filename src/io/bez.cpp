@@ -261,7 +261,7 @@ std::string coordinates(const std::string& file, const std::string& what, const 
         if (k > 0) {
             line += ' ';
         }
-        line += io_util::format_double(p[k]);
+        line += number_text(p[k]);
     }
     return line + "\n";
 }

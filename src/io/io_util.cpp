@@ -48,12 +48,6 @@ std::optional<double> parse_double(std::string_view token) {
     return x;
 }
 
-std::string format_double(double value) {
-    char buf[32];
-    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
-    return ec == std::errc() ? std::string(buf, end) : std::string("nan");
-}
-
 const Mesh& compacted(const Mesh& mesh, std::optional<Mesh>& storage) {
     if (!mesh.has_garbage()) {
         return mesh;

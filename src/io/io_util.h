@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/number_text.h"  // every writer spells doubles this way
 #include "meshedit/files/files.h"
 
 namespace meshedit::io_util {
@@ -24,9 +25,6 @@ std::string_view next_token(std::string_view& line);
 /// `token` as a double (a leading '+' allowed, as some exporters write it); nullopt unless the
 /// whole token is one number.
 std::optional<double> parse_double(std::string_view token);
-
-/// Shortest decimal text that reads back as exactly `value` (std::to_chars).
-std::string format_double(double value);
 
 /// `mesh` itself when it has dense indices, else a garbage-collected copy kept in `storage`.
 /// Writers need dense indices because files number vertices 0…n−1.

@@ -252,7 +252,7 @@ void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
         text += key;
         for (int i = 0; i < 3; ++i) {
             text += ' ';
-            text += io_util::format_double(p[i]);
+            text += number_text(p[i]);
         }
         text += '\n';
     };

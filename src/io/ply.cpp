@@ -747,11 +747,11 @@ void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
     for (std::size_t v = 0; v < soup.positions.size(); ++v) {
         const Vec3& p = soup.positions[v];
         if (flags.ascii) {
-            out += io_util::format_double(p.x) + ' ' + io_util::format_double(p.y) + ' ' +
-                   io_util::format_double(p.z);
+            out += number_text(p.x) + ' ' + number_text(p.y) + ' ' +
+                   number_text(p.z);
             if (flags.write_normals) {
                 for (int c = 0; c < 3; ++c) {
-                    out += ' ' + io_util::format_double(static_cast<float>(normals[v][c]));
+                    out += ' ' + number_text(static_cast<float>(normals[v][c]));
                 }
             }
             out += '\n';

@@ -362,7 +362,7 @@ void write_stl(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
         out.append(reinterpret_cast<const char*>(&le), 4);
     }
     // ASCII is written as the exact decimal of each float, so both kinds read back the same.
-    const auto text = [](float x) { return io_util::format_double(x); };
+    const auto text = [](float x) { return number_text(x); };
     for (std::size_t f = 0; f < soup.n_faces(); ++f) {
         const std::uint32_t first = soup.face_offsets[f];
         for (std::uint32_t c = first + 1; c + 1 < soup.face_offsets[f + 1]; ++c) {

@@ -10,16 +10,14 @@
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/normals.h"
+#include "meshedit/core/number_text.h"
 #include "meshedit/io/collada.h"
 
 namespace meshedit {
 namespace {
 
-// Shortest text that parses back to the same double (std::to_chars guarantees it).
 void append_number(std::string& out, double value) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    out.append(buffer, result.ptr);
+    append_number_text(out, value);
 }
 
 void append_number(std::string& out, std::uint64_t value) {

@@ -193,12 +193,6 @@ Edge edge_between(const Mesh& mesh, const Step& step, std::uint32_t a, std::uint
 
 }  // namespace
 
-std::string amount_text(double x) {
-    char buffer[32];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return std::string(buffer, ec == std::errc() ? end : buffer);
-}
-
 bool Verb::accepts(Target target) const {
     switch (target) {
         case Target::None:
@@ -401,7 +395,7 @@ Step make_step(std::string_view name, const Mesh& mesh, const ElementRef& target
     // Every amount is written (defaults too) so the text says exactly what ran.
     for (std::size_t i = 0; i < step.verb->max_amounts; ++i) {
         text += i == 0 ? ':' : ',';
-        text += amount_text(step.amounts[i]);
+        text += number_text(step.amounts[i]);
     }
     step.text = std::move(text);
     return step;
@@ -443,6 +437,10 @@ ElementRef named_element(const Mesh& mesh, const Step& step) {
             break;
     }
     return {};
+}
+
+bool draws_diagram(const Step& step) {
+    return step.target != Target::None && (step.verb->traits & kDrawsDiagram) != 0;
 }
 
 StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options) {

@@ -174,8 +174,8 @@ std::string check_extrude(const Mesh& mesh, const Step& step) {
 StepResult run_extrude(Mesh& mesh, const Step& step, const RunOptions&) {
     const Face f = *extrude_face(mesh, named_face(mesh, step), step.amounts[0], step.amounts[1]);
     return local(ElementRef::face(f), "extruded face " + idx(f.idx()) + " by " +
-                                          amount_text(step.amounts[0]) + ", shrink " +
-                                          amount_text(step.amounts[1]));
+                                          number_text(step.amounts[0]) + ", shrink " +
+                                          number_text(step.amounts[1]));
 }
 
 std::string check_inset(const Mesh& mesh, const Step& step) {
@@ -184,7 +184,7 @@ std::string check_inset(const Mesh& mesh, const Step& step) {
 StepResult run_inset(Mesh& mesh, const Step& step, const RunOptions&) {
     const Face f = *inset_face(mesh, named_face(mesh, step), step.amounts[0]);
     return local(ElementRef::face(f),
-                 "inset face " + idx(f.idx()) + ", shrink " + amount_text(step.amounts[0]));
+                 "inset face " + idx(f.idx()) + ", shrink " + number_text(step.amounts[0]));
 }
 
 std::string check_bevel(const Mesh& mesh, const Step& step) {
@@ -200,7 +200,7 @@ StepResult run_bevel(Mesh& mesh, const Step& step, const RunOptions&) {
         vertex ? "vertex " + idx(step.a) : "edge " + idx(named_edge(mesh, step).idx());
     const Face f = vertex ? *bevel_vertex(mesh, named_vertex(mesh, step), t)
                           : *bevel_edge(mesh, named_edge(mesh, step), t);
-    return local(ElementRef::face(f), "bevelled " + what + " at " + amount_text(t) +
+    return local(ElementRef::face(f), "bevelled " + what + " at " + number_text(t) +
                                           ": a new face of " + corners(mesh, f) + " (selected)");
 }
 
@@ -238,8 +238,8 @@ StepResult run_move(Mesh& mesh, const Step& step, const RunOptions&) {
     const Vertex v = named_vertex(mesh, step);
     mesh.position(v) = {step.amounts[0], step.amounts[1], step.amounts[2]};
     return local(ElementRef::vertex(v),
-                 "moved vertex " + idx(v.idx()) + " to (" + amount_text(step.amounts[0]) + ", " +
-                     amount_text(step.amounts[1]) + ", " + amount_text(step.amounts[2]) + ")");
+                 "moved vertex " + idx(v.idx()) + " to (" + number_text(step.amounts[0]) + ", " +
+                     number_text(step.amounts[1]) + ", " + number_text(step.amounts[2]) + ")");
 }
 
 // ------------------------------------------------------------------ whole-mesh operations
@@ -389,7 +389,7 @@ std::string check_simplify_step(const Mesh& mesh, const Step& step) {
     const double ratio = step.amounts[0];
     if (!(ratio > 0.0 && ratio < 1.0)) {
         return "cannot simplify: the ratio of faces to keep must be above 0 and below 1, not " +
-               amount_text(ratio);
+               number_text(ratio);
     }
     return check_simplify(mesh, simplify_options(mesh, step));
 }
@@ -422,7 +422,7 @@ std::string check_remesh_step(const Mesh& mesh, const Step& step) {
     const double n = step.amounts[1];
     if (!(n >= 1 && n <= 100) || n != std::floor(n)) {
         return "cannot remesh: iterations must be a whole number from 1 to 100, not " +
-               amount_text(n);
+               number_text(n);
     }
     return check_remesh(mesh, remesh_options(step));
 }
@@ -539,11 +539,12 @@ constexpr std::array kVerbs{
          "bevel the selected vertex or edge (drag: the amount)", check_bevel, run_bevel},
     Verb{"crease", kEdgeArg, 0, 0, kNoDefaults, "crease:A-B",
          "toggles the `e:crease` mark of A-B (kept by COLLADA, used by Loop)",
-         "toggle crease on the selected edge", check_crease, run_crease},
+         "toggle crease on the selected edge", check_crease, run_crease, nullptr, false, 0},
     Verb{"move", kVertexArg, 3, 3, kNoDefaults, "move:vI:X,Y,Z",
          "puts vertex I at (X, Y, Z) (the viewer records drags and move, rotate and scale "
          "this way)",
-         "drag the selected vertex (M moves a selection)", check_move, run_move},
+         "drag the selected vertex (M moves a selection)", check_move, run_move, nullptr, false,
+         0},
     Verb{"loop", kWholeMesh | kLevels, 0, 0, kNoDefaults, "loop, loop:K",
          "K levels (default 1) of Loop subdivision (Warren weights) of a triangle mesh; old "
          "vertices keep their indices, the vertex on old edge `e` gets index `V + e`",

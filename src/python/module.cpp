@@ -358,6 +358,6 @@ PYBIND11_MODULE(_meshedit, m) {
         }
         return names;
     });
-    m.def("amount_text", &ops::amount_text);
+    m.def("amount_text", &meshedit::number_text);
     bind_document(m);
 }

@@ -22,6 +22,7 @@
 
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/number_text.h"  // amounts are written as number_text() writes them
 #include "meshedit/core/subdivision.h"
 
 namespace meshedit::ops {
@@ -40,6 +41,14 @@ enum Arg : unsigned {
 enum class Target { None, Vertex, Edge, Face, EdgePair };
 
 struct Verb;
+
+/// What the programs need to know of a verb beyond running it (Verb::traits), so that no
+/// program compares verb names.
+enum Trait : unsigned {
+    kChangesTopology = 1u << 0,  ///< makes, deletes or relinks elements (crease and move do not)
+    kDrawsDiagram = 1u << 1,     ///< naming an element, its rewiring diagram is drawn
+    kDefaultTraits = kChangesTopology | kDrawsDiagram,
+};
 
 /// At most this many numbers follow a step's element (`extrude:f7:0.2,0.9`).
 inline constexpr std::size_t kMaxAmounts = 3;
@@ -106,6 +115,8 @@ struct Verb {
     /// Whether the verb's count is of phases of a level (`loop_step:N`: four phases make one
     /// level) rather than of levels, for planning a list.
     bool phases = false;
+    /// A mask of Trait.
+    unsigned traits = kDefaultTraits;
 
     bool accepts(Target target) const;
 };
@@ -166,6 +177,10 @@ Edge named_second_edge(const Mesh& mesh, const Step& step);
 /// The element a step names (a weld: its first edge); none for whole-mesh steps.
 ElementRef named_element(const Mesh& mesh, const Step& step);
 
+/// Whether `step` gets a rewiring diagram (the viewer's Rewiring panel, `meshedit render
+/// --op-diagram`): a verb with kDrawsDiagram on an element.
+bool draws_diagram(const Step& step);
+
 /// Runs one step: check(), then run(). \throws OpError with "<step> refused: <reason>".
 StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options = {});
 
@@ -187,9 +202,6 @@ struct ApplyOptions {
 /// what the last step selected (its StepResult::selected): the result to show.
 ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps,
                        const ApplyOptions& options = {});
-
-/// An amount as the language writes it: the shortest text that reads back as the same double.
-std::string amount_text(double x);
 
 /// "flip:A-B split:A-B …" for a one-line usage.
 std::string syntax_list();
