@@ -68,10 +68,10 @@ std::optional<OpDiagram> run_ops(Mesh& mesh, const Options& options, ElementRef&
         result = ops::apply_steps(mesh, steps);
         return std::nullopt;
     }
-    if (steps.empty() || steps.back().target == ops::Target::None) {
+    if (steps.empty() || !ops::draws_diagram(steps.back())) {
         throw UsageError(
             "--op-diagram draws a local operation: the last step of --ops must name an element "
-            "(flip:A-B, split:A-B, collapse:A-B, dissolve:vI, …)");
+            "and change the connectivity (flip:A-B, split:A-B, collapse:A-B, dissolve:vI, …)");
     }
     const ops::Step last = steps.back();
     steps.pop_back();

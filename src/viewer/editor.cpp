@@ -216,11 +216,10 @@ std::optional<OpDiagram> rewiring_of(const Mesh& before, const Mesh& after,
     }
     try {
         const ops::Step step = ops::parse_step(steps.front());
-        const std::string_view verb = step.verb->name;
-        if (step.target == ops::Target::None || verb == "move" || verb == "crease") {
+        if (!ops::draws_diagram(step)) {
             return std::nullopt;
         }
-        return op_diagram(before, after, verb, ops::named_element(before, step));
+        return op_diagram(before, after, step.verb->name, ops::named_element(before, step));
     } catch (const std::exception&) {
         // A step the viewer wrote always parses and names a live element; whatever goes wrong
         // in drawing its diagram must not take the edit, which is done, down with it.

@@ -51,7 +51,7 @@ Outcome Editor::edit_mesh(std::string_view name) {
     if (steps.empty()) {
         return refused(hint);
     }
-    return edit_steps(steps, verb->name, verb->name != "crease");
+    return edit_steps(steps, verb->name, (verb->traits & ops::kChangesTopology) != 0);
 }
 
 Outcome Editor::delete_selection() {

@@ -249,3 +249,25 @@ TEST(OpsLanguage, HelpListsEveryVerb) {
 
 }  // namespace
 }  // namespace meshedit::ops
+
+namespace meshedit::ops {
+namespace {
+
+// The table, not the programs, knows which verbs change the connectivity and get a rewiring
+// diagram: a crease mark and a move do neither; whole-mesh steps get no diagram.
+TEST(VerbTraits, CreaseAndMoveKeepTheConnectivityAndDrawNoDiagram) {
+    for (const Verb& verb : verbs()) {
+        const bool keeps = verb.name == "crease" || verb.name == "move";
+        EXPECT_EQ((verb.traits & kChangesTopology) != 0, !keeps) << verb.name;
+        EXPECT_EQ((verb.traits & kDrawsDiagram) != 0, !keeps) << verb.name;
+    }
+    EXPECT_TRUE(draws_diagram(parse_step("flip:0-6")));
+    EXPECT_TRUE(draws_diagram(parse_step("dissolve:v3")));
+    EXPECT_FALSE(draws_diagram(parse_step("crease:0-6")));
+    EXPECT_FALSE(draws_diagram(parse_step("move:v2:0,0,1")));
+    EXPECT_FALSE(draws_diagram(parse_step("loop")));
+    EXPECT_FALSE(draws_diagram(parse_step("triangulate")));
+}
+
+}  // namespace
+}  // namespace meshedit::ops
