@@ -48,6 +48,7 @@ void exec_external(const std::string& command, char** argv) {
     }
     const std::filesystem::path tool = self.parent_path() / ("meshedit-" + command);
     if (::access(tool.c_str(), X_OK) == 0) {
+        ::setenv("MESHEDIT_CALLED_AS", "meshedit", 1);  // its messages say "meshedit:" too
         argv[1] = const_cast<char*>(tool.c_str());
         ::execv(tool.c_str(), argv + 1);
     }

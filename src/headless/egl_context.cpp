@@ -253,7 +253,7 @@ std::unique_ptr<GlContext> make_egl_context(const ContextRequest& request) {
         Candidate candidate{"device " + std::to_string(i) + ": " + what, EGL_PLATFORM_DEVICE_EXT,
                             devices[i]};
         if (request.verbose) {
-            std::fprintf(stderr, "meshedit-render: EGL %s\n", candidate.name.c_str());
+            std::fprintf(stderr, "%s: EGL %s\n", headless::program_name(), candidate.name.c_str());
         }
         (is_software ? software : hardware).push_back(candidate);
     }
@@ -295,7 +295,7 @@ std::unique_ptr<GlContext> make_egl_context(const ContextRequest& request) {
             return context;
         }
         if (request.verbose) {
-            std::fprintf(stderr, "meshedit-render: EGL %s\n", failure.c_str());
+            std::fprintf(stderr, "%s: EGL %s\n", headless::program_name(), failure.c_str());
         }
         failures += (failures.empty() ? "" : ", ") + failure;
     }

@@ -2,6 +2,8 @@
 
 #include "gl_context.h"
 
+#include <cstdlib>
+
 #include <GL/glcorearb.h>
 
 #include <algorithm>
@@ -15,6 +17,14 @@
 #endif
 
 namespace meshedit::headless {
+
+const char* program_name() {
+    static const std::string name = [] {
+        const char* called = std::getenv("MESHEDIT_CALLED_AS");
+        return std::string(called != nullptr && *called != '\0' ? called : "meshedit-render");
+    }();
+    return name.c_str();
+}
 
 namespace {
 
@@ -42,7 +52,7 @@ std::unique_ptr<GlContext> try_backend(Backend backend, const ContextRequest& re
                            "configured)");
     } catch (const ContextError& e) {
         if (request.verbose) {
-            std::fprintf(stderr, "meshedit-render: %s\n", e.what());
+            std::fprintf(stderr, "%s: %s\n", headless::program_name(), e.what());
         }
         failures += std::string(failures.empty() ? "" : "; ") + e.what();
     }

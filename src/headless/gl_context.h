@@ -13,6 +13,10 @@ namespace meshedit::headless {
 
 enum class Backend { Auto, Egl, OsMesa };
 
+/// The name messages start with: "meshedit" when `meshedit render` ran this program (it sets
+/// MESHEDIT_CALLED_AS), else "meshedit-render".
+const char* program_name();
+
 /// No context could be made (exit 2). The message says what was tried and what to install.
 class ContextError : public std::runtime_error {
 public:

@@ -103,7 +103,8 @@ int run(const Options& options) {
     Clock::time_point phase = Clock::now();
     auto lap = [&](const char* name) {
         if (options.timings) {
-            std::fprintf(stderr, "meshedit-render: %-9s %8.1f ms\n", name, ms_since(phase));
+            std::fprintf(stderr, "%s: %-9s %8.1f ms\n", headless::program_name(), name,
+                         ms_since(phase));
         }
         phase = Clock::now();
     };
@@ -233,11 +234,12 @@ int run(const Options& options) {
     request.verbose = options.verbose;
     const std::unique_ptr<headless::GlContext> context = headless::make_context(request);
     if (options.verbose) {
-        std::fprintf(stderr, "meshedit-render: backend %s, GL renderer %s\n",
+        std::fprintf(stderr, "%s: backend %s, GL renderer %s\n", headless::program_name(),
                      context->backend().c_str(), headless::gl_description().c_str());
-        std::fprintf(stderr, "meshedit-render: shaders from %s\n",
+        std::fprintf(stderr, "%s: shaders from %s\n", headless::program_name(),
                      shader_directory().string().c_str());
-        std::fprintf(stderr, "meshedit-render: font from %s\n", label_font().string().c_str());
+        std::fprintf(stderr, "%s: font from %s\n", headless::program_name(),
+                     label_font().string().c_str());
     }
     RenderTarget target(w, h, options.samples);
     target.bind();
@@ -255,8 +257,8 @@ int run(const Options& options) {
     if (!options.shader_dir.empty()) {
         renderer.mesh().set_user_shader_dir(options.shader_dir);
     } else if (options.shading >= 8) {
-        std::fprintf(stderr, "meshedit-render: note: shading %d draws as 1 without --shader-dir\n",
-                     options.shading);
+        std::fprintf(stderr, "%s: note: shading %d draws as 1 without --shader-dir\n",
+                     headless::program_name(), options.shading);
     }
     renderer.upload(is_curve || diagram ? nullptr : &mesh);
     if (field != nullptr) {
@@ -315,7 +317,7 @@ int run(const Options& options) {
 }
 
 void print_error(const std::string& message) {
-    std::fprintf(stderr, "meshedit-render: %s\n", message.c_str());
+    std::fprintf(stderr, "%s: %s\n", headless::program_name(), message.c_str());
 }
 
 }  // namespace

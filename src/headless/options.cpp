@@ -4,6 +4,7 @@
 
 #include "meshedit/core/fields.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "command_line.h"
+#include "gl_context.h"
 #include "meshedit/render/shading.h"
 
 namespace meshedit::headless {
@@ -216,8 +218,11 @@ int parse_options(int argc, char** argv, Options& o) {
     app.add_option("--field", o.field,
                    "colour the surface by a scalar field, with its legend (docs/fields.md)")
         ->type_name(field_names)
-        ->check([](const std::string& name) {
-            return find_field(name) ? std::string() : "no field called '" + name + "'";
+        ->check([field_names](const std::string& name) {
+            std::string known = field_names;
+            std::replace(known.begin(), known.end(), '|', ' ');
+            return find_field(name) ? std::string()
+                                    : "no field called '" + name + "' (the fields: " + known + ")";
         });
     app.add_option_function<std::string>(
            "--colormap", [&o](const std::string& name) { o.colormap = find_colormap(name); },
@@ -307,7 +312,7 @@ int parse_options(int argc, char** argv, Options& o) {
                     : name == "osmesa" ? Backend::OsMesa
                                        : Backend::Auto;
     }
-    if (const int status = command_line::parse(app, argc, argv, "meshedit-render"); status >= 0) {
+    if (const int status = command_line::parse(app, argc, argv, program_name()); status >= 0) {
         return status;
     }
     finish(raw, o);

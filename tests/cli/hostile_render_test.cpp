@@ -102,6 +102,21 @@ TEST_F(HostileRender, NumbersThatAreNotFiniteOrOutOfRangeAreBadUsage) {
     }
 }
 
+TEST_F(HostileRender, RunAsMeshEditRenderItsMessagesSayMeshEdit) {
+    const RunResult r =
+        run_meshedit({"render", (dir_ / "absent.dae").string(), "-o", (dir_ / "out.png").string()},
+                     kSeconds, kAddressSpace);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("meshedit: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("absent.dae: no such file"), std::string::npos) << r.err;
+    // A field that does not exist: the valid names are listed.
+    const RunResult field = render({"--field", "curvy"});
+    EXPECT_EQ(field.exit_code, 2) << field.err;
+    EXPECT_NE(field.err.find("no field called 'curvy' (the fields: "), std::string::npos)
+        << field.err;
+    EXPECT_NE(field.err.find("gauss mean valence"), std::string::npos) << field.err;
+}
+
 TEST_F(HostileRender, LongCurveAtALowLevelDrawsOnlyThatLevel) {
     // 30,000 points: all levels are 450 million points (10 GB); levels 0 and 1 are 60,000.
     // (--no-curve: the curve itself is sampled by de Casteljau, n² a sample.)
