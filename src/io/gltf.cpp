@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "gltf_guard.h"
+#include "gltf_meshopt.h"
 #include "io_util.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/normals.h"
@@ -474,6 +475,11 @@ MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
     // The content decides, not the extension: a binary glTF always starts with "glTF".
     const bool binary = bytes.substr(0, 4) == "glTF";
     gltf_guard::check_json_depth(bytes, binary, file);
+    const std::optional<std::string> rewritten =
+        gltf_meshopt::replace_fallback_buffers(bytes, binary, file);
+    if (rewritten) {
+        bytes = *rewritten;
+    }
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skip_image, nullptr);
     const std::string base_dir = folder ? folder->string() : std::string();
@@ -495,8 +501,10 @@ MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
         throw IoError(file, "", files.refusal());
     }
     if (!ok) {
+        gltf_meshopt::check_required(model, file);
         throw IoError(file, "", err.empty() ? "cannot parse" : one_line(err));
     }
+    gltf_meshopt::decode(model, file);
     MeshSoup soup = GltfReader(model, file).read();
     if (!warn.empty()) {
         soup.notices.push_back(one_line(warn));
