@@ -5,13 +5,17 @@
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "io/formats_test_util.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/io/gltf.h"
 #include "meshedit/io/io.h"
@@ -210,6 +214,15 @@ TEST(GltfMeshopt, CorruptOrTruncatedCompressedDataIsRefusedNamingTheFile) {
                     "huge.glb: bufferView 0: count 2000000000 is too large");
 }
 
+TEST(GltfMeshopt, DecodedSizeIsCheckedAgainstTheMemoryBudget) {
+    const std::string bytes = test::slurp(test::data_file("gltfpack_bowl_meshopt.glb"));
+    set_memory_budget_without_floor(1000);  // the vertices alone decode to more
+    const std::string error = io_error_of([&] { parse_gltf(bytes, "bowl.glb", std::nullopt); });
+    set_memory_budget_without_floor(0);
+    EXPECT_CONTAINS(error, "bowl.glb: bufferView ");
+    EXPECT_CONTAINS(error, ": decoding the compressed data would need about");
+}
+
 TEST(GltfMeshopt, OtherRequiredExtensionsAreRefusedByName) {
     const Geometry g = sphere();
     test::ScratchDir dir;
@@ -229,6 +242,41 @@ TEST(GltfMeshopt, OtherRequiredExtensionsAreRefusedByName) {
     json.insert(1, R"("extensionsRequired":["KHR_materials_unlit","KHR_texture_transform"],)");
     test::spit(dir / "unlit.gltf", json);
     EXPECT_EQ(read_soup(dir / "unlit.gltf").soup.n_faces(), g.indices.size() / 3);
+}
+
+/// The triangles of `s` as position triples, each rotated to start at its smallest corner,
+/// sorted: the geometry without vertex numbering or triangle order (gltfpack reorders both).
+std::vector<std::array<Vec3, 3>> triangles_of(const MeshSoup& s) {
+    const auto less = [](const Vec3& a, const Vec3& b) {
+        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    };
+    std::vector<std::array<Vec3, 3>> out;
+    for (std::size_t f = 0; f < s.soup.n_faces(); ++f) {
+        const std::uint32_t* c = &s.soup.indices[s.soup.face_offsets[f]];
+        std::array<Vec3, 3> t = {s.soup.positions[c[0]], s.soup.positions[c[1]],
+                                 s.soup.positions[c[2]]};
+        while (less(t[1], t[0]) || less(t[2], t[0])) {
+            std::rotate(t.begin(), t.begin() + 1, t.end());
+        }
+        out.push_back(t);
+    }
+    std::sort(out.begin(), out.end(), [&](const auto& a, const auto& b) {
+        return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), less);
+    });
+    return out;
+}
+
+TEST(GltfMeshopt, FilesWrittenByGltfpackLoad) {
+    // gltfpack 1.3 (npm) from dae/bowl.dae: -noq (plain), -cc -noq (GLB), -c -noq (.gltf with
+    // a .bin); both compressed ones have a data-less fallback buffer.
+    const MeshSoup plain = read_soup(test::data_file("gltfpack_bowl_plain.glb"));
+    ASSERT_EQ(plain.soup.n_faces(), 264u);
+    for (const char* name : {"gltfpack_bowl_meshopt.glb", "gltfpack_bowl_meshopt.gltf"}) {
+        SCOPED_TRACE(name);
+        const MeshSoup packed = read_soup(test::data_file(name));
+        EXPECT_EQ(packed.soup.positions.size(), plain.soup.positions.size());
+        EXPECT_TRUE(triangles_of(packed) == triangles_of(plain));
+    }
 }
 
 TEST(GltfMeshopt, AssimpDracoModelIsRefusedByName) {
