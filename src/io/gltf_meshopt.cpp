@@ -222,7 +222,7 @@ std::optional<std::string> replace_fallback_buffers(std::string_view bytes, bool
 
 void check_required(const tinygltf::Model& model, const std::string& file) {
     for (const std::string& name : model.extensionsRequired) {
-        if (name != kMeshopt && !irrelevant_to_geometry(name)) {
+        if (name != kMeshopt && name != "KHR_mesh_quantization" && !irrelevant_to_geometry(name)) {
             throw IoError(
                 file, "",
                 "the file requires the glTF extension " + name + ", which MeshEdit does not read");

@@ -3,7 +3,7 @@
 /// glTF compression extensions (private to meshedit_io): EXT_meshopt_compression is decoded
 /// through libmeshoptimizer into plain buffer views before the accessors are read; any other
 /// extension in `extensionsRequired` that changes geometry (KHR_draco_mesh_compression,
-/// KHR_mesh_quantization, …) is refused by name.
+/// …) is refused by name; KHR_mesh_quantization is read by gltf.cpp.
 
 #include <tiny_gltf.h>
 

@@ -214,6 +214,32 @@ TEST(GltfMeshopt, CorruptOrTruncatedCompressedDataIsRefusedNamingTheFile) {
                     "huge.glb: bufferView 0: count 2000000000 is too large");
 }
 
+TEST(GltfMeshopt, QuantizedAndFilteredFilesWrittenByGltfpackLoad) {
+    // gltfpack -cc: KHR_mesh_quantization (16-bit integer positions under a dequantizing node
+    // scale, 8-bit normalized normals with the OCTAHEDRAL filter); -cc -vpf: float positions
+    // with the EXPONENTIAL filter. Quantized to 14 bits over a 2-unit bowl: within 1e-4.
+    const MeshSoup plain = read_soup(test::data_file("gltfpack_bowl_plain.glb"));
+    ASSERT_EQ(plain.normals.size(), plain.soup.positions.size());
+    for (const char* name : {"gltfpack_bowl_quantized.glb", "gltfpack_bowl_exp_filter.glb"}) {
+        SCOPED_TRACE(name);
+        const MeshSoup packed = read_soup(test::data_file(name));
+        ASSERT_EQ(packed.soup.positions.size(), plain.soup.positions.size());
+        ASSERT_EQ(packed.normals.size(), packed.soup.positions.size());
+        EXPECT_EQ(packed.soup.n_faces(), plain.soup.n_faces());
+        for (std::size_t v = 0; v < packed.soup.positions.size(); ++v) {
+            std::size_t best = 0;
+            for (std::size_t w = 1; w < plain.soup.positions.size(); ++w) {
+                if (distance(packed.soup.positions[v], plain.soup.positions[w]) <
+                    distance(packed.soup.positions[v], plain.soup.positions[best])) {
+                    best = w;
+                }
+            }
+            EXPECT_LT(distance(packed.soup.positions[v], plain.soup.positions[best]), 1e-4) << v;
+            EXPECT_GT(dot(packed.normals[v], plain.normals[best]), 0.99) << v;
+        }
+    }
+}
+
 TEST(GltfMeshopt, DecodedSizeIsCheckedAgainstTheMemoryBudget) {
     const std::string bytes = test::slurp(test::data_file("gltfpack_bowl_meshopt.glb"));
     set_memory_budget_without_floor(1000);  // the vertices alone decode to more
@@ -233,10 +259,11 @@ TEST(GltfMeshopt, OtherRequiredExtensionsAreRefusedByName) {
                     "draco.gltf: the file requires the glTF extension KHR_draco_mesh_compression, "
                     "which MeshEdit does not read");
     json = plain_gltf(g);
-    json.insert(1, R"("extensionsRequired":["KHR_mesh_quantization"],)");
-    test::spit(dir / "quantized.gltf", json);
-    EXPECT_CONTAINS(io_error_of([&] { read_soup(dir / "quantized.gltf"); }),
-                    "requires the glTF extension KHR_mesh_quantization");
+    json.insert(
+        1, R"("extensionsRequired":["EXT_meshopt_compression","KHR_draco_mesh_compression"],)");
+    test::spit(dir / "both.gltf", json);
+    EXPECT_CONTAINS(io_error_of([&] { read_soup(dir / "both.gltf"); }),
+                    "both.gltf: the file requires the glTF extension KHR_draco_mesh_compression");
     // Material-only extensions change nothing MeshEdit reads.
     json = plain_gltf(g);
     json.insert(1, R"("extensionsRequired":["KHR_materials_unlit","KHR_texture_transform"],)");
