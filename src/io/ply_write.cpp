@@ -99,8 +99,18 @@ void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
     if (flags.write_normals) {
         compute_vertex_normals(dense, normals);
     }
-    const std::vector<UserProperty> vcols = user_properties::vertex_columns(dense, "v:ply:");
-    const std::vector<UserProperty> fcols = user_properties::face_columns(dense, "f:ply:");
+    std::vector<UserProperty> vcols = user_properties::vertex_columns(dense, "v:ply:");
+    std::vector<UserProperty> fcols = user_properties::face_columns(dense, "f:ply:");
+    // A name the writer uses itself (a lone "nx" kept from a file without ny nz) or one that
+    // is not a PLY word is left out rather than written twice or broken.
+    std::erase_if(vcols, [&](const UserProperty& c) {
+        return c.name == "x" || c.name == "y" || c.name == "z" ||
+               (flags.write_normals && (c.name == "nx" || c.name == "ny" || c.name == "nz")) ||
+               c.name.find_first_of(" \t\r\n") != std::string::npos;
+    });
+    std::erase_if(fcols, [](const UserProperty& c) {
+        return c.name == "vertex_indices" || c.name.find_first_of(" \t\r\n") != std::string::npos;
+    });
     std::uint32_t max_corners = 0;
     for (std::size_t f = 0; f < soup.n_faces(); ++f) {
         max_corners = std::max(max_corners, soup.face_offsets[f + 1] - soup.face_offsets[f]);

@@ -2,7 +2,6 @@
 
 #include "user_properties.h"
 
-#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <tuple>
@@ -81,8 +80,6 @@ std::vector<UserProperty> columns(const Mesh& mesh, std::string_view prefix, std
             }
         }
     }
-    std::sort(out.begin(), out.end(),
-              [](const UserProperty& a, const UserProperty& b) { return a.name < b.name; });
     return out;
 }
 

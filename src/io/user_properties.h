@@ -19,8 +19,8 @@ namespace meshedit::user_properties {
 void attach(const MeshSoup& soup, const BuildReport& report, Mesh& mesh);
 
 /// The vertex (or face) properties of `mesh` whose names start with `prefix` ("v:ply:") and
-/// whose type is one of UserProperty's, in name order: the name without the prefix, the type,
-/// and a value per element index.
+/// whose type is one of UserProperty's, in the order they were added (a PLY file's order): the name
+/// without the prefix, the type, and a value per element index.
 std::vector<UserProperty> vertex_columns(const Mesh& mesh, std::string_view prefix);
 std::vector<UserProperty> face_columns(const Mesh& mesh, std::string_view prefix);
 

@@ -120,6 +120,25 @@ TEST(PlyProperties, WrittenBackWithTheirTypesAsciiAndBinary) {
                   "them)"}));
 }
 
+TEST(PlyProperties, ALoneNxIsKeptButNotWrittenTwiceBesideTheNormals) {
+    test::ScratchDir dir;
+    test::spit(dir / "nx.ply",
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+               "property float z\nproperty float nx\nelement face 1\n"
+               "property list uchar int vertex_indices\nend_header\n"
+               "0 0 0 7\n1 0 0 8\n0 1 0 9\n3 0 1 2\n");
+    const LoadedMesh loaded = read_mesh(dir / "nx.ply");
+    EXPECT_EQ((values_of<Vertex, float>(loaded.mesh, "v:ply:nx", 3)),
+              (std::vector<float>{7, 8, 9}));
+    write_ply(loaded.mesh, dir / "out.ply", {});
+    EXPECT_NO_THROW(read_mesh(dir / "out.ply"));
+    IoFlags no_normals;
+    no_normals.write_normals = false;
+    write_ply(loaded.mesh, dir / "out.ply", no_normals);
+    EXPECT_EQ((values_of<Vertex, float>(read_mesh(dir / "out.ply").mesh, "v:ply:nx", 3)),
+              (std::vector<float>{7, 8, 9}));
+}
+
 TEST(PlyProperties, BinaryBigEndianValuesAreKept) {
     // One triangle; vertex "ushort id" and face "float tag", big-endian.
     std::string bytes =
