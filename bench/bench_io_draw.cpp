@@ -1,16 +1,20 @@
-// bench_io_draw: COLLADA loading against Assimp, and headless drawing against a bare draw of
-// the same buffers (bench/README.md). One (job, impl) per process, so page faults count:
+// bench_io_draw: COLLADA and PLY loading against Assimp, and headless drawing against a bare draw
+// of the same buffers (bench/README.md). One (job, impl) per process, so page faults count:
 //
 //   bench_io_draw --job collada_load_1m_triangles --impl meshedit|assimp [--runs N] [--data DIR]
 //   bench_io_draw --job collada_load_1m_polylist  --impl meshedit|assimp [--runs N] [--data DIR]
+//   bench_io_draw --job ply_load_1m_binary        --impl meshedit|assimp [--runs N] [--data DIR]
 //   bench_io_draw --job draw_1m_triangles [--impl all] [--runs N] [--size WxH] [--samples S]
 //   bench_io_draw --job pick_1m [--impl all] [--positions N] [--size WxH]
-//   bench_io_draw --generate [--data DIR]     writes the COLLADA inputs (untimed, idempotent)
+//   bench_io_draw --generate [--data DIR]     writes the COLLADA and PLY inputs (untimed,
+//                                             idempotent)
 //   bench_io_draw --list                      prints "JOB IMPL" per configuration
 //
 // The inputs are generated, never committed: shapes::torus(1000, 500) (500,000 vertices,
 // 1,000,000 triangles) as a COLLADA <triangles> file (~34 MB) and as a <polylist> with one
-// normal per face (NORMAL at offset 1, so every corner has two indices). The draw job renders
+// normal per face (NORMAL at offset 1, so every corner has two indices), and as a binary
+// little-endian PLY as scanners write it (float x y z, `list uchar int vertex_indices`,
+// ~18 MB). The draw job renders
 // the same torus at 1280x800 in one headless context (EGL, else OSMesa): N frames through
 // MeshRenderer::draw (smooth Blinn-Phong; back faces culled, as the torus is closed and outward)
 // and N through MeshRenderer::draw_bare (transform-only shader, same vertex buffer, back faces
@@ -62,6 +66,7 @@ constexpr int kTorusTube = 500;
 
 const char* const kTrianglesFile = "torus_1m_triangles.dae";
 const char* const kPolylistFile = "torus_1m_polylist.dae";
+const char* const kPlyFile = "torus_1m_binary.ply";
 
 /// A growing text buffer with fast number formatting (std::to_chars, shortest round trip).
 class Writer {
@@ -201,12 +206,42 @@ void write_torus(const Mesh& mesh, const fs::path& path, bool polylist) {
                  static_cast<double>(w.size()) / 1e6);
 }
 
+/// The torus as binary little-endian PLY: float x y z, `list uchar int vertex_indices`.
+void write_ply_torus(const Mesh& mesh, const fs::path& path) {
+    Writer w;
+    w.text("ply\nformat binary_little_endian 1.0\ncomment bench_io_draw torus\nelement vertex ");
+    w.number(static_cast<std::uint32_t>(mesh.n_vertices()));
+    w.text("\nproperty float x\nproperty float y\nproperty float z\nelement face ");
+    w.number(static_cast<std::uint32_t>(mesh.n_faces()));
+    w.text("\nproperty list uchar int vertex_indices\nend_header\n");
+    auto put = [&w](const auto& value) {  // the host is little-endian (x86-64, arm64)
+        w.text(std::string_view(reinterpret_cast<const char*>(&value), sizeof value));
+    };
+    for (Vertex v : mesh.vertices()) {
+        const Vec3& p = mesh.position(v);
+        put(static_cast<float>(p.x));
+        put(static_cast<float>(p.y));
+        put(static_cast<float>(p.z));
+    }
+    for (Face f : mesh.faces()) {
+        put(std::uint8_t{3});
+        const Halfedge h0 = mesh.halfedge(f);
+        for (Halfedge h : {h0, mesh.next(h0), mesh.next(mesh.next(h0))}) {
+            put(static_cast<std::int32_t>(mesh.to_vertex(h).idx()));
+        }
+    }
+    w.save(path);
+    std::fprintf(stderr, "bench_io_draw: wrote %s (%.1f MB)\n", path.c_str(),
+                 static_cast<double>(w.size()) / 1e6);
+}
+
 /// Writes the missing inputs into `data`.
 void generate(const fs::path& data) {
     fs::create_directories(data);
     const bool need_tri = !fs::exists(data / kTrianglesFile);
     const bool need_poly = !fs::exists(data / kPolylistFile);
-    if (!need_tri && !need_poly) {
+    const bool need_ply = !fs::exists(data / kPlyFile);
+    if (!need_tri && !need_poly && !need_ply) {
         return;
     }
     const Mesh torus = shapes::torus(kTorusRing, kTorusTube);
@@ -216,12 +251,20 @@ void generate(const fs::path& data) {
     if (need_poly) {
         write_torus(torus, data / kPolylistFile, true);
     }
+    if (need_ply) {
+        write_ply_torus(torus, data / kPlyFile);
+    }
 }
 
-void bench_collada(const std::string& job, const std::string& impl, int runs,
-                   const fs::path& data) {
-    const fs::path file =
-        data / (job == "collada_load_1m_triangles" ? kTrianglesFile : kPolylistFile);
+/// The input of a load job.
+const char* input_of(const std::string& job) {
+    return job == "collada_load_1m_triangles" ? kTrianglesFile
+           : job == "ply_load_1m_binary"      ? kPlyFile
+                                              : kPolylistFile;
+}
+
+void bench_load(const std::string& job, const std::string& impl, int runs, const fs::path& data) {
+    const fs::path file = data / input_of(job);
     if (!fs::exists(file)) {
         // Generating here inflates this process's peak RSS; run_bench.py runs --generate first.
         std::fprintf(stderr, "bench_io_draw: %s missing, generating (peak RSS includes it)\n",
@@ -510,7 +553,8 @@ int main(int argc, char** argv) {
     try {
         const Args a = parse(argc, argv);
         if (a.list) {
-            for (const char* job : {"collada_load_1m_triangles", "collada_load_1m_polylist"}) {
+            for (const char* job :
+                 {"collada_load_1m_triangles", "collada_load_1m_polylist", "ply_load_1m_binary"}) {
                 std::printf("%s meshedit\n%s assimp\n", job, job);
             }
             std::printf("draw_1m_triangles all\npick_1m all\n");
@@ -520,8 +564,9 @@ int main(int argc, char** argv) {
             generate(a.data);
             return 0;
         }
-        if (a.job == "collada_load_1m_triangles" || a.job == "collada_load_1m_polylist") {
-            bench_collada(a.job, a.impl, a.runs, a.data);
+        if (a.job == "collada_load_1m_triangles" || a.job == "collada_load_1m_polylist" ||
+            a.job == "ply_load_1m_binary") {
+            bench_load(a.job, a.impl, a.runs, a.data);
         } else if (a.job == "draw_1m_triangles") {
             bench_draw(a.job, a.impl.empty() ? "all" : a.impl, a.runs, a.width, a.height,
                        a.samples);
@@ -530,6 +575,7 @@ int main(int argc, char** argv) {
         } else {
             throw std::invalid_argument("unknown job '" + a.job +
                                         "' (collada_load_1m_triangles, collada_load_1m_polylist, "
+                                        "ply_load_1m_binary, "
                                         "draw_1m_triangles, pick_1m; or --list, --generate)");
         }
     } catch (const std::exception& e) {

@@ -46,7 +46,7 @@ DEFAULT_CONFIGS = {
     ],
     "bench_io_draw": [
         (job, impl)
-        for job in ("collada_load_1m_triangles", "collada_load_1m_polylist")
+        for job in ("collada_load_1m_triangles", "collada_load_1m_polylist", "ply_load_1m_binary")
         for impl in ("meshedit", "assimp")
     ]
     + [("draw_1m_triangles", "all"),  # one run measures "meshedit" and "bare"
@@ -125,6 +125,8 @@ JOB_TITLES = {
     "Triangulate)",
     "collada_load_1m_polylist": "Load a 1M-triangle COLLADA `<polylist>` with per-face normals "
     "(same impls)",
+    "ply_load_1m_binary": "Load a 1M-triangle binary little-endian PLY (float x y z, `list "
+    "uchar int vertex_indices`) into a mesh (same impls)",
     "build_torus_1m": "Build the halfedge mesh of a 1M-triangle torus soup (the ordinary "
     "shape, for comparison with the rows below)",
     **{f"build_fan_hub_first_{n}": f"Build a {n}-triangle fan whose hub is vertex 0 (all its "
@@ -669,10 +671,11 @@ def targets_table(jobs):
     else:
         rows.append(("area-weighted normals, 6.4M faces", "≤ 0.1 × OpenMesh",
                      not_measured("normals_6p4m", "MeshEdit or OpenMesh missing"), "n/a"))
-    # COLLADA.
+    # COLLADA and PLY.
     for job, label in (("collada_load_1m_triangles", "COLLADA load, 1M triangles"),
                        ("collada_load_1m_polylist",
-                        "COLLADA load, 1M triangles, `<polylist>` + per-face normals (variant)")):
+                        "COLLADA load, 1M triangles, `<polylist>` + per-face normals (variant)"),
+                       ("ply_load_1m_binary", "binary PLY load, 1M triangles")):
         _, ratios, _, _ = ratio_info(jobs.get(job, []))
         if "assimp" in ratios:
             speedup = 1 / ratios["assimp"]

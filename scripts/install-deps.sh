@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs every Debian package MeshEdit needs to build and test (OpenSubdiv is the tests'
 # subdivision oracle; libcgal-demo holds the scanned bunny of the simplify and remesh golden
-# images; pybind11, numpy and pytest build and test the Python module); with --bench also the
-# other benchmark anchors (OpenMesh, CGAL, Eigen for its quadric policies, Assimp,
-# meshoptimizer, Open3D for the Python rows) and perf, which only `make bench` needs; with
+# images; pybind11, numpy and pytest build and test the Python module; libmeshoptimizer decodes
+# EXT_meshopt_compression glTF files and is also the simplification bench's anchor); with
+# --bench also the other benchmark anchors (OpenMesh, CGAL, Eigen for its quadric policies,
+# Assimp, Open3D for the Python rows) and perf, which only `make bench` needs; with
 # --fuzz clang and its libFuzzer runtime (`make fuzz`); with --clang clang alone (`make
 # test-clang`). Idempotent: when everything is present it only runs dpkg queries (well under a
 # second). Without apt-get it prints the package names for dnf, pacman or Homebrew and stops
@@ -26,7 +27,7 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libgtest-dev libgmock-dev libbenchmark-dev
     clang-format
-    libpugixml-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
+    libpugixml-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libmeshoptimizer-dev
     assimp-utils assimp-testmodels
     libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libglm-dev libopenimageio-dev openimageio-tools
     libglfw3-dev libimgui-dev libstb-dev libopengl-dev libgl1-mesa-dri
@@ -41,7 +42,7 @@ if [ "$clang" -eq 1 ]; then
     packages+=(clang)
 fi
 if [ "$bench" -eq 1 ]; then
-    packages+=(libopenmesh-dev libcgal-dev libassimp-dev libmeshoptimizer-dev libeigen3-dev linux-perf python3-open3d)
+    packages+=(libopenmesh-dev libcgal-dev libassimp-dev libeigen3-dev linux-perf python3-open3d)
 fi
 
 # Not Debian or Ubuntu: name the packages for the manager found (a best effort, untested here;

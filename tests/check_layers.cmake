@@ -15,7 +15,7 @@ set(rules
     "core|^(include/meshedit|src)/core/|^core/|^sys/mman\\.h$"
     "bezier|^(include/meshedit|src)/bezier/|^(core|bezier)/|^$"
     "files|^(include/meshedit|src)/files/|^(core|files)/|^(${std_posix})$"
-    "io|^(include/meshedit|src)/io/|^(core|bezier|files|io)/|^(${std_posix}|pugixml\\.hpp|tiny_gltf\\.h)$"
+    "io|^(include/meshedit|src)/io/|^(core|bezier|files|io)/|^(${std_posix}|pugixml\\.hpp|tiny_gltf\\.h|meshoptimizer\\.h|nlohmann/json\\.hpp)$"
     "ops|^(include/meshedit|src)/ops/|^(core|ops)/|^$"
     "render, GL-free part (overlay geometry, camera, CPU picking)|^(include/meshedit/render/(overlay|camera|shading|op_diagram|colormap|cpu_pick)\\.h|src/render/(overlay|camera|scene_marks|stencil_marks|op_diagram|op_diagram_names|colormap|shading|cpu_pick)\\.cpp)$|^(core|bezier)/|render/(overlay|camera|shading|op_diagram|colormap|cpu_pick)\\.h$|^glm/.*$"
     "render|^(include/meshedit|src)/render/|^(core|bezier|files|render)/|^(${gl}|OpenImageIO/(imageio|imagebuf|imagebufalgo)\\.h|unistd\\.h)$"

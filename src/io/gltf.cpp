@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "gltf_guard.h"
+#include "gltf_meshopt.h"
 #include "io_util.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/normals.h"
@@ -372,17 +373,55 @@ private:
         std::size_t stride = 0;
         const unsigned char* bytes = accessor_data(index, where, what, TINYGLTF_TYPE_VEC3, &stride);
         const tinygltf::Accessor& acc = model_.accessors[static_cast<std::size_t>(index)];
-        if (acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
-            throw IoError(file_, where + ", " + what + " accessor " + std::to_string(index),
-                          "only float components are supported (quantized data is not)");
-        }
         std::vector<Vec3> out(acc.count);
+        if (acc.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+            for (std::size_t i = 0; i < acc.count; ++i) {
+                float f[3];
+                std::memcpy(f, bytes + i * stride, sizeof f);  // may be unaligned
+                out[i] = Vec3(f[0], f[1], f[2]);
+            }
+            return out;
+        }
+        // KHR_mesh_quantization: 8- or 16-bit integers, normalized to [-1, 1] / [0, 1] or
+        // taken as they are (the node transform then scales them).
+        const int type = acc.componentType;
+        if (type != TINYGLTF_COMPONENT_TYPE_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            type != TINYGLTF_COMPONENT_TYPE_SHORT &&
+            type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+            throw IoError(file_, where + ", " + what + " accessor " + std::to_string(index),
+                          "components must be float, or 8- or 16-bit integers "
+                          "(KHR_mesh_quantization)");
+        }
         for (std::size_t i = 0; i < acc.count; ++i) {
-            float f[3];
-            std::memcpy(f, bytes + i * stride, sizeof f);  // may be unaligned
-            out[i] = Vec3(f[0], f[1], f[2]);
+            double x[3];
+            for (std::size_t c = 0; c < 3; ++c) {
+                x[c] = quantized(bytes + i * stride, type, c, acc.normalized);
+            }
+            out[i] = Vec3(x[0], x[1], x[2]);
         }
         return out;
+    }
+
+    /// Component `c` of an integer vector at `e`, normalized as glTF says when asked.
+    static double quantized(const unsigned char* e, int type, std::size_t c, bool normalized) {
+        switch (type) {
+            case TINYGLTF_COMPONENT_TYPE_BYTE: {
+                const double v = static_cast<std::int8_t>(e[c]);
+                return normalized ? std::max(v / 127.0, -1.0) : v;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                return normalized ? e[c] / 255.0 : e[c];
+            case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                std::int16_t v;
+                std::memcpy(&v, e + 2 * c, sizeof v);
+                return normalized ? std::max(v / 32767.0, -1.0) : v;
+            }
+            default: {
+                std::uint16_t v;
+                std::memcpy(&v, e + 2 * c, sizeof v);
+                return normalized ? v / 65535.0 : v;
+            }
+        }
     }
 
     std::vector<std::uint32_t> read_indices(int index, const std::string& where) {
@@ -474,6 +513,11 @@ MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
     // The content decides, not the extension: a binary glTF always starts with "glTF".
     const bool binary = bytes.substr(0, 4) == "glTF";
     gltf_guard::check_json_depth(bytes, binary, file);
+    const std::optional<std::string> rewritten =
+        gltf_meshopt::replace_fallback_buffers(bytes, binary, file);
+    if (rewritten) {
+        bytes = *rewritten;
+    }
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skip_image, nullptr);
     const std::string base_dir = folder ? folder->string() : std::string();
@@ -495,8 +539,10 @@ MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
         throw IoError(file, "", files.refusal());
     }
     if (!ok) {
+        gltf_meshopt::check_required(model, file);
         throw IoError(file, "", err.empty() ? "cannot parse" : one_line(err));
     }
+    gltf_meshopt::decode(model, file);
     MeshSoup soup = GltfReader(model, file).read();
     if (!warn.empty()) {
         soup.notices.push_back(one_line(warn));

@@ -14,6 +14,7 @@
 #include "meshedit/io/off.h"
 #include "meshedit/io/ply.h"
 #include "meshedit/io/stl.h"
+#include "user_properties.h"
 
 namespace fs = std::filesystem;
 
@@ -70,6 +71,7 @@ LoadedMesh read_mesh(const fs::path& path) {
     } catch (const TopologyError& e) {
         throw IoError(path.string(), "", e.what());
     }
+    user_properties::attach(soup, loaded.repairs, loaded.mesh);
     loaded.notices = std::move(soup.notices);
     loaded.unit_meter = soup.unit_meter;
 
@@ -104,6 +106,20 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
     const bool gltf = ext == ".gltf" || ext == ".glb";
     const bool ply = ext == ".ply";
     const bool stl = ext == ".stl";
+    if (!ply) {
+        std::string names;
+        for (const auto& [kind, list] : {std::pair{"v:ply:", mesh.property_names<Vertex>()},
+                                         std::pair{"f:ply:", mesh.property_names<Face>()}}) {
+            for (const std::string& name : list) {
+                if (name.rfind(kind, 0) == 0) {
+                    names += (names.empty() ? "" : ", ") + name;
+                }
+            }
+        }
+        if (!names.empty()) {
+            unkept.push_back("the PLY properties " + names + " (only PLY keeps them)");
+        }
+    }
     if (!obj && !off && !gltf && !ply && !stl) {
         return unkept;  // COLLADA keeps polygons, creases and every double
     }

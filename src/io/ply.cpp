@@ -1,10 +1,12 @@
-// Stanford PLY: a reader of our own and the writer.
+// Stanford PLY: a reader of our own (the writer is in ply_write.cpp).
 //
 // Read: the header (`ply`, `format`, `element`, `property`, `comment`, `obj_info`,
 // `end_header`; elements in any order), then each element's records as ASCII lines or packed
-// binary. Only what MeshEdit keeps is stored: vertex x y z, nx ny nz, and the face list
-// `vertex_indices` (or `vertex_index`). Colours, texture coordinates and everything else are
-// read past and named in one notice each, never dropped without a word.
+// binary. Stored: vertex x y z, nx ny nz, the face list `vertex_indices` (or `vertex_index`),
+// and every other scalar vertex or face property as a user property ("v:ply:quality",
+// "f:ply:label"; io.h, UserProperty) that the writer writes back. Colours, texture coordinates,
+// list properties and other elements are read past and named in one notice each, never
+// dropped without a word.
 //
 // Binary bodies are decoded straight from the file's bytes with memcpy (no streams): a switch
 // on the property type per value, which the branch predictor learns after one record. Counts
@@ -26,7 +28,6 @@
 
 #include "io_util.h"
 #include "meshedit/core/mesh.h"
-#include "meshedit/core/normals.h"
 
 namespace meshedit {
 namespace {
@@ -115,6 +116,14 @@ double value_at(const char* p, Type t, bool swap) {
             return load<double>(p, swap);
     }
     return 0.0;
+}
+
+// Whether `x` is a value of type `t` (integers in range; floats: finite or not, all fit).
+bool fits(Type t, double x) {
+    static constexpr double kLow[] = {-128, 0, -32768, 0, -2147483648.0, 0};
+    static constexpr double kHigh[] = {127, 255, 32767, 65535, 2147483647.0, 4294967295.0};
+    const auto k = static_cast<std::size_t>(t);
+    return !is_integer(t) || (x >= kLow[k] && x <= kHigh[k]);
 }
 
 // Counts and indices: integer types only (checked in the header), which a double holds exactly.
@@ -356,7 +365,7 @@ private:
                 colours_ = colours_ || roles_[k] == Role::Colour;
                 uvs_ = uvs_ || roles_[k] == Role::Uv;
                 if (roles_[k] == Role::Other) {
-                    note_ignored("vertex", v.properties[k].name);
+                    keep_or_ignore(v.properties[k], "v", kept_vertex_, out_.vertex_properties);
                 }
             }
         }
@@ -377,13 +386,43 @@ private:
                 } else if (p.name == "texcoord" || role_of(p.name) == Role::Uv) {
                     face_uvs_ = true;
                 } else {
-                    note_ignored("face", p.name);
+                    keep_or_ignore(p, "f", kept_face_, out_.face_properties);
                 }
             }
             if (indices_ == kNone) {
                 out_.notices.push_back(
                     "the 'face' element has no vertex_indices list: no faces read");
             }
+        }
+    }
+
+    // A scalar property MeshEdit has no meaning for becomes a user property ("v:ply:quality");
+    // a list, or a second property of the same name, is read past with a notice.
+    void keep_or_ignore(const Property& p, const char* kind, std::vector<std::size_t>& kept,
+                        std::vector<UserProperty>& props) {
+        const std::string name = std::string(kind) + ":ply:" + p.name;
+        const bool taken = std::any_of(props.begin(), props.end(),
+                                       [&](const UserProperty& u) { return u.name == name; });
+        if (p.list || taken) {
+            note_ignored(kind[0] == 'v' ? "vertex" : "face", p.name);
+            return;
+        }
+        const auto& element = elements_[kind[0] == 'v' ? vertex_ : face_];
+        kept.push_back(static_cast<std::size_t>(&p - element.properties.data()));
+        props.push_back({name, static_cast<UserProperty::Type>(p.type), {}});
+    }
+
+    // Appends record `i`'s values of the kept properties; integers must fit their type.
+    void store_kept(const Element& e, std::size_t i, const double* values,
+                    const std::vector<std::size_t>& kept, std::vector<UserProperty>& props) {
+        for (std::size_t j = 0; j < kept.size(); ++j) {
+            const Property& p = e.properties[kept[j]];
+            const double x = values[kept[j]];
+            if (!fits(p.type, x)) {
+                fail(record_where(e, i), e.name + " " + std::to_string(i) + ": '" + p.name +
+                                             "' is out of range for its type");
+            }
+            props[j].values.push_back(p.type == Type::F32 ? double{static_cast<float>(x)} : x);
         }
     }
 
@@ -430,6 +469,7 @@ private:
                  "vertex " + std::to_string(i) + " is not finite (NaN or infinity)");
         }
         out_.soup.positions.push_back(p);
+        store_kept(e, i, values, kept_vertex_, out_.vertex_properties);
         if (has_normals_) {
             const Vec3 n(values[normal_[0]], values[normal_[1]], values[normal_[2]]);
             out_.normals.push_back(is_finite(n) ? n : Vec3());
@@ -455,10 +495,11 @@ private:
                std::to_string(nv == 0 ? 0 : nv - 1) + ")";
     }
 
-    void end_face(const Element& e, std::size_t f) {
+    void end_face(const Element& e, std::size_t f, const double* values) {
         if (out_.soup.indices.size() >= kInvalidIndex) {
             fail(record_where(e, f), "more than 4,294,967,294 face corners");
         }
+        store_kept(e, f, values, kept_face_, out_.face_properties);
         out_.soup.face_offsets.push_back(static_cast<std::uint32_t>(out_.soup.indices.size()));
     }
 
@@ -573,7 +614,7 @@ private:
                 if (ei == vertex_) {
                     store_vertex(e, i, values.data());
                 } else if (ei == face_ && indices_ != kNone) {
-                    end_face(e, i);
+                    end_face(e, i, values.data());
                 }
             }
         }
@@ -661,7 +702,7 @@ private:
                 if (ei == vertex_) {
                     store_vertex(e, i, values.data());
                 } else if (ei == face_ && indices_ != kNone) {
-                    end_face(e, i);
+                    end_face(e, i, values.data());
                 }
             }
         }
@@ -680,8 +721,9 @@ private:
     std::vector<Element> elements_;
     std::size_t vertex_ = kNone;
     std::size_t face_ = kNone;
-    std::size_t indices_ = kNone;  // the face list property
-    std::vector<Role> roles_;      // of the vertex properties
+    std::size_t indices_ = kNone;                       // the face list property
+    std::vector<Role> roles_;                           // of the vertex properties
+    std::vector<std::size_t> kept_vertex_, kept_face_;  // user properties: property numbers
     std::size_t position_[3] = {0, 0, 0};
     std::size_t normal_[3] = {0, 0, 0};
     bool has_normals_ = false;
@@ -697,16 +739,6 @@ private:
     MeshSoup out_;
 };
 
-template <class T>
-void put(std::string& out, T value) {
-    char b[sizeof(T)];
-    std::memcpy(b, &value, sizeof b);
-    if constexpr (std::endian::native == std::endian::big) {
-        std::reverse(b, b + sizeof b);
-    }
-    out.append(b, sizeof b);
-}
-
 }  // namespace
 
 MeshSoup parse_ply(std::string_view bytes, const std::string& name) {
@@ -716,76 +748,6 @@ MeshSoup parse_ply(std::string_view bytes, const std::string& name) {
 MeshSoup read_ply(const std::filesystem::path& path) {
     const std::string bytes = read_file(path);
     return parse_ply(bytes, path.string());
-}
-
-void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
-    std::optional<Mesh> storage;
-    const Mesh& dense = io_util::compacted(mesh, storage);
-    const PolygonSoup soup = to_polygon_soup(dense);
-    std::vector<Vec3> normals;
-    if (flags.write_normals) {
-        compute_vertex_normals(dense, normals);
-    }
-    std::uint32_t max_corners = 0;
-    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-        max_corners = std::max(max_corners, soup.face_offsets[f + 1] - soup.face_offsets[f]);
-    }
-    // uchar counts are what every reader takes; polygons of more than 255 corners need uint.
-    const bool wide = max_corners > 255;
-    std::string out =
-        std::string("ply\nformat ") + (flags.ascii ? "ascii" : "binary_little_endian") +
-        " 1.0\ncomment MeshEdit\nelement vertex " + std::to_string(soup.positions.size()) +
-        "\nproperty double x\nproperty double y\nproperty double z\n";
-    if (flags.write_normals) {
-        out += "property float nx\nproperty float ny\nproperty float nz\n";
-    }
-    out += "element face " + std::to_string(soup.n_faces()) + "\nproperty list " +
-           (wide ? "uint" : "uchar") + " uint vertex_indices\nend_header\n";
-    const std::size_t per_vertex = flags.ascii ? 80 : 36;
-    out.reserve(out.size() + soup.positions.size() * per_vertex + soup.indices.size() * 8 +
-                soup.n_faces() * 4);
-    for (std::size_t v = 0; v < soup.positions.size(); ++v) {
-        const Vec3& p = soup.positions[v];
-        if (flags.ascii) {
-            out += number_text(p.x) + ' ' + number_text(p.y) + ' ' +
-                   number_text(p.z);
-            if (flags.write_normals) {
-                for (int c = 0; c < 3; ++c) {
-                    out += ' ' + number_text(static_cast<float>(normals[v][c]));
-                }
-            }
-            out += '\n';
-            continue;
-        }
-        put(out, p.x);
-        put(out, p.y);
-        put(out, p.z);
-        if (flags.write_normals) {
-            for (int c = 0; c < 3; ++c) {
-                put(out, static_cast<float>(normals[v][c]));
-            }
-        }
-    }
-    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-        const std::uint32_t n = soup.face_offsets[f + 1] - soup.face_offsets[f];
-        if (flags.ascii) {
-            out += std::to_string(n);
-            for (std::uint32_t c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) {
-                out += ' ' + std::to_string(soup.indices[c]);
-            }
-            out += '\n';
-            continue;
-        }
-        if (wide) {
-            put(out, n);
-        } else {
-            put(out, static_cast<std::uint8_t>(n));
-        }
-        for (std::uint32_t c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) {
-            put(out, soup.indices[c]);
-        }
-    }
-    write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, out); });
 }
 
 }  // namespace meshedit

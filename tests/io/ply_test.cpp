@@ -149,8 +149,12 @@ TEST(Ply, AsciiWithNormalsColoursTextureCoordinatesAndOtherElements) {
                   "face colours not kept (MeshEdit does not store colours yet)",
                   "texture coordinates not kept (MeshEdit does not store texture coordinates "
                   "yet)",
-                  "ignored properties vertex.confidence (MeshEdit has no place for them)",
                   "skipped elements 'edge' (1) (MeshEdit reads vertex and face)"}));
+    // A property MeshEdit has no meaning for is kept as a user property of its type.
+    ASSERT_EQ(s.vertex_properties.size(), 1u);
+    EXPECT_EQ(s.vertex_properties[0].name, "v:ply:confidence");
+    EXPECT_EQ(s.vertex_properties[0].type, UserProperty::Type::F32);
+    EXPECT_EQ(s.vertex_properties[0].values, (std::vector<double>{double{0.9f}, 1, 1, 1}));
 }
 
 TEST(Ply, AnyElementOrderAndTextureCoordinateNames) {

@@ -26,6 +26,19 @@
 
 namespace meshedit {
 
+/// A per-vertex or per-face value a file holds that MeshEdit has no meaning for (a PLY vertex
+/// `float quality`, a face `int label`). read_mesh() keeps it as a mesh property of the same
+/// C++ type under `name` ("v:ply:quality", "f:ply:label"); the PLY writer writes such
+/// properties back under their own names and types.
+struct UserProperty {
+    /// int8, uint8, int16, uint16, int32, uint32, float, double.
+    enum class Type : std::uint8_t { I8, U8, I16, U16, I32, U32, F32, F64 };
+    std::string name;
+    Type type = Type::F64;
+    /// One per soup vertex or face, in order (a double holds every value of each type exactly).
+    std::vector<double> values;
+};
+
 /// A mesh as a file holds it, before it becomes a halfedge mesh.
 struct MeshSoup {
     PolygonSoup soup;
@@ -34,6 +47,9 @@ struct MeshSoup {
     /// Crease edges as vertex index pairs (MeshEdit's own `<extra>` in COLLADA); read_mesh()
     /// marks them in the "e:crease" edge property.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> creases;
+    /// Values without a meaning in MeshEdit, one per soup vertex / face (UserProperty).
+    std::vector<UserProperty> vertex_properties;
+    std::vector<UserProperty> face_properties;
     /// `<unit meter="…">` of a COLLADA file (1 for formats without units).
     double unit_meter = 1.0;
     /// Things the reader changed or ignored that a user should hear about ("converted Z_UP
