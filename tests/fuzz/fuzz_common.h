@@ -3,7 +3,8 @@
 /// What every reader's fuzz target does with what it read (docs/testing.md, "Fuzzing"): build
 /// the mesh, validate() it, run one local operation picked by the input's own bytes behind its
 /// predicate (validate again, or check the refusal changed nothing), write the mesh out and
-/// read it back (the same mesh), and one Loop level on small meshes. Anything wrong aborts,
+/// read it back in memory (the same mesh), and on small meshes one whole-mesh operation (Loop,
+/// simplify, remesh or Catmull–Clark, picked by the hash). Anything wrong aborts,
 /// which libFuzzer (or the replay driver) reports with the input that did it.
 
 #include <cstddef>
