@@ -85,19 +85,29 @@ bench:
 	python3 bench/run_bench.py --build $(BENCH_DIR) --out docs/performance.md \
 	    --budget $(BENCH_BUDGET)
 
-# A fuzzing campaign (docs/testing.md): every reader and the edit language under libFuzzer
-# with ASan + UBSan for FUZZ_SECONDS each (default 60), or for FUZZ_RUNS executions each.
-# `make test` only replays the corpus.
+# A fuzzing campaign (docs/testing.md): every reader (round trip and parse only), the edit
+# language, session files and the shader log parser under libFuzzer with ASan + UBSan for
+# FUZZ_SECONDS each (default 60), or for FUZZ_RUNS executions each (the 10⁶ mode: make fuzz
+# FUZZ_RUNS=1000000), FUZZ_JOBS at a time. pugixml is compiled from the source of the
+# installed version so that it is instrumented too. `make test` only replays the corpus.
 FUZZ_DIR      ?= build-fuzz
 FUZZ_SECONDS  ?=
 FUZZ_RUNS     ?=
+FUZZ_JOBS     ?= $(JOBS)
+FUZZ_TARGETS  ?=
+FUZZ_PROGRAMS := $(foreach r,collada obj off ply stl gltf,fuzz_$(r) fuzz_$(r)_parse) fuzz_bez \
+	fuzz_bzc fuzz_ops fuzz_session fuzz_shader_log
 fuzz:
 	./scripts/install-deps.sh --fuzz
+	pugixml=$$(./scripts/fetch-pugixml-source.sh $(FUZZ_DIR)/pugixml) || \
+	    { echo "make fuzz: pugixml's source is not available; its library stays uninstrumented"; \
+	      pugixml=; }; \
 	cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	    -DCMAKE_CXX_COMPILER=clang++ -DMESHEDIT_FUZZ=ON -DMESHEDIT_BUILD_VIEWER=OFF $(CMAKE_FLAGS)
-	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_collada fuzz_obj fuzz_off fuzz_ply fuzz_stl fuzz_gltf \
-	    fuzz_bez fuzz_bzc fuzz_ops meshedit
-	FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_RUNS=$(FUZZ_RUNS) ./scripts/fuzz.sh $(FUZZ_DIR)
+	    -DCMAKE_CXX_COMPILER=clang++ -DMESHEDIT_FUZZ=ON -DMESHEDIT_BUILD_VIEWER=OFF \
+	    -DMESHEDIT_PUGIXML_SOURCE=$$pugixml $(CMAKE_FLAGS)
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target $(FUZZ_PROGRAMS) meshedit
+	FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_RUNS=$(FUZZ_RUNS) FUZZ_JOBS=$(FUZZ_JOBS) \
+	    $(if $(FUZZ_TARGETS),FUZZ_TARGETS="$(FUZZ_TARGETS)") ./scripts/fuzz.sh $(FUZZ_DIR)
 
 # Regenerates the sample meshes in dae/ with the project's own code (docs/samples.md).
 .PHONY: samples

@@ -69,7 +69,44 @@ double de_casteljau_level_points(std::size_t n_points, int max_level) {
     return levels * n - levels * (levels - 1.0) / 2.0;
 }
 
+Vec3 bernstein_linear(std::span<const Vec3> control, double t) {
+    MESHEDIT_ASSERT(!control.empty());
+    const std::size_t n = control.size() - 1;
+    if (!(t > 0.0)) {  // t = 0 (and NaN, which the callers refuse): exactly the first point
+        return control.front();
+    }
+    if (!(t < 1.0)) {
+        return control.back();
+    }
+    // Weights relative to the largest, B(n, m)(t) at the mode m = floor((n + 1) t), by the
+    // ratio B(n, i+1) / B(n, i) = (n − i) / (i + 1) · t / (1 − t) outward from it: every
+    // weight is in [0, 1], none is a difference, and past ~40 standard deviations they
+    // underflow to 0 and stop the walk. Dividing by their sum normalises away the
+    // unnormalised start (C(n, m) tᵐ (1−t)ⁿ⁻ᵐ itself under- or overflows for long curves).
+    const double ratio = t / (1.0 - t);
+    const std::size_t mode =
+        std::min(n, static_cast<std::size_t>(std::floor(static_cast<double>(n + 1) * t)));
+    Vec3 sum = control[mode];
+    double total = 1.0;
+    double w = 1.0;
+    for (std::size_t i = mode; i < n && w > 0.0; ++i) {
+        w *= static_cast<double>(n - i) / static_cast<double>(i + 1) * ratio;
+        sum += w * control[i + 1];
+        total += w;
+    }
+    w = 1.0;
+    for (std::size_t i = mode; i > 0 && w > 0.0; --i) {
+        w *= static_cast<double>(i) / static_cast<double>(n - i + 1) / ratio;
+        sum += w * control[i - 1];
+        total += w;
+    }
+    return sum / total;
+}
+
 Vec3 de_casteljau(std::span<const Vec3> control, double t) {
+    if (control.size() > kDeCasteljauLongCurve) {
+        return bernstein_linear(control, t);
+    }
     std::vector<Vec3> points(control.begin(), control.end());
     return de_casteljau_reduce(points, t, nullptr);
 }

@@ -40,10 +40,42 @@ bool is_degenerate(const Vec3& du, const Vec3& dv, const Vec3& n) {
     return !(norm(n) > 1e-12 * scale) || scale == 0.0;
 }
 
+// The exponent e of the largest control coordinate (in [2^(e−1), 2^e)) when it is far from
+// 1, else 0. Past 2^256 the cross product du × dv overflows long before the coordinates do,
+// and near 1.7e308 a lerp's difference b − a itself overflows (a ±1.7e308 patch evaluated to
+// 1e292 at its centre, with a zero normal); below 2^−256 the cross product underflows. Such
+// a patch is evaluated scaled by 2^−e, exactly (a power of two), and its results scaled back.
+int far_exponent(const BezierPatch& patch) {
+    double largest = 0.0;
+    for (const Vec3& p : patch.control_points) {
+        largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    }
+    int exponent = 0;
+    if (largest > 0.0 && std::isfinite(largest)) {
+        std::frexp(largest, &exponent);
+    }
+    return std::abs(exponent) > 256 ? exponent : 0;
+}
+
+BezierPatch scaled(const BezierPatch& patch, int exponent) {
+    BezierPatch out = patch;
+    for (Vec3& p : out.control_points) {
+        p = {std::ldexp(p.x, exponent), std::ldexp(p.y, exponent), std::ldexp(p.z, exponent)};
+    }
+    return out;
+}
+
+Vec3 unscaled(const Vec3& p, int exponent) {
+    return {std::ldexp(p.x, exponent), std::ldexp(p.y, exponent), std::ldexp(p.z, exponent)};
+}
+
 }  // namespace
 
 Vec3 BezierPatch::evaluate(double u, double v) const {
     MESHEDIT_ASSERT(control_points.size() == std::size_t(rows) * cols);
+    if (const int exponent = far_exponent(*this); exponent != 0) {
+        return unscaled(scaled(*this, -exponent).evaluate(u, v), exponent);
+    }
     std::vector<Vec3> row;
     std::vector<Vec3> column(rows);
     for (int r = 0; r < rows; ++r) {
@@ -55,6 +87,13 @@ Vec3 BezierPatch::evaluate(double u, double v) const {
 }
 
 PatchPoint BezierPatch::evaluate_with_derivatives(double u, double v) const {
+    if (const int exponent = far_exponent(*this); exponent != 0) {
+        PatchPoint p = scaled(*this, -exponent).evaluate_with_derivatives(u, v);
+        p.position = unscaled(p.position, exponent);
+        p.du = unscaled(p.du, exponent);
+        p.dv = unscaled(p.dv, exponent);
+        return p;  // the unit normal does not change with the scale
+    }
     PatchPoint p = evaluate_partials(*this, u, v);
     Vec3 n = cross(p.du, p.dv);
     // At a degenerate point take the normal slightly inside the patch: as the inset shrinks

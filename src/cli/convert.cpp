@@ -11,6 +11,7 @@
 
 #include "cli.h"
 #include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/budget.h"
 #include "meshedit/core/simplify.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/files/files.h"
@@ -74,6 +75,8 @@ std::vector<ops::Step> steps_of(const std::string& ops, const std::filesystem::p
         steps = ops::parse_session(text);
     } catch (const ops::SyntaxError& e) {
         throw ops::SyntaxError(session.string() + ": " + e.what());
+    } catch (const BudgetError& e) {
+        throw BudgetError(session.string() + ": " + e.what());
     }
     const std::optional<std::string> recorded = ops::session_header_value(text, "input-fnv1a64");
     if (recorded && std::filesystem::is_regular_file(in)) {

@@ -61,9 +61,17 @@ std::optional<OpDiagram> run_ops(Mesh& mesh, const Options& options, ElementRef&
         throw UsageError("--op-diagram draws no mesh: --select and --stencil do not apply");
     }
     // @FILE: a session file, as `meshedit convert --ops @FILE` reads it.
-    std::vector<ops::Step> steps = options.ops.front() == '@'
-                                       ? ops::parse_session(read_file(options.ops.substr(1)))
-                                       : ops::parse(options.ops);
+    std::vector<ops::Step> steps;
+    if (options.ops.front() != '@') {
+        steps = ops::parse(options.ops);
+    } else {
+        const std::string session = options.ops.substr(1);
+        try {
+            steps = ops::parse_session(read_file(session));
+        } catch (const BudgetError& e) {
+            throw BudgetError(session + ": " + e.what());
+        }
+    }
     if (!options.op_diagram) {
         result = ops::apply_steps(mesh, steps);
         return std::nullopt;

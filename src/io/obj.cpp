@@ -234,7 +234,7 @@ MeshSoup read_obj(const std::filesystem::path& path) {
     return parse_obj(text, path.string());
 }
 
-void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
+std::string obj_text(const Mesh& mesh, const IoFlags& flags) {
     std::optional<Mesh> storage;
     const Mesh& dense = io_util::compacted(mesh, storage);
     const PolygonSoup soup = to_polygon_soup(dense);
@@ -275,6 +275,11 @@ void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
         }
         text += '\n';
     }
+    return text;
+}
+
+void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
+    const std::string text = obj_text(mesh, flags);
     write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, text); });
 }
 

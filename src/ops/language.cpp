@@ -13,6 +13,7 @@
 
 #include "meshedit/ops/ops.h"
 
+#include "meshedit/core/budget.h"
 #include "meshedit/core/loop_steps.h"
 
 namespace meshedit::ops {
@@ -257,7 +258,21 @@ Step parse_step(std::string_view item) {
     return step;
 }
 
+double parse_cost(std::string_view text) {
+    // At most one step per comma or line end, plus one. A step costs its Step, the string of
+    // its item while the list is split and the vector's growth; the text is copied into the
+    // steps' strings once more.
+    const auto bound = static_cast<double>(
+        std::count_if(text.begin(), text.end(),
+                      [](char c) { return c == ',' || c == '\n' || c == '\r'; }) +
+        1);
+    return bound * (2.0 * sizeof(Step) + sizeof(std::string)) +
+           2.0 * static_cast<double>(text.size());
+}
+
 std::vector<Step> parse(std::string_view list) {
+    check_budget(parse_cost(list),
+                 "parsing an --ops list of " + std::to_string(list.size()) + " characters");
     std::vector<std::string> items;
     std::size_t start = 0;
     while (start <= list.size()) {
@@ -297,6 +312,9 @@ std::string_view next_line(std::string_view text, std::size_t& start) {
 }  // namespace
 
 std::vector<Step> parse_session(std::string_view text) {
+    // Checked for the whole file first: each line's parse() only sees its own.
+    check_budget(parse_cost(text),
+                 "parsing a session of " + std::to_string(text.size()) + " characters");
     std::vector<Step> steps;
     std::size_t line_number = 0;
     for (std::size_t start = 0; start < text.size();) {

@@ -133,6 +133,46 @@ TEST(DeCasteljau, ReduceReturnsValueAndTangentTogether) {
     EXPECT_EQ(tangent, de_casteljau_derivative(p, 0.4));
 }
 
+// The linear-time form against repeated lerps on curves just past the switch, where both are
+// affordable: the same polynomial, to 1e-12 of the curve's size.
+TEST(DeCasteljau, LinearFormMatchesLerpsOnLongCurves) {
+    std::mt19937_64 rng(39);
+    for (const int count : {2, 7, 300, static_cast<int>(kDeCasteljauLongCurve) + 1, 5000}) {
+        const std::vector<Vec3> p = random_points(rng, count);
+        for (const double t : {0.0, 1e-300, 1e-9, 0.013, 0.25, 0.5, 0.77, 1.0 - 1e-12, 1.0}) {
+            std::vector<Vec3> buffer = p;
+            const Vec3 lerps = de_casteljau_reduce(buffer, t);
+            EXPECT_LT(norm(bernstein_linear(p, t) - lerps), 1e-12) << count << " " << t;
+            EXPECT_LT(norm(de_casteljau(p, t) - lerps), 1e-12) << count << " " << t;
+        }
+        EXPECT_EQ(bernstein_linear(p, 0.0), p.front());
+        EXPECT_EQ(bernstein_linear(p, 1.0), p.back());
+    }
+}
+
+// A curve of a million points, evaluated in a moment (n²/2 lerps took minutes): with Pᵢ =
+// (i/n, (i/n)²) the sum is exactly (t, t² + t(1−t)/n) and (7, 7, 7) stays (7, 7, 7).
+TEST(DeCasteljau, MillionPointCurveIsEvaluatedInLinearTime) {
+    const std::size_t n = 1'000'000;
+    std::vector<Vec3> p(n + 1);
+    std::vector<Vec3> flat(n + 1, Vec3(7, 7, 7));
+    for (std::size_t i = 0; i <= n; ++i) {
+        const double x = static_cast<double>(i) / n;
+        p[i] = {x, x * x, 0.0};
+    }
+    const BezierCurve curve{p};
+    for (const double t : {0.0, 1e-7, 0.1, 0.5, 0.999999, 1.0}) {
+        const Vec3 b = curve.evaluate(t);
+        EXPECT_NEAR(b.x, t, 1e-12) << t;
+        EXPECT_NEAR(b.y, t * t + t * (1.0 - t) / n, 1e-12) << t;
+        EXPECT_LT(norm(de_casteljau(flat, t) - Vec3(7, 7, 7)), 1e-12) << t;
+    }
+    const std::vector<Vec3> line = curve.polyline(200);
+    ASSERT_EQ(line.size(), 201u);
+    EXPECT_EQ(line.back(), p.back());
+    EXPECT_NEAR(line[100].x, 0.5, 1e-12);
+}
+
 TEST(BezierCurve, PolylineSamplesUniformly) {
     const BezierCurve curve{{{0, 0, 0}, {1, 1, 0}, {2, -1, 0}, {3, 0, 0}}};
     EXPECT_EQ(curve.degree(), 3);

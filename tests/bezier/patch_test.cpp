@@ -295,5 +295,31 @@ TEST(Tessellate, NoPatchesGiveAnEmptyMesh) {
     EXPECT_TRUE(mesh.is_empty());
 }
 
+// A wavy bicubic patch scaled to 1e200, 1e-200 and ±1.7e308: du × dv overflowed (a NaN
+// normal) or underflowed (a zero one). Scaled evaluation gives the unit patch's normal and
+// its position times the scale.
+TEST(BezierPatch, HugeAndTinyPatchesEvaluateLikeTheUnitOne) {
+    BezierPatch unit;
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) {
+            unit.control_points.push_back({c / 1.5 - 1.0, r / 1.5 - 1.0, 0.3 * ((r * c) % 3 - 1)});
+        }
+    }
+    for (const double scale : {1e200, 1e-200, 1.7e308}) {
+        SCOPED_TRACE(scale);
+        BezierPatch big = unit;
+        for (Vec3& p : big.control_points) {
+            p = scale * p;
+        }
+        for (const auto& [u, v] : {std::pair{0.5, 0.5}, {0.3, 0.6}, {0.0, 1.0}}) {
+            const PatchPoint a = unit.evaluate_with_derivatives(u, v);
+            const PatchPoint b = big.evaluate_with_derivatives(u, v);
+            EXPECT_LT(norm(b.normal - a.normal), 1e-12) << u << " " << v;
+            EXPECT_LT(norm(b.position / scale - a.position), 1e-12) << u << " " << v;
+            EXPECT_LT(norm(big.evaluate(u, v) / scale - a.position), 1e-12) << u << " " << v;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace meshedit

@@ -133,5 +133,32 @@ TEST(Budget, PhasesOfAPhasedLoopArePlannedAsLevelsNotOneLevelEach) {
     EXPECT_EQ(why.rfind("loop:9 refused: cannot subdivide: level", 0), 0u) << why;
 }
 
+TEST(Budget, AnOpsListIsCheckedBeforeItIsParsed) {
+    // 60,000 session lines of 9 bytes: about 150 bytes a step once parsed, 9 MB in all.
+    std::string session = "# a long session\n";
+    for (int i = 0; i < 60000; ++i) {
+        session += "flip:0-1\n";
+    }
+    EXPECT_GT(ops::parse_cost(session), 60000.0 * 120);
+    EXPECT_EQ(ops::parse_session(session).size(), 60000u);  // the default budget: fine
+    const SmallBudget budget(std::size_t{4} << 20);
+    try {
+        ops::parse_session(session);
+        FAIL() << "a session of 60,000 steps parsed within 4 MB";
+    } catch (const BudgetError& e) {
+        const std::string why = e.what();
+        EXPECT_EQ(why.rfind("parsing a session of 540017 characters would need about", 0), 0u)
+            << why;
+        EXPECT_NE(why.find("over the budget of 4.2 MB"), std::string::npos) << why;
+    }
+    // The same steps as one comma list.
+    std::string list = "flip:0-1";
+    for (int i = 1; i < 60000; ++i) {
+        list += ",flip:0-1";
+    }
+    EXPECT_THROW(ops::parse(list), BudgetError);
+    EXPECT_EQ(ops::parse("flip:0-1,loop").size(), 2u);  // a short list still parses
+}
+
 }  // namespace
 }  // namespace meshedit

@@ -15,7 +15,10 @@ namespace meshedit {
 MeshSoup read_obj(const std::filesystem::path& path);
 /// The same from the file's bytes; `name` names it in errors.
 MeshSoup parse_obj(std::string_view bytes, const std::string& name);
-/// Writes `v` and `f` lines (and `vn` if flags say so), atomically. \throws IoError.
+/// The text write_obj() writes: `v` and `f` lines (and `vn` if flags say so), every double in
+/// its shortest round-trip decimals (the fuzz targets read it back without a file).
+std::string obj_text(const Mesh& mesh, const IoFlags& flags = {});
+/// Writes obj_text(), atomically. \throws IoError.
 void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags = {});
 
 }  // namespace meshedit

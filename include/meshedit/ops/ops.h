@@ -147,12 +147,16 @@ private:
 
 /// Parses one step ("flip:3-4"). \throws SyntaxError naming it.
 Step parse_step(std::string_view text);
-/// Parses a comma list. \throws SyntaxError naming the offending item.
+/// Parses a comma list. \throws SyntaxError naming the offending item; BudgetError
+/// (core/budget.h) when the steps it may hold would not fit the memory budget.
 std::vector<Step> parse(std::string_view list);
+/// The bytes parsing `text` (a comma list or a session) may take at most, about 150 per step:
+/// what parse() and parse_session() check against the memory budget before parsing.
+double parse_cost(std::string_view text);
 
 /// The steps of a session file (`--ops @FILE`; what the viewer's Ctrl+Shift+E exports): lines
 /// that start with '#' are comments (the header), every other line holds one step or a comma
-/// list; blank lines are skipped. \throws SyntaxError naming the line.
+/// list; blank lines are skipped. \throws SyntaxError naming the line; BudgetError as parse().
 std::vector<Step> parse_session(std::string_view text);
 /// A session file: each `header` line after "# ", then one step per line.
 std::string session_text(const std::vector<std::string>& header,

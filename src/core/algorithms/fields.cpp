@@ -1,6 +1,8 @@
 // Scalar fields (fields.h). Curvature passes over the display triangulation's triangles
 // once, gathering per vertex the corner angles, the mixed Voronoi area and the cotangent
-// Laplacian; the others read one element at a time.
+// Laplacian; the others read one element at a time. Everything that squares lengths works on
+// positions scaled by a power of two into (−1, 1) (unit_scale.h) and scales the result back:
+// at 1e200 a cross product overflows and every angle came out as atan2(inf, inf).
 
 #include "meshedit/core/fields.h"
 
@@ -11,6 +13,7 @@
 #include <numbers>
 #include <queue>
 
+#include "mesh/unit_scale.h"
 #include "meshedit/core/display_fan.h"
 #include "meshedit/core/normals.h"
 
@@ -55,7 +58,8 @@ struct Curvature {
     std::vector<Vec3> laplacian;
 };
 
-Curvature gather_curvature(const Mesh& mesh) {
+// Angles are the mesh's own, areas and the Laplacian those of the mesh scaled by 2^−exponent.
+Curvature gather_curvature(const Mesh& mesh, int exponent) {
     Curvature c;
     c.angles.assign(mesh.vertices_size(), 0.0);
     c.areas.assign(mesh.vertices_size(), 0.0);
@@ -66,7 +70,7 @@ Curvature gather_curvature(const Mesh& mesh) {
                                         mesh.to_vertex(h).idx()};
             Vec3 p[3];
             for (int k = 0; k < 3; ++k) {
-                p[k] = mesh.position(Vertex(v[k]));
+                p[k] = scaled_point(mesh.position(Vertex(v[k])), -exponent);
             }
             const double twice_area = norm(cross(p[1] - p[0], p[2] - p[0]));
             if (twice_area == 0.0) {
@@ -97,7 +101,8 @@ Curvature gather_curvature(const Mesh& mesh) {
 }
 
 std::vector<double> vertex_curvature(const Mesh& mesh, bool gauss) {
-    const Curvature c = gather_curvature(mesh);
+    const int exponent = unit_exponent(mesh);
+    const Curvature c = gather_curvature(mesh, exponent);
     const std::vector<Vec3> normals = gauss ? std::vector<Vec3>{} : vertex_normals(mesh);
     std::vector<double> out(mesh.vertices_size(), kNaN);
     for (Vertex v : mesh.vertices()) {
@@ -105,8 +110,11 @@ std::vector<double> vertex_curvature(const Mesh& mesh, bool gauss) {
         if (mesh.is_boundary(v) || area <= 0.0) {
             continue;
         }
-        out[v.idx()] = gauss ? (2.0 * kPi - c.angles[v.idx()]) / area
-                             : -dot(c.laplacian[v.idx()], normals[v.idx()]) / (4.0 * area);
+        // Gaussian curvature is per length², mean curvature per length.
+        out[v.idx()] = gauss
+                           ? std::ldexp((2.0 * kPi - c.angles[v.idx()]) / area, -2 * exponent)
+                           : std::ldexp(-dot(c.laplacian[v.idx()], normals[v.idx()]) / (4.0 * area),
+                                        -exponent);
     }
     return out;
 }
@@ -127,14 +135,15 @@ std::vector<double> per_edge(const Mesh& mesh, const std::function<double(Edge)>
     return out;
 }
 
-double aspect_ratio(const Mesh& mesh, Face f) {
+// Scale-free: computed on the positions scaled by 2^−exponent.
+double aspect_ratio(const Mesh& mesh, Face f, int exponent) {
     if (!mesh.is_triangle(f)) {
         return kNaN;
     }
     const Halfedge h = mesh.halfedge(f);
-    const Vec3 a = mesh.position(mesh.from_vertex(h));
-    const Vec3 b = mesh.position(mesh.to_vertex(h));
-    const Vec3 c = mesh.position(mesh.to_vertex(mesh.next(h)));
+    const Vec3 a = scaled_point(mesh.position(mesh.from_vertex(h)), -exponent);
+    const Vec3 b = scaled_point(mesh.position(mesh.to_vertex(h)), -exponent);
+    const Vec3 c = scaled_point(mesh.position(mesh.to_vertex(mesh.next(h))), -exponent);
     const double la = distance(b, c), lb = distance(c, a), lc = distance(a, b);
     const double area = norm(cross(b - a, c - a)) / 2.0;
     // R = abc / 4T, r = T / s: R / 2r = abc·s / 8T².
@@ -142,18 +151,35 @@ double aspect_ratio(const Mesh& mesh, Face f) {
                       : std::numeric_limits<double>::infinity();
 }
 
-double min_angle_deg(const Mesh& mesh, Face f) {
+double min_angle_deg(const Mesh& mesh, Face f, int exponent) {
     double smallest = kPi;
+    const auto at = [&](Vertex v) { return scaled_point(mesh.position(v), -exponent); };
     for (Halfedge h : mesh.halfedges(f)) {
-        const Vec3 p = mesh.position(mesh.to_vertex(h));
-        const Vec3 back = mesh.position(mesh.from_vertex(h)) - p;
-        const Vec3 ahead = mesh.position(mesh.to_vertex(mesh.next(h))) - p;
+        const Vec3 p = at(mesh.to_vertex(h));
+        const Vec3 back = at(mesh.from_vertex(h)) - p;
+        const Vec3 ahead = at(mesh.to_vertex(mesh.next(h))) - p;
         smallest = std::min(smallest, angle_between(back, ahead));
     }
     return smallest * 180.0 / kPi;
 }
 
+// Adds the area of face f's display triangles, of the mesh scaled by 2^−exponent, to `area`.
+void add_scaled_face_area(const Mesh& mesh, Face f, int exponent, double& area) {
+    for_each_fan_triangle(mesh, f, [&](std::size_t, Vertex c0, Halfedge h) {
+        const Vec3 p = scaled_point(mesh.position(c0), -exponent);
+        area += norm(cross(scaled_point(mesh.position(mesh.from_vertex(h)), -exponent) - p,
+                           scaled_point(mesh.position(mesh.to_vertex(h)), -exponent) - p)) /
+                2.0;
+    });
+}
+
+// |a − b| without overflow: 1e200-sized coordinates give 1e200, not inf.
+double scaled_distance(const Vec3& a, const Vec3& b, int exponent) {
+    return std::ldexp(distance(scaled_point(a, -exponent), scaled_point(b, -exponent)), exponent);
+}
+
 std::vector<double> distances(const Mesh& mesh, Vertex source) {
+    const int exponent = unit_exponent(mesh);
     std::vector<double> out(mesh.vertices_size(), kNaN);
     if (source.idx() >= mesh.vertices_size() || mesh.is_deleted(source)) {
         return out;
@@ -171,7 +197,8 @@ std::vector<double> distances(const Mesh& mesh, Vertex source) {
         }
         for (Halfedge h : mesh.halfedges(Vertex(v))) {
             const std::uint32_t w = mesh.to_vertex(h).idx();
-            const double through = d + distance(mesh.position(Vertex(v)), mesh.position(Vertex(w)));
+            const double through =
+                d + scaled_distance(mesh.position(Vertex(v)), mesh.position(Vertex(w)), exponent);
             if (through < best[w]) {
                 best[w] = through;
                 queue.push({through, w});
@@ -214,14 +241,23 @@ std::vector<double> compute_field(const Mesh& mesh, const FieldInfo& info,
         }
         return out;
     }
+    const int exponent = unit_exponent(mesh);
     if (n == "aspect") {
-        return per_face(mesh, [&](Face f) { return aspect_ratio(mesh, f); });
+        return per_face(mesh, [&](Face f) { return aspect_ratio(mesh, f, exponent); });
     }
     if (n == "min_angle") {
-        return per_face(mesh, [&](Face f) { return min_angle_deg(mesh, f); });
+        return per_face(mesh, [&](Face f) { return min_angle_deg(mesh, f, exponent); });
     }
     if (n == "face_area") {
-        return per_face(mesh, [&](Face f) { return norm(face_area_vector(mesh, f)) / 2.0; });
+        return per_face(mesh, [&](Face f) {
+            const Vec3 area = face_area_vector(mesh, f);
+            if (is_finite(area)) {
+                return norm(area) / 2.0;
+            }
+            double scaled = 0.0;
+            add_scaled_face_area(mesh, f, exponent, scaled);
+            return std::ldexp(scaled, 2 * exponent);  // inf only past 1.8e308
+        });
     }
     if (n == "dihedral") {
         return per_edge(mesh, [&](Edge e) {
@@ -233,7 +269,8 @@ std::vector<double> compute_field(const Mesh& mesh, const FieldInfo& info,
     }
     if (n == "edge_length") {
         return per_edge(mesh, [&](Edge e) {
-            return distance(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)));
+            return scaled_distance(mesh.position(mesh.vertex(e, 0)),
+                                   mesh.position(mesh.vertex(e, 1)), exponent);
         });
     }
     return distances(mesh, options.source);
@@ -252,6 +289,14 @@ FieldStats field_stats(std::span<const double> values) {
         ++s.count;
     }
     s.mean = s.count > 0 ? sum / static_cast<double>(s.count) : 0.0;
+    if (s.count > 0 && !std::isfinite(s.mean)) {
+        // Finite values whose sum overflowed (edge lengths near 1e308): the mean of each
+        // value's share instead, which stays between min and max.
+        s.mean = 0.0;
+        for (const double x : values) {
+            s.mean += std::isfinite(x) ? x / static_cast<double>(s.count) : 0.0;
+        }
+    }
     return s;
 }
 
@@ -273,7 +318,7 @@ double field_percentile(std::span<const double> values, double fraction) {
 }
 
 double total_angle_defect(const Mesh& mesh) {
-    const Curvature c = gather_curvature(mesh);
+    const Curvature c = gather_curvature(mesh, unit_exponent(mesh));
     double total = 0.0;
     for (Vertex v : mesh.vertices()) {
         if (!mesh.is_isolated(v)) {
@@ -284,16 +329,12 @@ double total_angle_defect(const Mesh& mesh) {
 }
 
 double surface_area(const Mesh& mesh) {
+    const int exponent = unit_exponent(mesh);
     double area = 0.0;
     for (Face f : mesh.faces()) {
-        for_each_fan_triangle(mesh, f, [&](std::size_t, Vertex c0, Halfedge h) {
-            const Vec3 p = mesh.position(c0);
-            area += norm(cross(mesh.position(mesh.from_vertex(h)) - p,
-                               mesh.position(mesh.to_vertex(h)) - p)) /
-                    2.0;
-        });
+        add_scaled_face_area(mesh, f, exponent, area);
     }
-    return area;
+    return std::ldexp(area, 2 * exponent);  // inf only when the area itself is past 1.8e308
 }
 
 std::vector<std::pair<ElementRef, double>> field_values_at(const Mesh& mesh, FieldSite site,

@@ -10,9 +10,10 @@
 #include <cstdint>
 
 #include "mesh/mesh_arrays.h"
+#include "mesh/parallel.h"
+#include "mesh/unit_scale.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/topology.h"
-#include "mesh/parallel.h"
 
 namespace meshedit {
 
@@ -53,17 +54,20 @@ double unit_scale(const Mesh& mesh) {
 
 Vec3 face_normal(const Mesh& mesh, Face f) {
     const Vec3 area = face_area_vector(mesh, f);
-    if (is_finite(area)) {
+    if (is_finite(area) && norm(area) > 1e-250) {
         return normalize(area);
     }
-    // Overflowed: the same directions from the face's corners scaled near 1.
+    // Overflowed, or underflowed (corners near 1e-200; or a degenerate face): the same
+    // directions from the face's corners scaled near 1.
     double largest = 0.0;
     for (const Vertex v : mesh.vertices(f)) {
         const Vec3& p = mesh.position(v);
         largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
     }
     int exponent = 0;
-    std::frexp(largest, &exponent);
+    if (largest > 0.0 && std::isfinite(largest)) {
+        std::frexp(largest, &exponent);
+    }
     const double s = std::ldexp(1.0, -exponent);
     const Halfedge h0 = mesh.halfedge(f);
     const Vec3 p0 = s * mesh.position(mesh.from_vertex(h0));
@@ -77,20 +81,46 @@ Vec3 face_normal(const Mesh& mesh, Face f) {
     return normalize(sum);
 }
 
-double signed_volume(const Mesh& mesh) {
+namespace {
+
+// The signed volume of the mesh scaled by 2^exponent (exactly: a power of two).
+double scaled_volume(const Mesh& mesh, int exponent) {
+    const auto at = [&](Vertex v) { return scaled_point(mesh.position(v), exponent); };
     Vec3 origin;
     for (Vertex v : mesh.vertices()) {
-        origin = mesh.position(v);
+        origin = at(v);
         break;
     }
-    // Each fan triangle with the origin spans a tetrahedron of volume (p0 · (d1 × d2)) / 6,
-    // and face_area_vector is the sum of those d1 × d2.
+    // Each fan triangle with the origin spans a tetrahedron of volume (p0 · (d1 × d2)) / 6;
+    // Σ d1 × d2 over a face is its area vector (face_area_vector's sum).
     double sum = 0;
     for (Face f : mesh.faces()) {
-        const Vec3 p0 = mesh.position(mesh.from_vertex(mesh.halfedge(f))) - origin;
-        sum += dot(p0, face_area_vector(mesh, f));
+        const Halfedge h0 = mesh.halfedge(f);
+        const Vec3 p0 = at(mesh.from_vertex(h0));
+        Vec3 area;
+        Vec3 d1 = at(mesh.to_vertex(h0)) - p0;
+        for (Halfedge h = mesh.next(h0); mesh.to_vertex(h) != mesh.from_vertex(h0);
+             h = mesh.next(h)) {
+            const Vec3 d2 = at(mesh.to_vertex(h)) - p0;
+            area += cross(d1, d2);
+            d1 = d2;
+        }
+        sum += dot(p0 - origin, area);
     }
     return sum / 6.0;
+}
+
+}  // namespace
+
+double signed_volume(const Mesh& mesh) {
+    const double volume = scaled_volume(mesh, 0);
+    if (std::isfinite(volume)) {
+        return volume;
+    }
+    // Overflowed (coordinates past ~1e100): computed at unit scale, scaled back (inf only
+    // when the volume itself is past 1.8e308, never NaN).
+    const int exponent = unit_exponent(mesh);
+    return std::ldexp(scaled_volume(mesh, -exponent), 3 * exponent);
 }
 
 bool is_closed_and_outward(const Mesh& mesh) {
