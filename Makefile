@@ -61,7 +61,7 @@ test-sanitize: deps
 # built with clang in CLANG_DIR, warnings as errors, and run. `make test` keeps gcc.
 CLANG_TESTS := mesh_tests local_ops_tests loop_tests opensubdiv_tests geometry_tests \
 	bezier_tests ops_tests overlay_tests collada_tests formats_tests \
-	$(filter-out fuzz_common,$(patsubst tests/fuzz/%.cpp,%,$(wildcard tests/fuzz/fuzz_*.cpp)))
+	fuzz_all
 test-clang:
 	./scripts/install-deps.sh --clang
 	cmake -S . -B $(CLANG_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
