@@ -67,24 +67,29 @@ void Transaction::restore_selection() {
     doc_->also_selected = also_before_;
 }
 
-MeshChange::Region Transaction::rewind() {
-    MeshChange::Region undone;
-    if (kind_ == Kind::Snapshot) {
-        *doc_ = *before_;
-    } else {
-        if (recorder_) {
-            recorder_->roll_back();
-            recorder_.reset();
-        }
-        if (change_) {
-            change_->undo(doc_->mesh);
-            undone = change_->region();
-            change_.reset();
-        }
-        recorder_.emplace(doc_->mesh);
+std::optional<MeshChange::Region> Transaction::undo_recorded() {
+    std::optional<MeshChange::Region> undone;
+    if (recorder_) {
+        recorder_->roll_back();
+        recorder_.reset();
+    }
+    if (change_) {
+        change_->undo(doc_->mesh);
+        undone = change_->region();
+        change_.reset();
     }
     restore_selection();
     return undone;
+}
+
+MeshChange::Region Transaction::rewind() {
+    if (kind_ == Kind::Snapshot) {
+        *doc_ = *before_;
+        return {};
+    }
+    std::optional<MeshChange::Region> undone = undo_recorded();
+    recorder_.emplace(doc_->mesh);
+    return undone.value_or(MeshChange::Region{});
 }
 
 std::optional<MeshChange::Region> Transaction::roll_back() {
@@ -92,15 +97,7 @@ std::optional<MeshChange::Region> Transaction::roll_back() {
     if (kind_ == Kind::Snapshot) {
         *doc_ = std::move(*before_);
     } else {
-        if (recorder_) {
-            recorder_->roll_back();
-            recorder_.reset();
-        }
-        if (change_) {
-            change_->undo(doc_->mesh);
-            region = change_->region();
-        }
-        restore_selection();
+        region = undo_recorded();
     }
     ledger_ = nullptr;
     return region;

@@ -96,6 +96,9 @@ public:
 private:
     bool open() const { return ledger_ != nullptr; }
     void restore_selection();
+    /// Recorded, Positions: undoes what is recorded so far and restores the selection; where
+    /// the mesh changed back, if anything was recorded.
+    std::optional<MeshChange::Region> undo_recorded();
 
     Ledger* ledger_;
     Document* doc_;
