@@ -48,6 +48,20 @@ std::optional<double> parse_double(std::string_view token) {
     return x;
 }
 
+std::string_view next_content_line(std::string_view text, std::size_t& pos, std::size_t& line) {
+    while (pos < text.size()) {
+        const std::size_t end = std::min(text.find('\n', pos), text.size());
+        const std::string_view l = text.substr(pos, end - pos);
+        pos = end + 1;
+        ++line;
+        std::string_view probe = l;
+        if (!next_token(probe).empty()) {
+            return l;
+        }
+    }
+    return {};
+}
+
 const Mesh& compacted(const Mesh& mesh, std::optional<Mesh>& storage) {
     if (!mesh.has_garbage()) {
         return mesh;

@@ -22,6 +22,10 @@ std::string_view text_of(std::string_view bytes, const std::string& name);
 /// whitespace before it); empty at the end of the line.
 std::string_view next_token(std::string_view& line);
 
+/// The next line of `text` from `pos` that holds a token (blank lines skipped), without its
+/// '\n'; `pos` moves past it and `line` counts every line read. Empty at the end.
+std::string_view next_content_line(std::string_view text, std::size_t& pos, std::size_t& line);
+
 /// `token` as a double (a leading '+' allowed, as some exporters write it); nullopt unless the
 /// whole token is one number.
 std::optional<double> parse_double(std::string_view token);

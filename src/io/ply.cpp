@@ -521,20 +521,7 @@ private:
     // ------------------------------------------------------------- ASCII
 
     // The next line with content in the body; empty at the end of the file.
-    std::string_view next_line() {
-        while (pos_ < bytes_.size()) {
-            std::size_t end = bytes_.find('\n', pos_);
-            end = end == std::string_view::npos ? bytes_.size() : end;
-            const std::string_view l = bytes_.substr(pos_, end - pos_);
-            pos_ = end + 1;
-            ++line_;
-            std::string_view probe = l;
-            if (!io_util::next_token(probe).empty()) {
-                return l;
-            }
-        }
-        return {};
-    }
+    std::string_view next_line() { return io_util::next_content_line(bytes_, pos_, line_); }
 
     std::string_view token(std::string_view& l, const Element& e, std::size_t i,
                            const Property& p) const {

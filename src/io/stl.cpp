@@ -225,20 +225,7 @@ private:
         throw IoError(file_, line_ == 0 ? "" : "line " + std::to_string(line_), problem);
     }
 
-    std::string_view next_line() {
-        while (pos_ < text_.size()) {
-            std::size_t end = text_.find('\n', pos_);
-            end = end == std::string_view::npos ? text_.size() : end;
-            const std::string_view l = text_.substr(pos_, end - pos_);
-            pos_ = end + 1;
-            ++line_;
-            std::string_view probe = l;
-            if (!io_util::next_token(probe).empty()) {
-                return l;
-            }
-        }
-        return {};
-    }
+    std::string_view next_line() { return io_util::next_content_line(text_, pos_, line_); }
 
     void expect(std::string_view first, std::string_view second) {
         std::string_view l = next_line();

@@ -14,6 +14,7 @@
 #include <system_error>
 #include <vector>
 
+#include "meshedit/core/build.h"
 #include "meshedit/files/io_error.h"
 #include "support/scratch_dir.h"
 
@@ -29,6 +30,18 @@ inline std::string slurp(const std::filesystem::path& path) {
 inline void spit(const std::filesystem::path& path, const std::string& bytes) {
     std::ofstream out(path, std::ios::binary);
     out << bytes;
+}
+
+using Faces = std::vector<std::vector<std::uint32_t>>;
+
+/// A soup's faces as lists of corner indices, for exact comparisons.
+inline Faces faces_of(const PolygonSoup& soup) {
+    Faces faces;
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        faces.emplace_back(soup.indices.begin() + soup.face_offsets[f],
+                           soup.indices.begin() + soup.face_offsets[f + 1]);
+    }
+    return faces;
 }
 
 /// `x` rounded to float. Through a volatile: GCC 12 at -O3 (its SLP vectorizer) was seen to

@@ -13,17 +13,9 @@
 namespace meshedit {
 namespace {
 
+using test::Faces;
+using test::faces_of;
 using test::io_error_of;
-using Faces = std::vector<std::vector<std::uint32_t>>;
-
-Faces faces_of(const PolygonSoup& soup) {
-    Faces faces;
-    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-        faces.emplace_back(soup.indices.begin() + soup.face_offsets[f],
-                           soup.indices.begin() + soup.face_offsets[f + 1]);
-    }
-    return faces;
-}
 
 std::string off_error(const std::string& text) {
     return io_error_of([&] { parse_off(text, "t.off"); });
