@@ -361,10 +361,11 @@ private:
                     roles_[static_cast<std::size_t>(found[3 + c])] = Role::Other;
                 }
             }
+            // Colours and texture coordinates are kept under their own names (v:ply:red) until
+            // MeshEdit has attributes of its own for them; writing PLY puts them back.
             for (std::size_t k = 0; k < roles_.size(); ++k) {
-                colours_ = colours_ || roles_[k] == Role::Colour;
-                uvs_ = uvs_ || roles_[k] == Role::Uv;
-                if (roles_[k] == Role::Other) {
+                if (roles_[k] == Role::Other || roles_[k] == Role::Colour ||
+                    roles_[k] == Role::Uv) {
                     keep_or_ignore(v.properties[k], "v", kept_vertex_, out_.vertex_properties);
                 }
             }
@@ -381,9 +382,7 @@ private:
                                      " values; vertex indices must be integers");
                     }
                     indices_ = k;
-                } else if (role_of(p.name) == Role::Colour) {
-                    face_colours_ = true;
-                } else if (p.name == "texcoord" || role_of(p.name) == Role::Uv) {
+                } else if (p.list && p.name == "texcoord") {
                     face_uvs_ = true;
                 } else {
                     keep_or_ignore(p, "f", kept_face_, out_.face_properties);
@@ -432,15 +431,10 @@ private:
 
     void say_what_was_not_kept() {
         std::vector<std::string>& n = out_.notices;
-        if (colours_) {
-            n.push_back("vertex colours not kept (MeshEdit does not store colours yet)");
-        }
-        if (face_colours_) {
-            n.push_back("face colours not kept (MeshEdit does not store colours yet)");
-        }
-        if (uvs_ || face_uvs_) {
+        if (face_uvs_) {
             n.push_back(
-                "texture coordinates not kept (MeshEdit does not store texture coordinates yet)");
+                "per-corner texture coordinates (face.texcoord) not kept (MeshEdit does "
+                "not store texture coordinates yet)");
         }
         if (!ignored_.empty()) {
             n.push_back("ignored properties " + ignored_ + " (MeshEdit has no place for them)");
@@ -714,9 +708,6 @@ private:
     std::size_t position_[3] = {0, 0, 0};
     std::size_t normal_[3] = {0, 0, 0};
     bool has_normals_ = false;
-    bool colours_ = false;
-    bool uvs_ = false;
-    bool face_colours_ = false;
     bool face_uvs_ = false;
     std::string ignored_;
     std::string skipped_elements_;

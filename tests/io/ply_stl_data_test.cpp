@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 
@@ -28,6 +29,23 @@ void expect_identical(const Mesh& actual, const Mesh& expected) {
     EXPECT_EQ(a.positions, e.positions);
     EXPECT_EQ(a.indices, e.indices);
     EXPECT_EQ(a.face_offsets, e.face_offsets);
+}
+
+// Each user property of `soup` as "name type: values".
+std::vector<std::string> columns_of(const MeshSoup& soup) {
+    std::vector<std::string> out;
+    for (const auto* list : {&soup.vertex_properties, &soup.face_properties}) {
+        for (const UserProperty& p : *list) {
+            std::string line = p.name + " " + std::to_string(static_cast<int>(p.type)) + ":";
+            for (const double x : p.values) {
+                char text[32];
+                std::snprintf(text, sizeof text, " %.17g", x);
+                line += text;
+            }
+            out.push_back(line);
+        }
+    }
+    return out;
 }
 
 // The corner positions of each triangle of `soup`, without the faces listed in `skip`.
@@ -102,6 +120,15 @@ TEST(PlyStlData, EveryAssimpTestModelLoadsOrIsRefusedWithItsReasonAndRoundTrips)
                 const LoadedMesh again = read_mesh(copy);
                 EXPECT_FALSE(again.repairs.repaired());
                 expect_identical(again.mesh, loaded.mesh);
+                // Colours, texture coordinates and unknown properties come back by name and
+                // type with the same values (the file's own where the load repaired nothing).
+                const MeshSoup written = read_soup(copy);
+                write_mesh(again.mesh, dir / "again.ply", flags);
+                const MeshSoup rewritten = read_soup(dir / "again.ply");
+                EXPECT_EQ(columns_of(rewritten), columns_of(written));
+                if (!loaded.repairs.repaired()) {
+                    EXPECT_EQ(columns_of(written), columns_of(read_soup(file)));
+                }
             } else {
                 // STL has only positions: the file's triangles come back, bit for bit, less
                 // those build_mesh() dropped (vertices it split weld again).
@@ -124,8 +151,11 @@ TEST(PlyStlData, AssimpFilesHoldWhatTheySay) {
     EXPECT_EQ(cube.soup.n_faces(), 12u);
     const MeshSoup uv = read_ply(kAssimpModels / "PLY/cube_uv.ply");
     EXPECT_EQ(uv.normals.size(), 24u);
-    EXPECT_EQ(uv.notices, std::vector<std::string>{"texture coordinates not kept (MeshEdit does "
-                                                   "not store texture coordinates yet)"});
+    EXPECT_TRUE(uv.notices.empty());
+    ASSERT_EQ(uv.vertex_properties.size(), 2u);
+    EXPECT_EQ(uv.vertex_properties[0].name, "v:ply:s");
+    EXPECT_EQ(uv.vertex_properties[0].values[1], 1.0);  // the second line's s
+    EXPECT_EQ(uv.vertex_properties[1].values[2], 1.0);  // the third line's t
     const MeshSoup two = read_stl(kAssimpModels / "STL/triangle_with_two_solids.stl");
     EXPECT_EQ(two.soup.n_faces(), 2u);
     const MeshSoup spider_text = read_stl(kAssimpModels / "STL/Spider_ascii.stl");
