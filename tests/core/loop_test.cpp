@@ -379,15 +379,20 @@ TEST(LoopPreconditions, EmptyMeshStaysEmpty) {
     }
 }
 
-TEST(LoopPreconditions, UserPropertiesOldVerticesKeepValuesOthersReset) {
+// The attribute carry (refine_carry.h): a label (an integer: the heaviest source) stays on
+// the old vertices and an edge point takes one end's; both halves of an edge copy it and the
+// edges inside the old faces are new.
+TEST(LoopPreconditions, UserPropertiesFollowTheStatedDerivation) {
     Mesh mesh = shapes::tetrahedron();
     auto tag = mesh.add_property<Vertex, int>("v:tag", -1);
     auto edge_tag = mesh.add_property<Edge, int>("e:tag", -1);
     for (Vertex v : mesh.vertices()) {
         tag[v] = static_cast<int>(v.idx());
     }
+    std::vector<std::pair<int, int>> ends;
     for (Edge e : mesh.edges()) {
-        edge_tag[e] = 7;
+        edge_tag[e] = 7 + static_cast<int>(e.idx());
+        ends.emplace_back(mesh.vertex(e, 0).idx(), mesh.vertex(e, 1).idx());
     }
     loop_subdivide(mesh);
     ASSERT_VALID(mesh);
@@ -395,11 +400,16 @@ TEST(LoopPreconditions, UserPropertiesOldVerticesKeepValuesOthersReset) {
     edge_tag = mesh.get_property<Edge, int>("e:tag");
     ASSERT_TRUE(tag && edge_tag);
     for (Vertex v : mesh.vertices()) {
-        EXPECT_EQ(tag[v], v.idx() < 4 ? static_cast<int>(v.idx()) : -1);
+        if (v.idx() < 4) {
+            EXPECT_EQ(tag[v], static_cast<int>(v.idx()));
+        } else {
+            const auto [a, b] = ends[v.idx() - 4];  // the point of edge v - V
+            EXPECT_TRUE(tag[v] == a || tag[v] == b) << v.idx();
+        }
     }
     ASSERT_EQ(edge_tag.vector().size(), 24u);
     for (Edge e : mesh.edges()) {
-        EXPECT_EQ(edge_tag[e], -1);
+        EXPECT_EQ(edge_tag[e], e.idx() < 12 ? 7 + static_cast<int>(e.idx() / 2) : -1);
     }
 }
 

@@ -5,6 +5,11 @@
 /// scratch properties are named where they are used; connectivity has no name outside the
 /// mesh (mesh.h).
 
+#include <string_view>
+#include <utility>
+
+#include "meshedit/core/properties.h"
+
 namespace meshedit {
 
 /// Edge property (`std::uint8_t`, non-zero = sharp): crease edges. Loop subdivides them like
@@ -21,5 +26,14 @@ inline constexpr const char* kLoopEdgePoint = "e:loop_point";      ///< Vec3 (ph
 inline constexpr const char* kLoopNewVertex = "v:loop_new";        ///< uint8: made by a split
 inline constexpr const char* kLoopNewEdge = "e:loop_new";          ///< uint8: crosses an old face
 inline constexpr const char* kLoopFlippedEdge = "e:loop_flipped";  ///< uint8: flipped in 3
+
+/// The well-known attributes whose Carry rule is not their type's default (Mesh::carry()):
+/// a crease survives any merge or split that touches it; the Loop overlay is written by its
+/// phases, never derived.
+inline constexpr std::pair<std::string_view, Carry> kCarryRules[] = {
+    {kCreaseProperty, Carry::Any},   {kLoopTarget, Carry::None},    {kLoopHasTarget, Carry::None},
+    {kLoopEdgePoint, Carry::None},   {kLoopNewVertex, Carry::None}, {kLoopNewEdge, Carry::None},
+    {kLoopFlippedEdge, Carry::None},
+};
 
 }  // namespace meshedit

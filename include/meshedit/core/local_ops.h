@@ -117,7 +117,8 @@ OpResult<Face> triangulate(Mesh& mesh, Face f);
 /// as they are. \return how many faces were triangulated.
 std::size_t triangulate(Mesh& mesh);
 
-// ------------------------------------------- removing and filling (src/core/local_ops/dissolve.cpp)
+// ------------------------------------------- removing and filling
+// (src/core/local_ops/dissolve.cpp)
 
 /// \return ok if `f` is live and no corner of it would be on two holes once it is gone (a
 /// corner already on the boundary must have a side of `f` on that boundary).
@@ -150,7 +151,8 @@ OpStatus is_dissolve_vertex_ok(const Mesh& mesh, Vertex v);
 /// face does not swallow the hole. \return the merged face.
 OpResult<Face> dissolve_vertex(Mesh& mesh, Vertex v);
 
-// ------------------------------------------------------------- welding (src/core/local_ops/weld.cpp)
+// ------------------------------------------------------------- welding
+// (src/core/local_ops/weld.cpp)
 
 /// \return ok if `e1` and `e2` are two live boundary edges of different faces whose weld
 /// would not make a face visit a vertex twice, nor an edge join a vertex to itself, nor two
@@ -172,7 +174,8 @@ OpStatus is_poke_ok(const Mesh& mesh, Face f);
 /// \return c; `halfedge(c)` runs from c to `from_vertex(halfedge(f))`.
 OpResult<Vertex> poke(Mesh& mesh, Face f);
 
-// ------------------------------------------------ inset and extrude (src/core/local_ops/extrude.cpp)
+// ------------------------------------------------ inset and extrude
+// (src/core/local_ops/extrude.cpp)
 
 /// \return ok if `f` is live, the amounts are finite, `shrink` is below 1 and, for a height
 /// other than 0, `f` has an area (so a normal).
@@ -204,7 +207,8 @@ OpStatus is_bevel_edge_ok(const Mesh& mesh, Edge e, double t);
 /// \return the new face.
 OpResult<Face> bevel_edge(Mesh& mesh, Edge e, double t);
 
-// ----------------------------------------------------- orientation (src/core/local_ops/orientation.cpp)
+// ----------------------------------------------------- orientation
+// (src/core/local_ops/orientation.cpp)
 
 /// Reverses every face and boundary loop (Scotty3D's flip_orientation): each halfedge
 /// runs the other way, so outward becomes inward. Never refuses; creates and deletes

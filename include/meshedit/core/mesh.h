@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -174,6 +175,37 @@ public:
         }
     }
 
+    // ----------------------------------------------------------------- attribute carry
+
+    /// Attribute carry (docs/halfedge.md, "What every operation carries"): element `to`, made
+    /// or rewritten by an operation, takes in every attribute — each property but connectivity
+    /// and positions — the value its Carry rule derives from `from`: a copy of one element, or a
+    /// blend with the weights the operation used for the position. An operation states this
+    /// once for every element it makes; a recorded edit that makes an element without it fails
+    /// the recorder's self-check. It tells the recorder, like every setter.
+    template <class H>
+    void carry(H to, H from) {
+        const std::uint32_t i = from.idx();
+        const double w = 1.0;
+        derive(to, &i, &w, 1);
+    }
+    /// A blend: `{{a, 0.5}, {b, 0.5}}`. The weights sum to 1.
+    template <class H>
+    void carry(H to, std::initializer_list<std::pair<H, double>> from);
+    /// The same with `n` sources in arrays (a poke's centre blends a whole face).
+    template <class H>
+    void carry(H to, const H* from, const double* weight, std::size_t n);
+    /// A whole-mesh rewiring that moves what elements mean (flip_orientation: a halfedge's
+    /// corner becomes another's): element i of every attribute takes element `source[i]`'s
+    /// value. Not recorded (a whole-array write). No cost without attributes.
+    template <class H>
+    void permute_attributes(const std::vector<std::uint32_t>& source);
+    /// An element nothing old describes (an edge across a face): the properties' defaults.
+    template <class H>
+    void carry_default(H to) {
+        derive(to, nullptr, nullptr, 0);
+    }
+
     // ----------------------------------------------------------------- queries
 
     bool is_boundary(Halfedge h) const { return !face(h).is_valid(); }
@@ -275,9 +307,12 @@ public:
 
     /// Adds a property named `name` on elements of kind `H` (Vertex, Halfedge, Edge, Face).
     /// \throws std::logic_error if the name is taken.
+    /// Its Carry rule is its type's default (properties.h) unless attributes.h names another.
     template <class H, class T>
     Property<H, T> add_property(std::string name, T default_value = T()) {
-        return Property<H, T>(container<H>().template add<T>(std::move(name), default_value));
+        auto* array = container<H>().template add<T>(std::move(name), default_value);
+        well_known_carry(*array);
+        return Property<H, T>(array);
     }
     /// \return the property, or a null Property (false in `if`) if it does not exist with `T`.
     template <class H, class T>
@@ -287,7 +322,15 @@ public:
     /// \return the property, adding it if missing.
     template <class H, class T>
     Property<H, T> property(std::string_view name, T default_value = T()) {
-        return Property<H, T>(container<H>().template get_or_add<T>(name, default_value));
+        if (auto existing = get_property<H, T>(name)) {
+            return existing;
+        }
+        return add_property<H, T>(std::string(name), default_value);
+    }
+    /// How the property `name` follows operations (Mesh::carry()); false if there is none.
+    template <class H>
+    bool set_carry(std::string_view name, Carry rule) {
+        return container<H>().set_carry(name, rule);
     }
     template <class H>
     bool has_property(std::string_view name) const {
@@ -325,11 +368,18 @@ private:
         }
     }
     bool is_connectivity(const BasePropertyArray* array) const;
+    /// Gives a property attributes.h lists its rule (the crease flag: Carry::Any).
+    static void well_known_carry(BasePropertyArray& array);
     friend class MeshRecorder;
     friend class MeshChange;
     friend bool bitwise_equal(const Mesh& a, const Mesh& b, std::string* why);
     /// Out of line, so the setters stay small: `kind` 0 vertex, 1 halfedge, 2 edge, 3 face.
     void record(int kind, std::uint32_t index);
+    /// Tells the recorder's self-check that `index` of `kind` was derived (mesh_change.cpp).
+    void carried(int kind, std::uint32_t index);
+    /// carry()'s body: derives `to` in every attribute of its kind and tells the recorder.
+    template <class H>
+    void derive(H to, const std::uint32_t* from, const double* weight, std::size_t n);
     /// A write the recorder cannot see is coming (whole arrays, renumbering, replacement).
     void untracked() {
         if (recorder_ != nullptr) [[unlikely]] {
@@ -390,6 +440,30 @@ private:
     Mesh& mesh_;
     Property<H, T> prop_;
 };
+
+template <class H>
+void Mesh::carry(H to, std::initializer_list<std::pair<H, double>> from) {
+    std::uint32_t index[8];
+    double weight[8];
+    MESHEDIT_ASSERT(from.size() <= 8);
+    std::size_t n = 0;
+    for (const auto& [h, w] : from) {
+        index[n] = h.idx();
+        weight[n++] = w;
+    }
+    derive(to, index, weight, n);
+}
+
+template <class H>
+void Mesh::carry(H to, const H* from, const double* weight, std::size_t n) {
+    std::uint32_t small[16];
+    std::vector<std::uint32_t> large(n > 16 ? n : 0);
+    std::uint32_t* index = n > 16 ? large.data() : small;
+    for (std::size_t i = 0; i < n; ++i) {
+        index[i] = from[i].idx();
+    }
+    derive(to, index, weight, n);
+}
 
 // ----------------------------------------------------------------- range internals
 

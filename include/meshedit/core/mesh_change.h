@@ -130,6 +130,8 @@ public:
 
     /// Called by Mesh::touch() (`kind` 0–3) and on untracked writes (`kind` −1).
     void record(int kind, std::uint32_t index) noexcept;
+    /// Called by Mesh::carry() (kSelfCheck: finish() checks every new element was derived).
+    void carried(int kind, std::uint32_t index) noexcept;
     /// Called by Mesh::remove_property(): only arrays added since the recording began may go.
     void removing(const BasePropertyArray* array) noexcept;
 
@@ -146,9 +148,12 @@ private:
         std::vector<std::uint32_t> touched;
         std::vector<std::byte> before;
         Seen seen;
+        std::vector<std::uint8_t> carried;  ///< kSelfCheck: new element i - size_before derived
     };
     PropertyContainer& container(int kind) const;
     void stop();
+    /// kSelfCheck: the first live element made without Mesh::carry(), or "".
+    std::string underived() const;
 
     Mesh* mesh_;
     std::array<Log, 4> logs_;

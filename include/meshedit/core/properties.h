@@ -5,9 +5,12 @@
 /// treats every array the same way.
 
 #include <algorithm>
+#include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -20,6 +23,33 @@
 #include "meshedit/core/pod_array.h"
 
 namespace meshedit {
+
+/// How a property follows an operation that makes an element from others (Mesh::carry(), the
+/// attribute carry: docs/halfedge.md). With one source every rule but None copies it.
+enum class Carry : std::uint8_t {
+    Blend,     ///< the weighted sum of the sources (integers rounded, clamped): UVs, colours
+    Heaviest,  ///< the value of the source with the largest weight: labels, ids, handles
+    Any,       ///< the largest value among the sources: flags (a crease stays a crease)
+    None,      ///< untouched (a new element keeps the default): data its algorithm writes
+};
+
+/// Values that can be blended: numbers, and vectors with `+` and `* double` (Vec3).
+template <class T>
+concept Blendable = std::is_arithmetic_v<T> || requires(T a, double w) {
+    { a* w } -> std::convertible_to<T>;
+    { a + a } -> std::convertible_to<T>;
+};
+
+/// The default rule of a type: numbers with a fraction and vectors blend; integers and
+/// handles are labels and take the heaviest source.
+template <class T>
+constexpr Carry default_carry() {
+    if constexpr (std::is_floating_point_v<T> || (Blendable<T> && !std::is_arithmetic_v<T>)) {
+        return Carry::Blend;
+    } else {
+        return Carry::Heaviest;
+    }
+}
 
 /// Type-erased interface of one property array.
 class BasePropertyArray {
@@ -45,8 +75,30 @@ public:
     virtual std::size_t element_bytes() const = 0;
     virtual void save(std::size_t i, std::byte* out) const = 0;
     virtual void load(std::size_t i, const std::byte* in) = 0;
+    /// Element i takes the value element `source[i]` had (every index, all at once).
+    virtual void permute(const std::vector<std::uint32_t>& source) = 0;
+    /// Sets element `to` from the `n` elements `from` with weights `weight` (summing to 1) by
+    /// the array's carry rule; `n == 0` resets it to the default. `to` may be a source.
+    virtual void derive(std::size_t to, const std::uint32_t* from, const double* weight,
+                        std::size_t n) = 0;
+    /// The same, reading the sources from `source`, an array of the same type (a rebuilt
+    /// mesh's new array from its old one).
+    virtual void derive_from(const BasePropertyArray& source, std::size_t to,
+                             const std::uint32_t* from, const double* weight, std::size_t n) = 0;
+    /// The numbers one element holds if the type blends (1 for a number, 3 for a Vec3),
+    /// else 0; and channel `c` of every element as doubles, out and back in (integers
+    /// rounded and clamped). An algorithm that maps positions linearly (subdivision) maps
+    /// attributes through the same code this way.
+    virtual std::size_t channels() const = 0;
+    virtual void get_channel(std::size_t c, std::vector<double>& out) const = 0;
+    virtual void set_channel(std::size_t c, const std::vector<double>& in) = 0;
 
     const std::string& name() const { return name_; }
+    Carry carry() const { return carry_; }
+    void set_carry(Carry rule) { carry_ = rule; }
+
+protected:
+    Carry carry_ = Carry::Heaviest;
 
 private:
     std::string name_;
@@ -61,7 +113,9 @@ class PropertyArray final : public BasePropertyArray {
 
 public:
     PropertyArray(std::string name, T default_value)
-        : BasePropertyArray(std::move(name)), default_(std::move(default_value)) {}
+        : BasePropertyArray(std::move(name)), default_(std::move(default_value)) {
+        carry_ = default_carry<T>();
+    }
     void reserve(std::size_t n) override { data_.reserve(n); }
     void resize(std::size_t n) override { data_.resize(n, default_); }
     void push_back() override { data_.push_back(default_); }
@@ -87,6 +141,75 @@ public:
     void load(std::size_t i, const std::byte* in) override {
         std::memcpy(&data_[i], in, sizeof(T));
     }
+    void permute(const std::vector<std::uint32_t>& source) override {
+        memory::Array<T> old(data_);
+        for (std::size_t i = 0; i < source.size(); ++i) {
+            data_[i] = old[source[i]];
+        }
+    }
+    void derive(std::size_t to, const std::uint32_t* from, const double* weight,
+                std::size_t n) override {
+        derive_from(*this, to, from, weight, n);
+    }
+    void derive_from(const BasePropertyArray& source, std::size_t to, const std::uint32_t* from,
+                     const double* weight, std::size_t n) override {
+        if (carry_ == Carry::None) {
+            return;
+        }
+        const memory::Array<T>& src = static_cast<const PropertyArray<T>&>(source).data_;
+        if (n <= 1) {
+            data_[to] = n == 0 ? default_ : src[from[0]];
+            return;
+        }
+        std::size_t heaviest = 0;
+        for (std::size_t i = 1; i < n; ++i) {
+            heaviest = weight[i] > weight[heaviest] ? i : heaviest;
+        }
+        T value = src[from[heaviest]];
+        if constexpr (Blendable<T>) {
+            if (carry_ == Carry::Blend) {
+                value = blend(src, from, weight, n);
+            }
+        }
+        if constexpr (std::totally_ordered<T>) {
+            if (carry_ == Carry::Any) {
+                for (std::size_t i = 0; i < n; ++i) {
+                    value = std::max(value, src[from[i]]);
+                }
+            }
+        }
+        data_[to] = value;
+    }
+    std::size_t channels() const override {
+        if constexpr (std::is_arithmetic_v<T>) {
+            return 1;
+        } else if constexpr (Blendable<T> && sizeof(T) % sizeof(double) == 0) {
+            return sizeof(T) / sizeof(double);  // Vec3: three doubles
+        } else {
+            return 0;
+        }
+    }
+    void get_channel(std::size_t c, std::vector<double>& out) const override {
+        out.resize(data_.size());
+        for (std::size_t i = 0; i < data_.size(); ++i) {
+            if constexpr (std::is_arithmetic_v<T>) {
+                out[i] = static_cast<double>(data_[i]);
+            } else {
+                std::memcpy(&out[i], reinterpret_cast<const std::byte*>(&data_[i]) + 8 * c, 8);
+            }
+        }
+    }
+    void set_channel(std::size_t c, const std::vector<double>& in) override {
+        for (std::size_t i = 0; i < data_.size() && i < in.size(); ++i) {
+            if constexpr (std::is_integral_v<T>) {
+                data_[i] = to_integer(in[i]);
+            } else if constexpr (std::is_arithmetic_v<T>) {
+                data_[i] = static_cast<T>(in[i]);
+            } else {
+                std::memcpy(reinterpret_cast<std::byte*>(&data_[i]) + 8 * c, &in[i], 8);
+            }
+        }
+    }
 
     T& operator[](std::size_t i) { return data_[i]; }
     const T& operator[](std::size_t i) const { return data_[i]; }
@@ -95,6 +218,34 @@ public:
     const T& default_value() const { return default_; }
 
 private:
+    static T to_integer(double x) {
+        x = std::nearbyint(x);
+        if (!(x > static_cast<double>(std::numeric_limits<T>::lowest()))) {
+            return std::numeric_limits<T>::lowest();  // NaN too
+        }
+        if (!(x < static_cast<double>(std::numeric_limits<T>::max()))) {
+            return std::numeric_limits<T>::max();
+        }
+        return static_cast<T>(x);
+    }
+
+    static T blend(const memory::Array<T>& src, const std::uint32_t* from, const double* weight,
+                   std::size_t n) requires Blendable<T> {
+        if constexpr (std::is_integral_v<T>) {
+            double sum = 0.0;
+            for (std::size_t i = 0; i < n; ++i) {
+                sum += weight[i] * static_cast<double>(src[from[i]]);
+            }
+            return to_integer(sum);
+        } else {
+            T sum = src[from[0]] * weight[0];
+            for (std::size_t i = 1; i < n; ++i) {
+                sum = sum + src[from[i]] * weight[i];
+            }
+            return sum;
+        }
+    }
+
     memory::Array<T> data_;  // big arrays in huge pages (memory.h)
     T default_;
 };
@@ -176,6 +327,28 @@ public:
     }
 
     bool exists(std::string_view name) const { return find(name) != nullptr; }
+    /// Sets how the array named `name` follows operations. \return false if there is none.
+    bool set_carry(std::string_view name, Carry rule) {
+        BasePropertyArray* a = find(name);
+        if (a != nullptr) {
+            a->set_carry(rule);
+        }
+        return a != nullptr;
+    }
+
+    /// Permutes every array from index `first` on (BasePropertyArray::permute()).
+    void permute(std::size_t first, const std::vector<std::uint32_t>& source) {
+        for (std::size_t i = first; i < arrays_.size(); ++i) {
+            arrays_[i]->permute(source);
+        }
+    }
+    /// Derives element `to` of every array from index `first` on (Mesh::carry()).
+    void derive(std::size_t first, std::size_t to, const std::uint32_t* from, const double* weight,
+                std::size_t n) {
+        for (std::size_t i = first; i < arrays_.size(); ++i) {
+            arrays_[i]->derive(to, from, weight, n);
+        }
+    }
 
     /// The arrays in the order they were added (connectivity first).
     BasePropertyArray& array(std::size_t i) { return *arrays_[i]; }

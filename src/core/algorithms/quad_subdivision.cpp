@@ -44,12 +44,13 @@
 
 #include "algorithms/catmark_rules.h"
 #include "algorithms/loop_rules.h"
+#include "algorithms/refine_carry.h"
+#include "algorithms/refine_util.h"
 #include "mesh/mesh_arrays.h"
+#include "mesh/parallel.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/validate.h"
-#include "mesh/parallel.h"
-#include "algorithms/refine_util.h"
 
 namespace meshedit {
 namespace {
@@ -323,12 +324,30 @@ SubdivisionPlan plan_quad_subdivision(const Mesh& mesh, int levels) {
     return plan;
 }
 
+namespace {
+void quad_subdivide_arrays(Mesh& mesh, const QuadSubdivisionOptions& options);
+}  // namespace
+
 void quad_subdivide(Mesh& mesh, const QuadSubdivisionOptions& options) {
-    Progress progress(options.progress);
-    progress(0.0);
     if (mesh.has_garbage()) {
         mesh.garbage_collection();
     }
+    if (!refine::has_attributes(mesh)) {
+        quad_subdivide_arrays(mesh, options);
+        return;
+    }
+    QuadSubdivisionOptions quiet = options;
+    quiet.progress = nullptr;
+    refine::refine_carrying(mesh, refine::Layout::Quad, [&](Mesh& m) {
+        quad_subdivide_arrays(m, &m == &mesh ? options : quiet);
+    });
+}
+
+namespace {
+// One level on a collected mesh, array by array.
+void quad_subdivide_arrays(Mesh& mesh, const QuadSubdivisionOptions& options) {
+    Progress progress(options.progress);
+    progress(0.0);
     const std::size_t nv = mesh.vertices_size();
     const std::size_t ne = mesh.edges_size();
     const std::size_t nf = mesh.faces_size();
@@ -363,5 +382,6 @@ void quad_subdivide(Mesh& mesh, const QuadSubdivisionOptions& options) {
     MESHEDIT_ASSERT(!validate(mesh));
     progress(1.0);
 }
+}  // namespace
 
 }  // namespace meshedit

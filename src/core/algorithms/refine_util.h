@@ -12,10 +12,10 @@
 
 #include "algorithms/loop_rules.h"
 #include "mesh/mesh_arrays.h"
+#include "mesh/parallel.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/subdivision.h"
-#include "mesh/parallel.h"
 
 namespace meshedit::refine {
 

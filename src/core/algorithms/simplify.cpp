@@ -22,14 +22,14 @@
 #include <vector>
 
 #include "local_ops/collapse_guard.h"
+#include "mesh/triangles_only.h"
+#include "mesh/unit_scale.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/validate.h"
-#include "mesh/triangles_only.h"
-#include "mesh/unit_scale.h"
 
 namespace meshedit {
 namespace {

@@ -51,13 +51,14 @@
 #include <vector>
 
 #include "algorithms/loop_rules.h"
+#include "algorithms/refine_carry.h"
+#include "algorithms/refine_util.h"
 #include "mesh/mesh_arrays.h"
+#include "mesh/parallel.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
-#include "mesh/parallel.h"
-#include "algorithms/refine_util.h"
 
 namespace meshedit {
 namespace {
@@ -354,8 +355,27 @@ SubdivisionPlan plan_loop(const Mesh& mesh, int levels) {
     return plan;
 }
 
+namespace {
+void loop_subdivide_arrays(Mesh& mesh, const LoopOptions& options);
+}  // namespace
+
 LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
     LoopReport report = loop_rules::prepare(mesh);
+    if (!refine::has_attributes(mesh)) {
+        loop_subdivide_arrays(mesh, options);
+        return report;
+    }
+    LoopOptions quiet = options;
+    quiet.progress = nullptr;
+    refine::refine_carrying(mesh, refine::Layout::Loop, [&](Mesh& m) {
+        loop_subdivide_arrays(m, &m == &mesh ? options : quiet);
+    });
+    return report;
+}
+
+namespace {
+// One level on a prepared mesh (loop_rules::prepare()), array by array.
+void loop_subdivide_arrays(Mesh& mesh, const LoopOptions& options) {
     Progress progress(options.progress);
     progress(0.0);
 
@@ -395,7 +415,7 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
     }
     MESHEDIT_ASSERT(!validate(mesh));
     progress(1.0);
-    return report;
 }
+}  // namespace
 
 }  // namespace meshedit

@@ -35,13 +35,19 @@ bool is_amount_ok(double t) {
 //                v                                   | o[3]
 //                x3                                  x3
 Face split_fan(Mesh& mesh, const std::vector<Halfedge>& o, const std::vector<Vertex>& reuse,
-               const std::vector<Vec3>& start, double t) {
+               const std::vector<Vertex>& from, double t) {
     const auto count = static_cast<std::uint32_t>(o.size());
+    std::vector<Vec3> start(count);
     std::vector<Vec3> rail_end(count);
     std::vector<Face> loop(count);
+    std::vector<Halfedge> at_start(count);  // loop i's corner at from[i]
+    std::vector<Halfedge> at_next(count);   // loop i's corner at to_vertex(o[i+1])
     for (std::uint32_t i = 0; i < count; ++i) {
+        start[i] = mesh.position(from[i]);
         rail_end[i] = mesh.position(mesh.to_vertex(o[i]));
         loop[i] = mesh.face(o[i]);
+        at_start[i] = mesh.prev(o[i]);
+        at_next[i] = mesh.prev(Mesh::twin(o[(i + 1) % count]));
     }
     std::uint32_t fresh = 0;
     for (const Vertex r : reuse) {
@@ -80,6 +86,36 @@ Face split_fan(Mesh& mesh, const std::vector<Halfedge>& o, const std::vector<Ver
         mesh.position(w[i]) = start[i] + t * (rail_end[i] - start[i]);
     }
     mesh.set_halfedge(bevel, Mesh::twin(n(0)));
+
+    // Carry, with the weights of the positions: w[i] lies at t along from[i] -> to_vertex(o[i]),
+    // and so do its corners: n[i] in loop i, and twin(o[i+1]), now loop i's corner at
+    // w[i+1], blends towards to_vertex(o[i+1]). B's corners copy the loops' n[i]; B is a part
+    // of the first face around. New vertices first: a reused one is a source of the others.
+    for (const bool reused : {false, true}) {
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (reuse[i].is_valid() == reused) {
+                mesh.carry(w[i], {{from[i], 1.0 - t}, {mesh.to_vertex(o[i]), t}});
+            }
+        }
+    }
+    for (std::uint32_t i = 0; i < count; ++i) {
+        mesh.carry(n(i), {{at_start[i], 1.0 - t}, {o[i], t}});
+        mesh.carry_default(Mesh::edge(n(i)));
+    }
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const Halfedge arriving = Mesh::twin(o[(i + 1) % count]);
+        mesh.carry(arriving, {{arriving, 1.0 - t}, {at_next[i], t}});
+        mesh.carry(Mesh::twin(n(i)), n(i + 1));
+    }
+    Face around;
+    for (const Face f : loop) {
+        around = around.is_valid() ? around : f;
+    }
+    if (around.is_valid()) {
+        mesh.carry(bevel, around);
+    } else {
+        mesh.carry_default(bevel);
+    }
     return bevel;
 }
 
@@ -110,8 +146,7 @@ OpResult<Face> bevel_vertex(Mesh& mesh, Vertex v, double t) {
     }
     std::vector<Vertex> reuse(o.size());
     reuse[0] = v;
-    const std::vector<Vec3> start(o.size(), mesh.position(v));
-    return split_fan(mesh, o, reuse, start, t);
+    return split_fan(mesh, o, reuse, std::vector<Vertex>(o.size(), v), t);
 }
 
 OpStatus is_bevel_edge_ok(const Mesh& mesh, Edge e, double t) {
@@ -147,15 +182,15 @@ OpResult<Face> bevel_edge(Mesh& mesh, Edge e, double amount) {
     const Vertex b = mesh.to_vertex(h);
     std::vector<Halfedge> o;
     std::vector<Vertex> reuse;
-    std::vector<Vec3> start;
+    std::vector<Vertex> from;
     for (const auto& [around, end] : {std::pair{h, a}, std::pair{t, b}}) {
         for (Halfedge x = mesh.ccw_rotated(around); x != around; x = mesh.ccw_rotated(x)) {
             reuse.push_back(x == mesh.ccw_rotated(around) ? end : Vertex());
             o.push_back(x);
-            start.push_back(mesh.position(end));
+            from.push_back(end);
         }
     }
-    const Face bevel = split_fan(mesh, o, reuse, start, amount);
+    const Face bevel = split_fan(mesh, o, reuse, from, amount);
     mesh.mark_deleted(e);
     return bevel;
 }

@@ -124,12 +124,10 @@ OpStatus is_collapse_ok(const Mesh& mesh, Edge e) {
 
 namespace {
 
-// Two edges become one: the one kept is a crease if either was (a feature line survives a
-// collapse beside it, as it survives a split). `crease` may be null (no crease property).
-void merge_crease(EdgeProperty<std::uint8_t>& crease, Edge kept, Edge merged) {
-    if (crease) {
-        crease[kept] = std::max(crease[kept], crease[merged]);
-    }
+// Two edges become one: the one kept blends both (a crease if either was: a feature line
+// survives a collapse beside it, as it survives a split).
+void merge_edges(Mesh& mesh, Edge kept, Edge merged) {
+    mesh.carry(kept, {{kept, 0.5}, {merged, 0.5}});
 }
 
 }  // namespace
@@ -166,8 +164,6 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
     const Halfedge p0 = mesh.prev(h0);  // ends at v0; never deleted
     const bool triangle0 = in_triangle(mesh, h0);
     const bool triangle1 = in_triangle(mesh, t0);
-    auto crease = (triangle0 || triangle1) ? mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)
-                                           : EdgeProperty<std::uint8_t>();
 
     // Everything that pointed at v1 now points at v0.
     redirect_arrivals(mesh, v1, v0);
@@ -187,7 +183,8 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
         if (mesh.halfedge(a) == o1) {
             mesh.set_halfedge(a, h2);
         }
-        merge_crease(crease, Mesh::edge(h2), Mesh::edge(h1));
+        merge_edges(mesh, Mesh::edge(h2), Mesh::edge(h1));
+        mesh.carry(h2, o1);  // the corner at v1 of the face across h1
         mesh.mark_deleted(Mesh::edge(h1));
         mesh.mark_deleted(f0);
     }
@@ -197,7 +194,8 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
         if (mesh.halfedge(d) == t2) {
             mesh.set_halfedge(d, Mesh::twin(t1));
         }
-        merge_crease(crease, Mesh::edge(t1), Mesh::edge(t2));
+        merge_edges(mesh, Mesh::edge(t1), Mesh::edge(t2));
+        mesh.carry(t1, Mesh::twin(t2));  // the corner at d of the face across t2
         mesh.mark_deleted(Mesh::edge(t2));
         mesh.mark_deleted(f1);
     }
@@ -217,6 +215,7 @@ OpResult<Vertex> collapse(Mesh& mesh, Edge e) {
     } while (h != first);
     mesh.set_halfedge(v0, anchor);
     mesh.position(v0) = midpoint(mesh.position(v0), mesh.position(v1));
+    mesh.carry(v0, {{v0, 0.5}, {v1, 0.5}});
 
     mesh.mark_deleted(e);
     mesh.mark_deleted(v1);
@@ -411,7 +410,6 @@ OpResult<Vertex> collapse_face(Mesh& mesh, Face f) {
     const FaceFrame fr = frame_of(mesh, f);
     const std::size_t n = fr.c.size();
     const Vertex w = fr.sorted.front();
-    auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
     Vec3 centre{0, 0, 0};
     std::vector<Halfedge> around;  // halfedges leaving the corners, off f
     std::vector<char> triangle(n);
@@ -441,7 +439,8 @@ OpResult<Vertex> collapse_face(Mesh& mesh, Face f) {
         if (mesh.halfedge(x) == q) {
             mesh.set_halfedge(x, Mesh::twin(p));
         }
-        merge_crease(crease, Mesh::edge(p), Mesh::edge(q));
+        merge_edges(mesh, Mesh::edge(p), Mesh::edge(q));
+        mesh.carry(p, Mesh::twin(q));  // the corner at x of the face across q
         mesh.mark_deleted(Mesh::edge(q));
         mesh.mark_deleted(g);
     }
@@ -469,6 +468,8 @@ OpResult<Vertex> collapse_face(Mesh& mesh, Face f) {
     }
     mesh.set_halfedge(w, anchor);
     mesh.position(w) = centre;
+    const std::vector<double> weights(n, 1.0 / static_cast<double>(n));
+    mesh.carry(w, fr.c.data(), weights.data(), n);
     return w;
 }
 

@@ -162,8 +162,12 @@ OpResult<Face> fill_hole(Mesh& mesh, Halfedge h) {
     if (const OpStatus ok = is_fill_hole_ok(mesh, h); !ok) {
         return ok;
     }
+    // Carry: nothing old describes g; each corner of it takes the values of the corner at
+    // the same vertex across its next side, so a filled hole shows no seam.
     const Face g = mesh.new_face();
+    mesh.carry_default(g);
     for (Halfedge x = h;;) {
+        mesh.carry(x, Mesh::twin(mesh.next(x)));
         mesh.set_face(x, g);
         x = mesh.next(x);
         if (x == h) {
@@ -339,9 +343,10 @@ OpResult<Face> dissolve_vertex(Mesh& mesh, Vertex v) {
             mesh.set_next(last[i], first[i + 1]);
         }
         mesh.set_next(closing, first[1]);  // last[n-1] -> closing is linked already
-        if (auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
-            crease[Mesh::edge(closing)] = 0;
-        }
+        // Carry: the closing edge is new in all but its index (not a crease); its halfedge is
+        // now the merged face's corner at x1, which o[1] was in f[1].
+        mesh.carry_default(Mesh::edge(closing));
+        mesh.carry(closing, o[1]);
         start = closing;
     }
     const Face merged = f[first_face];

@@ -57,6 +57,39 @@ bool inner_corners_in_range(const Ring& r, double shrink, const Vec3& lift) {
     return true;
 }
 
+// The attribute carry of extrude_face(), with its names: q[i] blends the corners with the
+// weights of its position's shrink towards the centre (the lift is not an attribute's);
+// f's corner at q[i] (k[i-1]) and quad i-1's (up[i]) and quad i's (kt[i]) blend f's old
+// corners the same way, down[i] is quad i's corner at p[i] as h[i-1] was f's; the quads are
+// parts of f, the inner sides copies of the old sides, the rungs new.
+void carry_extruded(Mesh& mesh, Face f, const Ring& r, double shrink, std::uint32_t first_v,
+                    std::uint32_t first_e, std::uint32_t first_f) {
+    const auto n = static_cast<std::uint32_t>(r.h.size());
+    std::vector<Vertex> p(n);
+    std::vector<Halfedge> corner(n);  // f's old corner at p[i]: h[i-1]
+    for (std::uint32_t i = 0; i < n; ++i) {
+        p[i] = mesh.from_vertex(r.h[i]);
+        corner[i] = r.h[(i + n - 1) % n];
+    }
+    std::vector<double> w(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Halfedge up = Mesh::halfedge(Edge(first_e + i), 0);
+        const Halfedge k_prev = Mesh::halfedge(Edge(first_e + n + (i + n - 1) % n), 0);
+        const Halfedge kt = Mesh::halfedge(Edge(first_e + n + i), 1);
+        for (std::uint32_t m = 0; m < n; ++m) {
+            w[m] = shrink / n + (m == i ? 1.0 - shrink : 0.0);
+        }
+        mesh.carry(Vertex(first_v + i), p.data(), w.data(), n);
+        for (const Halfedge at_q : {up, k_prev, kt}) {
+            mesh.carry(at_q, corner.data(), w.data(), n);
+        }
+        mesh.carry(Mesh::twin(up), corner[i]);
+        mesh.carry_default(Mesh::edge(up));
+        mesh.carry(Edge(first_e + n + i), Mesh::edge(r.h[i]));
+        mesh.carry(Face(first_f + i), f);
+    }
+}
+
 }  // namespace
 
 OpStatus is_extrude_ok(const Mesh& mesh, Face f, double height, double shrink) {
@@ -160,6 +193,7 @@ OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink) {
         mesh.set_halfedge(q(i), k(i));
     }
     mesh.set_halfedge(f, k(0));
+    carry_extruded(mesh, f, r, shrink, first_v, first_e, first_f);
     return f;
 }
 

@@ -131,6 +131,10 @@ void prefetch_edge_frame(const Mesh& mesh, Edge e, const EdgeFrameLinks& links) 
     const Face f0 = mesh.face(h0);
     const Face f1 = mesh.face(t0);
 
+    // Carry: h0 becomes f0's corner at a, which h1 was; t0 f1's corner at d, which t1 was.
+    // h1 and t1 change faces and keep their values; the edge keeps its own.
+    mesh.carry(h0, h1);
+    mesh.carry(t0, t1);
     mesh.set_vertex(h0, a);
     mesh.set_vertex(t0, d);
     mesh.set_next(h0, h3);
@@ -196,6 +200,12 @@ Halfedge cut(Mesh& mesh, Halfedge hu, Halfedge hv) {
     }
     mesh.set_halfedge(f, n1);
     mesh.set_halfedge(g, n0);
+    // Carry: g is a part of f; n0 is g's corner at v as hv is f's, n1 f's corner at u as hu
+    // is g's; the new edge is new.
+    mesh.carry(g, f);
+    mesh.carry(n0, hv);
+    mesh.carry(n1, hu);
+    mesh.carry_default(Mesh::edge(n0));
     return n0;
 }
 
@@ -384,10 +394,26 @@ OpResult<Vertex> split(Mesh& mesh, Edge e) {
     mesh.set_vertex(s1, b);
     mesh.set_vertex(w0, d);
     mesh.set_vertex(w1, m);
-    // Both halves of a crease stay creases (Loop subdivision relies on it).
-    if (auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
-        crease[Mesh::edge(s0)] = crease[e];
+    // Carry (a halfedge holds its face's corner at its head): m is the midpoint of b and c;
+    // s is a half of e (both halves of a crease stay creases: Loop relies on it); u and w
+    // cross old faces; f2 and f3 are parts of f0 and f1. Corners at m blend those at b and c
+    // of the same face; t0 moves from b to m, so the copies of it come first.
+    mesh.carry(m, {{b, 0.5}, {c, 0.5}});
+    mesh.carry(Mesh::edge(s0), e);
+    mesh.carry_default(Mesh::edge(w0));
+    mesh.carry(f3, f1);
+    mesh.carry(s1, t0);
+    mesh.carry(w0, t1);
+    mesh.carry(w1, {{t0, 0.5}, {t2, 0.5}});
+    mesh.carry(t0, {{t0, 0.5}, {t2, 0.5}});
+    if (top) {
+        const Halfedge u0 = Mesh::halfedge(Edge(first_e + 2), 0);
+        mesh.carry_default(Mesh::edge(u0));
+        mesh.carry(Face(first_f + 1), f0);
+        mesh.carry(u0, h1);
+        mesh.carry(Mesh::twin(u0), {{h2, 0.5}, {h0, 0.5}});
     }
+    mesh.carry(s0, {{h2, 0.5}, {h0, 0.5}});
 
     // Relink the bottom: f1 = t0 -> w0 -> t2, f3 = s1 -> t1 -> w1.
     mesh.set_vertex(t0, m);
@@ -472,9 +498,13 @@ OpResult<Vertex> bisect(Mesh& mesh, Edge e) {
     mesh.new_elements(0, 1, 0);
     const Halfedge s0 = Mesh::halfedge(Edge(first_e), 0);
     const Halfedge s1 = Mesh::twin(s0);
-    if (auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
-        crease[Mesh::edge(s0)] = crease[e];
-    }
+    // Carry, as in split(): m is the midpoint, s a half of e; t0's corner moves from b to m.
+    const Halfedge t2 = mesh.prev(t0);
+    mesh.carry(m, {{b, 0.5}, {c, 0.5}});
+    mesh.carry(Mesh::edge(s0), e);
+    mesh.carry(s0, {{h2, 0.5}, {h0, 0.5}});
+    mesh.carry(s1, t0);
+    mesh.carry(t0, {{t0, 0.5}, {t2, 0.5}});
 
     // Loop of h0: h2 -> s0 -> h0; loop of t0: t0 -> s1 -> t1.
     mesh.set_vertex(s0, m);

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 #include "mesh/mesh_arrays.h"
 #include "meshedit/core/local_ops.h"
@@ -24,6 +25,16 @@ namespace meshedit {
 // just before h in h's loop (the old prev(h)) leaves it. On a boundary vertex h is a boundary
 // halfedge and so is the old prev(h): the anchor stays on the boundary.
 void flip_orientation(Mesh& mesh) {
+    // Carry: h's head becomes its old tail, so h becomes its face's corner there, which
+    // the old prev(h) was.
+    {
+        const auto& old_prev = MeshArrays::prev(mesh);
+        std::vector<std::uint32_t> source(old_prev.size());
+        for (std::size_t h = 0; h < source.size(); ++h) {
+            source[h] = old_prev[h].is_valid() ? old_prev[h].idx() : static_cast<std::uint32_t>(h);
+        }
+        mesh.permute_attributes<Halfedge>(source);
+    }
     auto& next = MeshArrays::next(mesh);
     auto& prev = MeshArrays::prev(mesh);
     auto& head = MeshArrays::to_vertex(mesh);

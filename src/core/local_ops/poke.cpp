@@ -71,6 +71,23 @@ OpResult<Vertex> poke(Mesh& mesh, Face f) {
     // The corners keep their anchors: each still leaves along its old side, and boundary
     // halfedges are not touched.
     mesh.set_halfedge(c, o(0));
+    // Carry: c blends the corners with the centre's weights, and f's corners blend into the
+    // corner at c of every triangle; o(i) is triangle i's corner at p[i], which h[i-1] was;
+    // the triangles are parts of f; the spokes are new.
+    std::vector<Vertex> corners;
+    std::vector<double> weights(n, 1.0 / n);
+    for (const Halfedge side : h) {
+        corners.push_back(mesh.from_vertex(side));
+    }
+    mesh.carry(c, corners.data(), weights.data(), n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        mesh.carry(Mesh::twin(o(i + 1)), h.data(), weights.data(), n);
+        mesh.carry(o(i), h[(i + n - 1) % n]);
+        mesh.carry_default(Mesh::edge(o(i)));
+        if (i > 0) {
+            mesh.carry(triangle(i), f);
+        }
+    }
     return c;
 }
 

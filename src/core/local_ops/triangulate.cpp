@@ -133,20 +133,33 @@ OpResult<Face> triangulate(Mesh& mesh, Face f) {
         std::uint32_t i, j;
         Halfedge c;
     };
+    // Carry: a chord's halfedge is its face's corner at its head, which the side arriving at
+    // that corner of f was; the chords are new, the triangles parts of f.
+    const auto corner = [&](std::uint32_t m) { return plan.sides[(m + n - 1) % n]; };
+    const auto carry_chord = [&](Halfedge chord, std::uint32_t from, std::uint32_t to) {
+        mesh.carry(chord, corner(to));
+        mesh.carry(Mesh::twin(chord), corner(from));
+        mesh.carry_default(Mesh::edge(chord));
+    };
     std::vector<Part> todo{{0, n - 1, plan.sides[n - 1]}};
     while (!todo.empty()) {
         const auto [i, j, c] = todo.back();
         todo.pop_back();
         const Face g = (c == plan.sides[n - 1]) ? f : mesh.new_face();
+        if (g != f) {
+            mesh.carry(g, f);
+        }
         const std::uint32_t k = plan.apex(i, j);
         Halfedge ik = plan.sides[i];
         if (k != i + 1) {
             ik = mesh.new_edge(plan.corners[i], plan.corners[k]);
+            carry_chord(ik, i, k);
             todo.push_back({i, k, Mesh::twin(ik)});
         }
         Halfedge kj = plan.sides[k];
         if (j != k + 1) {
             kj = mesh.new_edge(plan.corners[k], plan.corners[j]);
+            carry_chord(kj, k, j);
             todo.push_back({k, j, Mesh::twin(kj)});
         }
         mesh.set_next(ik, kj);

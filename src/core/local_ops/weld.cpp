@@ -135,12 +135,15 @@ OpResult<Edge> weld(Mesh& mesh, Edge e1, Edge e2) {
             continue;
         }
         mesh.position(to) = midpoint(mesh.position(to), mesh.position(from));
+        mesh.carry(to, {{to, 0.5}, {from, 0.5}});
         redirect_arrivals(mesh, from, to);
         mesh.set_halfedge(from, Halfedge());
         mesh.mark_deleted(from);
     }
 
-    // g1 takes h2's place in F2.
+    // g1 takes h2's place in F2, as its corner at d (now a); e1 blends both edges.
+    mesh.carry(g1, h2);
+    mesh.carry(e1, {{e1, 0.5}, {e2, 0.5}});
     mesh.set_next(mesh.prev(h2), g1);
     mesh.set_next(g1, mesh.next(h2));
     mesh.set_face(g1, f2);

@@ -15,8 +15,8 @@
 #include <algorithm>
 #include <sstream>
 
-#include "meshedit/core/memory.h"
 #include "mesh/parallel.h"
+#include "meshedit/core/memory.h"
 
 namespace meshedit {
 namespace {

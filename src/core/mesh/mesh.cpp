@@ -1,6 +1,22 @@
 #include "meshedit/core/mesh.h"
 
+#include <type_traits>
+
+#include "mesh/mesh_arrays.h"
+#include "meshedit/core/attributes.h"
+
 namespace meshedit {
+namespace {
+constexpr const std::size_t* kFirstAttribute = MeshArrays::kFirstAttribute;
+
+template <class H>
+constexpr int kind_of() {
+    return std::is_same_v<H, Vertex>     ? 0
+           : std::is_same_v<H, Halfedge> ? 1
+           : std::is_same_v<H, Edge>     ? 2
+                                         : 3;
+}
+}  // namespace
 
 Mesh::Mesh() {
     add_connectivity();
@@ -67,7 +83,40 @@ void Mesh::add_connectivity() {
     edeleted_ = EdgeProperty<std::uint8_t>(eprops_.add<std::uint8_t>("e:deleted", 0));
     fhalfedge_ = FaceProperty<Halfedge>(fprops_.add<Halfedge>("f:halfedge"));
     fdeleted_ = FaceProperty<std::uint8_t>(fprops_.add<std::uint8_t>("f:deleted", 0));
+    MESHEDIT_ASSERT(vprops_.n_properties() == kFirstAttribute[0] &&
+                    hprops_.n_properties() == kFirstAttribute[1] &&
+                    eprops_.n_properties() == kFirstAttribute[2] &&
+                    fprops_.n_properties() == kFirstAttribute[3]);
 }
+
+template <class H>
+void Mesh::derive(H to, const std::uint32_t* from, const double* weight, std::size_t n) {
+    constexpr int kind = kind_of<H>();
+    if (recorder_ != nullptr) [[unlikely]] {
+        record(kind, to.idx());
+        carried(kind, to.idx());
+    }
+    container<H>().derive(kFirstAttribute[kind], to.idx(), from, weight, n);
+}
+
+template <class H>
+void Mesh::permute_attributes(const std::vector<std::uint32_t>& source) {
+    PropertyContainer& c = container<H>();
+    if (c.n_properties() > kFirstAttribute[kind_of<H>()]) {
+        untracked();
+        c.permute(kFirstAttribute[kind_of<H>()], source);
+    }
+}
+
+template void Mesh::permute_attributes<Vertex>(const std::vector<std::uint32_t>&);
+template void Mesh::permute_attributes<Halfedge>(const std::vector<std::uint32_t>&);
+template void Mesh::permute_attributes<Edge>(const std::vector<std::uint32_t>&);
+template void Mesh::permute_attributes<Face>(const std::vector<std::uint32_t>&);
+
+template void Mesh::derive(Vertex, const std::uint32_t*, const double*, std::size_t);
+template void Mesh::derive(Halfedge, const std::uint32_t*, const double*, std::size_t);
+template void Mesh::derive(Edge, const std::uint32_t*, const double*, std::size_t);
+template void Mesh::derive(Face, const std::uint32_t*, const double*, std::size_t);
 
 void Mesh::bind_connectivity() {
     vpoint_ = VertexProperty<Vec3>(vprops_.get<Vec3>("v:position"));
@@ -80,6 +129,14 @@ void Mesh::bind_connectivity() {
     edeleted_ = EdgeProperty<std::uint8_t>(eprops_.get<std::uint8_t>("e:deleted"));
     fhalfedge_ = FaceProperty<Halfedge>(fprops_.get<Halfedge>("f:halfedge"));
     fdeleted_ = FaceProperty<std::uint8_t>(fprops_.get<std::uint8_t>("f:deleted"));
+}
+
+void Mesh::well_known_carry(BasePropertyArray& array) {
+    for (const auto& [name, rule] : kCarryRules) {
+        if (array.name() == name) {
+            array.set_carry(rule);
+        }
+    }
 }
 
 bool Mesh::is_connectivity(const BasePropertyArray* array) const {

@@ -13,6 +13,14 @@
 namespace meshedit {
 
 struct MeshArrays {
+    /// Where each kind's attributes start in its container (0 vertex … 3 face): positions and
+    /// connectivity come first (Mesh::add_connectivity()), and carry() leaves them alone.
+    static constexpr std::size_t kFirstAttribute[4] = {3, 4, 1, 2};
+    static PropertyContainer& container(Mesh& m, int kind) {
+        PropertyContainer* c[] = {&m.vprops_, &m.hprops_, &m.eprops_, &m.fprops_};
+        return *c[kind];
+    }
+
     static memory::Array<Halfedge>& next(Mesh& m) {
         m.untracked();
         return m.hnext_.vector();

@@ -265,6 +265,40 @@ void MeshRecorder::record(int kind, std::uint32_t index) noexcept {
     }
 }
 
+void MeshRecorder::carried(int kind, std::uint32_t index) noexcept {
+    if constexpr (kSelfCheck) {
+        Log& log = logs_[kind];
+        if (index >= log.size_before) {
+            try {
+                log.carried.resize(std::max(log.carried.size(), index - log.size_before + 1), 0);
+                log.carried[index - log.size_before] = 1;
+            } catch (const std::bad_alloc&) {
+                // the self-check only loses an element to check
+            }
+        }
+    }
+}
+
+// The self-check's second half: every element the edit made states where its attributes
+// come from (Mesh::carry()), so a new operation cannot forget the attribute carry.
+std::string MeshRecorder::underived() const {
+    for (int k = 0; k < 4; ++k) {
+        const Log& log = logs_[k];
+        const std::size_t size = container(k).size();
+        for (std::size_t i = log.size_before; i < size; ++i) {
+            const bool dead = k == 1   ? mesh_->is_deleted(Halfedge(static_cast<std::uint32_t>(i)))
+                              : k == 0 ? mesh_->is_deleted(Vertex(static_cast<std::uint32_t>(i)))
+                              : k == 2 ? mesh_->is_deleted(Edge(static_cast<std::uint32_t>(i)))
+                                       : mesh_->is_deleted(Face(static_cast<std::uint32_t>(i)));
+            const std::size_t j = i - log.size_before;
+            if (!dead && (j >= log.carried.size() || log.carried[j] == 0)) {
+                return std::string("new ") + kKindNames[k] + " " + std::to_string(i);
+            }
+        }
+    }
+    return "";
+}
+
 void MeshRecorder::removing(const BasePropertyArray* array) noexcept {
     for (int k = 0; k < 4; ++k) {
         const PropertyContainer& c = container(k);
@@ -343,6 +377,11 @@ MeshChange MeshRecorder::finish() {
                 "); write through the Mesh setters, or call touch() before a property "
                 "write");
         }
+        if (const std::string element = underived(); !element.empty()) {
+            throw std::logic_error("the recorder's self-check failed: the edit made " + element +
+                                   " without saying where its attributes come from; call "
+                                   "Mesh::carry() for every element an operation makes");
+        }
     }
     return change;
 }
@@ -398,6 +437,10 @@ bool bitwise_equal(const Mesh& a, const Mesh& b, std::string* why) {
 
 void Mesh::record(int kind, std::uint32_t index) {
     recorder_->record(kind, index);
+}
+
+void Mesh::carried(int kind, std::uint32_t index) {
+    recorder_->carried(kind, index);
 }
 
 void Mesh::removing(const BasePropertyArray* array) {

@@ -1,0 +1,33 @@
+#pragma once
+// Private to meshedit_core: the attribute carry of the refinements that rebuild the mesh
+// array by array (Loop, Catmull-Clark, linear), which cannot call Mesh::carry() element by
+// element without giving up their speed.
+
+#include <functional>
+
+#include "meshedit/core/mesh.h"
+
+namespace meshedit::refine {
+
+/// How one level numbers its result (subdivision.cpp's and quad_subdivision.h's layouts):
+/// both keep the old vertices, put edge e's point at V + e and make edges g < 2E the halves
+/// of old edge g / 2; Loop's face 4f + i is a part of old face f, Quad's faces are the
+/// corners of the old faces in order, and its face f's point is V + E + f.
+enum class Layout { Loop, Quad };
+
+/// True when the mesh has attributes to carry (any property but connectivity, positions and
+/// the crease flags the refinements keep themselves).
+bool has_attributes(const Mesh& mesh);
+
+/// Runs `refine` (one level, on a collected mesh; for Loop a triangle mesh) with the mesh's
+/// attributes carried: a vertex attribute that blends goes through the refinement itself
+/// in place of the positions (three numbers per run), so it gets exactly the positions'
+/// weights; other vertex attributes keep their values on old vertices and derive new points
+/// from the edge's ends or the face's corners; edges halves copy their edge and the edges
+/// inside faces are new; each face copies the face it is a part of; each corner copies the
+/// old face's corner at the same vertex, or blends the old corners at an edge's ends (an
+/// edge point) or at all the face's corners (a face point) — linear face-varying
+/// interpolation.
+void refine_carrying(Mesh& mesh, Layout layout, const std::function<void(Mesh&)>& refine);
+
+}  // namespace meshedit::refine
