@@ -50,9 +50,8 @@ SubdivisionPlan plan_quad_subdivision(const Mesh& mesh, int levels = 1);
 ///   faces     C: the quad of a face's corner, numbered face by face, each face's corners
 ///             from the one halfedge(f) points to
 ///
-/// Both halves of a crease edge stay creases; the new edges inside the faces are not.
-/// Halfedge, edge and face properties other than kCreaseProperty are reset to their
-/// defaults (the elements they described no longer exist).
+/// Both halves of a crease edge stay creases; the new edges inside the faces are not. Other
+/// properties follow the attribute carry (docs/halfedge.md, "What every operation carries").
 /// \throws std::length_error if the result would not fit 32-bit handles (nothing changed).
 ///         If building the result throws (std::bad_alloc), the mesh is left empty but valid.
 /// \post validate(mesh) passes; every face is a quad.

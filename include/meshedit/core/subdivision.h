@@ -70,9 +70,9 @@ SubdivisionPlan plan_loop(const Mesh& mesh, int levels = 1);
 /// is a corner and stays put. Both halves of a crease edge stay creases; the new edges
 /// inside old faces are not creases.
 ///
-/// Properties: vertex properties keep their values on the old vertices, new vertices get the
-/// default. Halfedge, edge and face properties other than kCreaseProperty are reset to their
-/// defaults (the elements they described no longer exist).
+/// Properties follow the attribute carry (docs/halfedge.md, "What every operation carries";
+/// src/core/algorithms/refine_carry.h): a blending vertex property gets the positions' own
+/// weights, edge halves and face parts copy their parent, corners interpolate linearly.
 /// The edge and face layout of the result is documented in src/core/algorithms/subdivision.cpp.
 /// \throws std::invalid_argument with the reason if is_loop_ok() refuses (nothing changed).
 /// \throws std::length_error if the result would not fit 32-bit indices (checked before

@@ -107,10 +107,10 @@ void refine_carrying(Mesh& mesh, Layout layout, const std::function<void(Mesh&)>
         }
     }
     Mesh base = mesh;
+    const std::array<std::vector<BasePropertyArray*>, 4> copies = attributes(base);
     for (int k = 0; k < 4; ++k) {
-        PropertyContainer& c = MeshArrays::container(base, k);
-        for (const BasePropertyArray* a : attributes(base)[k]) {
-            c.remove(a);
+        for (const BasePropertyArray* a : copies[k]) {
+            MeshArrays::container(base, k).remove(a);
         }
     }
     const std::size_t nv = base.vertices_size();
