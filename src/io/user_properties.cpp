@@ -34,6 +34,20 @@ void with_type(Type type, F&& f) {
     }
 }
 
+/// Colours and texture coordinates blend through edits whatever their type (an edge's
+/// midpoint gets the average colour); other integers are labels (the heaviest source).
+bool blends(std::string_view name) {
+    const std::string_view base = name.substr(name.rfind(':') + 1);
+    for (const char* c : {"red", "green", "blue", "alpha", "diffuse_red", "diffuse_green",
+                          "diffuse_blue", "diffuse_alpha", "s", "t", "u", "v", "texture_u",
+                          "texture_v", "texture_s", "texture_t"}) {
+        if (base == c) {
+            return true;
+        }
+    }
+    return false;
+}
+
 /// `source[e]` is the soup element of mesh element e.
 template <class H>
 void add(const std::vector<UserProperty>& props, const std::vector<std::size_t>& source,
@@ -45,6 +59,9 @@ void add(const std::vector<UserProperty>& props, const std::vector<std::size_t>&
         with_type(up.type, [&](auto zero) {
             using T = decltype(zero);
             auto prop = mesh.add_property<H, T>(up.name, T{});
+            if (blends(up.name)) {
+                mesh.template set_carry<H>(up.name, Carry::Blend);  // a uchar colour too
+            }
             for (std::size_t e = 0; e < source.size(); ++e) {
                 if (source[e] < up.values.size()) {
                     prop[H(static_cast<std::uint32_t>(e))] = static_cast<T>(up.values[source[e]]);

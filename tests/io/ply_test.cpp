@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "io/formats_test_util.h"
+#include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/io/ply.h"
 #include "support/mesh_compare.h"
@@ -410,6 +411,36 @@ TEST(Ply, PointCloudsAreRefusedByTheFrontDoor) {
                "blue\nend_header\n0 0 0 1 2 3\n1 1 1 1 2 3\n");
     EXPECT_EQ(io_error_of([&] { read_mesh(dir / "points.ply"); }),
               (dir / "points.ply").string() + ": holds no faces to load");
+}
+
+}  // namespace
+}  // namespace meshedit
+
+namespace meshedit {
+namespace {
+
+// A file's colours follow edits: the midpoint of a split gets the average colour, rounded
+// for uchar, and the copy of a face its face's value.
+TEST(Ply, ColoursBlendThroughEdits) {
+    test::ScratchDir dir;
+    test::spit(dir / "c.ply",
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+               "property float z\nproperty uchar red\nproperty int label\nelement face 1\n"
+               "property list uchar int vertex_indices\nproperty uchar green\nend_header\n"
+               "0 0 0 0 5\n1 0 0 255 6\n0 1 0 100 7\n3 0 1 2 42\n");
+    LoadedMesh loaded = read_mesh(dir / "c.ply");
+    Mesh& mesh = loaded.mesh;
+    const Edge e = mesh.find_edge(Vertex(0), Vertex(1));
+    const Vertex m = *split(mesh, e);
+    const auto red = mesh.get_property<Vertex, std::uint8_t>("v:ply:red");
+    const auto label = mesh.get_property<Vertex, std::int32_t>("v:ply:label");
+    const auto green = mesh.get_property<Face, std::uint8_t>("f:ply:green");
+    ASSERT_TRUE(red && label && green);
+    EXPECT_EQ(red[m], 128);  // (0 + 255) / 2 = 127.5, to the nearest even
+    EXPECT_TRUE(label[m] == 5 || label[m] == 6) << label[m];  // a label: one end's
+    for (const Face f : mesh.faces()) {
+        EXPECT_EQ(green[f], 42);
+    }
 }
 
 }  // namespace
