@@ -14,6 +14,7 @@
 #include "meshedit/io/off.h"
 #include "meshedit/io/ply.h"
 #include "meshedit/io/stl.h"
+#include "soup_attributes.h"
 #include "user_properties.h"
 
 namespace fs = std::filesystem;
@@ -72,6 +73,7 @@ LoadedMesh read_mesh(const fs::path& path) {
         throw IoError(path.string(), "", e.what());
     }
     user_properties::attach(soup, loaded.repairs, loaded.mesh);
+    soup_attributes::attach(soup, loaded.repairs, loaded.mesh);
     loaded.notices = std::move(soup.notices);
     loaded.unit_meter = soup.unit_meter;
 
@@ -118,6 +120,23 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
         }
         if (!names.empty()) {
             unkept.push_back("the PLY properties " + names + " (only PLY keeps them)");
+        }
+    }
+    if (!obj) {
+        // Only OBJ writes the attributes of the attributes issue so far.
+        const std::string format = ext == ".dae" ? "COLLADA" : ext.substr(1);
+        if (mesh.has_property<Halfedge>(kTexCoordProperty)) {
+            unkept.push_back("texture coordinates (MeshEdit writes them to OBJ only so far)");
+        }
+        if (mesh.has_property<Halfedge>(kCornerNormalProperty)) {
+            unkept.push_back("the file's normals (the " + format +
+                             " file gets normals computed from the faces, if any)");
+        }
+        const auto material = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
+        if (material && !mesh.materials().empty()) {
+            unkept.push_back(std::to_string(mesh.materials().size()) +
+                             " material(s) and which faces use them (MeshEdit writes them to "
+                             "OBJ only so far)");
         }
     }
     if (!obj && !off && !gltf && !ply && !stl) {

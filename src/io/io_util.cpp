@@ -37,6 +37,17 @@ std::string_view next_token(std::string_view& line) {
     return t;
 }
 
+std::string_view trim(std::string_view text) {
+    const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f'; };
+    while (!text.empty() && is_space(text.front())) {
+        text.remove_prefix(1);
+    }
+    while (!text.empty() && is_space(text.back())) {
+        text.remove_suffix(1);
+    }
+    return text;
+}
+
 std::optional<double> parse_double(std::string_view token) {
     // from_chars does not take a leading '+'.
     const std::size_t skip = token.size() > 1 && token[0] == '+' ? 1 : 0;

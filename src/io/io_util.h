@@ -22,6 +22,9 @@ std::string_view text_of(std::string_view bytes, const std::string& name);
 /// whitespace before it); empty at the end of the line.
 std::string_view next_token(std::string_view& line);
 
+/// `text` without the spaces, tabs, CR and FF around it (a name with spaces inside).
+std::string_view trim(std::string_view text);
+
 /// The next line of `text` from `pos` that holds a token (blank lines skipped), without its
 /// '\n'; `pos` moves past it and `line` counts every line read. Empty at the end.
 std::string_view next_content_line(std::string_view text, std::size_t& pos, std::size_t& line);

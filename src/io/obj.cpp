@@ -2,10 +2,11 @@
 // reads back to the same doubles; every index checked, with the line it is on) and the
 // writer. Polygons stay polygons.
 //
-// Read: `v x y z [w | r g b]`, `vn x y z`, `vt …` (counted, for index checks), faces `f` with
-// corners `v`, `v/vt`, `v//vn`, `v/vt/vn` and negative (relative) indices; `l` and `p` are
-// counted and ignored, as are `o g s usemtl mtllib` and comments. Faces with fewer than three
-// corners are passed on, and build_mesh() drops and reports them as it does for every format.
+// Read: `v x y z [w | r g b]`, `vn x y z`, `vt u [v [w]]`, faces `f` with corners `v`, `v/vt`,
+// `v//vn`, `v/vt/vn` and negative (relative) indices, kept per corner; `usemtl` (a face's
+// material) and `mtllib` (read_obj() reads the .mtl, mtl.h); `l` and `p` are counted and
+// ignored, as are `o g s` and comments. Faces with fewer than three corners are passed on,
+// and build_mesh() drops and reports them as it does for every format.
 
 #include "meshedit/io/obj.h"
 
@@ -13,11 +14,17 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 
 #include "io_util.h"
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/normals.h"
+#include "mtl.h"
 
 namespace meshedit {
 namespace {
@@ -93,13 +100,45 @@ private:
             }
             normals_.push_back(n);
         } else if (key == "vt") {
-            ++n_texcoords_;
+            Vec2 t;
+            const std::string_view u = io_util::next_token(l);
+            if (u.empty()) {
+                fail("a texture coordinate needs at least u");
+            }
+            t.x = number(u);
+            if (const std::string_view v = io_util::next_token(l); !v.empty()) {
+                t.y = number(v);
+            }
+            if (!std::isfinite(t.x) || !std::isfinite(t.y)) {
+                fail("texture coordinate " + std::to_string(texcoords_.size() + 1) +
+                     " is not finite (NaN or infinity)");
+            }
+            texcoords_.push_back(t);
         } else if (key == "f") {
             read_face(l);
         } else if (key == "l" || key == "p") {
             ++points_and_lines_;
+        } else if (key == "usemtl") {
+            use_material(io_util::trim(l));
+        } else if (key == "mtllib") {
+            out_.material_libraries.emplace_back(io_util::trim(l));
         }
-        // o, g, s, usemtl, mtllib and anything else: nothing to load.
+        // o, g, s and anything else: nothing to load.
+    }
+
+    // Faces from here on have material `name` (a name, spaces and all).
+    void use_material(std::string_view name) {
+        for (std::size_t i = 0; i < out_.materials.size(); ++i) {
+            if (out_.materials[i].name == name) {
+                material_ = static_cast<std::uint32_t>(i);
+                return;
+            }
+        }
+        if (out_.materials.empty() && face_ > 0) {
+            out_.materials.push_back(Material{});  // the faces before the first usemtl: none
+        }
+        material_ = static_cast<std::uint32_t>(out_.materials.size());
+        out_.materials.push_back(Material{std::string(name)});
     }
 
     // A 1-based, possibly negative OBJ index into `count` elements so far → 0-based. Absolute
@@ -140,12 +179,13 @@ private:
             const std::int64_t v =
                 index(corner.substr(0, s1), out_.soup.positions.size(), "vertex");
             std::int64_t n = -1;
+            std::int64_t t = -1;
             if (s1 != std::string_view::npos) {
                 const std::string_view rest = corner.substr(s1 + 1);
                 const std::size_t s2 = rest.find('/');
                 if (!rest.substr(0, s2).empty()) {
-                    const std::int64_t t = index(rest.substr(0, s2), n_texcoords_, "texture");
-                    pending |= static_cast<std::size_t>(t) >= n_texcoords_;
+                    t = index(rest.substr(0, s2), texcoords_.size(), "texture");
+                    pending |= static_cast<std::size_t>(t) >= texcoords_.size();
                 }
                 if (s2 != std::string_view::npos && !rest.substr(s2 + 1).empty()) {
                     n = index(rest.substr(s2 + 1), normals_.size(), "normal");
@@ -159,8 +199,10 @@ private:
             pending |= static_cast<std::size_t>(v) >= out_.soup.positions.size();
             out_.soup.indices.push_back(static_cast<std::uint32_t>(v));
             corner_normals_.push_back(n);
+            corner_texcoords_.push_back(t);
         }
         out_.soup.face_offsets.push_back(static_cast<std::uint32_t>(out_.soup.indices.size()));
+        face_materials_.push_back(material_);
         if (pending) {
             pending_.push_back({face_, line_});
         }
@@ -173,14 +215,20 @@ private:
             for (std::uint32_t c = out_.soup.face_offsets[face];
                  c < out_.soup.face_offsets[face + 1]; ++c) {
                 const std::int64_t n = corner_normals_[c];
-                if (out_.soup.indices[c] >= nv ||
-                    (n >= 0 && static_cast<std::size_t>(n) >= normals_.size())) {
+                const std::int64_t t = corner_texcoords_[c];
+                const char* missing =
+                    out_.soup.indices[c] >= nv                                     ? "vertex"
+                    : (n >= 0 && static_cast<std::size_t>(n) >= normals_.size())   ? "normal"
+                    : (t >= 0 && static_cast<std::size_t>(t) >= texcoords_.size()) ? "texture "
+                                                                                     "coordinate"
+                                                                                   : nullptr;
+                if (missing != nullptr) {
                     throw IoError(file_, where_line(line),
-                                  "face " + std::to_string(face + 1) + " refers to a " +
-                                      (out_.soup.indices[c] >= nv ? "vertex" : "normal") +
+                                  "face " + std::to_string(face + 1) + " refers to a " + missing +
                                       " that does not exist (the file has " + std::to_string(nv) +
-                                      " vertices and " + std::to_string(normals_.size()) +
-                                      " normals)");
+                                      " vertices, " + std::to_string(normals_.size()) +
+                                      " normals and " + std::to_string(texcoords_.size()) +
+                                      " texture coordinates)");
                 }
             }
         }
@@ -201,9 +249,46 @@ private:
                 }
             }
         }
+        keep_corners();
+        if (!out_.materials.empty()) {
+            out_.face_materials = std::move(face_materials_);
+        }
         if (points_and_lines_ > 0) {
             out_.notices.push_back("ignored " + std::to_string(points_and_lines_) +
                                    " point and line element(s); only faces are loaded");
+        }
+    }
+
+    // Texture coordinates and normals per corner, when any corner names one; a corner
+    // without gets (0, 0) or a zero normal, and a notice says how many.
+    void keep_corners() {
+        std::size_t without_t = 0;
+        std::size_t without_n = 0;
+        const bool any_t = std::any_of(corner_texcoords_.begin(), corner_texcoords_.end(),
+                                       [](std::int64_t t) { return t >= 0; });
+        const bool any_n = std::any_of(corner_normals_.begin(), corner_normals_.end(),
+                                       [](std::int64_t n) { return n >= 0; });
+        for (std::size_t c = 0; c < corner_texcoords_.size(); ++c) {
+            if (any_t) {
+                const std::int64_t t = corner_texcoords_[c];
+                out_.corner_texcoords.push_back(t >= 0 ? texcoords_[static_cast<std::size_t>(t)]
+                                                       : Vec2{});
+                without_t += t < 0 ? 1 : 0;
+            }
+            if (any_n) {
+                const std::int64_t n = corner_normals_[c];
+                out_.corner_normals.push_back(n >= 0 ? normals_[static_cast<std::size_t>(n)]
+                                                     : Vec3{});
+                without_n += n < 0 ? 1 : 0;
+            }
+        }
+        if (without_t > 0) {
+            out_.notices.push_back(std::to_string(without_t) +
+                                   " corner(s) without a texture coordinate got (0, 0)");
+        }
+        if (without_n > 0) {
+            out_.notices.push_back(std::to_string(without_n) +
+                                   " corner(s) without a normal got a zero normal");
         }
     }
 
@@ -211,8 +296,11 @@ private:
     std::string file_;
     MeshSoup out_;
     std::vector<Vec3> normals_;
-    std::vector<std::int64_t> corner_normals_;  // per corner: its vn, or -1
-    std::size_t n_texcoords_ = 0;
+    std::vector<Vec2> texcoords_;
+    std::vector<std::int64_t> corner_normals_;    // per corner: its vn, or -1
+    std::vector<std::int64_t> corner_texcoords_;  // per corner: its vt, or -1
+    std::vector<std::uint32_t> face_materials_;
+    std::uint32_t material_ = 0;
     std::size_t points_and_lines_ = 0;
     std::size_t line_ = 0;
     std::size_t face_ = 0;
@@ -231,46 +319,119 @@ MeshSoup parse_obj(std::string_view bytes, const std::string& name) {
 
 MeshSoup read_obj(const std::filesystem::path& path) {
     const std::string text = read_file(path);
-    return parse_obj(text, path.string());
+    MeshSoup soup = parse_obj(text, path.string());
+    mtl::read_libraries(path, soup);
+    return soup;
 }
 
-std::string obj_text(const Mesh& mesh, const IoFlags& flags) {
+namespace {
+
+// Corner values as OBJ writes them: each distinct value once, in the order corners first use
+// it, and per corner its 1-based index.
+template <class T>
+struct Indexed {
+    std::vector<T> values;
+    std::vector<std::uint32_t> corner;  // per soup corner
+};
+
+template <class T>
+Indexed<T> index_corners(const Mesh& dense, HalfedgeProperty<T> prop) {
+    Indexed<T> out;
+    std::map<std::pair<double, double>, std::uint32_t> seen2;
+    std::map<std::tuple<double, double, double>, std::uint32_t> seen3;
+    for (const Face f : dense.faces()) {
+        // Corner i of the soup face is the head of the halfedge before halfedge(f)'s i-th.
+        const Halfedge first = dense.prev(dense.halfedge(f));
+        Halfedge h = first;
+        do {
+            const T& v = prop[h];
+            std::uint32_t i = 0;
+            if constexpr (std::is_same_v<T, Vec2>) {
+                i = seen2.emplace(std::pair{v.x, v.y}, out.values.size() + 1).first->second;
+            } else {
+                i = seen3.emplace(std::tuple{v.x, v.y, v.z}, out.values.size() + 1).first->second;
+            }
+            if (i == out.values.size() + 1) {
+                out.values.push_back(v);
+            }
+            out.corner.push_back(i);
+            h = dense.next(h);
+        } while (h != first);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string obj_text(const Mesh& mesh, const IoFlags& flags, const std::string& library) {
     std::optional<Mesh> storage;
     const Mesh& dense = io_util::compacted(mesh, storage);
     const PolygonSoup soup = to_polygon_soup(dense);
-    std::vector<Vec3> normals;
-    if (flags.write_normals) {
-        compute_vertex_normals(dense, normals);
+    Indexed<Vec2> texcoords;
+    if (const auto uv = dense.get_property<Halfedge, Vec2>(kTexCoordProperty)) {
+        texcoords = index_corners(dense, uv);
     }
+    // The file's normals per corner if it had them, else area-weighted vertex normals.
+    Indexed<Vec3> normals;
+    if (const auto n = dense.get_property<Halfedge, Vec3>(kCornerNormalProperty)) {
+        normals = index_corners(dense, n);
+    } else if (flags.write_normals) {
+        compute_vertex_normals(dense, normals.values);
+        for (const std::uint32_t v : soup.indices) {
+            normals.corner.push_back(v + 1);
+        }
+    }
+    const auto material = dense.get_property<Face, std::uint32_t>(kMaterialProperty);
+    const bool materials = material && !dense.materials().empty();
 
     std::string text = "# MeshEdit OBJ: " + std::to_string(soup.positions.size()) + " vertices, " +
                        std::to_string(soup.n_faces()) + " faces\n";
-    text.reserve(soup.positions.size() * (flags.write_normals ? 140 : 70) +
-                 soup.indices.size() * 14);
+    if (materials && !library.empty()) {
+        text += "mtllib " + library + "\n";
+    }
+    text.reserve(soup.positions.size() * 70 + normals.values.size() * 70 +
+                 texcoords.values.size() * 50 + soup.indices.size() * 24);
     // Shortest round-trip decimals keep every double exactly.
-    auto put3 = [&text](const char* key, const Vec3& p) {
+    auto put = [&text](const char* key, const double* x, int n) {
         text += key;
-        for (int i = 0; i < 3; ++i) {
+        for (int i = 0; i < n; ++i) {
             text += ' ';
-            text += number_text(p[i]);
+            append_number_text(text, x[i]);
         }
         text += '\n';
     };
     for (const Vec3& p : soup.positions) {
-        put3("v", p);
+        put("v", &p.x, 3);
     }
-    for (const Vec3& n : normals) {
-        put3("vn", n);
+    for (const Vec2& t : texcoords.values) {
+        put("vt", &t.x, 2);
     }
+    for (const Vec3& n : normals.values) {
+        put("vn", &n.x, 3);
+    }
+    std::uint32_t current = kInvalidIndex;
     for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        if (materials) {
+            const std::uint32_t m = material[Face(static_cast<std::uint32_t>(f))];
+            if (m != current && m < dense.materials().size() &&
+                !dense.materials()[m].name.empty()) {
+                text += "usemtl " + dense.materials()[m].name + "\n";
+                current = m;
+            }
+        }
         text += 'f';
         for (std::uint32_t c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) {
-            const std::string i = std::to_string(soup.indices[c] + 1);
             text += ' ';
-            text += i;
-            if (flags.write_normals) {
-                text += "//";
-                text += i;
+            text += std::to_string(soup.indices[c] + 1);
+            if (!texcoords.corner.empty() || !normals.corner.empty()) {
+                text += '/';
+            }
+            if (!texcoords.corner.empty()) {
+                text += std::to_string(texcoords.corner[c]);
+            }
+            if (!normals.corner.empty()) {
+                text += '/';
+                text += std::to_string(normals.corner[c]);
             }
         }
         text += '\n';
@@ -279,7 +440,17 @@ std::string obj_text(const Mesh& mesh, const IoFlags& flags) {
 }
 
 void write_obj(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
-    const std::string text = obj_text(mesh, flags);
+    // Materials go to NAME.mtl beside NAME.obj, written first so the OBJ never names a
+    // library that is not there.
+    std::string library;
+    if (mesh.get_property<Face, std::uint32_t>(kMaterialProperty) && !mesh.materials().empty()) {
+        library = path.stem().string() + ".mtl";
+        const std::filesystem::path mtl_path = path.parent_path() / library;
+        const std::string mtl_text = mtl::text(mesh, path.parent_path());
+        write_atomically(mtl_path,
+                         [&](const std::filesystem::path& tmp) { write_file(tmp, mtl_text); });
+    }
+    const std::string text = obj_text(mesh, flags, library);
     write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, text); });
 }
 

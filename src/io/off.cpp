@@ -283,8 +283,7 @@ void write_off(const Mesh& mesh, const std::filesystem::path& path) {
                        '\n';
     text.reserve(soup.positions.size() * 70 + soup.indices.size() * 10);
     for (const Vec3& p : soup.positions) {
-        text += number_text(p.x) + ' ' + number_text(p.y) + ' ' +
-                number_text(p.z) + '\n';
+        text += number_text(p.x) + ' ' + number_text(p.y) + ' ' + number_text(p.z) + '\n';
     }
     for (std::size_t f = 0; f < soup.n_faces(); ++f) {
         text += std::to_string(soup.face_offsets[f + 1] - soup.face_offsets[f]);

@@ -17,6 +17,15 @@ namespace meshedit {
 /// `<extra>`, the renderer draws them green.
 inline constexpr const char* kCreaseProperty = "e:crease";
 
+/// Halfedge property (Vec2): the texture coordinate of the corner of face(h) at to_vertex(h)
+/// (face-varying: a seam is where two corners of a vertex differ). OBJ `vt`, glTF TEXCOORD_0.
+inline constexpr const char* kTexCoordProperty = "h:texcoord";
+/// Halfedge property (Vec3): the normal a file gave the corner of face(h) at to_vertex(h)
+/// (split normals; per-vertex normals are the seamless case). OBJ `vn`, glTF NORMAL.
+inline constexpr const char* kCornerNormalProperty = "h:normal";
+/// Face property (std::uint32_t): the face's index in Mesh::materials() (OBJ `usemtl`).
+inline constexpr const char* kMaterialProperty = "f:material";
+
 /// The properties a phased Loop leaves on the mesh between phases (loop_steps.h), which the
 /// renderer's overlay draws: where each vertex goes, and which vertices and edges the phases
 /// made or flipped.

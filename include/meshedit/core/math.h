@@ -7,6 +7,19 @@
 
 namespace meshedit {
 
+/// A texture coordinate (u, v): blends like Vec3 (the attribute carry, properties.h).
+struct Vec2 {
+    double x = 0.0;
+    double y = 0.0;
+    constexpr bool operator==(const Vec2&) const = default;
+};
+constexpr Vec2 operator+(const Vec2& a, const Vec2& b) {
+    return {a.x + b.x, a.y + b.y};
+}
+constexpr Vec2 operator*(const Vec2& a, double s) {
+    return {a.x * s, a.y * s};
+}
+
 /// A point or direction in 3D.
 struct Vec3 {
     double x = 0.0;

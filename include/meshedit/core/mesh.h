@@ -16,6 +16,7 @@
 #include "meshedit/core/assert.h"
 #include "meshedit/core/circulators.h"
 #include "meshedit/core/handles.h"
+#include "meshedit/core/material.h"
 #include "meshedit/core/math.h"
 #include "meshedit/core/properties.h"
 
@@ -349,6 +350,10 @@ public:
         return container<H>().names();
     }
 
+    /// The materials a face's kMaterialProperty names (attributes.h), in index order.
+    const std::vector<Material>& materials() const { return materials_; }
+    std::vector<Material>& materials() { return materials_; }
+
 private:
     template <class H>
     PropertyContainer& container() {
@@ -417,6 +422,7 @@ private:
     std::size_t n_deleted_vertices_ = 0;
     std::size_t n_deleted_edges_ = 0;
     std::size_t n_deleted_faces_ = 0;
+    std::vector<Material> materials_;
     MeshRecorder* recorder_ = nullptr;  ///< the edit being recorded; never copied or moved
 };
 

@@ -21,6 +21,7 @@
 #include "meshedit/bezier/bezier_curve.h"
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/build.h"
+#include "meshedit/core/material.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/files/files.h"
 
@@ -47,6 +48,16 @@ struct MeshSoup {
     /// Crease edges as vertex index pairs (MeshEdit's own `<extra>` in COLLADA); read_mesh()
     /// marks them in the "e:crease" edge property.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> creases;
+    /// Per corner (one per entry of soup.indices) when the file has them, else empty: texture
+    /// coordinates and normals (read_mesh() keeps them as kTexCoordProperty and
+    /// kCornerNormalProperty, attributes.h).
+    std::vector<Vec2> corner_texcoords;
+    std::vector<Vec3> corner_normals;
+    /// Per face, an index into `materials`, when the file names materials (else empty).
+    std::vector<std::uint32_t> face_materials;
+    std::vector<Material> materials;
+    /// OBJ: the material libraries (`mtllib`) the file names, as written.
+    std::vector<std::string> material_libraries;
     /// Values without a meaning in MeshEdit, one per soup vertex / face (UserProperty).
     std::vector<UserProperty> vertex_properties;
     std::vector<UserProperty> face_properties;

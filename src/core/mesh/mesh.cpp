@@ -29,7 +29,8 @@ Mesh::Mesh(const Mesh& other)
       fprops_(other.fprops_),
       n_deleted_vertices_(other.n_deleted_vertices_),
       n_deleted_edges_(other.n_deleted_edges_),
-      n_deleted_faces_(other.n_deleted_faces_) {
+      n_deleted_faces_(other.n_deleted_faces_),
+      materials_(other.materials_) {
     bind_connectivity();
 }
 
@@ -62,6 +63,8 @@ void Mesh::take_from(Mesh& other) noexcept {
     n_deleted_vertices_ = other.n_deleted_vertices_;
     n_deleted_edges_ = other.n_deleted_edges_;
     n_deleted_faces_ = other.n_deleted_faces_;
+    materials_ = std::move(other.materials_);
+    other.materials_.clear();
     bind_connectivity();
     // Leave the source a valid empty mesh rather than one with dangling views.
     other.add_connectivity();

@@ -1,0 +1,26 @@
+#pragma once
+/// \file
+/// A mesh's materials (Mesh::materials()): what a face's kMaterialProperty index names. The
+/// fields MeshEdit understands are those every format shares; the rest of a material as its
+/// file wrote it is kept to be written back.
+
+#include <string>
+#include <vector>
+
+#include "meshedit/core/math.h"
+
+namespace meshedit {
+
+struct Material {
+    std::string name;
+    Vec3 base_colour{1.0, 1.0, 1.0};  ///< OBJ's Kd, glTF's baseColorFactor (rgb)
+    double opacity = 1.0;             ///< OBJ's d (1 - Tr), glTF's baseColorFactor alpha
+    std::string base_colour_texture;  ///< OBJ's map_Kd, glTF's baseColorTexture image (a path)
+    /// Lines of an OBJ .mtl this material had that MeshEdit has no meaning for ("Ks 0 0 0",
+    /// "illum 2"), written back as they were.
+    std::vector<std::string> other;
+
+    bool operator==(const Material&) const = default;
+};
+
+}  // namespace meshedit
