@@ -6,9 +6,14 @@ import re
 
 from bench_results import (BUILD_SIZES, NO_HUGE_PAGES, by_job, fmt_ms, fmt_num, is_meshedit,
                            ok_results, ratio_info, size_label, threading_of)
+from bench_bound import bandwidth_section
 from bench_targets import local_ops_table, targets_table
 
 JOB_TITLES = {
+    "stream_copy": "Memory bandwidth, STREAM copy `c = a` over 2^24 doubles (16 bytes an element; "
+    "`gb_per_s` from the fastest repetition)",
+    "stream_triad": "Memory bandwidth, STREAM triad `a = b + s·c` over 2^24 doubles (24 bytes an "
+    "element; `gb_per_s` from the fastest repetition)",
     "py_from_arrays_1m": "Python: Mesh.from_arrays() of a 1M-triangle torus (numpy arrays in; "
     "numpy_copy: copying the two arrays, the floor of any conversion; open3d: a TriangleMesh, "
     "no halfedges)",
@@ -246,6 +251,7 @@ def render(args, records, notes, jobs_info, machine, started, wall, busy=None):
     lines += ["## Targets (issue 6)", "",
               "Checked on MeshEdit's 1-thread medians (the anchors run on one thread).", ""]
     lines += targets_table(jobs) + [""]
+    lines += bandwidth_section(jobs)
     lines += local_ops_table(jobs)
     lines += ["## Results per job", ""]
     for job, rows in jobs.items():

@@ -292,8 +292,7 @@ inline void print_result(const std::string& job, const std::string& impl,
         "RESULT {\"job\": \"%s\", \"impl\": \"%s\", \"runs\": %zu, \"min_ms\": %.3f, "
         "\"median_ms\": %.3f",
         (job + (warm_protocol() ? "_warm" : "")).c_str(),
-        no_huge_pages ? kNoHugePagesImpl : impl.c_str(), ms.size(), min_of(ms),
-        median_of(ms));
+        no_huge_pages ? kNoHugePagesImpl : impl.c_str(), ms.size(), min_of(ms), median_of(ms));
     for (const auto& [key, value] : extra) {
         std::printf(", \"%s\": %.6g", key.c_str(), value);
     }

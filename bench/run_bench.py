@@ -36,6 +36,7 @@ from bench_results import (ALL_THREADS, ANCHOR_THREADING, NO_HUGE_PAGES, NO_HUGE
 
 # Default configurations when a program does not answer --list.
 DEFAULT_CONFIGS = {
+    "bench_bandwidth": [("stream_copy", "machine"), ("stream_triad", "machine")],
     "bench_python": [("py_from_arrays_1m", i) for i in ("meshedit", "numpy_copy", "open3d")]
     + [("py_positions_1m", i) for i in ("view", "copy")]
     + [("py_flip_1000", i) for i in ("python_calls", "one_apply")]
@@ -78,8 +79,9 @@ DEFAULT_CONFIGS = {
         for impl in ("meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full")
     ],
 }
-PROGRAMS = ["bench_loop", "bench_catmark", "bench_simplify", "bench_remesh", "bench_ops",
-            "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor", "bench_python"]
+PROGRAMS = ["bench_bandwidth", "bench_loop", "bench_catmark", "bench_simplify", "bench_remesh",
+            "bench_ops", "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor",
+            "bench_python"]
 # The warm protocol (bench_util.h, `--warm`): the same configurations again with every
 # implementation reusing its memory across repetitions, so algorithm cost shows apart from
 # page-fault cost. Reported under the job's name + "_warm"; the targets are checked on both.
