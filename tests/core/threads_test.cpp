@@ -69,21 +69,26 @@ TEST(Threads, ThePerCallCapStillLimits) {
     EXPECT_EQ(parallel::thread_count(999, 1000), 1u);  // small: the calling thread alone
 }
 
-// Each chunk waits until `n` distinct threads have run a chunk (or 10 s pass), so a loop
-// that starts the `n` threads it may use shows all of them, deterministically; one that
-// started more shows more than `n`.
+// Each chunk waits until `n` distinct threads have run a chunk, so a loop that starts the `n`
+// threads it may use shows all of them, deterministically; one that started more shows more
+// than `n`. One that started fewer never gets there: after 5 s nobody waits any more, so it
+// fails in 5 s rather than 5 s a chunk.
 std::set<std::thread::id> threads_seen(unsigned n) {
     std::mutex mutex;
     std::condition_variable arrived;
     std::set<std::thread::id> seen;
+    bool gave_up = false;
     const std::size_t chunks = 64;
-    parallel::for_chunks(
-        chunks, 1, parallel::thread_count(chunks, 1), [&](std::size_t, std::size_t) {
-            std::unique_lock<std::mutex> lock(mutex);
-            seen.insert(std::this_thread::get_id());
-            arrived.notify_all();
-            arrived.wait_for(lock, std::chrono::seconds(10), [&] { return seen.size() >= n; });
-        });
+    parallel::for_chunks(chunks, 1, parallel::thread_count(chunks, 1),
+                         [&](std::size_t, std::size_t) {
+                             std::unique_lock<std::mutex> lock(mutex);
+                             seen.insert(std::this_thread::get_id());
+                             arrived.notify_all();
+                             if (!gave_up) {
+                                 gave_up = !arrived.wait_for(lock, std::chrono::seconds(5),
+                                                             [&] { return seen.size() >= n; });
+                             }
+                         });
     return seen;
 }
 
@@ -112,7 +117,7 @@ void expect_same_bits_on_any_count(const Mesh& input, const Run& run) {
     set_thread_count(1);
     Mesh one = input;
     run(one);
-    for (const unsigned n : {0u, 2u, 3u}) {  // 0: all cores
+    for (const unsigned n : {0u, 3u}) {  // 0: all cores
         set_thread_count(n);
         Mesh many = input;
         run(many);
@@ -120,18 +125,14 @@ void expect_same_bits_on_any_count(const Mesh& input, const Run& run) {
     }
 }
 
-TEST(ThreadsSameBits, LoopTwoLevels) {
-    expect_same_bits_on_any_count(creased_torus(), [](Mesh& m) {
-        loop_subdivide(m);
-        loop_subdivide(m);
-    });
+// One level each: every pass of a level runs in chunks (16,384 elements) on the threads, and a
+// second level would only run the same passes again, four times slower under the sanitizers.
+TEST(ThreadsSameBits, Loop) {
+    expect_same_bits_on_any_count(creased_torus(), [](Mesh& m) { loop_subdivide(m); });
 }
 
-TEST(ThreadsSameBits, CatmullClarkOnTrianglesThenQuads) {
-    expect_same_bits_on_any_count(creased_torus(), [](Mesh& m) {
-        quad_subdivide(m);
-        quad_subdivide(m);
-    });
+TEST(ThreadsSameBits, CatmullClarkOnTriangles) {
+    expect_same_bits_on_any_count(creased_torus(), [](Mesh& m) { quad_subdivide(m); });
 }
 
 TEST(ThreadsSameBits, VertexNormals) {
@@ -144,7 +145,7 @@ TEST(ThreadsSameBits, VertexNormals) {
     set_thread_count(1);
     std::vector<Vec3> one;
     compute_vertex_normals(mesh, one);
-    for (const unsigned n : {0u, 2u, 3u}) {
+    for (const unsigned n : {0u, 3u}) {
         set_thread_count(n);
         std::vector<Vec3> many;
         compute_vertex_normals(mesh, many);
