@@ -51,13 +51,13 @@
 #include <vector>
 
 #include "algorithms/loop_rules.h"
-#include "algorithms/refine_util.h"
 #include "mesh/mesh_arrays.h"
-#include "mesh/parallel.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
+#include "mesh/parallel.h"
+#include "algorithms/refine_util.h"
 
 namespace meshedit {
 namespace {
