@@ -2,7 +2,7 @@
 """bench_python: the Python module's costs (issue 33, item 7), in bench/run_bench.py's protocol.
 
     bench_python --list
-    bench_python --job JOB --impl IMPL [--runs N]
+    bench_python --job JOB --impl IMPL [--runs N]   (MESHEDIT_THREADS sets the threads)
 
 Jobs (a 1M-triangle torus made with numpy, 1000 × 500 quads cut in two):
   py_from_arrays_1m   meshedit: Mesh.from_arrays(V, F) (checks, then the halfedge build);
@@ -84,9 +84,20 @@ def read_ply_numpy(path):
     return V, F
 
 
+# bench_util.h's rule for short jobs: a median under 20 ms repeats until 0.5 s of timed
+# repetitions (at most 2000, and no more after 30 s of wall time), so min and median are stable.
+SHORT_JOB_MS, STABLE_TOTAL_MS, MAX_RUNS, MAX_WALL_S = 20.0, 500.0, 2000, 30.0
+
+
+def wants_more_runs(times, started):
+    return (times and statistics.median(times) < SHORT_JOB_MS and sum(times) < STABLE_TOTAL_MS
+            and len(times) < MAX_RUNS and time.monotonic() - started < MAX_WALL_S)
+
+
 def timed(run, runs, setup=None):
     times = []
-    for _ in range(runs):
+    started = time.monotonic()
+    while len(times) < runs or wants_more_runs(times, started):
         state = setup() if setup else None
         start = time.perf_counter()
         run(state)
@@ -159,8 +170,9 @@ def main():
                 times = timed(lambda _: read_ply_numpy(path), args.runs)
             else:
                 times = timed(lambda _: o3d.io.read_triangle_mesh(path), args.runs)
-    result = {"job": args.job, "impl": args.impl, "runs": args.runs, "min_ms": min(times),
-              "median_ms": statistics.median(times), **extra}
+    result = {"job": args.job, "impl": args.impl, "runs": len(times), "min_ms": min(times),
+              "median_ms": statistics.median(times), "meshedit_threads": meshedit.threads(),
+              **extra}
     print("RESULT " + json.dumps(result))
     return 0
 

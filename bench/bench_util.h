@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "meshedit/core/memory.h"
+#include "meshedit/core/threads.h"
 
 namespace meshedit::bench {
 
@@ -45,13 +46,29 @@ inline void use_warm_protocol() {
     mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
 }
 
-/// Turns MeshEdit's huge-page hint off (core/memory.h) for `--no-huge-pages` (removed from
-/// the arguments) and for `--impl meshedit_no_huge_pages` (which then runs as `meshedit`), to
-/// measure what the hint is worth. read_command_line() calls it first.
+/// Takes the flags every program shares out of the arguments: `--warm`; `--no-huge-pages`,
+/// which turns MeshEdit's huge-page hint off (core/memory.h), as `--impl
+/// meshedit_no_huge_pages` does (which then runs as `meshedit`), to measure what the hint is
+/// worth; and `--threads N`, MeshEdit's thread count (core/threads.h; MESHEDIT_THREADS does
+/// the same, run_bench.py uses it). A bad count exits 2. read_command_line() calls it first.
 inline void take_common_flags(int& argc, char** argv) {
     static char meshedit_impl[] = "meshedit";
+    if (const auto problem = thread_environment_problem()) {
+        std::fprintf(stderr, "%s\n", problem->c_str());
+        std::exit(2);
+    }
     int out = 1;
     for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
+            const auto n = parse_thread_count(argv[i + 1]);
+            if (!n) {
+                std::fprintf(stderr, "--threads: %s\n", bad_thread_count(argv[i + 1]).c_str());
+                std::exit(2);
+            }
+            set_thread_count(*n);
+            ++i;
+            continue;
+        }
         if (std::strcmp(argv[i], "--warm") == 0) {
             use_warm_protocol();
             continue;
@@ -145,7 +162,7 @@ std::optional<int> read_command_line(int& argc, char** argv, const Jobs& jobs, c
     if (!parsed || !one_of(jobs, args.job) || !one_of(impls, args.impl)) {
         const std::string name = std::filesystem::path(argv[0]).filename().string();
         std::fprintf(stderr,
-                     "usage: %s --job JOB --impl IMPL [--runs N] [--data DIR]\n"
+                     "usage: %s --job JOB --impl IMPL [--runs N] [--data DIR] [--threads N]\n"
                      "       %s --list   (every JOB IMPL pair)\n",
                      name.c_str(), name.c_str());
         return 2;
@@ -153,12 +170,40 @@ std::optional<int> read_command_line(int& argc, char** argv, const Jobs& jobs, c
     return std::nullopt;
 }
 
-/// Milliseconds of each of `runs` calls of `body`; `setup` runs before each call, untimed.
-/// Every run starts cold, as in a fresh process: after the setup, malloc_trim(0) hands the
-/// memory that the allocator kept from earlier runs back to the system, so that no
-/// implementation's later runs write into pages an earlier run already faulted in.
+inline double min_of(std::vector<double> v);
+inline double median_of(std::vector<double> v);
+
+/// Short jobs: a job whose median is under kShortJobMs repeats until its timed repetitions add
+/// up to kStableTotalMs (at most kMaxRuns of them, and no more once kMaxWallMs of wall time,
+/// setups included, have passed), so that its min and median rest on enough samples not to
+/// move with one interruption. A 10 ms job gets 50 repetitions, a 1 ms job 500.
+inline constexpr double kShortJobMs = 20.0;
+inline constexpr double kStableTotalMs = 500.0;
+inline constexpr std::size_t kMaxRuns = 2000;
+inline constexpr double kMaxWallMs = 30'000.0;
+
+/// Whether time_runs() should add a repetition to `ms`, begun `wall_ms` ago.
+inline bool wants_more_runs(const std::vector<double>& ms, double wall_ms) {
+    double total = 0;
+    for (const double x : ms) {
+        total += x;
+    }
+    return !ms.empty() && median_of(ms) < kShortJobMs && total < kStableTotalMs &&
+           ms.size() < kMaxRuns && wall_ms < kMaxWallMs;
+}
+
+/// Milliseconds of each of `runs` calls of `body` (more for a short job: wants_more_runs());
+/// `setup` runs before each call, untimed. Every run starts cold, as in a fresh process: after
+/// the setup, malloc_trim(0) hands the memory that the allocator kept from earlier runs back
+/// to the system, so that no implementation's later runs write into pages an earlier run
+/// already faulted in.
 inline std::vector<double> time_runs(int runs, const std::function<void()>& setup,
                                      const std::function<void()>& body) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto wall_ms = [&] {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+    };
     std::vector<double> ms;
     if (warm_protocol()) {  // one untimed repetition: the memory the timed ones will reuse
         if (setup) {
@@ -166,7 +211,7 @@ inline std::vector<double> time_runs(int runs, const std::function<void()>& setu
         }
         body();
     }
-    for (int i = 0; i < runs; ++i) {
+    for (int i = 0; i < runs || wants_more_runs(ms, wall_ms()); ++i) {
         if (setup) {
             setup();
         }
@@ -247,11 +292,12 @@ inline void print_result(const std::string& job, const std::string& impl,
         "RESULT {\"job\": \"%s\", \"impl\": \"%s\", \"runs\": %zu, \"min_ms\": %.3f, "
         "\"median_ms\": %.3f",
         (job + (warm_protocol() ? "_warm" : "")).c_str(),
-        no_huge_pages ? kNoHugePagesImpl : impl.c_str(), ms.size(), min_of(ms),
-        median_of(ms));
+        no_huge_pages ? kNoHugePagesImpl : impl.c_str(), ms.size(), min_of(ms), median_of(ms));
     for (const auto& [key, value] : extra) {
         std::printf(", \"%s\": %.6g", key.c_str(), value);
     }
+    // What MeshEdit's parallel passes could use in this process (anchors ignore it).
+    std::printf(", \"meshedit_threads\": %u", thread_count());
     std::printf("}\n");
     std::fflush(stdout);
 }

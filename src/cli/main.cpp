@@ -84,13 +84,14 @@ int run_builtin(int argc, char** argv) {
     app.set_version_flag("--version", std::string("meshedit ") + MESHEDIT_VERSION);
     app.require_subcommand(1, 1);
     meshedit::command_line::add_memory_budget_option(app);
+    const CLI::Option* threads = meshedit::command_line::add_threads_option(app);
     app.footer(kMoreCommands);
     const Command commands[] = {add_info(app),     add_convert(app), add_subdivide(app),
                                 add_simplify(app), add_remesh(app),  add_check(app),
                                 add_eval(app)};
     for (const Command& c : commands) {
         c.app->group("Commands");
-        c.app->fallthrough();  // --memory-budget after the command name works too
+        c.app->fallthrough();  // --memory-budget, --threads after the command name work too
     }
     const std::string command = argc > 1 ? argv[1] : "";
     if (command.empty()) {
@@ -103,6 +104,10 @@ int run_builtin(int argc, char** argv) {
             meshedit::command_line::parse(app, argc, argv, "meshedit", known ? command : "");
         status >= 0) {
         return status;
+    }
+    // --threads wins over the variable, which is only checked when it is used.
+    if (threads->count() == 0 && !meshedit::command_line::check_thread_environment("meshedit")) {
+        return 2;
     }
     for (const Command& c : commands) {
         if (c.app->parsed()) {

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "meshedit/core/budget.h"
+#include "meshedit/core/threads.h"
 
 #include <cstdio>
 #include <string>
@@ -60,6 +61,32 @@ inline CLI::Option* add_memory_budget_option(CLI::App& app) {
                                              : "bad size '" + text + "' (expected e.g. 8G, 512M)";
             },
             ""));
+}
+
+/// `--threads N`: the threads of this run's parallel passes (meshedit/core/threads.h).
+inline CLI::Option* add_threads_option(CLI::App& app) {
+    return app
+        .add_option_function<std::string>(
+            "--threads",
+            [](const std::string& text) { set_thread_count(parse_thread_count(text).value_or(0)); },
+            "threads for subdivision, normals and loading, 0 for all cores (default: all, or "
+            "MESHEDIT_THREADS); the result is the same on any number")
+        ->type_name("N")
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                return parse_thread_count(text) ? std::string() : bad_thread_count(text);
+            },
+            ""));
+}
+
+/// A bad MESHEDIT_THREADS stops a program before it starts, as a bad --threads would: prints
+/// "PROGRAM: MESHEDIT_THREADS: …" on stderr. \return false then.
+inline bool check_thread_environment(const std::string& program) {
+    if (const auto problem = thread_environment_problem()) {
+        std::fprintf(stderr, "%s: %s\n", program.c_str(), problem->c_str());
+        return false;
+    }
+    return true;
 }
 
 /// The help of `app` with its full name in the usage line ("usage: meshedit info …").

@@ -294,6 +294,7 @@ int parse_options(int argc, char** argv, Options& o) {
                                           "\nbackends: " + backends);
     app.add_flag("--timings", o.timings, "print the time of each phase on stderr");
     command_line::add_memory_budget_option(app);
+    const CLI::Option* threads = command_line::add_threads_option(app);
     app.add_option("--benchmark", o.benchmark,
                    "also draw N times shaded and N times with a trivial shader (glFinish each) "
                    "and print both medians in ms on stdout")
@@ -314,6 +315,10 @@ int parse_options(int argc, char** argv, Options& o) {
     }
     if (const int status = command_line::parse(app, argc, argv, program_name()); status >= 0) {
         return status;
+    }
+    // --threads wins over the variable, which is only checked when it is used.
+    if (const auto problem = thread_environment_problem(); problem && threads->count() == 0) {
+        throw UsageError(*problem);
     }
     finish(raw, o);
     return -1;

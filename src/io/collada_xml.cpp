@@ -15,6 +15,7 @@
 
 #include "collada_detail.h"
 #include "meshedit/core/memory.h"
+#include "meshedit/core/threads.h"
 #include "meshedit/files/files.h"
 
 namespace meshedit::collada {
@@ -194,8 +195,9 @@ void parse_piece(Piece<T>& piece, const Scan& scan) {
 }
 
 // Big arrays (a million-triangle mesh has tens of MB of numbers) are cut at whitespace into
-// one piece per core and parsed in parallel; the pieces are joined in order, so the values and
-// the first bad token reported do not depend on the number of threads.
+// one piece per thread (thread_count(), threads.h; at most 8) and parsed in parallel; the
+// pieces are joined in order, so the values and the first bad token reported do not depend on
+// the number of threads.
 constexpr std::size_t kParallelBytes = std::size_t{1} << 20;
 
 // `problem(index, token, error)` words the error for the first bad token.
@@ -204,8 +206,8 @@ std::vector<T> parse_list(const Document& doc, pugi::xml_node node, std::size_t 
                           const Scan& scan, const Problem& problem) {
     const char* text = node.child_value();
     const std::size_t n = std::strlen(text);
-    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-    const std::size_t n_pieces = n < kParallelBytes ? 1 : std::min<std::size_t>(hardware, 8);
+    const std::size_t n_pieces =
+        n < kParallelBytes ? 1 : std::min<std::size_t>(meshedit::thread_count(), 8);
     std::vector<Piece<T>> pieces(n_pieces);
     const char* cut = text;
     for (std::size_t k = 0; k < n_pieces; ++k) {

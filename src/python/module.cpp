@@ -16,6 +16,7 @@
 #include "meshedit/core/build.h"
 #include "meshedit/core/fields.h"
 #include "meshedit/core/normals.h"
+#include "meshedit/core/threads.h"
 #include "meshedit/core/topology.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/files/files.h"
@@ -359,5 +360,26 @@ PYBIND11_MODULE(_meshedit, m) {
         return names;
     });
     m.def("amount_text", &meshedit::number_text);
+    // A bad MESHEDIT_THREADS stops the import, as it stops the programs.
+    if (const auto problem = thread_environment_problem()) {
+        throw py::value_error(*problem);
+    }
+    m.def(
+        "set_threads",
+        [](py::object n) {
+            if (!py::isinstance<py::int_>(n) || py::isinstance<py::bool_>(n)) {
+                throw py::type_error("set_threads: expected an int, got " +
+                                     std::string(py::str(py::type::of(n).attr("__name__"))));
+            }
+            const long long count = n.cast<long long>();
+            if (count < 0 || count > kMaxThreads) {
+                throw py::value_error("set_threads: " + bad_thread_count(std::to_string(count)));
+            }
+            set_thread_count(static_cast<unsigned>(count));
+        },
+        py::arg("n"),
+        "Threads for subdivision, normals and loading in this process; 0 means all cores. "
+        "Overrides MESHEDIT_THREADS. The results are the same on any number.");
+    m.def("threads", &thread_count, "The threads the parallel passes use now (at least 1).");
     bind_document(m);
 }

@@ -59,12 +59,16 @@ int main(int argc, char** argv) {
                    "declared axis, +Y once read; the default); Y switches in the window")
         ->type_name("y|z|file")
         ->check(CLI::IsMember({"y", "z", "file"}));
+    const CLI::Option* threads = meshedit::command_line::add_threads_option(app);
     app.footer(
         "The meshedit-view executable; 'meshedit FILE' and 'meshedit view FILE' run it.\n"
         "Without a display, use 'meshedit render FILE -o out.png' to render headless.");
     if (const int status = meshedit::command_line::parse(app, argc, argv, "meshedit");
         status >= 0) {
         return status;
+    }
+    if (threads->count() == 0 && !meshedit::command_line::check_thread_environment("meshedit")) {
+        return 2;
     }
     if (!size.empty() && !parse_size(size, options.width, options.height)) {
         std::fprintf(stderr, "meshedit: --size wants WxH (64..16384), got '%s'\n", size.c_str());

@@ -24,8 +24,8 @@ void compute_face_normals(const Mesh& mesh, std::vector<Vec3>& out);
 /// Area-weighted vertex normals: for each vertex, the normalised sum of the area vectors of
 /// its faces. One pass over the faces, no circulation per vertex. Isolated vertices and
 /// vertices whose faces cancel get zero. `out` is indexed by vertex index (resized; capacity
-/// reused). On meshes of 100,000 faces or more, chunks of faces run on
-/// std::thread::hardware_concurrency() threads. The order of every sum depends on the mesh
+/// reused). On meshes of 100,000 faces or more, chunks of faces run on thread_count()
+/// threads (threads.h). The order of every sum depends on the mesh
 /// alone, so the result is bit-for-bit the same for any number of threads (and, up to 65,536
 /// faces, the plain sum in face order).
 void compute_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out);

@@ -28,8 +28,8 @@ struct QuadSubdivisionOptions {
     /// Called with the fraction done (0…1), non-decreasing, at coarse intervals, last with
     /// exactly 1; may be empty. Always from the calling thread.
     std::function<void(double)> progress;
-    /// Threads for meshes of 100,000 faces or more: 0 means
-    /// std::thread::hardware_concurrency(). The result is the same for any number.
+    /// At most this many threads for meshes of 100,000 faces or more: 0 means thread_count()
+    /// (threads.h). The result is the same for any number.
     unsigned max_threads = 0;
 };
 

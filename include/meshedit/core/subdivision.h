@@ -26,7 +26,8 @@ struct LoopOptions {
     /// hundred calls per million faces), last with exactly 1; may be empty.
     std::function<void(double)> progress;
     /// Threads for meshes of 100,000 faces or more (smaller ones use the calling thread):
-    /// 0 means std::thread::hardware_concurrency(). The result is the same for any number.
+    /// at most this many; 0 means thread_count() (threads.h). The result is the same for any
+    /// number.
     /// loop_subdivide() only; progress is always called from the calling thread.
     unsigned max_threads = 0;
 };

@@ -33,8 +33,8 @@
 // old indices. Each old array is freed as soon as no later pass reads it, so the peak memory
 // is about the result's own (69 bytes per new face) instead of result + old mesh (86). Each
 // pass writes every element from one chunk of its range only, so on meshes of 100,000 faces
-// or more the chunks run on std::thread::hardware_concurrency() threads, with the same result
-// on any number of threads. Big arrays live in huge pages (memory.h): their first touch, page
+// or more the chunks run on thread_count() threads (threads.h), with the same result on any
+// number of threads. Big arrays live in huge pages (memory.h): their first touch, page
 // faults, was the largest single cost.
 //
 // Why it equals loop_subdivide_classic(): splitting edge e there appends vertex V + e (edges

@@ -4,6 +4,8 @@
 // exactly one chunk and chunk boundaries do not depend on the number of threads, so a pass
 // that writes each element from its own chunk gives the same bits on any number of threads.
 
+#include "meshedit/core/threads.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -14,16 +16,30 @@
 
 namespace meshedit::parallel {
 
+/// Tests only: when nonzero, replaces every pass's `serial_below`, so that a small mesh runs
+/// its chunks on several threads too (the chunks stay the same; see ScopedSerialBelow).
+inline std::atomic<std::size_t> g_serial_below_for_tests{0};
+
 /// Threads worth using for `n` items: 1 below `serial_below` items (starting threads would
-/// cost more than they save), else std::thread::hardware_concurrency(), capped by
-/// `max_threads` when that is nonzero.
+/// cost more than they save), else meshedit::thread_count() (threads.h: set_thread_count(),
+/// MESHEDIT_THREADS or all cores), capped by `max_threads` when that is nonzero.
 inline unsigned thread_count(std::size_t n, std::size_t serial_below, unsigned max_threads = 0) {
-    if (n < serial_below) {
+    const std::size_t for_tests = g_serial_below_for_tests.load(std::memory_order_relaxed);
+    if (n < (for_tests != 0 ? for_tests : serial_below)) {
         return 1;
     }
-    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-    return max_threads == 0 ? hardware : std::min(hardware, max_threads);
+    const unsigned setting = meshedit::thread_count();
+    return max_threads == 0 ? setting : std::min(setting, max_threads);
 }
+
+/// Tests only: every pass of at least `n` items goes parallel while this lives.
+class ScopedSerialBelow {
+public:
+    explicit ScopedSerialBelow(std::size_t n) { g_serial_below_for_tests.store(n); }
+    ~ScopedSerialBelow() { g_serial_below_for_tests.store(0); }
+    ScopedSerialBelow(const ScopedSerialBelow&) = delete;
+    ScopedSerialBelow& operator=(const ScopedSerialBelow&) = delete;
+};
 
 /// Runs `body(begin, end)` over [0, n) in chunks of `chunk` elements (the last may be
 /// shorter), which `threads` threads, the calling one included, take in increasing order.

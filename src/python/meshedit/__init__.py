@@ -26,6 +26,8 @@ from ._meshedit import (  # noqa: F401
     amount_text,
     field_names,
     read,
+    set_threads,
+    threads,
     verbs,
 )
 
@@ -33,7 +35,7 @@ for _cls in (BadStep, Document, IoError, Mesh, Refused, SyntaxError):
     _cls.__module__ = "meshedit"  # tracebacks say meshedit.Refused, not meshedit._meshedit.Refused
 
 __all__ = ["read", "Mesh", "Document", "IoError", "Refused", "BadStep", "SyntaxError",
-           "Notice", "verbs", "field_names", "step_text", "render"]
+           "Notice", "verbs", "field_names", "step_text", "render", "set_threads", "threads"]
 
 
 class Notice(UserWarning):
