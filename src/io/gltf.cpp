@@ -3,12 +3,14 @@
 // Reading walks the default scene's node tree, applies each node's transform, and turns every
 // triangle primitive (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN) into soup faces. Every accessor
 // read is bounds-checked here rather than trusted to the loader, since a hostile file may
-// point anywhere. Writing produces one mesh with one indexed TRIANGLES primitive.
+// point anywhere. TEXCOORD_0 and NORMAL are kept per corner, materials per face (their name,
+// base colour and base-colour texture path). Writing is in gltf_write.cpp.
 
 #include "meshedit/io/gltf.h"
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <array>
 #include <cfloat>
 #include <cmath>
@@ -16,6 +18,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "gltf_guard.h"
 #include "gltf_meshopt.h"
@@ -113,8 +116,8 @@ Mat4 local_matrix(const tinygltf::Node& node) {
 
 class GltfReader {
 public:
-    GltfReader(const tinygltf::Model& model, std::string file)
-        : model_(model), file_(std::move(file)) {}
+    GltfReader(const tinygltf::Model& model, std::string file, std::filesystem::path folder)
+        : model_(model), file_(std::move(file)), folder_(std::move(folder)) {}
 
     MeshSoup read() {
         const auto& scenes = model_.scenes;
@@ -140,6 +143,16 @@ public:
         if (!all_have_normals_) {
             out_.normals.clear();
         }
+        const bool texcoords =
+            all_have_texcoords_ && texcoords_.size() == out_.soup.positions.size();
+        if (texcoords) {
+            out_.corner_texcoords.reserve(out_.soup.indices.size());
+            for (const std::uint32_t v : out_.soup.indices) {
+                out_.corner_texcoords.push_back(texcoords_[v]);
+            }
+        }
+        weld_seams(texcoords);
+        keep_materials();
         return std::move(out_);
     }
 
@@ -223,9 +236,15 @@ private:
                     out_.soup.positions.push_back(q);
                 }
                 add_normals(prim, world, where, n_vertices);
+                add_texcoords(prim, where, n_vertices);
+                add_origins(prim, where, base, n_vertices);
                 base_of_accessor.emplace(pos_accessor, base);
             }
+            const std::size_t faces_before = out_.soup.n_faces();
             add_faces(prim, where, base, n_vertices, determinant3(world) < 0);
+            face_material_.resize(out_.soup.n_faces(), -1);
+            std::fill(face_material_.begin() + static_cast<std::ptrdiff_t>(faces_before),
+                      face_material_.end(), prim.material);
         }
     }
 
@@ -261,6 +280,163 @@ private:
         for (const Vec3& n : normals) {
             out_.normals.push_back(transform_normal(world, n));
         }
+    }
+
+    void add_texcoords(const tinygltf::Primitive& prim, const std::string& where,
+                       std::size_t n_vertices) {
+        const auto it = prim.attributes.find("TEXCOORD_0");
+        if (!all_have_texcoords_ || it == prim.attributes.end()) {
+            all_have_texcoords_ = false;
+            return;
+        }
+        const std::vector<double> uv =
+            read_components(it->second, where, "TEXCOORD_0", TINYGLTF_TYPE_VEC2, 2);
+        if (uv.size() != 2 * n_vertices) {
+            throw IoError(file_, where,
+                          "TEXCOORD_0 has " + std::to_string(uv.size() / 2) +
+                              " elements, POSITION " + std::to_string(n_vertices));
+        }
+        for (std::size_t i = 0; i < n_vertices; ++i) {
+            texcoords_.push_back(Vec2{uv[2 * i], uv[2 * i + 1]});
+        }
+    }
+
+    // Which mesh vertex each glTF vertex copies, from the primitive's extras when MeshEdit
+    // wrote the file ("meshedit_vertex": an accessor of one index per vertex); -1 if unknown.
+    void add_origins(const tinygltf::Primitive& prim, const std::string& where, std::uint32_t base,
+                     std::size_t n_vertices) {
+        std::vector<std::uint32_t> origin;
+        if (prim.extras.Has("meshedit_vertex") && prim.extras.Get("meshedit_vertex").IsInt()) {
+            origin = read_indices(prim.extras.Get("meshedit_vertex").Get<int>(), where);
+        }
+        for (std::size_t i = 0; i < n_vertices; ++i) {
+            origin_.push_back(origin.size() == n_vertices ? std::int64_t{base} + origin[i] : -1);
+        }
+    }
+
+    // glTF splits a vertex wherever its texture coordinate or normal changes; with those kept
+    // per corner, the copies are welded back by exact position, so a textured surface stays
+    // one surface.
+    void weld_seams(bool by_position) {
+        std::vector<std::uint32_t>& idx = out_.soup.indices;
+        // MeshEdit's own files say which mesh vertex each glTF vertex copies (the primitive's
+        // extras): those weld exactly. Others weld by exact position, when they have texture
+        // coordinates (whose seams split vertices).
+        const bool exact =
+            std::all_of(origin_.begin(), origin_.end(), [](std::int64_t o) { return o >= 0; }) &&
+            origin_.size() == out_.soup.positions.size();
+        if (!exact && !by_position) {
+            return;
+        }
+        std::map<std::tuple<double, double, double>, std::uint32_t> first;
+        std::map<std::int64_t, std::uint32_t> first_origin;
+        std::vector<std::uint32_t> to(out_.soup.positions.size());
+        std::vector<Vec3> kept;
+        for (std::size_t v = 0; v < to.size(); ++v) {
+            const Vec3& p = out_.soup.positions[v];
+            const auto next = static_cast<std::uint32_t>(kept.size());
+            const std::uint32_t at =
+                exact ? first_origin.emplace(origin_[v], next).first->second
+                      : first.emplace(std::tuple{p.x, p.y, p.z}, next).first->second;
+            if (at == next) {
+                kept.push_back(p);
+            }
+            to[v] = at;
+        }
+        if (kept.size() == to.size()) {
+            return;
+        }
+        if (out_.normals.size() == out_.soup.positions.size()) {
+            for (const std::uint32_t v : idx) {
+                out_.corner_normals.push_back(out_.normals[v]);
+            }
+            out_.normals.clear();
+        }
+        // A face two of whose corners would weld together keeps its own copies (coincident
+        // vertices that the file meant apart): no face is lost to the weld.
+        std::map<std::uint32_t, std::uint32_t> own;
+        const std::vector<Vec3> original = out_.soup.positions;
+        const std::vector<std::uint32_t>& off = out_.soup.face_offsets;
+        for (std::size_t f = 0; f + 1 < off.size(); ++f) {
+            std::vector<std::uint32_t> corners;
+            for (std::uint32_t c = off[f]; c < off[f + 1]; ++c) {
+                corners.push_back(to[idx[c]]);
+            }
+            std::sort(corners.begin(), corners.end());
+            const bool collapses =
+                std::adjacent_find(corners.begin(), corners.end()) != corners.end();
+            for (std::uint32_t c = off[f]; c < off[f + 1]; ++c) {
+                if (!collapses) {
+                    idx[c] = to[idx[c]];
+                    continue;
+                }
+                const auto [it, fresh] =
+                    own.emplace(idx[c], static_cast<std::uint32_t>(kept.size()));
+                if (fresh) {
+                    kept.push_back(original[idx[c]]);
+                }
+                idx[c] = it->second;
+            }
+        }
+        const std::size_t welded = original.size() - kept.size();
+        out_.soup.positions = std::move(kept);
+        if (welded == 0) {
+            return;
+        }
+        out_.notices.push_back("welded " + std::to_string(welded) +
+                               " vertex copies at seams by exact position (texture coordinates "
+                               "and normals are kept per corner)");
+    }
+
+    // The materials the faces use, by the file's material index; faces of a primitive without
+    // one get an unnamed material.
+    void keep_materials() {
+        const bool any =
+            std::any_of(face_material_.begin(), face_material_.end(), [](int m) { return m >= 0; });
+        if (!any) {
+            return;
+        }
+        for (std::size_t m = 0; m < model_.materials.size(); ++m) {
+            out_.materials.push_back(material(model_.materials[m]));
+        }
+        const auto none = static_cast<std::uint32_t>(out_.materials.size());
+        bool used_none = false;
+        for (const int m : face_material_) {
+            const bool valid = m >= 0 && static_cast<std::size_t>(m) < model_.materials.size();
+            used_none = used_none || !valid;
+            out_.face_materials.push_back(valid ? static_cast<std::uint32_t>(m) : none);
+        }
+        if (used_none) {
+            out_.materials.push_back(Material{});
+        }
+    }
+
+    Material material(const tinygltf::Material& g) {
+        Material m;
+        m.name = g.name;
+        const std::vector<double>& f = g.pbrMetallicRoughness.baseColorFactor;
+        if (f.size() == 4) {
+            m.base_colour = Vec3(f[0], f[1], f[2]);
+            m.opacity = f[3];
+        }
+        const int t = g.pbrMetallicRoughness.baseColorTexture.index;
+        if (t >= 0 && static_cast<std::size_t>(t) < model_.textures.size()) {
+            const int source = model_.textures[static_cast<std::size_t>(t)].source;
+            if (source >= 0 && static_cast<std::size_t>(source) < model_.images.size()) {
+                const tinygltf::Image& image = model_.images[static_cast<std::size_t>(source)];
+                if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0) {
+                    std::error_code ec;
+                    const std::filesystem::path resolved = (folder_ / image.uri).lexically_normal();
+                    m.base_colour_texture = std::filesystem::exists(resolved, ec)
+                                                ? std::filesystem::absolute(resolved, ec).string()
+                                                : image.uri;
+                } else {
+                    out_.notices.push_back("the embedded base-colour texture of material '" +
+                                           g.name + "' is not kept (MeshEdit keeps texture files)");
+                }
+            }
+        }
+        return m;
     }
 
     void add_faces(const tinygltf::Primitive& prim, const std::string& where, std::uint32_t base,
@@ -370,15 +546,28 @@ private:
     }
 
     std::vector<Vec3> read_vec3(int index, const std::string& where, const char* what) {
+        const std::vector<double> x = read_components(index, where, what, TINYGLTF_TYPE_VEC3, 3);
+        std::vector<Vec3> out(x.size() / 3);
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            out[i] = Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+        }
+        return out;
+    }
+
+    // The `n` components of every element of accessor `index`, one after another.
+    std::vector<double> read_components(int index, const std::string& where, const char* what,
+                                        int type_expected, std::size_t n) {
         std::size_t stride = 0;
-        const unsigned char* bytes = accessor_data(index, where, what, TINYGLTF_TYPE_VEC3, &stride);
+        const unsigned char* bytes = accessor_data(index, where, what, type_expected, &stride);
         const tinygltf::Accessor& acc = model_.accessors[static_cast<std::size_t>(index)];
-        std::vector<Vec3> out(acc.count);
+        std::vector<double> out(acc.count * n);
         if (acc.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
             for (std::size_t i = 0; i < acc.count; ++i) {
-                float f[3];
-                std::memcpy(f, bytes + i * stride, sizeof f);  // may be unaligned
-                out[i] = Vec3(f[0], f[1], f[2]);
+                for (std::size_t c = 0; c < n; ++c) {
+                    float f;
+                    std::memcpy(&f, bytes + i * stride + 4 * c, sizeof f);  // may be unaligned
+                    out[i * n + c] = f;
+                }
             }
             return out;
         }
@@ -393,11 +582,9 @@ private:
                           "(KHR_mesh_quantization)");
         }
         for (std::size_t i = 0; i < acc.count; ++i) {
-            double x[3];
-            for (std::size_t c = 0; c < 3; ++c) {
-                x[c] = quantized(bytes + i * stride, type, c, acc.normalized);
+            for (std::size_t c = 0; c < n; ++c) {
+                out[i * n + c] = quantized(bytes + i * stride, type, c, acc.normalized);
             }
-            out[i] = Vec3(x[0], x[1], x[2]);
         }
         return out;
     }
@@ -454,7 +641,12 @@ private:
 
     const tinygltf::Model& model_;
     std::string file_;
+    std::filesystem::path folder_;  // where texture paths start
     MeshSoup out_;
+    std::vector<Vec2> texcoords_;       // per soup vertex, while every primitive has them
+    std::vector<std::int64_t> origin_;  // per soup vertex: the mesh vertex it copies, or -1
+    std::vector<int> face_material_;    // per soup face: the file's material index, or -1
+    bool all_have_texcoords_ = true;
     bool all_have_normals_ = true;
     double planned_bytes_ = 0.0;
     std::size_t skipped_primitives_ = 0;
@@ -477,26 +669,6 @@ std::string one_line(std::string s) {
         }
     }
     return s;
-}
-
-/// Appends `n` little-endian values of `T` to `buffer`.
-template <class T>
-void append(std::vector<unsigned char>& buffer, const std::vector<T>& values) {
-    const std::size_t at = buffer.size();
-    buffer.resize(at + values.size() * sizeof(T));
-    if (!values.empty()) {
-        std::memcpy(buffer.data() + at, values.data(), values.size() * sizeof(T));
-    }
-}
-
-int add_view(tinygltf::Model& model, std::size_t offset, std::size_t length, int target) {
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = offset;
-    view.byteLength = length;
-    view.target = target;
-    model.bufferViews.push_back(view);
-    return static_cast<int>(model.bufferViews.size() - 1);
 }
 
 }  // namespace
@@ -543,123 +715,11 @@ MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
         throw IoError(file, "", err.empty() ? "cannot parse" : one_line(err));
     }
     gltf_meshopt::decode(model, file);
-    MeshSoup soup = GltfReader(model, file).read();
+    MeshSoup soup = GltfReader(model, file, folder.value_or(std::filesystem::path())).read();
     if (!warn.empty()) {
         soup.notices.push_back(one_line(warn));
     }
     return soup;
-}
-
-void write_gltf(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags) {
-    const std::string file = path.string();
-    std::optional<Mesh> storage;
-    const Mesh& dense = io_util::compacted(mesh, storage);
-    const PolygonSoup soup = to_polygon_soup(dense);
-
-    std::vector<std::uint32_t> triangles;
-    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-        const std::uint32_t first = soup.face_offsets[f], end = soup.face_offsets[f + 1];
-        for (std::uint32_t c = first + 1; c + 1 < end; ++c) {  // fan from the first corner
-            triangles.insert(triangles.end(),
-                             {soup.indices[first], soup.indices[c], soup.indices[c + 1]});
-        }
-    }
-    if (triangles.empty()) {
-        throw IoError(file, "", "the mesh has no faces; glTF stores triangles only");
-    }
-
-    // glTF stores 32-bit floats; min/max are required on POSITION.
-    std::vector<float> positions;
-    positions.reserve(3 * soup.positions.size());
-    std::vector<double> lo(3, std::numeric_limits<double>::infinity());
-    std::vector<double> hi(3, -std::numeric_limits<double>::infinity());
-    for (const Vec3& p : soup.positions) {
-        for (int i = 0; i < 3; ++i) {
-            if (!(std::abs(p[i]) <= FLT_MAX)) {
-                throw IoError(file, "", "a coordinate does not fit in a 32-bit float");
-            }
-            const auto f = static_cast<float>(p[i]);
-            positions.push_back(f);
-            lo[static_cast<std::size_t>(i)] = std::min(lo[static_cast<std::size_t>(i)], double{f});
-            hi[static_cast<std::size_t>(i)] = std::max(hi[static_cast<std::size_t>(i)], double{f});
-        }
-    }
-
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "MeshEdit";
-    tinygltf::Buffer buffer;
-    tinygltf::Primitive prim;
-    prim.mode = TINYGLTF_MODE_TRIANGLES;
-
-    auto add_accessor = [&model](int view, int component, int type, std::size_t count) {
-        tinygltf::Accessor acc;
-        acc.bufferView = view;
-        acc.byteOffset = 0;
-        acc.componentType = component;
-        acc.type = type;
-        acc.count = count;
-        model.accessors.push_back(acc);
-        return static_cast<int>(model.accessors.size() - 1);
-    };
-
-    std::size_t offset = buffer.data.size();
-    append(buffer.data, positions);
-    int view = add_view(model, offset, buffer.data.size() - offset, TINYGLTF_TARGET_ARRAY_BUFFER);
-    prim.attributes["POSITION"] = add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                               TINYGLTF_TYPE_VEC3, soup.positions.size());
-    model.accessors.back().minValues = lo;
-    model.accessors.back().maxValues = hi;
-
-    if (flags.write_normals) {
-        std::vector<Vec3> normals;
-        compute_vertex_normals(dense, normals);
-        std::vector<float> packed;
-        packed.reserve(3 * normals.size());
-        for (Vec3 n : normals) {
-            // glTF requires unit normals; isolated or degenerate vertices have none.
-            if (n == Vec3{}) {
-                n = Vec3(0, 1, 0);
-            }
-            packed.insert(packed.end(), {static_cast<float>(n.x), static_cast<float>(n.y),
-                                         static_cast<float>(n.z)});
-        }
-        offset = buffer.data.size();
-        append(buffer.data, packed);
-        view = add_view(model, offset, buffer.data.size() - offset, TINYGLTF_TARGET_ARRAY_BUFFER);
-        prim.attributes["NORMAL"] =
-            add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, normals.size());
-    }
-
-    offset = buffer.data.size();
-    append(buffer.data, triangles);
-    view =
-        add_view(model, offset, buffer.data.size() - offset, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    prim.indices = add_accessor(view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                                triangles.size());
-
-    model.buffers.push_back(std::move(buffer));
-    tinygltf::Mesh gmesh;
-    gmesh.primitives.push_back(std::move(prim));
-    model.meshes.push_back(std::move(gmesh));
-    tinygltf::Node node;
-    node.mesh = 0;
-    model.nodes.push_back(std::move(node));
-    tinygltf::Scene scene;
-    scene.nodes.push_back(0);
-    model.scenes.push_back(std::move(scene));
-    model.defaultScene = 0;
-
-    // Serialise in memory (buffer embedded as base64 for .gltf, as the BIN chunk for .glb),
-    // then write through write_file, which checks every step.
-    const bool binary = file_extension(path) == ".glb";
-    std::ostringstream stream;
-    tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToStream(&model, stream, !binary, binary) || !stream) {
-        throw IoError(file, "", "cannot serialise the glTF model");
-    }
-    const std::string bytes = std::move(stream).str();
-    write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, bytes); });
 }
 
 }  // namespace meshedit

@@ -122,11 +122,13 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
             unkept.push_back("the PLY properties " + names + " (only PLY keeps them)");
         }
     }
-    if (!obj) {
-        // Only OBJ writes the attributes of the attributes issue so far.
+    if (!obj && !gltf) {
+        // OBJ and glTF write the attributes of the attributes issue so far.
         const std::string format = ext == ".dae" ? "COLLADA" : ext.substr(1);
         if (mesh.has_property<Halfedge>(kTexCoordProperty)) {
-            unkept.push_back("texture coordinates (MeshEdit writes them to OBJ only so far)");
+            unkept.push_back(
+                "texture coordinates (MeshEdit writes them to OBJ and glTF only so "
+                "far)");
         }
         if (mesh.has_property<Halfedge>(kCornerNormalProperty)) {
             unkept.push_back("the file's normals (the " + format +
@@ -136,7 +138,7 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
         if (material && !mesh.materials().empty()) {
             unkept.push_back(std::to_string(mesh.materials().size()) +
                              " material(s) and which faces use them (MeshEdit writes them to "
-                             "OBJ only so far)");
+                             "OBJ and glTF only so far)");
         }
     }
     if (!obj && !off && !gltf && !ply && !stl) {

@@ -146,6 +146,43 @@ TEST(ObjAttributes, EditsCarryTexCoordsAndMaterials) {
                                           "red paint", "wood"}));
 }
 
+// glTF keeps them too: corners by a vertex per distinct corner (welded back on reading), a
+// primitive per material; a .gltf names the texture, a .glb embeds it.
+TEST(ObjAttributes, GltfKeepsThemAndWeldsItsSeamsBack) {
+    test::ScratchDir dir;
+    test::spit(dir / "quad.obj", kQuadObj);
+    test::spit(dir / "quad.mtl", kQuadMtl);
+    test::spit(dir / "wood.png", "x");
+    const LoadedMesh obj = read_mesh(dir / "quad.obj");
+    for (const char* name : {"q.gltf", "q.glb"}) {
+        SCOPED_TRACE(name);
+        EXPECT_EQ(write_mesh(obj.mesh, dir / name),
+                  std::vector<std::string>{"1 polygon (glTF stores triangles: each is fanned)"});
+        const LoadedMesh back = read_mesh(dir / name);
+        EXPECT_EQ(back.mesh.n_vertices(), obj.mesh.n_vertices());  // seams welded back
+        EXPECT_EQ(back.mesh.n_edges(), obj.mesh.n_edges() + 1);    // the quad is fanned
+        std::multiset<std::string> expected = {"red paint", "red paint", "wood"};
+        EXPECT_EQ(face_materials(back.mesh), expected);
+        std::multiset<std::pair<double, double>> uvs;
+        for (const Corner& c : corners_of(back.mesh)) {
+            uvs.insert({c.uv.x, c.uv.y});
+        }
+        // The quad fanned from its first corner, and the triangle.
+        EXPECT_EQ(
+            uvs, (std::multiset<std::pair<double, double>>{
+                     {0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}, {0.25, 0.5}, {0, 0}, {1, 1}}));
+        const std::vector<Material>& m = back.mesh.materials();
+        ASSERT_EQ(m.size(), 2u);
+        EXPECT_EQ(m[0].base_colour, Vec3(1, 0, 0));
+        EXPECT_EQ(m[0].opacity, 0.5);
+        if (std::string(name) == "q.gltf") {
+            EXPECT_EQ(m[1].base_colour_texture, obj.mesh.materials()[1].base_colour_texture);
+        } else {
+            EXPECT_TRUE(test::slurp(dir / name).find("image/png") != std::string::npos);
+        }
+    }
+}
+
 TEST(ObjAttributes, FormatsThatCannotKeepThemSaySo) {
     test::ScratchDir dir;
     test::spit(dir / "quad.obj", kQuadObj);
