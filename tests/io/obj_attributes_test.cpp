@@ -37,6 +37,15 @@ const char* kQuadMtl =
     "newmtl red paint\nKd 1 0 0\nd 0.5\nKs 0.1 0.1 0.1\nillum 2\n"
     "newmtl wood\nKd 0.5 0.25 0\nmap_Kd wood.png\n";
 
+// The quad, its library and its texture in `dir`.
+void write_quad(const test::ScratchDir& dir, bool with_library = true) {
+    test::spit(dir / "quad.obj", kQuadObj);
+    if (with_library) {
+        test::spit(dir / "quad.mtl", kQuadMtl);
+        test::spit(dir / "wood.png", "not really a png");
+    }
+}
+
 struct Corner {
     Vec3 at;  // the corner's vertex position
     Vec2 uv;
@@ -72,9 +81,7 @@ std::multiset<std::string> face_materials(const Mesh& mesh) {
 
 TEST(ObjAttributes, TexCoordsNormalsAndMaterialsAreReadPerCorner) {
     test::ScratchDir dir;
-    test::spit(dir / "quad.obj", kQuadObj);
-    test::spit(dir / "quad.mtl", kQuadMtl);
-    test::spit(dir / "wood.png", "not really a png");
+    write_quad(dir);
     const LoadedMesh loaded = read_mesh(dir / "quad.obj");
     const Mesh& mesh = loaded.mesh;
     EXPECT_TRUE(loaded.notices.empty()) << loaded.notices.front();
@@ -96,9 +103,7 @@ TEST(ObjAttributes, TexCoordsNormalsAndMaterialsAreReadPerCorner) {
 
 TEST(ObjAttributes, RoundTripKeepsEveryCornerAndMaterialExactly) {
     test::ScratchDir dir;
-    test::spit(dir / "quad.obj", kQuadObj);
-    test::spit(dir / "quad.mtl", kQuadMtl);
-    test::spit(dir / "wood.png", "x");
+    write_quad(dir);
     const LoadedMesh first = read_mesh(dir / "quad.obj");
     fs::create_directory(dir / "out");
     EXPECT_TRUE(write_mesh(first.mesh, dir / "out" / "copy.obj").empty());
@@ -120,8 +125,7 @@ TEST(ObjAttributes, RoundTripKeepsEveryCornerAndMaterialExactly) {
 // The attribute carry: a split's new corners blend the corners at the edge's ends.
 TEST(ObjAttributes, EditsCarryTexCoordsAndMaterials) {
     test::ScratchDir dir;
-    test::spit(dir / "quad.obj", kQuadObj);
-    test::spit(dir / "quad.mtl", kQuadMtl);
+    write_quad(dir);
     LoadedMesh loaded = read_mesh(dir / "quad.obj");
     Mesh& mesh = loaded.mesh;
     const Edge e = mesh.find_edge(Vertex(0), Vertex(1));  // the quad's bottom, uv (0,0)-(1,0)
@@ -150,9 +154,7 @@ TEST(ObjAttributes, EditsCarryTexCoordsAndMaterials) {
 // primitive per material; a .gltf names the texture, a .glb embeds it.
 TEST(ObjAttributes, GltfKeepsThemAndWeldsItsSeamsBack) {
     test::ScratchDir dir;
-    test::spit(dir / "quad.obj", kQuadObj);
-    test::spit(dir / "quad.mtl", kQuadMtl);
-    test::spit(dir / "wood.png", "x");
+    write_quad(dir);
     const LoadedMesh obj = read_mesh(dir / "quad.obj");
     for (const char* name : {"q.gltf", "q.glb"}) {
         SCOPED_TRACE(name);
@@ -185,8 +187,7 @@ TEST(ObjAttributes, GltfKeepsThemAndWeldsItsSeamsBack) {
 
 TEST(ObjAttributes, FormatsThatCannotKeepThemSaySo) {
     test::ScratchDir dir;
-    test::spit(dir / "quad.obj", kQuadObj);
-    test::spit(dir / "quad.mtl", kQuadMtl);
+    write_quad(dir);
     const LoadedMesh loaded = read_mesh(dir / "quad.obj");
     const std::vector<std::string> unkept = write_mesh(loaded.mesh, dir / "q.ply");
     ASSERT_EQ(unkept.size(), 3u);
@@ -203,7 +204,7 @@ TEST(ObjAttributes, FormatsThatCannotKeepThemSaySo) {
 
 TEST(ObjAttributes, MissingLibraryAndBadIndicesAreNamed) {
     test::ScratchDir dir;
-    test::spit(dir / "quad.obj", kQuadObj);
+    write_quad(dir, false);
     const LoadedMesh loaded = read_mesh(dir / "quad.obj");
     ASSERT_EQ(loaded.notices.size(), 1u);
     EXPECT_EQ(loaded.notices[0],
