@@ -17,7 +17,9 @@ namespace fs = std::filesystem;
 // Reads one library into the materials of `soup` it defines; the names of the materials it
 // defines go into `defined`.
 void read_library(const fs::path& file, MeshSoup& soup, std::vector<bool>& defined) {
-    const std::string bytes = read_file(file);
+    // A library is text of a few kilobytes; one of gigabytes is not read (a notice).
+    constexpr std::size_t kMaxLibraryBytes = std::size_t{64} << 20;
+    const std::string bytes = read_file(file, kMaxLibraryBytes);
     const std::string_view text = io_util::text_of(bytes, file.string());
     Material* current = nullptr;
     std::size_t pos = 0;
@@ -100,8 +102,10 @@ void read_libraries(const fs::path& obj, MeshSoup& soup) {
         const fs::path file = obj.parent_path() / name;
         std::error_code ec;
         if (!fs::is_regular_file(file, ec)) {
-            soup.notices.push_back("material library '" + name +
-                                   "' not found: material names kept, colours and textures not");
+            // A FIFO, a folder or a device is not read (it could block or never end).
+            soup.notices.push_back("material library '" + name + "' " +
+                                   (fs::exists(file, ec) ? "is not a regular file" : "not found") +
+                                   ": material names kept, colours and textures not");
             continue;
         }
         try {

@@ -3,6 +3,7 @@
 // cannot keep them yet say so.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <set>
@@ -211,6 +212,13 @@ TEST(ObjAttributes, MissingLibraryAndBadIndicesAreNamed) {
               "material library 'quad.mtl' not found: material names kept, colours and textures "
               "not");
     EXPECT_EQ(face_materials(loaded.mesh), (std::multiset<std::string>{"red paint", "wood"}));
+    // A library that is a FIFO is not opened (it could block for ever); the mesh loads.
+    ASSERT_EQ(mkfifo((dir / "quad.mtl").c_str(), 0600), 0);
+    const LoadedMesh piped = read_mesh(dir / "quad.obj");
+    ASSERT_EQ(piped.notices.size(), 1u);
+    EXPECT_EQ(piped.notices[0],
+              "material library 'quad.mtl' is not a regular file: material names kept, colours and "
+              "textures not");
     EXPECT_EQ(
         test::io_error_of([] { parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2 2/1 3/1\n", "t.obj"); }),
         "t.obj: line 4: face 1 refers to a texture coordinate that does not exist (the "
