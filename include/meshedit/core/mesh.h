@@ -186,6 +186,9 @@ public:
     /// the recorder's self-check. It tells the recorder, like every setter.
     template <class H>
     void carry(H to, H from) {
+        if (carries_nothing<H>()) [[likely]] {
+            return;  // no attribute and nobody recording: a flip pays two compares
+        }
         const std::uint32_t i = from.idx();
         const double w = 1.0;
         derive(to, &i, &w, 1);
@@ -204,7 +207,9 @@ public:
     /// An element nothing old describes (an edge across a face): the properties' defaults.
     template <class H>
     void carry_default(H to) {
-        derive(to, nullptr, nullptr, 0);
+        if (!carries_nothing<H>()) {
+            derive(to, nullptr, nullptr, 0);
+        }
     }
 
     // ----------------------------------------------------------------- queries
@@ -382,6 +387,19 @@ private:
     void record(int kind, std::uint32_t index);
     /// Tells the recorder's self-check that `index` of `kind` was derived (mesh_change.cpp).
     void carried(int kind, std::uint32_t index);
+    /// Where each kind's attributes start in its container (0 vertex … 3 face): the
+    /// positions and connectivity add_connectivity() makes come first, and carry() leaves
+    /// them to the operation.
+    static constexpr std::size_t kFirstAttribute[4] = {3, 4, 1, 2};
+    /// True when carry() has nothing to do: no attribute of kind H and no recording.
+    template <class H>
+    bool carries_nothing() const {
+        constexpr int kind = std::is_same_v<H, Vertex>     ? 0
+                             : std::is_same_v<H, Halfedge> ? 1
+                             : std::is_same_v<H, Edge>     ? 2
+                                                           : 3;
+        return recorder_ == nullptr && container<H>().n_properties() == kFirstAttribute[kind];
+    }
     /// carry()'s body: derives `to` in every attribute of its kind and tells the recorder.
     template <class H>
     void derive(H to, const std::uint32_t* from, const double* weight, std::size_t n);
@@ -449,6 +467,9 @@ private:
 
 template <class H>
 void Mesh::carry(H to, std::initializer_list<std::pair<H, double>> from) {
+    if (carries_nothing<H>()) {
+        return;
+    }
     std::uint32_t index[8];
     double weight[8];
     MESHEDIT_ASSERT(from.size() <= 8);
@@ -462,6 +483,9 @@ void Mesh::carry(H to, std::initializer_list<std::pair<H, double>> from) {
 
 template <class H>
 void Mesh::carry(H to, const H* from, const double* weight, std::size_t n) {
+    if (carries_nothing<H>()) {
+        return;
+    }
     std::uint32_t small[16];
     std::vector<std::uint32_t> large(n > 16 ? n : 0);
     std::uint32_t* index = n > 16 ? large.data() : small;

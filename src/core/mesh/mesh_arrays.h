@@ -13,9 +13,8 @@
 namespace meshedit {
 
 struct MeshArrays {
-    /// Where each kind's attributes start in its container (0 vertex … 3 face): positions and
-    /// connectivity come first (Mesh::add_connectivity()), and carry() leaves them alone.
-    static constexpr std::size_t kFirstAttribute[4] = {3, 4, 1, 2};
+    /// Where each kind's attributes start in its container (Mesh::kFirstAttribute).
+    static constexpr const std::size_t* kFirstAttribute = Mesh::kFirstAttribute;
     static PropertyContainer& container(Mesh& m, int kind) {
         PropertyContainer* c[] = {&m.vprops_, &m.hprops_, &m.eprops_, &m.fprops_};
         return *c[kind];
