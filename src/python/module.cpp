@@ -2,6 +2,7 @@
 // from and to numpy, the edit language, info(), validate() and fields. python/meshedit's
 // __init__.py turns each verb of the language into a method (docs/python.md).
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -30,6 +31,34 @@
 namespace py = pybind11;
 
 namespace meshedit::python {
+namespace {
+
+// A corner attribute in the order faces() lists corners (corner i of a face is the head of
+// the halfedge before its i-th), as a (corners, n) float64 array; None without it.
+template <class T>
+py::object corner_values(const Mesh& mesh, const char* name) {
+    const auto prop = mesh.get_property<Halfedge, T>(name);
+    if (!prop) {
+        return py::none();
+    }
+    constexpr py::ssize_t n = sizeof(T) / sizeof(double);
+    std::size_t corners = 0;
+    for (const Face f : mesh.faces()) {
+        corners += mesh.valence(f);
+    }
+    py::array_t<double> out({static_cast<py::ssize_t>(corners), n});
+    double* p = out.mutable_data();
+    for (const Face f : mesh.faces()) {
+        for (const Halfedge h : mesh.halfedges(f)) {
+            const T& v = prop[mesh.prev(h)];
+            std::memcpy(p, &v, sizeof(T));
+            p += n;
+        }
+    }
+    return out;
+}
+
+}  // namespace
 
 void bind_document(py::module_& m);
 
@@ -285,6 +314,48 @@ PYBIND11_MODULE(_meshedit, m) {
             "(vertices_size, 3) float64 view of the positions, no copy (deleted vertices keep "
             "their rows until compact()). Take it again after an edit that adds vertices.")
         .def("faces", [](const PyMesh& self) { return faces_of(self.mesh); })
+        .def(
+            "texcoords",
+            [](const PyMesh& self) { return corner_values<Vec2>(self.mesh, kTexCoordProperty); },
+            "Texture coordinates per face corner, (corners, 2) float64 in the order of faces() "
+            "flattened, or None when the mesh has none (OBJ vt, glTF TEXCOORD_0).")
+        .def(
+            "corner_normals",
+            [](const PyMesh& self) {
+                return corner_values<Vec3>(self.mesh, kCornerNormalProperty);
+            },
+            "The file's normals per face corner, (corners, 3) in the order of faces() flattened, "
+            "or None.")
+        .def(
+            "face_materials",
+            [](const PyMesh& self) -> py::object {
+                const auto m = self.mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
+                if (!m) {
+                    return py::none();
+                }
+                py::array_t<std::int64_t> out(static_cast<py::ssize_t>(self.mesh.n_faces()));
+                std::int64_t* p = out.mutable_data();
+                for (const Face f : self.mesh.faces()) {
+                    *p++ = m[f];
+                }
+                return out;
+            },
+            "Each live face's index into materials(), in the order of faces(), or None.")
+        .def(
+            "materials",
+            [](const PyMesh& self) {
+                py::list out;
+                for (const Material& m : self.mesh.materials()) {
+                    py::dict d;
+                    d["name"] = m.name;
+                    d["base_colour"] = py::make_tuple(m.base_colour.x, m.base_colour.y,
+                                                      m.base_colour.z, m.opacity);
+                    d["texture"] = m.base_colour_texture;
+                    out.append(d);
+                }
+                return out;
+            },
+            "The materials: name, base colour (r, g, b, opacity) and base-colour texture path.")
         .def("edges", [](const PyMesh& self) { return edges_of(self.mesh); })
         .def("creases", [](const PyMesh& self) { return creases_of(self.mesh); })
         .def(
