@@ -138,7 +138,9 @@ private:
             out_.materials.push_back(Material{});  // the faces before the first usemtl: none
         }
         material_ = static_cast<std::uint32_t>(out_.materials.size());
-        out_.materials.push_back(Material{std::string(name)});
+        Material m;
+        m.name = std::string(name);
+        out_.materials.push_back(std::move(m));
     }
 
     // A 1-based, possibly negative OBJ index into `count` elements so far → 0-based. Absolute

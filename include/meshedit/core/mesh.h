@@ -394,11 +394,16 @@ private:
     /// True when carry() has nothing to do: no attribute of kind H and no recording.
     template <class H>
     bool carries_nothing() const {
-        constexpr int kind = std::is_same_v<H, Vertex>     ? 0
-                             : std::is_same_v<H, Halfedge> ? 1
-                             : std::is_same_v<H, Edge>     ? 2
-                                                           : 3;
-        return recorder_ == nullptr && container<H>().n_properties() == kFirstAttribute[kind];
+        return recorder_ == nullptr &&
+               container<H>().n_properties() == kFirstAttribute[kind_of<H>()];
+    }
+    /// The recorder's number of an element kind: 0 vertex, 1 halfedge, 2 edge, 3 face.
+    template <class H>
+    static constexpr int kind_of() {
+        return std::is_same_v<H, Vertex>     ? 0
+               : std::is_same_v<H, Halfedge> ? 1
+               : std::is_same_v<H, Edge>     ? 2
+                                             : 3;
     }
     /// carry()'s body: derives `to` in every attribute of its kind and tells the recorder.
     template <class H>

@@ -237,6 +237,12 @@ private:
                 sum += weight[i] * static_cast<double>(src[from[i]]);
             }
             return to_integer(sum);
+        } else if constexpr (std::is_arithmetic_v<T>) {  // float: summed in double
+            double sum = 0.0;
+            for (std::size_t i = 0; i < n; ++i) {
+                sum += weight[i] * static_cast<double>(src[from[i]]);
+            }
+            return static_cast<T>(sum);
         } else {
             T sum = src[from[0]] * weight[0];
             for (std::size_t i = 1; i < n; ++i) {

@@ -2,21 +2,9 @@
 
 #include <type_traits>
 
-#include "mesh/mesh_arrays.h"
 #include "meshedit/core/attributes.h"
 
 namespace meshedit {
-namespace {
-constexpr const std::size_t* kFirstAttribute = MeshArrays::kFirstAttribute;
-
-template <class H>
-constexpr int kind_of() {
-    return std::is_same_v<H, Vertex>     ? 0
-           : std::is_same_v<H, Halfedge> ? 1
-           : std::is_same_v<H, Edge>     ? 2
-                                         : 3;
-}
-}  // namespace
 
 Mesh::Mesh() {
     add_connectivity();
