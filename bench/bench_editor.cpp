@@ -120,7 +120,8 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
             while (mesh.is_deleted(e)) {
                 e = Edge(pick(rng));
             }
-            const std::string verb = verbs[rng() % 3];
+            const std::size_t which = rng() % 3;  // 0: a flip, whose undo bytes are measured
+            const std::string verb = verbs[which];
             editor.select(ElementRef::edge(e));
             const std::size_t bytes_before = editor.history().bytes();
             const std::size_t steps_before = editor.history().undo_steps();
@@ -136,7 +137,7 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
             follow(renderer, editor, outcome, gl);
             command_upload.push_back(ms + ms_since(start));
             // Only while nothing was dropped is the growth this step's size.
-            if (verb == "flip" && editor.history().undo_steps() == steps_before + 1) {
+            if (which == 0 && editor.history().undo_steps() == steps_before + 1) {
                 flip_bytes.push_back(static_cast<double>(editor.history().bytes() - bytes_before));
             }
             ++applied_here;

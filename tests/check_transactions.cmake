@@ -4,6 +4,7 @@
 # changed" (take_region) is gone. Run by ctest (document_changes_only_through_transactions,
 # label viewer); fails naming every offending line.
 cmake_policy(SET CMP0007 NEW)
+include(${CMAKE_CURRENT_LIST_DIR}/find_lines.cmake)
 file(GLOB_RECURSE sources RELATIVE "${ROOT}" "${ROOT}/src/*.cpp" "${ROOT}/src/*.h"
      "${ROOT}/include/*.h" "${ROOT}/bench/*.cpp")
 # History's own implementation and the document's undo/redo of a change move revisions and
@@ -18,20 +19,7 @@ set(forbidden
     "session\\.(emplace_back|push_back|insert|resize|assign)\\("
     "take_region"
     "amend_last")
-set(bad "")
-foreach(file ${sources})
-    file(STRINGS "${ROOT}/${file}" lines)
-    set(n 0)
-    foreach(line IN LISTS lines)
-        math(EXPR n "${n} + 1")
-        foreach(pattern ${forbidden})
-            if(line MATCHES "${pattern}")
-                string(REPLACE ";" "," shown "${line}")
-                list(APPEND bad "${file}:${n}: ${shown}")
-            endif()
-        endforeach()
-    endforeach()
-endforeach()
+find_lines(bad "${sources}" "${forbidden}")
 if(bad)
     list(JOIN bad "\n  " text)
     message(FATAL_ERROR "the document changed outside a Transaction (viewer/transaction.h):\n  ${text}")

@@ -1,9 +1,11 @@
 // `meshedit convert`, `subdivide`, `simplify`, `remesh` and `check`: the commands that load
 // a mesh, maybe change it, and write or judge it.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -12,7 +14,6 @@
 #include "cli.h"
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/budget.h"
-#include "meshedit/core/simplify.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/files/files.h"
 #include "meshedit/io/io.h"
@@ -57,6 +58,27 @@ ops::ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
 // stands on its own in a log.
 [[noreturn]] void rethrow_with_file(const ops::OpError& e, const std::filesystem::path& in) {
     throw ops::OpError(in.string() + ": " + e.what(), e.refused());
+}
+
+// The whole-mesh commands (subdivide, simplify, remesh): IN's mesh through one step of the
+// language (none: a plain conversion), as `convert --ops` runs it, written to OUT; a refusal
+// names IN.
+int run_one_step(const std::filesystem::path& in, const std::filesystem::path& out, int density,
+                 const char* what, LoopWeights weights,
+                 const std::function<std::optional<ops::Step>(const Mesh&)>& step_of) {
+    check_mesh_output(out);
+    LoadedDocument input = load_surface(in, density);
+    print_load_messages(input);
+    if (const std::optional<ops::Step> step = step_of(input.mesh)) {
+        ProgressBar bar(what);
+        try {
+            ops::apply_steps(input.mesh, {*step}, apply_options(bar, weights));
+        } catch (const ops::OpError& e) {
+            rethrow_with_file(e, in);
+        }
+    }
+    report_unkept(out, write_mesh(input.mesh, out));
+    return 0;
 }
 
 }  // namespace
@@ -214,24 +236,18 @@ Command add_subdivide(CLI::App& meshedit) {
         "unwritable output.");
     return {app, [s] {
                 const LoopWeights weights =
-                    s->weights == "loop" ? LoopWeights::Loop : LoopWeights::Warren;
-                check_mesh_output(s->out);
-                LoadedDocument input = load_surface(s->in, s->density);
-                print_load_messages(input);
-                if (s->levels > 0) {
-                    const std::string verb = s->scheme == "catmull-clark" ? "catmull_clark"
-                                             : s->scheme == "linear"      ? "linear"
-                                                                          : "loop";
-                    const ops::Step loop = ops::parse_step(verb + ":" + std::to_string(s->levels));
-                    ProgressBar bar("subdivide");
-                    try {
-                        ops::apply_steps(input.mesh, {loop}, apply_options(bar, weights));
-                    } catch (const ops::OpError& e) {
-                        rethrow_with_file(e, s->in);
-                    }
-                }
-                report_unkept(s->out, write_mesh(input.mesh, s->out));
-                return 0;
+                    s->weights == "warren" ? LoopWeights::Warren : LoopWeights::Loop;
+                return run_one_step(
+                    s->in, s->out, s->density, "subdivide", weights,
+                    [&](const Mesh&) -> std::optional<ops::Step> {
+                        if (s->levels == 0) {
+                            return std::nullopt;
+                        }
+                        // --scheme's spelling (a hyphen, as the other options) → the verb's.
+                        std::string verb = s->scheme;
+                        std::replace(verb.begin(), verb.end(), '-', '_');
+                        return ops::parse_step(verb + ":" + std::to_string(s->levels));
+                    });
             }};
 }
 
@@ -278,32 +294,14 @@ Command add_simplify(CLI::App& meshedit) {
                 throw UsageError("simplify: --ratio must be above 0 and below 1, not " +
                                  ratio->as<std::string>());
             }
-            check_mesh_output(s->out);
-            LoadedDocument input = load_surface(s->in, s->density);
-            print_load_messages(input);
-            SimplifyOptions options;
-            options.max_error = s->max_error;
-            options.target_faces =
-                faces->count() > 0
-                    ? s->faces
-                    : static_cast<std::size_t>(std::max(
-                          1.0, std::round(s->ratio * static_cast<double>(input.mesh.n_faces()))));
-            if (const std::string why = check_simplify(input.mesh, options); !why.empty()) {
-                throw ops::OpError(s->in.string() + ": simplify refused: " + why, true);
-            }
-            ProgressBar bar("simplify");
-            options.progress = [&bar](double f) { bar.update(f); };
-            const SimplifyReport report = simplify(input.mesh, options);
-            if (report.stopped_early) {
-                print_notice(s->in.string() + ": stopped at " +
-                             std::to_string(input.mesh.n_faces()) + " faces (" +
-                             (std::isfinite(s->max_error)
-                                  ? "the next collapse exceeds --max-error"
-                                  : "no further collapse keeps the mesh valid and unfolded") +
-                             ")");
-            }
-            report_unkept(s->out, write_mesh(input.mesh, s->out));
-            return 0;
+            // Through the language, as `--ops simplify:R,E`: one rounding of a share into a
+            // face count, one refusal and one "stopped at" message for every program.
+            const double kept = faces->count() > 0 ? static_cast<double>(s->faces) : s->ratio;
+            return run_one_step(
+                s->in, s->out, s->density, "simplify", LoopWeights::Warren, [&](const Mesh& mesh) {
+                    return std::optional(ops::make_step("simplify", mesh, ElementRef{},
+                                                        std::array<double, 2>{kept, s->max_error}));
+                });
         }};
 }
 
@@ -334,20 +332,13 @@ Command add_remesh(CLI::App& meshedit) {
         "Exit status: 0 ok, 1 refused (polygons, a length that would make too many triangles,\n"
         "iterations out of range), 2 bad usage, bad input or an unwritable output.");
     return {app, [s] {
-                check_mesh_output(s->out);
-                LoadedDocument input = load_surface(s->in, s->density);
-                print_load_messages(input);
-                const ops::Step step = ops::make_step(
-                    "remesh", input.mesh, ElementRef{},
-                    std::array<double, 2>{s->length, static_cast<double>(s->iterations)});
-                ProgressBar bar("remesh");
-                try {
-                    ops::apply_steps(input.mesh, {step}, apply_options(bar, LoopWeights::Warren));
-                } catch (const ops::OpError& e) {
-                    rethrow_with_file(e, s->in);
-                }
-                report_unkept(s->out, write_mesh(input.mesh, s->out));
-                return 0;
+                return run_one_step(
+                    s->in, s->out, s->density, "remesh", LoopWeights::Warren,
+                    [&](const Mesh& mesh) {
+                        return std::optional(ops::make_step(
+                            "remesh", mesh, ElementRef{},
+                            std::array<double, 2>{s->length, static_cast<double>(s->iterations)}));
+                    });
             }};
 }
 

@@ -4,11 +4,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <new>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli.h"
@@ -18,6 +20,11 @@
 #include "meshedit/ops/ops.h"
 
 namespace {
+
+// The commands run_builtin() runs (it registers one of each); any other name is a
+// meshedit-COMMAND beside this executable, or a file to view.
+constexpr std::array<std::string_view, 7> kBuiltins{"info",   "convert", "subdivide", "simplify",
+                                                    "remesh", "check",   "eval"};
 
 using namespace meshedit::cli;
 
@@ -89,6 +96,7 @@ int run_builtin(int argc, char** argv) {
     const Command commands[] = {add_info(app),     add_convert(app), add_subdivide(app),
                                 add_simplify(app), add_remesh(app),  add_check(app),
                                 add_eval(app)};
+    static_assert(std::size(commands) == kBuiltins.size(), "kBuiltins lists every command");
     for (const Command& c : commands) {
         c.app->group("Commands");
         c.app->fallthrough();  // --memory-budget, --threads after the command name work too
@@ -138,9 +146,7 @@ int dispatch(int argc, char** argv) {
             "time); use 'meshedit info FILE' for a description");
         return 1;
     }
-    const bool builtin = command == "info" || command == "convert" || command == "subdivide" ||
-                         command == "simplify" || command == "remesh" || command == "check" ||
-                         command == "eval";
+    const bool builtin = std::find(kBuiltins.begin(), kBuiltins.end(), command) != kBuiltins.end();
     if (!builtin && !command.empty() && command[0] != '-') {
         exec_external(command, argv);  // a meshedit-COMMAND beside this executable
         if (looks_like_file(command)) {

@@ -87,7 +87,7 @@ std::optional<OpDiagram> run_ops(Mesh& mesh, const Options& options, ElementRef&
     const Mesh before = mesh;
     const ElementRef input = ops::named_element(mesh, last);
     result = ops::run_step(mesh, last).selected;
-    OpDiagram diagram = op_diagram(before, mesh, last.verb->name, input);
+    OpDiagram diagram = op_diagram(before, mesh, last.verb->name, last.verb->names, input);
     const Color ink{0.15f, 0.15f, 0.2f, 1.0f};
     diagram.picture.labels.push_back({{0.5 * OpDiagram::kAfterX, diagram.max.y + 0.15, 0.0},
                                       diagram.title,

@@ -184,9 +184,10 @@ int parse_options(int argc, char** argv, Options& o) {
     app.add_option_function<std::string>(
            "--stencil",
            [&o](const std::string& v) {
-               o.stencil = v == "loop"            ? StencilScheme::LoopWarren
+               // IsMember below admits these three spellings only.
+               o.stencil = v == "catmull-clark"   ? StencilScheme::CatmullClark
                            : v == "loop-original" ? StencilScheme::LoopOriginal
-                                                  : StencilScheme::CatmullClark;
+                                                  : StencilScheme::LoopWarren;
            },
            "draw the --select element's subdivision stencil: its vertices with their weights "
            "(loop: Warren's weights, as L; loop-original: Loop's; catmull-clark: as Shift+C)")

@@ -410,8 +410,14 @@ Step make_step(std::string_view name, const Mesh& mesh, const ElementRef& target
     for (std::size_t i = 0; i < amounts.size(); ++i) {
         step.amounts[i] = amounts[i];
     }
-    // Every amount is written (defaults too) so the text says exactly what ran.
-    for (std::size_t i = 0; i < step.verb->max_amounts; ++i) {
+    // Every amount is written (defaults too) so the text says exactly what ran; a last one
+    // left at an unbounded default (simplify's error bound) means the same left out.
+    std::size_t written = step.verb->max_amounts;
+    while (written > 0 && std::isinf(step.verb->defaults[written - 1]) &&
+           step.amounts[written - 1] == step.verb->defaults[written - 1]) {
+        --written;
+    }
+    for (std::size_t i = 0; i < written; ++i) {
         text += i == 0 ? ':' : ',';
         text += number_text(step.amounts[i]);
     }
@@ -468,7 +474,8 @@ StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options) {
     return step.verb->run(mesh, step, options);
 }
 
-ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOptions& options) {
+StepsRun run_steps(Mesh& mesh, const std::vector<Step>& steps, OnRefusal on_refusal,
+                   const ApplyOptions& options) {
     // Every subdivision level of the list must fit before any work is done (the local steps
     // barely change the size; each level of any scheme about quadruples the faces, so the
     // levels so far are planned with the step's own scheme); each step is checked again
@@ -542,8 +549,27 @@ ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOp
         total += cost[i];
     }
     double done = 0.0;
-    ElementRef last;
+    StepsRun out;
     for (std::size_t i = 0; i < steps.size(); ++i) {
+        const Step& step = steps[i];
+        std::string reason;
+        try {
+            reason = step.verb->check(mesh, step);
+        } catch (const OpError& e) {
+            if (on_refusal == OnRefusal::Stop) {
+                throw;
+            }
+            reason = e.what();  // an earlier step removed what this one names
+        }
+        if (!reason.empty()) {
+            if (on_refusal == OnRefusal::Stop) {
+                throw OpError(step.text + " refused: " + reason, true);
+            }
+            if (out.refused++ == 0) {
+                out.first_refusal = steps.size() == 1 ? reason : step.text + ": " + reason;
+            }
+            continue;
+        }
         RunOptions run;
         run.weights = options.weights;
         if (options.progress && total > 0.0) {
@@ -551,19 +577,29 @@ ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOp
                 options.progress(std::min(1.0, (done + f * cost[i]) / total));
             };
         }
-        const StepResult result = run_step(mesh, steps[i], run);
-        last = result.selected;
+        StepResult result = step.verb->run(mesh, step, run);
+        ++out.ran;
+        out.done.push_back(&step);
+        if (!result.selected.is_none()) {
+            out.made.push_back(result.selected);
+        }
+        out.last = result.selected;
+        out.last_message = std::move(result.message);
         done += cost[i];
         if (options.progress && total > 0.0) {
             options.progress(std::min(1.0, done / total));
         }
         for (const std::string& notice : result.notices) {
             if (options.notice) {
-                options.notice(steps[i].text + ": " + notice);
+                options.notice(step.text + ": " + notice);
             }
         }
     }
-    return last;
+    return out;
+}
+
+ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps, const ApplyOptions& options) {
+    return run_steps(mesh, steps, OnRefusal::Stop, options).last;
 }
 
 std::string syntax_list() {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "meshedit/core/attributes.h"
@@ -378,18 +379,27 @@ StepResult run_linear(Mesh& mesh, const Step& step, const RunOptions& options) {
     return run_quads(mesh, step, options, QuadScheme::Linear);
 }
 
-// simplify:R keeps about R of the faces.
+// simplify:R,E keeps about R of the faces (0 < R < 1) or R faces (a whole number), stopping
+// before a collapse whose error exceeds E (left out: no bound). The one place the CLI's
+// --ratio and --faces, the viewer's D and `--ops` turn a share into a face count.
+bool is_face_count(double r) {
+    return r >= 1.0 || r == 0.0;
+}
 SimplifyOptions simplify_options(const Mesh& mesh, const Step& step) {
     SimplifyOptions options;
-    const double kept = std::round(static_cast<double>(mesh.n_faces()) * step.amounts[0]);
-    options.target_faces = static_cast<std::size_t>(std::max(1.0, kept));
+    const double r = step.amounts[0];
+    const double kept = is_face_count(r) ? r : std::round(static_cast<double>(mesh.n_faces()) * r);
+    options.target_faces = is_face_count(r) ? static_cast<std::size_t>(std::min(kept, 1e18))
+                                            : static_cast<std::size_t>(std::max(1.0, kept));
+    options.max_error = step.amounts[1];
     return options;
 }
 std::string check_simplify_step(const Mesh& mesh, const Step& step) {
-    const double ratio = step.amounts[0];
-    if (!(ratio > 0.0 && ratio < 1.0)) {
-        return "cannot simplify: the ratio of faces to keep must be above 0 and below 1, not " +
-               number_text(ratio);
+    const double r = step.amounts[0];
+    if (!(r > 0.0 && r < 1.0) && !(is_face_count(r) && r == std::floor(r) && r <= 1e18)) {
+        return "cannot simplify: keep a share of the faces above 0 and below 1, or a whole "
+               "number of faces, not " +
+               number_text(r);
     }
     return check_simplify(mesh, simplify_options(mesh, step));
 }
@@ -404,8 +414,12 @@ StepResult run_simplify(Mesh& mesh, const Step& step, const RunOptions& options)
                      std::to_string(mesh.n_faces()) + " (" + std::to_string(report.collapses) +
                      " collapses)";
     if (report.stopped_early) {
-        result.notices.push_back("stopped at " + std::to_string(mesh.n_faces()) +
-                                 " faces: no further collapse keeps the mesh valid and unfolded");
+        result.notices.push_back(
+            "stopped at " + std::to_string(mesh.n_faces()) + " faces: " +
+            (std::isfinite(simplify_with.max_error)
+                 ? "the next collapse exceeds the error bound " +
+                       number_text(simplify_with.max_error)
+                 : std::string("no further collapse keeps the mesh valid and unfolded")));
         result.message += "; " + result.notices.back();
     }
     return result;
@@ -483,17 +497,20 @@ StepResult run_flip_orientation(Mesh& mesh, const Step&, const RunOptions&) {
 }
 
 constexpr std::array<double, kMaxAmounts> kNoDefaults{};
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 // clang-format off
 constexpr std::array kVerbs{
     Verb{"flip", kEdgeArg, 0, 0, kNoDefaults, "flip:A-B",
          "flips the interior edge A-B: it turns inside its two faces to join the corners "
          "after its ends (triangles stay triangles, polygons keep their sides)",
-         "flip the selected edge", check_flip, run_flip},
+         "flip the selected edge", check_flip, run_flip, nullptr, false, kDefaultTraits,
+         CodeNames::Flip},
     Verb{"split", kEdgeArg, 0, 0, kNoDefaults, "split:A-B",
          "splits A-B at its midpoint and divides the triangles beside it (a polygon only "
          "gains the vertex); the new vertex gets the next free index (`V` before the split)",
-         "split the selected edge", check_split, run_split},
+         "split the selected edge", check_split, run_split, nullptr, false, kDefaultTraits,
+         CodeNames::Split},
     Verb{"bisect", kEdgeArg, 0, 0, kNoDefaults, "bisect:A-B",
          "inserts a vertex at the midpoint of A-B without dividing any face (each face beside "
          "it gains a corner); the new vertex gets index `V`",
@@ -503,7 +520,8 @@ constexpr std::array kVerbs{
          "collapses A-B to its midpoint (the smaller index survives, the other is deleted), "
          "or face I to the average of its corners (its smallest-index corner survives); "
          "indices are not renumbered until the file is written",
-         "collapse the selected edge or face", check_collapse, run_collapse},
+         "collapse the selected edge or face", check_collapse, run_collapse, nullptr, false,
+         kDefaultTraits, CodeNames::Collapse},
     Verb{"dissolve", kVertexArg | kEdgeArg, 0, 0, kNoDefaults, "dissolve:vI, dissolve:A-B",
          "removes vertex I and merges the faces around it into one, or removes A-B and merges "
          "its two faces (a boundary edge's face joins the hole)",
@@ -568,16 +586,20 @@ constexpr std::array kVerbs{
          "at centroids and midpoints, the surface unchanged",
          "subdivide into quads without smoothing (linear)", check_quads, run_linear,
          plan_quad_subdivision},
-    Verb{"simplify", kWholeMesh, 1, 0, {0.5, 0.0}, "simplify, simplify:R",
+    Verb{"simplify", kWholeMesh, 2, 0, {0.5, kUnbounded}, "simplify, simplify:R, simplify:R,E",
          "QEM simplification (Garland-Heckbert) of a triangle mesh to about R of its faces "
-         "(0 < R < 1, default 0.5): edge collapses, cheapest quadric error first, boundaries "
-         "and creases held, no face turned over; indices are renumbered when written",
-         "simplify the mesh to half its faces (QEM)", check_simplify_step, run_simplify},
+         "(0 < R < 1, default 0.5) or to R faces (a whole number), stopping before a collapse "
+         "whose error exceeds E times the bounding-box diagonal (left out: no bound): edge "
+         "collapses, cheapest quadric error first, boundaries and creases held, no face turned "
+         "over; indices are renumbered when written",
+         "simplify the mesh to the share of its faces the info panel sets (QEM)",
+         check_simplify_step, run_simplify, nullptr, false, kDefaultTraits | kToolAmounts},
     Verb{"remesh", kWholeMesh, 2, 0, {0.0, 3.0}, "remesh, remesh:L, remesh:L,N",
          "isotropic remeshing (Botsch-Kobbelt) of a triangle mesh toward edge length L (0 or "
          "left out: the mean edge length) in N rounds (default 3) of split, collapse, flip, "
          "tangential smoothing and projection onto the input; boundaries and creases kept",
-         "remesh toward the mean edge length (3 rounds)", check_remesh_step, run_remesh},
+         "remesh toward the mean edge length (3 rounds)", check_remesh_step, run_remesh,
+         nullptr, false, kDefaultTraits | kToolAmounts},
     Verb{"triangulate", kWholeMesh | kFaceArg, 0, 0, kNoDefaults, "triangulate, triangulate:fI",
          "cuts every polygon (or face I) into triangles by diagonals inside it",
          "triangulate every polygon", check_triangulate, run_triangulate},

@@ -329,14 +329,14 @@ PYBIND11_MODULE(_meshedit, m) {
         .def(
             "face_materials",
             [](const PyMesh& self) -> py::object {
-                const auto m = self.mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
-                if (!m) {
+                const auto index = self.mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
+                if (!index) {
                     return py::none();
                 }
                 py::array_t<std::int64_t> out(static_cast<py::ssize_t>(self.mesh.n_faces()));
                 std::int64_t* p = out.mutable_data();
                 for (const Face f : self.mesh.faces()) {
-                    *p++ = m[f];
+                    *p++ = index[f];
                 }
                 return out;
             },
@@ -345,12 +345,13 @@ PYBIND11_MODULE(_meshedit, m) {
             "materials",
             [](const PyMesh& self) {
                 py::list out;
-                for (const Material& m : self.mesh.materials()) {
+                for (const Material& material : self.mesh.materials()) {
                     py::dict d;
-                    d["name"] = m.name;
-                    d["base_colour"] = py::make_tuple(m.base_colour.x, m.base_colour.y,
-                                                      m.base_colour.z, m.opacity);
-                    d["texture"] = m.base_colour_texture;
+                    d["name"] = material.name;
+                    d["base_colour"] =
+                        py::make_tuple(material.base_colour.x, material.base_colour.y,
+                                       material.base_colour.z, material.opacity);
+                    d["texture"] = material.base_colour_texture;
                     out.append(d);
                 }
                 return out;

@@ -44,7 +44,7 @@ void add_faces_around(const Mesh& mesh, Vertex v, Region& r,
     }
 }
 
-Region region_before(const Mesh& mesh, std::string_view verb, ElementRef input) {
+Region region_before(const Mesh& mesh, CodeNames names, ElementRef input) {
     Region r;
     std::unordered_set<std::uint32_t> seen;
     switch (input.kind) {
@@ -55,7 +55,7 @@ Region region_before(const Mesh& mesh, std::string_view verb, ElementRef input) 
         case ElementRef::Kind::Edge: {
             const Edge e = input.kind == ElementRef::Kind::Edge ? Edge(input.index)
                                                                 : Mesh::edge(Halfedge(input.index));
-            if (verb == "collapse") {
+            if (names == CodeNames::Collapse) {
                 add_faces_around(mesh, mesh.vertex(e, 0), r, seen);
                 add_faces_around(mesh, mesh.vertex(e, 1), r, seen);
             } else {
@@ -570,13 +570,13 @@ struct Painter {
 
 }  // namespace
 
-OpDiagram op_diagram(const Mesh& before, const Mesh& after, std::string_view verb, ElementRef input,
-                     const OpDiagramStyle& style) {
+OpDiagram op_diagram(const Mesh& before, const Mesh& after, std::string_view verb, CodeNames code,
+                     ElementRef input, const OpDiagramStyle& style) {
     OpDiagram diagram;
     diagram.title = std::string(verb) + " of " + describe(before, input);
-    const Region old = region_before(before, verb, input);
+    const Region old = region_before(before, code, input);
     const Region now = region_after(before, after, old);
-    const Names names = op_diagram_detail::code_names(before, verb, input);
+    const Names names = op_diagram_detail::code_names(before, code, input);
     const Labeller labels{names};
     const Diff diff{before, after};
 

@@ -1,7 +1,7 @@
 // The names flip(), split() and collapse() give their elements (src/core/local_ops/flip_split.cpp,
-// src/core/local_ops/collapse.cpp: the ASCII diagrams above the code), derived here the way that code
-// derives them, so the rewiring diagram (op_diagram.h) labels what a student reads there.
-// A test checks that each name lands on the element the diagram in the source shows.
+// src/core/local_ops/collapse.cpp: the ASCII diagrams above the code), derived here the way that
+// code derives them, so the rewiring diagram (op_diagram.h) labels what a student reads there. A
+// test checks that each name lands on the element the diagram in the source shows.
 
 #include <algorithm>
 
@@ -140,7 +140,7 @@ const std::string* Names::face(Face f) const {
     return find(faces, f);
 }
 
-Names code_names(const Mesh& before, std::string_view verb, ElementRef input) {
+Names code_names(const Mesh& before, CodeNames names, ElementRef input) {
     if (input.kind == ElementRef::Kind::Halfedge) {
         input = ElementRef::edge(Mesh::edge(Halfedge(input.index)));
     }
@@ -148,14 +148,15 @@ Names code_names(const Mesh& before, std::string_view verb, ElementRef input) {
         return {};
     }
     const Edge e(input.index);
-    if (verb == "flip") {
-        return flip_names(before, e);
-    }
-    if (verb == "split") {
-        return split_names(before, e);
-    }
-    if (verb == "collapse") {
-        return collapse_names(before, e);
+    switch (names) {
+        case CodeNames::Flip:
+            return flip_names(before, e);
+        case CodeNames::Split:
+            return split_names(before, e);
+        case CodeNames::Collapse:
+            return collapse_names(before, e);
+        case CodeNames::ByIndex:
+            break;
     }
     return {};
 }

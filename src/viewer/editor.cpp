@@ -209,20 +209,16 @@ constexpr std::size_t kDiagramMaxFaces = 200000;
 
 // The diagram of an edit that was one local operation on the connectivity; none for
 // whole-mesh steps, several steps, drags (move) and crease marks.
-std::optional<OpDiagram> rewiring_of(const Mesh& before, const Mesh& after,
-                                     const std::vector<std::string>& steps) {
-    if (steps.size() != 1) {
+std::optional<OpDiagram> rewiring_of(const Mesh& before, const Mesh& after, const ops::Step* step) {
+    if (step == nullptr || !ops::draws_diagram(*step)) {
         return std::nullopt;
     }
     try {
-        const ops::Step step = ops::parse_step(steps.front());
-        if (!ops::draws_diagram(step)) {
-            return std::nullopt;
-        }
-        return op_diagram(before, after, step.verb->name, ops::named_element(before, step));
+        return op_diagram(before, after, step->verb->name, step->verb->names,
+                          ops::named_element(before, *step));
     } catch (const std::exception&) {
-        // A step the viewer wrote always parses and names a live element; whatever goes wrong
-        // in drawing its diagram must not take the edit, which is done, down with it.
+        // A step that ran names a live element; whatever goes wrong in drawing its diagram
+        // must not take the edit, which is done, down with it.
         return std::nullopt;
     }
 }
@@ -254,7 +250,7 @@ Outcome Editor::edit(const std::function<std::string()>& check,
         return refused(e.what());
     }
     // Before compact() renumbers: the diagram names elements by their indices.
-    diagram_ = before ? rewiring_of(*before, doc_.mesh, edited.steps) : std::nullopt;
+    diagram_ = before ? rewiring_of(*before, doc_.mesh, edited.step) : std::nullopt;
     settle(edited);
     if (!recorded && compact()) {
         edited.steps.emplace_back("compact");

@@ -1,9 +1,11 @@
 // The editor's mesh edits: every key that changes the mesh runs a verb of the edit language
 // (meshedit/ops/ops.h) through the edit funnel, on the selected elements or the whole mesh.
 
+#include <span>
 #include <stdexcept>
 #include <vector>
 
+#include "meshedit/core/assert.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/viewer/editor.h"
 #include "selection_steps.h"
@@ -17,11 +19,9 @@ Outcome Editor::edit_mesh(std::string_view name) {
     }
     if (verb->accepts(ops::Target::None)) {
         // Whole-mesh verbs with amounts take them from the tool settings (the info panel).
-        std::vector<double> amounts;
-        if (name == "simplify") {
-            amounts = {tools_.simplify_ratio};
-        } else if (name == "remesh") {
-            amounts = {tools_.remesh_length, static_cast<double>(tools_.remesh_iterations)};
+        std::span<const double> amounts;
+        if ((verb->traits & ops::kToolAmounts) != 0) {
+            amounts = std::span<const double>(tools_.amounts(verb->name).data(), verb->max_amounts);
         }
         const ops::Step step = ops::make_step(name, doc_.mesh, ElementRef{}, amounts);
         return edit([&] { return verb->check(doc_.mesh, step); },
@@ -70,30 +70,34 @@ Outcome Editor::delete_selection() {
 
 Outcome Editor::edit_steps(const std::vector<ops::Step>& steps, std::string_view what,
                            bool topology) {
-    return edit(
-        [&]() -> std::string {
-            if (steps.size() > 1) {
-                return {};  // each is checked as it comes; apply() refuses if none ran
-            }
-            try {
-                return steps.front().verb->check(doc_.mesh, steps.front());
-            } catch (const ops::OpError& e) {
-                return e.what();
-            }
-        },
-        [&](Document& doc) {
-            const StepsRun run = run_steps(doc.mesh, steps, what);
-            if (run.ran == 0) {
-                throw std::runtime_error(run.first_refusal);
-            }
-            select_made(doc, run.made);
-            Edited edited;
-            edited.message = run.message;
-            edited.steps = run.steps;
-            edited.changes = topology ? kTopology | kSelection : kSelection | kDisplay;
-            return edited;
-        },
-        /*local=*/true);
+    // Each step's predicate runs once, in run_steps(); a list none of whose steps could run
+    // is refused with the first reason, the recording rolled back.
+    return edit([] { return std::string(); },
+                [&](Document& doc) {
+                    const StepsRun run = run_steps(doc.mesh, steps, what);
+                    if (run.ran == 0) {
+                        throw std::runtime_error(run.first_refusal);
+                    }
+                    select_made(doc, run.made);
+                    Edited edited;
+                    edited.message = run.message;
+                    edited.steps = run.steps;
+                    edited.step = run.done.size() == 1 && steps.size() == 1 ? run.done[0] : nullptr;
+                    edited.changes = topology ? kTopology | kSelection : kSelection | kDisplay;
+                    return edited;
+                },
+                /*local=*/true);
+}
+
+ToolSettings::Amounts& ToolSettings::amounts(std::string_view verb) {
+    const ops::Verb* v = ops::find_verb(verb);
+    MESHEDIT_ASSERT(v != nullptr);
+    for (auto& [known, values] : amounts_) {
+        if (known == v) {
+            return values;
+        }
+    }
+    return amounts_.emplace_back(v, v->defaults).second;
 }
 
 bool Editor::compact() {

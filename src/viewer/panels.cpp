@@ -235,19 +235,24 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDispl
 
     if (doc.mode != Mode::Curve && ImGui::CollapsingHeader("Global operations")) {
         ToolSettings& tools = editor.tools();
-        float ratio = static_cast<float>(tools.simplify_ratio);
+        ToolSettings::Amounts& keep = tools.amounts("simplify");
+        float ratio = static_cast<float>(keep[0]);
         if (ImGui::SliderFloat("keep", &ratio, 0.01f, 0.99f, "%.2f of the faces")) {
-            tools.simplify_ratio = ratio;
+            keep[0] = ratio;
         }
         if (ImGui::Button("simplify (D)")) {
             requests.action = edit("simplify");
         }
-        float length = static_cast<float>(tools.remesh_length);
+        ToolSettings::Amounts& remesh = tools.amounts("remesh");
+        float length = static_cast<float>(remesh[0]);
         if (ImGui::InputFloat("length", &length, 0.0f, 0.0f, "%.4g") && length >= 0.0f) {
-            tools.remesh_length = length;
+            remesh[0] = length;
         }
         ImGui::TextDisabled("0: the mean edge length");
-        ImGui::SliderInt("rounds", &tools.remesh_iterations, 1, 20);
+        int rounds = static_cast<int>(remesh[1]);
+        if (ImGui::SliderInt("rounds", &rounds, 1, 20)) {
+            remesh[1] = rounds;
+        }
         if (ImGui::Button("remesh (Shift+R)")) {
             requests.action = edit("remesh");
         }

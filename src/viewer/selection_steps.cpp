@@ -118,31 +118,18 @@ std::vector<std::uint32_t> selected_vertices(const Mesh& mesh,
 }
 
 StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps, std::string_view what) {
+    ops::StepsRun done = ops::run_steps(mesh, steps, ops::OnRefusal::Skip);
     StepsRun run;
-    std::string last_message;
-    for (const ops::Step& step : steps) {
-        std::string refusal;
-        try {
-            refusal = step.verb->check(mesh, step);
-        } catch (const ops::OpError& e) {
-            refusal = e.what();  // an earlier step removed what this one names
-        }
-        if (!refusal.empty()) {
-            if (run.refused++ == 0) {
-                run.first_refusal = steps.size() == 1 ? refusal : step.text + ": " + refusal;
-            }
-            continue;
-        }
-        ops::StepResult result = step.verb->run(mesh, step, {});
-        ++run.ran;
-        run.steps.push_back(step.text);
-        if (!result.selected.is_none()) {
-            run.made.push_back(result.selected);
-        }
-        last_message = std::move(result.message);
+    run.ran = done.ran;
+    run.refused = done.refused;
+    run.first_refusal = std::move(done.first_refusal);
+    run.made = std::move(done.made);
+    run.done = done.done;
+    for (const ops::Step* step : done.done) {
+        run.steps.push_back(step->text);
     }
     if (run.ran == 1 && run.refused == 0) {
-        run.message = std::move(last_message);
+        run.message = std::move(done.last_message);
     } else if (run.ran > 0) {
         run.message = std::string(what) + ": " + std::to_string(run.ran) + " of " +
                       std::to_string(steps.size()) + " done";

@@ -27,16 +27,17 @@ std::vector<std::uint32_t> selected_vertices(const Mesh& mesh,
 /// What running a list of steps did.
 struct StepsRun {
     std::size_t ran = 0;
-    std::size_t refused = 0;         ///< refused, or naming an element an earlier step removed
-    std::string first_refusal;       ///< "dissolve:v3 refused: cannot dissolve: …"
-    std::vector<ElementRef> made;    ///< each step's result, where it has one
-    std::vector<std::string> steps;  ///< the text of each step that ran, for the session
-    std::string message;             ///< for the status line
+    std::size_t refused = 0;             ///< refused, or naming an element an earlier step removed
+    std::string first_refusal;           ///< "dissolve:v3 refused: cannot dissolve: …"
+    std::vector<ElementRef> made;        ///< each step's result, where it has one
+    std::vector<std::string> steps;      ///< the text of each step that ran, for the session
+    std::vector<const ops::Step*> done;  ///< the steps that ran (into the list run)
+    std::string message;                 ///< for the status line
 };
 
-/// Runs each step whose check passes, in order, on `mesh`; a step that names an element an
-/// earlier one removed counts as refused. With several steps the message is "`what`: 3 of 4
-/// done (…)".
+/// ops::run_steps() with OnRefusal::Skip (each step whose check passes runs; a step that names
+/// an element an earlier one removed counts as refused), and a status line: with several
+/// steps "`what`: 3 of 4 done (…)".
 StepsRun run_steps(Mesh& mesh, const std::vector<ops::Step>& steps, std::string_view what);
 
 /// The session's record of vertex `v` where it is now: "move:v12:0.5,-1,0.25".

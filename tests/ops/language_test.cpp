@@ -2,11 +2,18 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/core/validate.h"
 #include "meshedit/ops/ops.h"
+#include "support/fixtures.h"
 #include "support/generated_text.h"
 #include "support/mesh_compare.h"
 
@@ -267,6 +274,98 @@ TEST(VerbTraits, CreaseAndMoveKeepTheConnectivityAndDrawNoDiagram) {
     EXPECT_FALSE(draws_diagram(parse_step("move:v2:0,0,1")));
     EXPECT_FALSE(draws_diagram(parse_step("loop")));
     EXPECT_FALSE(draws_diagram(parse_step("triangulate")));
+}
+
+// The diagram's names and the tool amounts are facts of the table too.
+TEST(VerbTraits, DiagramNamesAndToolAmountsComeFromTheTable) {
+    for (const Verb& verb : verbs()) {
+        const CodeNames expected = verb.name == "flip"       ? CodeNames::Flip
+                                   : verb.name == "split"    ? CodeNames::Split
+                                   : verb.name == "collapse" ? CodeNames::Collapse
+                                                             : CodeNames::ByIndex;
+        EXPECT_EQ(verb.names, expected) << verb.name;
+        const bool tool = verb.name == "simplify" || verb.name == "remesh";
+        EXPECT_EQ((verb.traits & kToolAmounts) != 0, tool) << verb.name;
+        // Tool amounts are for whole-mesh verbs; element verbs with amounts are drags.
+        if (tool) {
+            EXPECT_TRUE(verb.accepts(Target::None)) << verb.name;
+        }
+    }
+}
+
+// simplify:R,E: a share below 1 or a whole number of faces, and an error bound that is left
+// out of the text when there is none; each form is one rounding in the verb.
+TEST(OpsLanguage, SimplifyTakesAShareOrAFaceCountAndABound) {
+    const Mesh ball = shapes::icosphere(3);  // 1,280 triangles
+    const double none = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(make_step("simplify", ball, {}, std::array{0.5, none}).text, "simplify:0.5");
+    EXPECT_EQ(make_step("simplify", ball).text, "simplify:0.5");
+    EXPECT_EQ(make_step("simplify", ball, {}, std::array{300.0, 0.001}).text, "simplify:300,0.001");
+    EXPECT_TRUE(std::isinf(parse_step("simplify:0.25").amounts[1]));
+
+    Mesh share = ball;
+    apply_steps(share, parse("simplify:0.25"));
+    EXPECT_EQ(share.n_faces(), 320u);
+    EXPECT_TRUE(!validate(share).has_value());
+    Mesh count = ball;
+    apply_steps(count, parse("simplify:300"));
+    EXPECT_EQ(count.n_faces(), 300u);
+    EXPECT_TRUE(!validate(count).has_value());
+    // A tiny bound stops at once and says why.
+    Mesh bounded = ball;
+    std::vector<std::string> notices;
+    ApplyOptions options;
+    options.notice = [&](const std::string& n) { notices.push_back(n); };
+    apply_steps(bounded, parse("simplify:10,1e-9"), options);
+    ASSERT_EQ(notices.size(), 1u);
+    EXPECT_EQ(notices[0].rfind("simplify:10,1e-9: stopped at 1280 faces: ", 0), 0u) << notices[0];
+    EXPECT_NE(notices[0].find("the next collapse exceeds the error bound 1e-09"), std::string::npos)
+        << notices[0];
+
+    for (const auto& [text, reason] : std::vector<std::pair<std::string, std::string>>{
+             {"simplify:1.5",
+              "cannot simplify: keep a share of the faces above 0 and below 1, "
+              "or a whole number of faces, not 1.5"},
+             {"simplify:-0.5", "not -0.5"},
+             {"simplify:1280", "the target must be from 1 to 1279 faces (the mesh has 1280)"},
+             {"simplify:0", "the target must be from 1 to 1279 faces"},
+             {"simplify:0.5,-1", "the error bound must be a number of 0 or more"}}) {
+        Mesh untouched = ball;
+        try {
+            apply_steps(untouched, parse(text));
+            ADD_FAILURE() << text << " ran";
+        } catch (const OpError& e) {
+            EXPECT_TRUE(e.refused());
+            EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+        }
+        EXPECT_TRUE(test::identical(untouched, ball)) << text;
+    }
+}
+
+// OnRefusal::Skip runs what it can and names the first refusal; Stop throws at it; each
+// step's check runs once either way (the list's steps that ran are pointers into it).
+TEST(OpsLanguage, RunStepsStopsOrSkipsRefusals) {
+    const Mesh quad = test::two_triangles();  // 0-2 is the only interior edge
+    const std::vector<Step> steps = parse("flip:0-1,flip:0-2,split:0-1");
+    Mesh skipped = quad;
+    const StepsRun run = run_steps(skipped, steps, OnRefusal::Skip);
+    EXPECT_EQ(run.ran, 2u);
+    EXPECT_EQ(run.refused, 1u);
+    EXPECT_EQ(run.first_refusal, "flip:0-1: cannot flip: boundary edge");
+    ASSERT_EQ(run.done.size(), 2u);
+    EXPECT_EQ(run.done[0], &steps[1]);
+    EXPECT_EQ(run.done[1], &steps[2]);
+    EXPECT_EQ(run.made.size(), 2u);
+    EXPECT_TRUE(!validate(skipped).has_value());
+
+    Mesh stopped = quad;
+    try {
+        run_steps(stopped, steps, OnRefusal::Stop);
+        ADD_FAILURE() << "ran";
+    } catch (const OpError& e) {
+        EXPECT_EQ(std::string(e.what()), "flip:0-1 refused: cannot flip: boundary edge");
+    }
+    EXPECT_TRUE(test::identical(stopped, quad));
 }
 
 }  // namespace

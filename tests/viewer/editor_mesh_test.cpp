@@ -341,13 +341,13 @@ TEST(Editor, ShiftRRemeshes) {
 TEST(Editor, ToolSettingsSetTheAmounts) {
     const Mesh ball = shapes::icosphere(3);  // 1,280 triangles
     Editor ed = editor_with(ball);
-    ed.tools().simplify_ratio = 0.25;
+    ed.tools().amounts("simplify")[0] = 0.25;
     ASSERT_FALSE(ed.press(key_of('D'), 0).refused);
     EXPECT_EQ(ed.mesh().n_faces(), 320u);
 
     Editor remeshing = editor_with(ball);
-    remeshing.tools().remesh_length = 0.3;
-    remeshing.tools().remesh_iterations = 2;
+    remeshing.tools().amounts("remesh")[0] = 0.3;
+    remeshing.tools().amounts("remesh")[1] = 2;
     Mesh expected = ball;
     RemeshOptions options;
     options.target_length = 0.3;
@@ -357,7 +357,7 @@ TEST(Editor, ToolSettingsSetTheAmounts) {
     EXPECT_EQ(out.message.rfind("remeshed to edge length 0.3:", 0), 0u) << out.message;
     EXPECT_TRUE(test::identical(remeshing.mesh(), expected));
 
-    remeshing.tools().remesh_iterations = 0;
+    remeshing.tools().amounts("remesh")[1] = 0;
     EXPECT_TRUE(remeshing.press(key_of('R'), kShift).refused);
 }
 

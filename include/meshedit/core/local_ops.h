@@ -6,6 +6,7 @@
 /// command; the op calls the same predicate first. Diagrams: docs/halfedge.md and above each
 /// op in src/core/local_ops/flip_split.cpp, collapse.cpp and triangulate.cpp.
 
+#include <cstdint>
 #include <string_view>
 
 #include "meshedit/core/mesh.h"
@@ -28,6 +29,13 @@ private:
     explicit constexpr OpStatus(std::string_view reason) : reason_(reason) {}
     std::string_view reason_;
 };
+
+/// Which operation's code names the elements of a rewiring diagram (h0, t0, a, b, v0 … as
+/// the diagrams above flip, split and collapse and in docs/halfedge.md call them); ByIndex:
+/// labelled by index. The verb table states it per verb (ops::Verb::names) and the diagram
+/// (render/op_diagram.h) reads it, so neither compares verb names. Collapse also widens the
+/// region drawn to every face at either end of the edge (what a collapse relinks).
+enum class CodeNames : std::uint8_t { ByIndex, Flip, Split, Collapse };
 
 /// The outcome of an op: the handle it documents on success, or the refusal reason.
 template <class H>

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "meshedit/core/element_ref.h"
+#include "meshedit/core/local_ops.h"  // CodeNames
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/number_text.h"  // amounts are written as number_text() writes them
 #include "meshedit/core/subdivision.h"
@@ -47,6 +48,9 @@ struct Verb;
 enum Trait : unsigned {
     kChangesTopology = 1u << 0,  ///< makes, deletes or relinks elements (crease and move do not)
     kDrawsDiagram = 1u << 1,     ///< naming an element, its rewiring diagram is drawn
+    /// A whole-mesh verb whose amounts the viewer takes from its tool settings (the info
+    /// panel's sliders) rather than the defaults; element verbs with amounts are drags.
+    kToolAmounts = 1u << 2,
     kDefaultTraits = kChangesTopology | kDrawsDiagram,
 };
 
@@ -117,6 +121,8 @@ struct Verb {
     bool phases = false;
     /// A mask of Trait.
     unsigned traits = kDefaultTraits;
+    /// Whose names its rewiring diagram gives the elements, and what region it draws.
+    CodeNames names = CodeNames::ByIndex;
 
     bool accepts(Target target) const;
 };
@@ -197,13 +203,36 @@ struct ApplyOptions {
     std::function<void(const std::string&)> notice;
 };
 
-/// Runs `steps` in order. Vertex indices name the mesh as it is before each step: a split's
-/// new vertex is appended (index = vertices_size() before the split), a collapse deletes the
-/// larger end without renumbering, and the subdivision verbs renumber as loop_subdivide()
-/// and quad_subdivide() document (old vertices keep their indices). Their levels are checked
-/// against the verbs' plans (plan_loop(), plan_quad_subdivision()) before any step runs. \throws
-/// OpError; steps before the failing one stay applied (callers write nothing on error). \return
-/// what the last step selected (its StepResult::selected): the result to show.
+/// What a list of steps does when one is refused: stop there (the CLI, the headless
+/// renderer, Python: the list is a program) or go on with the next (the viewer on a
+/// selection: each selected element is tried).
+enum class OnRefusal { Stop, Skip };
+
+/// What running a list did.
+struct StepsRun {
+    std::size_t ran = 0;
+    std::size_t refused = 0;  ///< Skip: refused, or naming an element an earlier step removed
+    /// Skip: "dissolve:v3: cannot dissolve: …" (a list of one: just the reason).
+    std::string first_refusal;
+    std::vector<const Step*> done;  ///< the steps that ran, in order (into the list run)
+    std::vector<ElementRef> made;   ///< each one's StepResult::selected, where it has one
+    ElementRef last;                ///< what the last step that ran selected
+    std::string last_message;       ///< its StepResult::message
+};
+
+/// Runs `steps` in order, each step's predicate once: the one runner of the viewer, the CLI,
+/// the headless renderer and Python. Vertex indices name the mesh as it is before each step:
+/// a split's new vertex is appended (index = vertices_size() before the split), a collapse
+/// deletes the larger end without renumbering, and the subdivision verbs renumber as
+/// loop_subdivide() and quad_subdivide() document (old vertices keep their indices). Their
+/// levels are checked against the verbs' plans (plan_loop(), plan_quad_subdivision()) before
+/// any step runs (\throws OpError). With OnRefusal::Stop a refused step throws OpError
+/// ("<step> refused: <reason>"; not a refusal when it names an element the mesh does not
+/// have); steps before it stay applied (callers write nothing on error).
+StepsRun run_steps(Mesh& mesh, const std::vector<Step>& steps, OnRefusal on_refusal,
+                   const ApplyOptions& options = {});
+/// run_steps() with OnRefusal::Stop. \return what the last step selected (its
+/// StepResult::selected): the result to show.
 ElementRef apply_steps(Mesh& mesh, const std::vector<Step>& steps,
                        const ApplyOptions& options = {});
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "meshedit/core/element_ref.h"
+#include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/render/overlay.h"
 
@@ -39,16 +40,17 @@ struct OpDiagram {
     static constexpr double kAfterX = 2.9;
 };
 
-/// The diagram of `verb` (an edit-language verb: "flip", "split", "collapse", …) run on
-/// `input` of `before`, which made `after`. Flip, split and collapse between triangles name
-/// their elements as their code does; the other operations, and polygons, label elements by
-/// index. The region shown: for an edge, its faces (collapse: every face at either end); for
+/// The diagram of `verb` (an edit-language verb's name, for the title) run on `input` of
+/// `before`, which made `after`. `names` (the verb table's ops::Verb::names) says whose code
+/// names the elements: flip, split and collapse between triangles are named as their code
+/// does; the other operations, and polygons, are labelled by index. The region shown: for an
+/// edge, its faces (CodeNames::Collapse: every face at either end); for
 /// a vertex, its faces; for a face, it and the faces across its sides; after the edit, the
 /// faces on the same vertices (and any new ones) that are new or were shown before.
 /// \pre `after` is `before` after the operation, without garbage collection between (indices
 ///      name the same elements); `input` is live in `before`.
-OpDiagram op_diagram(const Mesh& before, const Mesh& after, std::string_view verb, ElementRef input,
-                     const OpDiagramStyle& style = {});
+OpDiagram op_diagram(const Mesh& before, const Mesh& after, std::string_view verb, CodeNames names,
+                     ElementRef input, const OpDiagramStyle& style = {});
 
 namespace op_diagram_detail {
 
@@ -60,8 +62,8 @@ struct Names {
     const std::string* face(Face f) const;
 };
 
-/// The code's names for `verb` on `input` (empty for operations without named diagrams).
-Names code_names(const Mesh& before, std::string_view verb, ElementRef input);
+/// The code's names for `input` (empty for ByIndex and for what the code does not name).
+Names code_names(const Mesh& before, CodeNames names, ElementRef input);
 
 }  // namespace op_diagram_detail
 

@@ -20,6 +20,7 @@
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/stencil.h"
+#include "meshedit/ops/ops.h"
 #include "meshedit/render/camera.h"
 #include "meshedit/render/colormap.h"
 #include "meshedit/render/op_diagram.h"
@@ -84,10 +85,16 @@ struct ViewState {
 
 /// The parameters of the whole-mesh operations the keys run (the info panel's "Global
 /// operations" section sets them): not part of the document, not undone.
-struct ToolSettings {
-    double simplify_ratio = 0.5;  ///< D keeps about this share of the faces (0 < r < 1)
-    double remesh_length = 0.0;   ///< Shift+R's target edge length; 0: the mean
-    int remesh_iterations = 3;    ///< Shift+R's rounds (1 to 100)
+/// Which verbs take them is the verb table's fact (ops::kToolAmounts), not the viewer's.
+class ToolSettings {
+public:
+    using Amounts = std::array<double, ops::kMaxAmounts>;
+    /// The amounts the verb called `verb` runs with from a key: at first its defaults (D keeps
+    /// half the faces; Shift+R: the mean edge length, 3 rounds). \pre the verb exists.
+    Amounts& amounts(std::string_view verb);
+
+private:
+    std::vector<std::pair<const ops::Verb*, Amounts>> amounts_;
 };
 
 /// The viewer's logic: one class, its members spread over files by responsibility.
@@ -260,6 +267,9 @@ private:
         std::optional<ElementRef> select;
         /// The steps of the edit language that did it, for the session.
         std::vector<std::string> steps;
+        /// A local edit of one step: the step (into the list that ran), whose rewiring
+        /// diagram may be drawn; null otherwise.
+        const ops::Step* step = nullptr;
     };
 
     /// The edit funnel (editor.cpp), as Scotty3D's Model::update_mesh: `check` says why the

@@ -49,7 +49,7 @@ AMOUNT_NAMES = {
     "inset": ("shrink",),
     "bevel": ("t",),
     "move": ("x", "y", "z"),
-    "simplify": ("ratio",),
+    "simplify": ("ratio", "max_error"),  # ratio: a share below 1, or a whole face count
     "remesh": ("length", "rounds"),
 }
 
