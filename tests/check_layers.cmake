@@ -17,7 +17,7 @@ set(rules
     "files|^(include/meshedit|src)/files/|^(core|files)/|^(${std_posix})$"
     "io|^(include/meshedit|src)/io/|^(core|bezier|files|io)/|^(${std_posix}|pugixml\\.hpp|tiny_gltf\\.h|meshoptimizer\\.h|nlohmann/json\\.hpp)$"
     "ops|^(include/meshedit|src)/ops/|^(core|ops)/|^$"
-    "render, GL-free part (overlay geometry, camera, CPU picking)|^(include/meshedit/render/(overlay|camera|shading|op_diagram|colormap|cpu_pick)\\.h|src/render/(overlay|camera|scene_marks|stencil_marks|op_diagram|op_diagram_names|colormap|shading|cpu_pick)\\.cpp)$|^(core|bezier)/|render/(overlay|camera|shading|op_diagram|colormap|cpu_pick)\\.h$|^glm/.*$"
+    "render, GL-free part (overlay geometry, camera, CPU picking)|^(include/meshedit/render/(overlay|camera|shading|op_diagram|colormap|cpu_pick)\\.h|src/render/(overlay|camera|scene_marks|stencil_marks|op_diagram|op_diagram_names|op_diagram_change|colormap|shading|cpu_pick)\\.cpp)$|^(core|bezier)/|render/(overlay|camera|shading|op_diagram|colormap|cpu_pick)\\.h$|^glm/.*$"
     "render|^(include/meshedit|src)/render/|^(core|bezier|files|render)/|^(${gl}|OpenImageIO/(imageio|imagebuf|imagebufalgo)\\.h|unistd\\.h)$"
     "viewer logic (no GL, no window)|^(include/meshedit/viewer/|src/viewer/(bindings|history|transaction|editor|editor_[a-z]+|element_info|paths)\\.cpp$)|^(core|bezier|files|io|ops|viewer)/|render/(overlay|camera|shading|op_diagram|colormap)\\.h$|^$"
     "viewer window|^src/viewer/|^(core|bezier|files|io|ops|render|viewer)/|^(${gl}|GLFW/glfw3\\.h|imgui\\.h|imgui_stdlib\\.h|backends/imgui_impl_(glfw|opengl3)\\.h)$"

@@ -20,6 +20,7 @@
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/fields.h"
+#include "meshedit/core/mesh_change.h"
 #include "meshedit/files/files.h"
 #include "meshedit/files/io_error.h"
 #include "meshedit/io/document.h"
@@ -84,10 +85,13 @@ std::optional<OpDiagram> run_ops(Mesh& mesh, const Options& options, ElementRef&
     const ops::Step last = steps.back();
     steps.pop_back();
     ops::apply_steps(mesh, steps);
-    const Mesh before = mesh;
-    const ElementRef input = ops::named_element(mesh, last);
+    // Recorded, as the viewer records it: the diagram is read from the change, at any size.
+    MeshRecorder recorder(mesh);
     result = ops::run_step(mesh, last).selected;
-    OpDiagram diagram = op_diagram(before, mesh, last.verb->name, last.verb->names, input);
+    const MeshChange change = recorder.finish();
+    OpDiagram diagram =
+        op_diagram(mesh, change, last.verb->name, last.verb->names,
+                   [&](const Mesh& before) { return ops::named_element(before, last); });
     const Color ink{0.15f, 0.15f, 0.2f, 1.0f};
     diagram.picture.labels.push_back({{0.5 * OpDiagram::kAfterX, diagram.max.y + 0.15, 0.0},
                                       diagram.title,

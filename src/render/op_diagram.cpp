@@ -376,29 +376,40 @@ std::string index_text(std::uint32_t i) {
 
 struct Labeller {
     const Names& names;
+    // Local meshes (op_diagram_change.cpp) print the indices of the mesh they were cut from.
+    const op_diagram_detail::Originals* originals = nullptr;
+    std::string halfedge_index(std::uint32_t h) const {
+        return index_text(originals ? 2 * originals->edges[h >> 1] + (h & 1u) : h);
+    }
+    std::string vertex_index(std::uint32_t v) const {
+        return index_text(originals ? originals->vertices[v] : v);
+    }
+    std::string face_index(std::uint32_t f) const {
+        return index_text(originals ? originals->faces[f] : f);
+    }
     std::string halfedge(Halfedge h) const {
         const std::string* n = names.halfedge(h);
-        return n ? *n : index_text(h.idx());
+        return n ? *n : halfedge_index(h.idx());
     }
     std::string vertex(Vertex v) const {
         const std::string* n = names.vertex(v);
-        return n ? *n + " " + index_text(v.idx()) : index_text(v.idx());
+        return n ? *n + " " + vertex_index(v.idx()) : vertex_index(v.idx());
     }
     std::string vertex_short(Vertex v) const {
         const std::string* n = names.vertex(v);
-        return n ? *n : index_text(v.idx());
+        return n ? *n : vertex_index(v.idx());
     }
     std::string face(Face f) const {
         if (!f.is_valid()) {
             return "a hole";
         }
         const std::string* n = names.face(f);
-        return n ? *n + " " + index_text(f.idx()) : index_text(f.idx());
+        return n ? *n + " " + face_index(f.idx()) : face_index(f.idx());
     }
     // In the picture: a named face by its name only (the changes list gives its index).
     std::string face_short(Face f) const {
         const std::string* n = names.face(f);
-        return n ? *n : index_text(f.idx());
+        return n ? *n : face_index(f.idx());
     }
 };
 
@@ -433,7 +444,7 @@ std::vector<std::string> change_lines(const Diff& d, const Region& old, const Re
         std::string name = l.halfedge(h);
         if (l.names.halfedge(h) != nullptr) {
             name += ' ';
-            name += index_text(i);
+            name += l.halfedge_index(i);
         }
         switch (d.of(h)) {
             case Status::Created:
@@ -572,12 +583,21 @@ struct Painter {
 
 OpDiagram op_diagram(const Mesh& before, const Mesh& after, std::string_view verb, CodeNames code,
                      ElementRef input, const OpDiagramStyle& style) {
+    return op_diagram_detail::draw(before, after,
+                                   std::string(verb) + " of " + describe(before, input), code,
+                                   input, nullptr, style);
+}
+
+namespace op_diagram_detail {
+
+OpDiagram draw(const Mesh& before, const Mesh& after, std::string title, CodeNames code,
+               ElementRef input, const Originals* originals, const OpDiagramStyle& style) {
     OpDiagram diagram;
-    diagram.title = std::string(verb) + " of " + describe(before, input);
+    diagram.title = std::move(title);
     const Region old = region_before(before, code, input);
     const Region now = region_after(before, after, old);
     const Names names = op_diagram_detail::code_names(before, code, input);
-    const Labeller labels{names};
+    const Labeller labels{names, originals};
     const Diff diff{before, after};
 
     Vec3 x_hint{1.0, 0.0, 0.0};
@@ -611,5 +631,7 @@ OpDiagram op_diagram(const Mesh& before, const Mesh& after, std::string_view ver
     diagram.changes = change_lines(diff, old, now, labels);
     return diagram;
 }
+
+}  // namespace op_diagram_detail
 
 }  // namespace meshedit

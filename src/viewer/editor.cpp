@@ -204,18 +204,12 @@ Outcome Editor::run_display(Action action) {
 
 namespace {
 
-// Above this the rewiring diagram of an edit is skipped: it needs a copy of the mesh.
-constexpr std::size_t kDiagramMaxFaces = 200000;
-
-// The diagram of an edit that was one local operation on the connectivity; none for
-// whole-mesh steps, several steps, drags (move) and crease marks.
-std::optional<OpDiagram> rewiring_of(const Mesh& before, const Mesh& after, const ops::Step* step) {
-    if (step == nullptr || !ops::draws_diagram(*step)) {
-        return std::nullopt;
-    }
+// The rewiring diagram of a one-step local edit, read from its recorded change (no copy of the
+// mesh, so at any size).
+std::optional<OpDiagram> rewiring_of(Mesh& mesh, const MeshChange& change, const ops::Step& step) {
     try {
-        return op_diagram(before, after, step->verb->name, step->verb->names,
-                          ops::named_element(before, *step));
+        return op_diagram(mesh, change, step.verb->name, step.verb->names,
+                          [&](const Mesh& before) { return ops::named_element(before, step); });
     } catch (const std::exception&) {
         // A step that ran names a live element; whatever goes wrong in drawing its diagram
         // must not take the edit, which is done, down with it.
@@ -231,12 +225,7 @@ Outcome Editor::edit(const std::function<std::string()>& check,
         return refused(std::move(reason));
     }
     const bool recorded = local && doc_.mode != Mode::Curve;
-    // The rewiring diagram of a local edit compares the mesh before with the mesh after: a
-    // copy, so only where a copy costs little (a teaching-sized mesh).
-    std::optional<Mesh> before;
-    if (recorded && doc_.mesh.n_faces() <= kDiagramMaxFaces) {
-        before = doc_.mesh;
-    }
+    diagram_.reset();
     Transaction transaction(ledger_, doc_,
                             recorded ? Transaction::Kind::Recorded : Transaction::Kind::Snapshot);
     Edited edited;
@@ -249,14 +238,18 @@ Outcome Editor::edit(const std::function<std::string()>& check,
         transaction.roll_back();
         return refused(e.what());
     }
-    // Before compact() renumbers: the diagram names elements by their indices.
-    diagram_ = before ? rewiring_of(*before, doc_.mesh, edited.step) : std::nullopt;
     settle(edited);
     if (!recorded && compact()) {
         edited.steps.emplace_back("compact");
     }
-    Outcome out =
-        transaction.commit(edited.changes, std::move(edited.message), std::move(edited.steps));
+    // The diagram only when its panel is shown: it costs what the edit touched, not the mesh.
+    const ops::Step* step = edited.step;
+    const bool drawn =
+        recorded && view_.show_diagram && step != nullptr && ops::draws_diagram(*step);
+    Outcome out = transaction.commit(
+        edited.changes, std::move(edited.message), std::move(edited.steps),
+        drawn ? [&](const MeshChange& change) { diagram_ = rewiring_of(doc_.mesh, change, *step); }
+              : std::function<void(const MeshChange&)>());
     if (out.message.find(" — cannot be undone: ") != std::string::npos) {
         diagram_.reset();
     }

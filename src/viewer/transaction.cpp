@@ -103,7 +103,8 @@ std::optional<MeshChange::Region> Transaction::roll_back() {
     return region;
 }
 
-Outcome Transaction::commit(unsigned changes, std::string message, std::vector<std::string> steps) {
+Outcome Transaction::commit(unsigned changes, std::string message, std::vector<std::string> steps,
+                            const std::function<void(const MeshChange&)>& look) {
     Ledger& ledger = *std::exchange(ledger_, nullptr);
     Document& doc = *doc_;
     const std::uint64_t revision_before = doc.revision;
@@ -131,6 +132,9 @@ Outcome Transaction::commit(unsigned changes, std::string message, std::vector<s
     }
     if (!change_) {
         return out;
+    }
+    if (look) {
+        look(*change_);
     }
     DocumentChange change;
     change.mesh = std::move(*change_);

@@ -7,11 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/mesh_change.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/validate.h"
 #include "support/fixtures.h"
@@ -210,6 +212,114 @@ TEST(OpDiagram, OperationsWithoutNamesLabelByIndexAndColourWhatTheyMade) {
     EXPECT_EQ(std::count_if(d.changes.begin(), d.changes.end(),
                             [](const std::string& l) { return l.find(": new (") != l.npos; }),
               2);
+}
+
+// Everything a diagram holds, as text (coordinates to the last bit).
+std::string dump(const OpDiagram& d) {
+    std::string out = d.title + "\n";
+    char buf[128];
+    const auto vec = [&](const Vec3& p) {
+        std::snprintf(buf, sizeof buf, "(%.17g %.17g %.17g)", p.x, p.y, p.z);
+        out += buf;
+    };
+    const auto colour = [&](const Color& c) {
+        std::snprintf(buf, sizeof buf, "[%g %g %g %g]", static_cast<double>(c[0]),
+                      static_cast<double>(c[1]), static_cast<double>(c[2]),
+                      static_cast<double>(c[3]));
+        out += buf;
+    };
+    for (const auto& p : d.picture.points) {
+        vec(p.p);
+        colour(p.color);
+        out += "\n";
+    }
+    for (const auto& l : d.picture.lines) {
+        vec(l.a);
+        vec(l.b);
+        colour(l.color);
+        out += "\n";
+    }
+    for (const auto& t : d.picture.triangles) {
+        vec(t.a);
+        vec(t.b);
+        vec(t.c);
+        colour(t.color);
+        out += "\n";
+    }
+    for (const auto& a : d.picture.arrowheads) {
+        vec(a.tip);
+        vec(a.tail);
+        colour(a.color);
+        out += "\n";
+    }
+    for (const auto& l : d.picture.labels) {
+        vec(l.at);
+        out += l.text + "\n";
+    }
+    for (const std::string& line : d.changes) {
+        out += line + "\n";
+    }
+    vec(d.min);
+    vec(d.max);
+    return out;
+}
+
+// The diagram from a recorded change (no copy of the mesh: the neighbourhood cut out on each
+// side) is the diagram from the whole mesh before and after, to the last bit, for every
+// operation with a diagram on every element of several meshes; the mesh is left as it was.
+TEST(OpDiagram, FromTheRecordedChangeEqualsFromTheWholeMeshes) {
+    struct Op {
+        const char* verb;
+        CodeNames names;
+        ElementRef::Kind kind;
+        std::function<bool(Mesh&, std::uint32_t)> run;
+    };
+    const std::vector<Op> ops = {
+        {"flip", CodeNames::Flip, ElementRef::Kind::Edge,
+         [](Mesh& m, std::uint32_t i) { return static_cast<bool>(flip(m, Edge(i))); }},
+        {"split", CodeNames::Split, ElementRef::Kind::Edge,
+         [](Mesh& m, std::uint32_t i) { return static_cast<bool>(split(m, Edge(i))); }},
+        {"collapse", CodeNames::Collapse, ElementRef::Kind::Edge,
+         [](Mesh& m, std::uint32_t i) { return static_cast<bool>(collapse(m, Edge(i))); }},
+        {"dissolve", CodeNames::ByIndex, ElementRef::Kind::Vertex,
+         [](Mesh& m, std::uint32_t i) { return static_cast<bool>(dissolve_vertex(m, Vertex(i))); }},
+        {"poke", CodeNames::ByIndex, ElementRef::Kind::Face,
+         [](Mesh& m, std::uint32_t i) { return static_cast<bool>(poke(m, Face(i))); }},
+        {"extrude", CodeNames::ByIndex, ElementRef::Kind::Face,
+         [](Mesh& m, std::uint32_t i) {
+             return static_cast<bool>(extrude_face(m, Face(i), 0.2, 0.3));
+         }},
+        {"bevel", CodeNames::ByIndex, ElementRef::Kind::Edge,
+         [](Mesh& m, std::uint32_t i) { return static_cast<bool>(bevel_edge(m, Edge(i), 0.25)); }},
+        {"make_boundary", CodeNames::ByIndex, ElementRef::Kind::Face,
+         [](Mesh& m, std::uint32_t i) { return static_cast<bool>(make_boundary(m, Face(i))); }},
+    };
+    int compared = 0;
+    for (const Mesh& start : {test::two_triangles(), shapes::cube(), shapes::icosphere(1),
+                              shapes::grid(3, 2), test::one_ring(5), test::quad_strip(3)}) {
+        for (const Op& op : ops) {
+            const std::size_t n = op.kind == ElementRef::Kind::Edge     ? start.edges_size()
+                                  : op.kind == ElementRef::Kind::Vertex ? start.vertices_size()
+                                                                        : start.faces_size();
+            for (std::uint32_t i = 0; i < n; ++i) {
+                const ElementRef input{op.kind, i};
+                Mesh mesh = start;
+                MeshRecorder recorder(mesh);
+                if (!op.run(mesh, i)) {
+                    continue;
+                }
+                const MeshChange change = recorder.finish();
+                const Mesh after = mesh;
+                const OpDiagram whole = op_diagram(start, after, op.verb, op.names, input);
+                const OpDiagram cut =
+                    op_diagram(mesh, change, op.verb, op.names, [&](const Mesh&) { return input; });
+                ASSERT_EQ(dump(cut), dump(whole)) << op.verb << " " << i;
+                ASSERT_TRUE(bitwise_equal(mesh, after)) << op.verb << " " << i;
+                ++compared;
+            }
+        }
+    }
+    EXPECT_GT(compared, 300);
 }
 
 }  // namespace

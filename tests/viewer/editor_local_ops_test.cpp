@@ -237,5 +237,27 @@ TEST(EditorRewiring, AFlipShowsItsDiagramUntilUndoAndWholeMeshEditsShowNone) {
     EXPECT_FALSE(ed.last_diagram().has_value());
 }
 
+// The diagram is built only while its panel is shown, and at a size where the copy of the
+// mesh it once needed was refused (above 200,000 faces).
+TEST(EditorRewiring, BuiltOnlyWhenShownAndAtAnySize) {
+    Editor ed = editor_with(shapes::torus(300, 400));  // 240,000 triangles
+    ed.press(key_of('R'), kAlt);
+    ASSERT_FALSE(ed.view().show_diagram);
+    ed.select(ElementRef::edge(Edge(5)));
+    ASSERT_FALSE(ed.press(key_of('F'), 0).refused);
+    EXPECT_FALSE(ed.last_diagram().has_value());
+    ed.press(key_of('R'), kAlt);
+    const std::string described = describe(ed.mesh(), ElementRef::edge(Edge(9)));
+    ed.select(ElementRef::edge(Edge(9)));
+    ASSERT_FALSE(ed.press(key_of('F'), 0).refused);
+    ASSERT_TRUE(ed.last_diagram().has_value());
+    EXPECT_EQ(ed.last_diagram()->title, "flip of " + described);
+    EXPECT_EQ(ed.last_diagram()->changes.size(), 8u);
+    // Reading the diagram undid and redid the flip: the undo step still restores the torus.
+    ed.press(key_of('Z'), kCtrl);
+    ed.press(key_of('Z'), kCtrl);
+    EXPECT_TRUE(test::identical(ed.mesh(), shapes::torus(300, 400)));
+}
+
 }  // namespace
 }  // namespace meshedit::viewer

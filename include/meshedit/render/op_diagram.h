@@ -11,6 +11,8 @@
 /// the inner vertices at the average of their neighbours), so a bent neighbourhood (a cube's
 /// corner) lies flat and nothing overlaps, whatever the mesh's own geometry.
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +20,7 @@
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/mesh_change.h"
 #include "meshedit/render/overlay.h"
 
 namespace meshedit {
@@ -52,7 +55,28 @@ struct OpDiagram {
 OpDiagram op_diagram(const Mesh& before, const Mesh& after, std::string_view verb, CodeNames names,
                      ElementRef input, const OpDiagramStyle& style = {});
 
+/// The diagram of a recorded local edit (core/mesh_change.h): `mesh` as the edit left it and
+/// `change`, its recording; `input_of` names the element operated on in the mesh before it.
+/// The same picture as the overload above, read without a copy of the mesh: the change is
+/// undone and redone around copying the neighbourhood drawn (two rings around what it
+/// touched) on each side, so it costs what the edit and that neighbourhood touch, at any
+/// mesh size. `mesh` is left bit for bit as it was.
+OpDiagram op_diagram(Mesh& mesh, const MeshChange& change, std::string_view verb, CodeNames names,
+                     const std::function<ElementRef(const Mesh& before)>& input_of,
+                     const OpDiagramStyle& style = {});
+
 namespace op_diagram_detail {
+
+/// For local meshes cut out of a bigger one: each local element's index there (halfedge h of
+/// local edge e is 2 * edges[e] + h % 2).
+struct Originals {
+    std::vector<std::uint32_t> vertices, edges, faces;
+};
+
+/// The diagram of `before` → `after` titled `title`, labelling elements with `originals`'
+/// indices when given.
+OpDiagram draw(const Mesh& before, const Mesh& after, std::string title, CodeNames names,
+               ElementRef input, const Originals* originals, const OpDiagramStyle& style);
 
 /// Names of elements by index, as an operation's code calls them.
 struct Names {

@@ -20,6 +20,7 @@
 /// history, bumps a revision or appends to the session (tests/check_transactions.cmake).
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -89,7 +90,10 @@ public:
 
     /// Ends the transaction (see the file comment). `changes` and `message` become the
     /// Outcome; `steps` are the edit-language steps that did the edit, for the session.
-    Outcome commit(unsigned changes, std::string message, std::vector<std::string> steps);
+    /// `look`, if given, sees a recorded transaction's change with the mesh as the edit left it
+    /// (the rewiring diagram is read from it) and may undo and redo it there.
+    Outcome commit(unsigned changes, std::string message, std::vector<std::string> steps,
+                   const std::function<void(const MeshChange&)>& look = {});
     /// Puts the document back as the transaction began and ends it; the region redrawn.
     std::optional<MeshChange::Region> roll_back();
 
