@@ -98,11 +98,15 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
     viewer::Document doc;
     doc.mesh = input_mesh(job, data);
     editor.set_document(std::move(doc));
-    const auto context = headless::make_context({.width = 64, .height = 64});
+    const auto context =
+        headless::make_context({.device = std::nullopt, .width = 64, .height = 64});
     const headless::GlContext& gl = *context;
     MeshRenderer renderer;
     upload(renderer, editor, gl);
     const std::size_t faces = editor.mesh().n_faces();
+    // The command rows measure the edit with the Rewiring panel hidden (its diagram is then
+    // not built); `diagram` below measures F with it shown.
+    editor.view().show_diagram = false;
 
     std::mt19937_64 rng(20);
     const char* verbs[] = {"flip", "split", "collapse"};
@@ -166,6 +170,25 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
         }
         upload(renderer, editor, gl);
     }
+    // F with the Rewiring panel shown: the edit and its diagram, read from the recorded
+    // change (no copy of the mesh, so at any size).
+    std::vector<double> diagram;
+    editor.view().show_diagram = true;
+    for (int i = 0; i < kEditsPerRun; ++i) {
+        const Mesh& mesh = editor.mesh();
+        Edge e(static_cast<std::uint32_t>(rng() % mesh.edges_size()));
+        if (mesh.is_deleted(e)) {
+            continue;
+        }
+        editor.select(ElementRef::edge(e));
+        const auto start = std::chrono::steady_clock::now();
+        const viewer::Outcome flipped = editor.run(viewer::edit("flip"));
+        const double ms = ms_since(start);
+        if (!flipped.refused && editor.last_diagram()) {
+            diagram.push_back(ms);
+        }
+    }
+    editor.view().show_diagram = false;
     // A vertex dragged across 200 mouse moves: each move with its GPU update.
     std::vector<double> drag;
     {
@@ -185,10 +208,12 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
         }
         editor.end_drag();
     }
-    // An interactive extrude of a face (X, then the mouse): each mouse move re-runs the
-    // extrude on the document before it, with its GPU update; then Enter.
+    // An interactive extrude of a face (X, then the mouse): the first move builds the ring
+    // (one recorded topology change), every other only moves its corners (a position
+    // amendment), each with its GPU update; then Enter.
     std::vector<double> extrude;
     std::size_t extruded_faces = 0;
+    viewer::Editor::ModalCounts extrude_counts;
     {
         const std::size_t faces_before = editor.mesh().n_faces();
         const Mesh& mesh = editor.mesh();
@@ -206,6 +231,7 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
             follow(renderer, editor, editor.modal_input(in), gl);
             extrude.push_back(ms_since(start));
         }
+        extrude_counts = editor.modal_counts();
         follow(renderer, editor, editor.confirm_modal(), gl);
         extruded_faces = editor.mesh().n_faces() - faces_before;  // a triangle: 3 sides more
     }
@@ -224,8 +250,12 @@ int run_edits(const std::string& job, int runs, const std::filesystem::path& dat
     print_series(job, "undo_upload", undo_upload);
     print_series(job, "redo", redo, {{"redone", static_cast<double>(redo.size())}});
     print_series(job, "drag_move_upload", drag);
-    print_series(job, "extrude_move_upload", extrude,
-                 {{"faces_added", static_cast<double>(extruded_faces)}});
+    print_series(job, "flip_with_diagram", diagram);
+    print_series(
+        job, "extrude_move_upload", extrude,
+        {{"faces_added", static_cast<double>(extruded_faces)},
+         {"topology_changes", static_cast<double>(extrude_counts.topology_changes)},
+         {"position_amendments", static_cast<double>(extrude_counts.position_amendments)}});
     return 0;
 }
 
@@ -247,7 +277,8 @@ int run_loop(const std::string& impl, int runs) {
         mb::print_result("editor_loop_1m", impl, ms, {{"peak_rss_mb", mb::peak_rss_mb()}});
         return 0;
     }
-    const auto context = headless::make_context({.width = 64, .height = 64});
+    const auto context =
+        headless::make_context({.device = std::nullopt, .width = 64, .height = 64});
     const headless::GlContext& gl = *context;
     MeshRenderer renderer;
     for (int r = first; r < runs; ++r) {

@@ -109,7 +109,8 @@ def editor_target_rows(jobs, not_measured):
                 ("redo", "redo of such an edit", 1.0),
                 ("drag_move_upload", "one move of a vertex drag plus GPU buffer update", 5.0),
                 ("extrude_move_upload", "one move of an interactive extrude plus GPU update",
-                 5.0)):
+                 5.0),
+                ("flip_with_diagram", "F with its rewiring diagram (panel shown)", 5.0)):
             x = r.get(impl, {})
             if "p99_ms" in x:
                 rows.append((f"{label}, {mesh}", f"p99 ≤ {limit:g} ms",
@@ -121,6 +122,13 @@ def editor_target_rows(jobs, not_measured):
                          f"{c['bytes_per_flip']:.0f} B (max {c.get('bytes_per_flip_max', 0):.0f})",
                          "yes" if c.get("bytes_per_flip_max", c["bytes_per_flip"]) <= 1024
                          else "no"))
+        x = r.get("extrude_move_upload", {})
+        if "topology_changes" in x:
+            rows.append((f"extrude drag builds its topology once, {mesh}",
+                         "1 topology change, the rest position amendments",
+                         f"{x['topology_changes']:.0f} topology change, "
+                         f"{x.get('position_amendments', 0):.0f} amendments",
+                         "yes" if x["topology_changes"] == 1 else "no"))
         if "undo_steps_held" in c:
             held = c["undo_steps_held"]
             rows.append((f"200 undo steps of local edits, {mesh}", "all kept",

@@ -1,13 +1,18 @@
-// The editor's interactive edits (editor.h, Modal): extrude, inset and bevel re-run their verb
-// on a copy of the document as it was whenever the amount changes; move, rotate and scale set
-// the selected vertices from their positions as they were. Confirming pushes that document as
-// one undo step; cancelling puts it back.
+// The editor's interactive edits (editor.h, Modal), each one recorded transaction: extrude and
+// inset run their verb once and then only move the corners it made (a position amendment of
+// the recorded change per mouse move); bevel rewinds its recorded preview and re-runs its verb
+// (its carry blends elements in place, so a rerun needs their values from before); move,
+// rotate and scale set the selected vertices from their positions as they were. Confirming
+// commits one undo step; cancelling rolls back.
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string_view>
 
+#include "meshedit/core/local_ops.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/viewer/editor.h"
 #include "selection_steps.h"
@@ -249,6 +254,10 @@ Outcome Editor::modal_axis(int axis) {
 Outcome Editor::apply_modal() {
     ModalState& m = modal_;
     m.refusal.clear();
+    const bool faces = m.kind == Modal::Extrude || m.kind == Modal::Inset;
+    if (faces && !m.built.empty()) {
+        return move_extruded();
+    }
     // Back to the document before the edit (in the time of what the last preview touched),
     // then the new preview, recorded: no copy of the mesh per mouse move.
     MeshChange::Region region = m.transaction->rewind();
@@ -259,13 +268,38 @@ Outcome Editor::apply_modal() {
         const std::size_t n = v.max_amounts;
         const std::vector<ops::Step> steps = steps_for_selection(
             doc_.mesh, v, m.targets, std::span<const double>(m.amounts.data(), n), hint);
-        const StepsRun run = run_steps(doc_.mesh, steps, verb);
+        // One step at a time, so that each extrude's base is taken just before it runs.
         m.steps.clear();
-        if (run.ran == 0) {
-            m.refusal = run.first_refusal;
+        m.built.clear();
+        std::vector<ElementRef> made;
+        for (const ops::Step& step : steps) {
+            std::optional<ExtrudeBase> base;
+            if (faces) {
+                try {
+                    base = extrude_base(doc_.mesh, ops::named_face(doc_.mesh, step));
+                } catch (const ops::OpError&) {
+                    // an earlier step removed the face: run_steps() says so below
+                }
+            }
+            const StepsRun one = run_steps(doc_.mesh, {step}, verb);
+            if (one.ran == 0 && m.refusal.empty()) {
+                m.refusal =
+                    steps.size() == 1 ? one.first_refusal : step.text + ": " + one.first_refusal;
+            }
+            if (one.ran == 1) {
+                made.insert(made.end(), one.made.begin(), one.made.end());
+                m.steps.push_back(step.text);
+                if (base) {
+                    m.built.push_back(std::move(*base));
+                }
+            }
+        }
+        if (m.steps.empty()) {
+            m.built.clear();
         } else {
-            select_made(doc_, run.made);
-            m.steps = run.steps;
+            m.refusal.clear();  // some ran: a partial result, as a key on a selection gives
+            select_made(doc_, made);
+            ++m.topology_changes;
         }
         hover_ = {};
         out = {kTopology | kSelection, modal_status()};
@@ -308,6 +342,39 @@ Outcome Editor::apply_modal() {
     // What the window redraws: what the last preview changed and what this one changes.
     region.add(m.transaction->preview());
     out.region = std::move(region);
+    return out;
+}
+
+// Extrude and inset after their first preview: the topology stands and only the corners it
+// made move (extrude_positions(), the same code the operation places them with, so the
+// session's step replays to the same bits); the recorded change takes their new values.
+Outcome Editor::move_extruded() {
+    ModalState& m = modal_;
+    const bool extrude = m.kind == Modal::Extrude;
+    const double height = extrude ? m.amounts[0] : 0.0;
+    const double shrink = extrude ? m.amounts[1] : m.amounts[0];
+    for (const ExtrudeBase& base : m.built) {
+        if (const OpStatus ok = is_extrude_positions_ok(base, height, shrink); !ok) {
+            m.refusal = std::string(ok.reason());
+            if (!extrude) {  // an inset names itself
+                m.refusal.replace(0, std::string_view("cannot extrude").size(), "cannot inset");
+            }
+            return {kSelection, modal_status()};  // the last amounts that fit stay shown
+        }
+    }
+    for (const ExtrudeBase& base : m.built) {
+        extrude_positions(doc_.mesh, base, height, shrink);
+    }
+    Outcome out{kGeometry | kSelection, modal_status()};
+    out.region = m.transaction->amend();
+    ++m.position_amendments;
+    const ops::Verb& v = *ops::find_verb(verb_of(m.kind));
+    m.steps.clear();
+    for (const ExtrudeBase& base : m.built) {
+        m.steps.push_back(ops::make_step(v.name, doc_.mesh, ElementRef::face(base.f),
+                                         std::span<const double>(m.amounts.data(), v.max_amounts))
+                              .text);
+    }
     return out;
 }
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "meshedit/core/assert.h"
+
 namespace meshedit::viewer {
 
 // -------------------------------------------------------------------------------- Ledger
@@ -60,6 +62,12 @@ MeshChange::Region Transaction::preview() {
         recorder_.reset();
     }
     return change_ ? change_->region() : MeshChange::Region{};
+}
+
+MeshChange::Region Transaction::amend() {
+    MESHEDIT_ASSERT(change_ && !recorder_);
+    change_->refresh_after(doc_->mesh);
+    return change_->region();
 }
 
 void Transaction::restore_selection() {

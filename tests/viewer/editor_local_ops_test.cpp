@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/mesh_change.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/core/validate.h"
+#include "meshedit/ops/ops.h"
 #include "support/fixtures.h"
 #include "support/mesh_compare.h"
 #include "viewer/editor_test_util.h"
@@ -127,6 +130,56 @@ TEST(EditorPolygons, ExtrudeTypedConfirmedOrCancelled) {
     EXPECT_EQ(ed.history().undo_steps(), 1u);
     ed.run({Command::Undo});
     EXPECT_TRUE(test::identical(ed.mesh(), cube));
+}
+
+// An extrude drag builds its topology once: the first move runs the verb, every other move
+// only places the corners it made (and re-blends what they carry) as a position amendment of
+// the same recorded change. Two faces, 100 moves, a user attribute that blends: Enter gives,
+// bit for bit, extrude_face() on each face at the last amounts, one undo step, and the
+// session's steps at those amounts.
+TEST(EditorPolygons, ExtrudeDragBuildsTheTopologyOnce) {
+    Mesh cube = test::quad_cube();
+    auto u = cube.add_property<Vertex, double>("v:u");
+    for (Vertex v : cube.vertices()) {
+        u[v] = 2.0 * cube.position(v).x - cube.position(v).z;
+    }
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::face(Face(1)));
+    ed.toggle_select(ElementRef::face(Face(2)));
+    ASSERT_FALSE(ed.press(key_of('X'), 0).refused);
+    ModalInput in;
+    in.pixel = 0.01;
+    for (int k = 1; k <= 100; ++k) {
+        in.dy = 0.5 * k;
+        in.dx = -0.3 * k;
+        ed.modal_input(in);
+    }
+    EXPECT_EQ(ed.modal_counts().topology_changes, 1u);
+    EXPECT_EQ(ed.modal_counts().position_amendments, 100u);
+    const std::string status = ed.modal_status();
+    ASSERT_FALSE(ed.press(Key::Enter, 0).refused) << status;
+    EXPECT_EQ(ed.history().undo_steps(), 1u);
+
+    // What the drag ended at, as the verbs run it from the session.
+    const std::vector<std::string>& session = ed.document().session;
+    ASSERT_GE(session.size(), 2u);
+    Mesh expected = cube;
+    std::vector<std::string> replayed;
+    for (const std::string& text : std::vector<std::string>(session.end() - 2, session.end())) {
+        const ops::Step step = ops::parse_step(text);
+        EXPECT_EQ(step.verb->name, "extrude");
+        ASSERT_TRUE(extrude_face(expected, Face(step.a), step.amounts[0], step.amounts[1]));
+        replayed.push_back(text);
+    }
+    EXPECT_EQ(replayed[0].rfind("extrude:f1:", 0), 0u) << replayed[0];
+    EXPECT_EQ(replayed[1].rfind("extrude:f2:", 0), 0u) << replayed[1];
+    std::string why;
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
+    EXPECT_TRUE(!validate(ed.mesh()).has_value());
+    ed.run({Command::Undo});
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), cube, &why)) << why;
+    ed.run({Command::Redo});
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
 }
 
 // A refused amount (shrink 1) applies nothing and says why.

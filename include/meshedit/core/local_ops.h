@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string_view>
+#include <vector>
 
 #include "meshedit/core/mesh.h"
 
@@ -197,6 +198,28 @@ OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink);
 OpStatus is_inset_ok(const Mesh& mesh, Face f, double shrink);
 /// extrude_face() with height 0: a ring of quads inside `f`. \return `f`, the inner face.
 OpResult<Face> inset_face(Mesh& mesh, Face f, double shrink);
+
+/// An interactive extrude or inset builds its topology once (Scotty3D's extrude_positions):
+/// extrude_face() at the first amounts, then extrude_positions() for every other amount. Taken
+/// just before extrude_face(): f's sides h[i] (p[i] -> p[i+1]), its corners p[i], their
+/// average, and where the operation's new elements start.
+struct ExtrudeBase {
+    Face f;
+    std::vector<Halfedge> sides;
+    std::vector<Vec3> corners;
+    Vec3 centre{0, 0, 0};
+    std::uint32_t first_vertex = 0, first_edge = 0, first_face = 0;
+};
+ExtrudeBase extrude_base(const Mesh& mesh, Face f);
+/// Whether extrude_positions() can place the corners at these amounts (is_extrude_ok()'s
+/// reasons). Pure.
+OpStatus is_extrude_positions_ok(const ExtrudeBase& base, double height, double shrink);
+/// Puts the inner corners extrude_face() made where extrude_face(base.f, height, shrink)
+/// puts them and blends what they carry with the weights of that shrink: the mesh is then
+/// bit for bit what extrude_face() at these amounts makes. Writes only elements the
+/// operation appended (what a recorded change's refresh_after() takes in).
+/// \pre extrude_face(base.f, …) ran just after `base` was taken, and nothing since but this.
+OpStatus extrude_positions(Mesh& mesh, const ExtrudeBase& base, double height, double shrink);
 
 // ------------------------------------------------------------ bevel (src/core/local_ops/bevel.cpp)
 

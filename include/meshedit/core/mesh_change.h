@@ -43,9 +43,11 @@ public:
     /// Puts `mesh` back as the edit left it. \pre `mesh` is as it was before the edit.
     void redo(Mesh& mesh) const;
 
-    /// Takes the touched elements' values after the edit again from `mesh`, where only they
-    /// changed since (an edit still under way, e.g. a drag: recorded at its first move,
-    /// brought up to date at every move). \pre no element was appended.
+    /// Takes the touched and appended elements' values after the edit (and the properties it
+    /// added) again from `mesh`, where only they changed since: an edit still under way,
+    /// recorded at its first move and brought up to date at every move (a vertex drag; an
+    /// extrude that made its topology once and moves its corners). \pre no element was
+    /// appended or deleted since the change was recorded.
     void refresh_after(const Mesh& mesh);
 
     /// Bytes held (for the undo history's budget).

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "meshedit/core/fields.h"
+#include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/stencil.h"
@@ -170,6 +171,15 @@ public:
     /// Refused (nothing starts) when the selection has nothing it applies to.
     Outcome begin_modal(Modal kind);
     Modal modal() const { return modal_.kind; }
+    /// How the interactive edit under way has previewed so far: runs of its verb (topology)
+    /// and previews that only moved what the verb made (extrude, inset).
+    struct ModalCounts {
+        std::size_t topology_changes = 0;
+        std::size_t position_amendments = 0;
+    };
+    ModalCounts modal_counts() const {
+        return {modal_.topology_changes, modal_.position_amendments};
+    }
     /// During an interactive edit, the keys it takes: Enter confirms, Esc cancels, digits
     /// . - , Backspace type the amount, X Y Z lock an axis (move, rotate, scale). nullopt
     /// for any other key (press() then confirms the edit and runs the key, as Blender does).
@@ -313,7 +323,13 @@ private:
         ModalInput last;                 ///< the last mouse input
         std::string refusal;             ///< why the amounts now cannot apply, or empty
         std::vector<std::string> steps;  ///< Extrude, Inset, Bevel: the steps now, for the session
+        /// Extrude, Inset: what each extrude that ran needs to move its corners again.
+        std::vector<ExtrudeBase> built;
+        std::size_t topology_changes = 0;     ///< previews that ran the verb
+        std::size_t position_amendments = 0;  ///< previews that only moved what it made
     };
+    /// Extrude, Inset with their topology built: moves the corners to the amounts now.
+    Outcome move_extruded();
     /// Runs the modal edit with its amounts: rewinds the preview, records the new one.
     Outcome apply_modal();
     /// Undo (`forward` false) or redo, after ending a drag and cancelling an interactive edit.

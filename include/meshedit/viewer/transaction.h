@@ -83,6 +83,11 @@ public:
     /// Recorded: ends what is recorded so far as a preview (an interactive edit shown at
     /// one amount) and returns where it changed the mesh.
     MeshChange::Region preview();
+    /// Recorded, after preview(): the elements the preview touched or made were written
+    /// again in place (an interactive edit moving the corners it made, its topology built
+    /// once); the change takes their values now. Costs what the preview touched. Returns
+    /// where the mesh changed.
+    MeshChange::Region amend();
     /// Back to the document as the transaction began (selection included), still open: an
     /// interactive edit trying another amount, in the time of what the preview touched.
     /// Returns where the mesh changed back.

@@ -23,33 +23,15 @@ Vec3 newell_normal(const std::vector<Vec3>& corners, const Vec3& centre) {
     return length > 0 && std::isfinite(length) ? n / length : Vec3{0, 0, 0};
 }
 
-// f's corners p[i] = from_vertex(h[i]) in the order of its sides h[i], and their average.
-struct Ring {
-    std::vector<Halfedge> h;
-    std::vector<Vec3> p;
-    Vec3 centre{0, 0, 0};
-};
-Ring ring_of(const Mesh& mesh, Face f) {
-    Ring r;
-    for (const Halfedge side : mesh.halfedges(f)) {
-        r.h.push_back(side);
-        r.p.push_back(mesh.position(mesh.from_vertex(side)));
-    }
-    for (const Vec3& x : r.p) {
-        r.centre += x / static_cast<double>(r.p.size());
-    }
-    return r;
-}
-
 // The inner corner q[i] (the formula above extrude_face()).
-Vec3 inner_corner(const Ring& r, std::size_t i, double shrink, const Vec3& lift) {
-    return r.p[i] + shrink * (r.centre - r.p[i]) + lift;
+Vec3 inner_corner(const ExtrudeBase& r, std::size_t i, double shrink, const Vec3& lift) {
+    return r.corners[i] + shrink * (r.centre - r.corners[i]) + lift;
 }
 
 // Every inner corner and its squared length are finite: huge amounts (a height of 1e308, a
 // shrink of -1e300) would leave corners whose normals and areas overflow.
-bool inner_corners_in_range(const Ring& r, double shrink, const Vec3& lift) {
-    for (std::size_t i = 0; i < r.p.size(); ++i) {
+bool inner_corners_in_range(const ExtrudeBase& r, double shrink, const Vec3& lift) {
+    for (std::size_t i = 0; i < r.corners.size(); ++i) {
         if (!std::isfinite(sqrnorm(inner_corner(r, i, shrink, lift)))) {
             return false;
         }
@@ -62,14 +44,16 @@ bool inner_corners_in_range(const Ring& r, double shrink, const Vec3& lift) {
 // f's corner at q[i] (k[i-1]) and quad i-1's (up[i]) and quad i's (kt[i]) blend f's old
 // corners the same way, down[i] is quad i's corner at p[i] as h[i-1] was f's; the quads are
 // parts of f, the inner sides copies of the old sides, the rungs new.
-void carry_extruded(Mesh& mesh, Face f, const Ring& r, double shrink, std::uint32_t first_v,
-                    std::uint32_t first_e, std::uint32_t first_f) {
-    const auto n = static_cast<std::uint32_t>(r.h.size());
+void carry_extruded(Mesh& mesh, const ExtrudeBase& r, double shrink) {
+    const Face f = r.f;
+    const std::uint32_t first_v = r.first_vertex, first_e = r.first_edge, first_f = r.first_face;
+    const std::vector<Halfedge>& h = r.sides;
+    const auto n = static_cast<std::uint32_t>(h.size());
     std::vector<Vertex> p(n);
     std::vector<Halfedge> corner(n);  // f's old corner at p[i]: h[i-1]
     for (std::uint32_t i = 0; i < n; ++i) {
-        p[i] = mesh.from_vertex(r.h[i]);
-        corner[i] = r.h[(i + n - 1) % n];
+        p[i] = mesh.from_vertex(h[i]);
+        corner[i] = h[(i + n - 1) % n];
     }
     std::vector<double> w(n);
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -85,35 +69,71 @@ void carry_extruded(Mesh& mesh, Face f, const Ring& r, double shrink, std::uint3
         }
         mesh.carry(Mesh::twin(up), corner[i]);
         mesh.carry_default(Mesh::edge(up));
-        mesh.carry(Edge(first_e + n + i), Mesh::edge(r.h[i]));
+        mesh.carry(Edge(first_e + n + i), Mesh::edge(h[i]));
         mesh.carry(Face(first_f + i), f);
     }
 }
 
+// The lift of the inner corners: `height` along the unit Newell normal (none at height 0, so
+// a face without area can be inset).
+Vec3 lift_of(const ExtrudeBase& r, double height) {
+    return height == 0 ? Vec3{0, 0, 0} : height * newell_normal(r.corners, r.centre);
+}
+
 }  // namespace
 
-OpStatus is_extrude_ok(const Mesh& mesh, Face f, double height, double shrink) {
-    MESHEDIT_ASSERT(mesh.is_valid(f));
-    if (mesh.is_deleted(f)) {
-        return OpStatus::refused("cannot extrude: the face is deleted");
+ExtrudeBase extrude_base(const Mesh& mesh, Face f) {
+    ExtrudeBase r;
+    r.f = f;
+    for (const Halfedge side : mesh.halfedges(f)) {
+        r.sides.push_back(side);
+        r.corners.push_back(mesh.position(mesh.from_vertex(side)));
     }
+    for (const Vec3& x : r.corners) {
+        r.centre += x / static_cast<double>(r.corners.size());
+    }
+    r.first_vertex = static_cast<std::uint32_t>(mesh.vertices_size());
+    r.first_edge = static_cast<std::uint32_t>(mesh.edges_size());
+    r.first_face = static_cast<std::uint32_t>(mesh.faces_size());
+    return r;
+}
+
+OpStatus is_extrude_positions_ok(const ExtrudeBase& r, double height, double shrink) {
     if (!std::isfinite(height) || !std::isfinite(shrink)) {
         return OpStatus::refused("cannot extrude: the amounts must be finite numbers");
     }
     if (shrink >= 1) {
         return OpStatus::refused("cannot extrude: shrink must be below 1 (1 is a point)");
     }
-    const Ring r = ring_of(mesh, f);
-    const Vec3 n = newell_normal(r.p, r.centre);
-    if (height != 0 && norm(n) == 0) {
+    if (height != 0 && norm(newell_normal(r.corners, r.centre)) == 0) {
         return OpStatus::refused("cannot extrude: the face has no area, so no normal");
     }
-    if (!inner_corners_in_range(r, shrink, height == 0 ? Vec3{0, 0, 0} : height * n)) {
+    if (!inner_corners_in_range(r, shrink, lift_of(r, height))) {
         return OpStatus::refused(
             "cannot extrude: the amounts put corners beyond the range of "
             "numbers");
     }
     return OpStatus::ok();
+}
+
+OpStatus extrude_positions(Mesh& mesh, const ExtrudeBase& r, double height, double shrink) {
+    if (const OpStatus ok = is_extrude_positions_ok(r, height, shrink); !ok) {
+        return ok;
+    }
+    const Vec3 lift = lift_of(r, height);
+    for (std::uint32_t i = 0; i < r.corners.size(); ++i) {
+        mesh.position(Vertex(r.first_vertex + i)) = inner_corner(r, i, shrink, lift);
+    }
+    carry_extruded(mesh, r, shrink);
+    return OpStatus::ok();
+}
+
+OpStatus is_extrude_ok(const Mesh& mesh, Face f, double height, double shrink) {
+    MESHEDIT_ASSERT(mesh.is_valid(f));
+    if (mesh.is_deleted(f)) {
+        return OpStatus::refused("cannot extrude: the face is deleted");
+    }
+    return is_extrude_positions_ok(extrude_base(mesh, f), height, shrink);
 }
 
 OpStatus is_inset_ok(const Mesh& mesh, Face f, double shrink) {
@@ -127,7 +147,7 @@ OpStatus is_inset_ok(const Mesh& mesh, Face f, double shrink) {
     if (shrink >= 1) {
         return OpStatus::refused("cannot inset: shrink must be below 1 (1 is a point)");
     }
-    if (!inner_corners_in_range(ring_of(mesh, f), shrink, Vec3{0, 0, 0})) {
+    if (!inner_corners_in_range(extrude_base(mesh, f), shrink, Vec3{0, 0, 0})) {
         return OpStatus::refused(
             "cannot inset: the amount puts corners beyond the range of "
             "numbers");
@@ -155,14 +175,11 @@ OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink) {
     if (const OpStatus ok = is_extrude_ok(mesh, f, height, shrink); !ok) {
         return ok;
     }
-    const Ring r = ring_of(mesh, f);
-    const std::vector<Halfedge>& h = r.h;
+    const ExtrudeBase base = extrude_base(mesh, f);
+    const std::vector<Halfedge>& h = base.sides;
     const auto n = static_cast<std::uint32_t>(h.size());
-    const Vec3 lift = height == 0 ? Vec3{0, 0, 0} : height * newell_normal(r.p, r.centre);
-
-    const auto first_v = static_cast<std::uint32_t>(mesh.vertices_size());
-    const auto first_e = static_cast<std::uint32_t>(mesh.edges_size());
-    const auto first_f = static_cast<std::uint32_t>(mesh.faces_size());
+    const std::uint32_t first_v = base.first_vertex, first_e = base.first_edge,
+                        first_f = base.first_face;
     mesh.new_elements(n, 2 * n, n);
     const auto q = [&](std::uint32_t i) { return Vertex(first_v + i % n); };
     const auto up = [&](std::uint32_t i) { return Mesh::halfedge(Edge(first_e + i % n), 0); };
@@ -170,7 +187,6 @@ OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink) {
     const auto quad = [&](std::uint32_t i) { return Face(first_f + i); };
 
     for (std::uint32_t i = 0; i < n; ++i) {
-        mesh.position(q(i)) = inner_corner(r, i, shrink, lift);
         mesh.set_vertex(up(i), q(i));
         mesh.set_vertex(Mesh::twin(up(i)), mesh.from_vertex(h[i]));
         mesh.set_vertex(k(i), q(i + 1));
@@ -193,7 +209,8 @@ OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink) {
         mesh.set_halfedge(q(i), k(i));
     }
     mesh.set_halfedge(f, k(0));
-    carry_extruded(mesh, f, r, shrink, first_v, first_e, first_f);
+    // The corners' places and what they carry: the one code an interactive extrude reruns.
+    extrude_positions(mesh, base, height, shrink);
     return f;
 }
 

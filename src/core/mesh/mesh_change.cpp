@@ -7,6 +7,8 @@
 #include <new>
 #include <stdexcept>
 
+#include "meshedit/core/assert.h"
+
 namespace meshedit {
 
 namespace {
@@ -95,8 +97,19 @@ void MeshChange::refresh_after(const Mesh& mesh) {
     const PropertyContainer* c[] = {&mesh.vprops_, &mesh.hprops_, &mesh.eprops_, &mesh.fprops_};
     for (int k = 0; k < 4; ++k) {
         const Kind& kind = kinds_[k];
+        MESHEDIT_ASSERT(c[k]->size() == kind.size_after);
         for (std::size_t i = 0; i < kind.n_touched; ++i) {
             save(*c[k], kind.n_arrays, touched(k, i), &data_[kind.after_at() + i * kind.stride]);
+        }
+        for (std::size_t i = 0; i < kind.size_after - kind.size_before; ++i) {
+            save(*c[k], kind.n_arrays, kind.size_before + i,
+                 &data_[kind.appended_at() + i * kind.stride]);
+        }
+        if (added_) {
+            std::vector<std::unique_ptr<BasePropertyArray>>& arrays = (*added_)[k];
+            for (std::size_t a = 0; a < arrays.size(); ++a) {
+                arrays[a] = c[k]->array(kind.n_arrays + a).clone();
+            }
         }
     }
 }
