@@ -21,7 +21,7 @@ set(rules
     "render|^(include/meshedit|src)/render/|^(core|bezier|files|render)/|^(${gl}|OpenImageIO/(imageio|imagebuf|imagebufalgo)\\.h|unistd\\.h)$"
     "viewer logic (no GL, no window)|^(include/meshedit/viewer/|src/viewer/(bindings|history|transaction|editor|editor_[a-z]+|element_info|paths)\\.cpp$)|^(core|bezier|files|io|ops|viewer)/|render/(overlay|camera|shading|op_diagram|colormap)\\.h$|^$"
     "viewer window|^src/viewer/|^(core|bezier|files|io|ops|render|viewer)/|^(${gl}|GLFW/glfw3\\.h|imgui\\.h|imgui_stdlib\\.h|backends/imgui_impl_(glfw|opengl3)\\.h)$"
-    "command line style|^src/command_line/|^core/|^CLI/CLI\\.hpp$"
+    "command line style (and the exit-status ladder)|^src/command_line/|^(core|files|ops)/|^CLI/CLI\\.hpp$"
     "cli (meshedit)|^src/cli/|^(core|bezier|files|io|ops)/|^(CLI/CLI\\.hpp|nlohmann/json\\.hpp|unistd\\.h)$"
     "headless (meshedit-render)|^src/headless/|^(core|bezier|files|io|ops|render)/|^(CLI/CLI\\.hpp|GL/osmesa\\.h|GL/glcorearb\\.h|EGL/egl(ext)?\\.h|dlfcn\\.h)$"
     "tools|^tools/|^(core|bezier|files|io|ops)/|^$"

@@ -5,8 +5,8 @@
 /// CLI11 subcommand with its options bound to its own settings.
 ///
 /// Exit status (docs/cli.md): 0 success, 1 failure (a refused op, an invalid mesh), 2 bad
-/// usage or bad input. main() maps exceptions to these: UsageError, IoError and an OpError
-/// that names a missing element give 2; Failure and a refused OpError give 1.
+/// usage or bad input. main() maps exceptions to these through the ladder every program
+/// shares (command_line/exit_status.h).
 
 #include <CLI/CLI.hpp>
 
@@ -15,21 +15,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "exit_status.h"
 #include "meshedit/io/document.h"
 
 namespace meshedit::cli {
 
-/// Bad usage the parser cannot see: an option that does not fit the file (exit 2).
-class UsageError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-/// The command ran but could not do its job for a reason that is not bad input: exit 1.
-class Failure : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
+/// Bad usage the parser cannot see (exit 2) and a failure that is not bad input (exit 1):
+/// command_line/exit_status.h's, which main() maps to exit statuses.
+using command_line::Failure;
+using command_line::UsageError;
 
 /// Shortest round-trip text for a double ("0.1", "-1", "1e-300").
 std::string format_number(double x);

@@ -15,6 +15,7 @@
 
 #include "cli.h"
 #include "command_line.h"
+#include "exit_status.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/files/io_error.h"
 #include "meshedit/ops/ops.h"
@@ -39,7 +40,7 @@ constexpr const char* kMoreCommands =
     "Exit status: 0 success, 1 failure (refused op, invalid mesh), 2 bad usage or input.";
 
 void print_error(const std::string& message) {
-    std::fprintf(stderr, "meshedit: %s\n", message.c_str());
+    meshedit::command_line::print_error("meshedit", message);
 }
 
 // Git-style external subcommand: `meshedit render …` runs `meshedit-render …` from the
@@ -162,26 +163,7 @@ int dispatch(int argc, char** argv) {
 int main(int argc, char** argv) {
     try {
         return dispatch(argc, argv);
-    } catch (const UsageError& e) {
-        print_error(e.what());
-        return 2;
-    } catch (const meshedit::IoError& e) {
-        print_error(e.what());
-        return 2;
-    } catch (const meshedit::ops::OpError& e) {
-        print_error(e.what());
-        return e.refused() ? 1 : 2;
-    } catch (const meshedit::BudgetError& e) {
-        print_error(e.what());
-        return 1;
-    } catch (const Failure& e) {
-        print_error(e.what());
-        return 1;
-    } catch (const std::bad_alloc&) {
-        print_error("out of memory");
-        return 1;
-    } catch (const std::exception& e) {
-        print_error(std::string("internal error: ") + e.what());
-        return 1;
+    } catch (...) {
+        return meshedit::command_line::exit_status_of_current_exception("meshedit");
     }
 }

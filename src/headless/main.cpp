@@ -341,29 +341,13 @@ int main(int argc, char** argv) {
             return status;
         }
         return run(options);
-    } catch (const UsageError& e) {
-        print_error(e.what());
-        return 2;
-    } catch (const IoError& e) {
-        print_error(e.what());
-        return 2;
-    } catch (const ops::SyntaxError& e) {
-        print_error(e.what());
-        return 2;
-    } catch (const ops::OpError& e) {
-        print_error(e.what());
-        return e.refused() ? 1 : 2;
     } catch (const headless::ContextError& e) {
-        print_error(e.what());
+        print_error(e.what());  // no GL here: the machine's setup, as bad input
         return 2;
-    } catch (const BudgetError& e) {
-        print_error(e.what());
-        return 1;
     } catch (const GlError& e) {
-        print_error(e.what());
+        print_error(e.what());  // a shader that does not compile, a framebuffer refused
         return 1;
-    } catch (const std::exception& e) {
-        print_error(e.what());
-        return 1;
+    } catch (...) {
+        return command_line::exit_status_of_current_exception(headless::program_name());
     }
 }

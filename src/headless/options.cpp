@@ -180,7 +180,7 @@ int parse_options(int argc, char** argv, Options& o) {
     app.add_option("--select", o.select,
                    "highlight a vertex, the edge A-B, the halfedge A->B, a face, or what the "
                    "last step of --ops made (result)")
-        ->option_text("v:I|e:A-B|h:A-B|f:I|result");
+        ->option_text("vI|A-B|hA-B|fI|result");
     app.add_option_function<std::string>(
            "--stencil",
            [&o](const std::string& v) {
@@ -325,43 +325,48 @@ int parse_options(int argc, char** argv, Options& o) {
     return -1;
 }
 
-// "v:I", "e:A-B", "h:A-B", "f:I" → an element of `mesh`.
+// "v12", "3-4", "h3-4", "f7" (or the older "v:12", "e:3-4", "h:3-4", "f:7": the edit
+// language's grammar, ops::parse_element_name()) → an element of `mesh`.
 ElementRef parse_selection(const Mesh& mesh, const std::string& spec) {
-    if (spec.size() < 3 || spec[1] != ':') {
-        throw UsageError("--select wants v:I, e:A-B, h:A-B or f:I, got '" + spec + "'");
+    const std::optional<ops::ElementName> name = ops::parse_element_name(spec);
+    if (!name) {
+        throw UsageError("--select wants vI, A-B, hA-B, fI or result, got '" + spec + "'");
     }
-    const std::string_view body = std::string_view(spec).substr(2);
-    const char kind = spec[0];
-    if (kind == 'v' || kind == 'f') {
-        if (kind == 'v') {
-            const Vertex v(parse_index(body, mesh.vertices_size(), spec));
+    const auto index = [&](std::uint32_t i, std::size_t size, const char* what) {
+        if (i >= size) {
+            throw UsageError("--select " + spec + ": no " + what + " " + std::to_string(i) +
+                             " (the mesh has " + std::to_string(size) + ")");
+        }
+        return i;
+    };
+    switch (name->kind) {
+        case ElementRef::Kind::Vertex: {
+            const Vertex v(index(name->a, mesh.vertices_size(), "vertex"));
             if (mesh.is_deleted(v)) {
                 throw UsageError("--select " + spec + ": the vertex is deleted");
             }
             return ElementRef::vertex(v);
         }
-        const Face f(parse_index(body, mesh.faces_size(), spec));
-        if (mesh.is_deleted(f)) {
-            throw UsageError("--select " + spec + ": the face is deleted");
+        case ElementRef::Kind::Face: {
+            const Face f(index(name->a, mesh.faces_size(), "face"));
+            if (mesh.is_deleted(f)) {
+                throw UsageError("--select " + spec + ": the face is deleted");
+            }
+            return ElementRef::face(f);
         }
-        return ElementRef::face(f);
+        default:
+            break;
     }
-    if (kind != 'e' && kind != 'h') {
-        throw UsageError("--select wants v:I, e:A-B, h:A-B or f:I, got '" + spec + "'");
-    }
-    const auto ends = split(body, '-');
-    if (ends.size() != 2) {
-        throw UsageError("--select " + spec + ": an edge is A-B (two vertex indices)");
-    }
-    const Vertex a(parse_index(ends[0], mesh.vertices_size(), spec));
-    const Vertex b(parse_index(ends[1], mesh.vertices_size(), spec));
+    const Vertex a(index(name->a, mesh.vertices_size(), "vertex"));
+    const Vertex b(index(name->b, mesh.vertices_size(), "vertex"));
     const Halfedge h =
         mesh.is_deleted(a) || mesh.is_deleted(b) ? Halfedge() : mesh.find_halfedge(a, b);
     if (!h.is_valid()) {
-        throw UsageError("--select " + spec + ": no edge joins vertices " + std::string(ends[0]) +
-                         " and " + std::string(ends[1]));
+        throw UsageError("--select " + spec + ": no edge joins vertices " +
+                         std::to_string(name->a) + " and " + std::to_string(name->b));
     }
-    return kind == 'e' ? ElementRef::edge(Mesh::edge(h)) : ElementRef::halfedge(h);
+    return name->kind == ElementRef::Kind::Edge ? ElementRef::edge(Mesh::edge(h))
+                                                : ElementRef::halfedge(h);
 }
 
 }  // namespace meshedit::headless

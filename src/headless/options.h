@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "exit_status.h"
 #include "gl_context.h"
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
@@ -18,11 +19,8 @@
 
 namespace meshedit::headless {
 
-/// Bad usage or input found after parsing (exit 2).
-class UsageError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
+/// Bad usage or input found after parsing (exit 2), as `meshedit` throws it.
+using command_line::UsageError;
 
 struct Options {
     std::filesystem::path input;

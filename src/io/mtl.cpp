@@ -61,10 +61,13 @@ void read_library(const fs::path& file, MeshSoup& soup, std::vector<bool>& defin
         double v[3];
         if (key == "Kd" && numbers(3, v)) {
             current->base_colour = {v[0], v[1], v[2]};
+            current->has_base_colour = true;
         } else if (key == "d" && numbers(1, v)) {
             current->opacity = v[0];
+            current->has_opacity = true;
         } else if (key == "Tr" && numbers(1, v)) {
             current->opacity = 1.0 - v[0];
+            current->has_opacity = true;
         } else if (key == "map_Kd") {
             // Options (-s 1 1 1, -bm 0.5) come first; the path is the last token. Backslashes
             // are Windows exporters' separators.
@@ -134,8 +137,14 @@ std::string text(const Mesh& mesh, const fs::path& folder) {
             continue;  // the faces without a material
         }
         out += "\nnewmtl " + m.name + "\n";
-        out += "Kd " + three(m.base_colour) + "\n";
-        out += "d " + number_text(m.opacity) + "\n";
+        // Only what is known: a material read without its .mtl gets its name back, not a
+        // white that was never there.
+        if (m.has_base_colour) {
+            out += "Kd " + three(m.base_colour) + "\n";
+        }
+        if (m.has_opacity) {
+            out += "d " + number_text(m.opacity) + "\n";
+        }
         if (!m.base_colour_texture.empty()) {
             fs::path texture(m.base_colour_texture);
             std::error_code ec;

@@ -140,6 +140,8 @@ private:
         material_ = static_cast<std::uint32_t>(out_.materials.size());
         Material m;
         m.name = std::string(name);
+        m.has_base_colour = false;  // until its .mtl says (mtl.cpp)
+        m.has_opacity = false;
         out_.materials.push_back(std::move(m));
     }
 

@@ -111,22 +111,22 @@ void parse_target(std::string_view arg, Step& step) {
     const Verb& verb = *step.verb;
     const std::string expected =
         "expected " + std::string(verb.syntax) + " with " + argument_words(verb);
-    if (!arg.empty() && (arg.front() == 'v' || arg.front() == 'f')) {
-        step.target = arg.front() == 'v' ? Target::Vertex : Target::Face;
-        if (!parse_index(arg.substr(1), step.a)) {
-            bad(step.text, expected);
-        }
+    const std::optional<ElementName> name = parse_element_name(arg);
+    if (name && name->kind != ElementRef::Kind::Halfedge) {
+        step.target = name->kind == ElementRef::Kind::Vertex ? Target::Vertex
+                      : name->kind == ElementRef::Kind::Face ? Target::Face
+                                                             : Target::Edge;
+        step.a = name->a;
+        step.b = name->b;
     } else if (const auto plus = arg.find('+'); plus != std::string_view::npos) {
         step.target = Target::EdgePair;
         if (!parse_edge(arg.substr(0, plus), step.a, step.b) ||
             !parse_edge(arg.substr(plus + 1), step.c, step.d)) {
             bad(step.text, expected);
         }
-    } else if (arg.find('-') != std::string_view::npos) {
-        step.target = Target::Edge;
-        if (!parse_edge(arg, step.a, step.b)) {
-            bad(step.text, expected);
-        }
+    } else if (!arg.empty() && (arg.front() == 'v' || arg.front() == 'f' || arg.front() == 'h' ||
+                                arg.find('-') != std::string_view::npos)) {
+        bad(step.text, expected);  // an element, misspelt
     } else {
         std::uint32_t k = 0;
         if ((verb.takes & kLevels) == 0 || !parse_index(arg, k) || k < 1 || k > kMaxLevels) {
@@ -423,6 +423,36 @@ Step make_step(std::string_view name, const Mesh& mesh, const ElementRef& target
     }
     step.text = std::move(text);
     return step;
+}
+
+std::optional<ElementName> parse_element_name(std::string_view text) {
+    ElementName name;
+    // The older --select spellings: a kind letter and a colon ("v:12", "e:3-4").
+    if (text.size() > 2 && text[1] == ':' &&
+        std::string_view("vefh").find(text[0]) != std::string_view::npos) {
+        const char kind = text[0];
+        text.remove_prefix(2);
+        if (kind == 'e') {
+            name.kind = ElementRef::Kind::Edge;
+            return parse_edge(text, name.a, name.b) ? std::optional(name) : std::nullopt;
+        }
+        if (kind == 'h') {
+            name.kind = ElementRef::Kind::Halfedge;
+            return parse_edge(text, name.a, name.b) ? std::optional(name) : std::nullopt;
+        }
+        name.kind = kind == 'v' ? ElementRef::Kind::Vertex : ElementRef::Kind::Face;
+        return parse_index(text, name.a) ? std::optional(name) : std::nullopt;
+    }
+    if (!text.empty() && (text.front() == 'v' || text.front() == 'f')) {
+        name.kind = text.front() == 'v' ? ElementRef::Kind::Vertex : ElementRef::Kind::Face;
+        return parse_index(text.substr(1), name.a) ? std::optional(name) : std::nullopt;
+    }
+    if (!text.empty() && text.front() == 'h') {
+        name.kind = ElementRef::Kind::Halfedge;
+        return parse_edge(text.substr(1), name.a, name.b) ? std::optional(name) : std::nullopt;
+    }
+    name.kind = ElementRef::Kind::Edge;
+    return parse_edge(text, name.a, name.b) ? std::optional(name) : std::nullopt;
 }
 
 Vertex named_vertex(const Mesh& mesh, const Step& step) {

@@ -212,6 +212,15 @@ TEST(ObjAttributes, MissingLibraryAndBadIndicesAreNamed) {
               "material library 'quad.mtl' not found: material names kept, colours and textures "
               "not");
     EXPECT_EQ(face_materials(loaded.mesh), (std::multiset<std::string>{"red paint", "wood"}));
+    // Written back, the materials keep their names and get no colour the file never had; a
+    // second round trip changes nothing.
+    fs::create_directory(dir / "out");
+    write_mesh(loaded.mesh, dir / "out" / "quad.obj");
+    EXPECT_EQ(test::slurp(dir / "out" / "quad.mtl"),
+              "# MeshEdit MTL: 2 materials\n\nnewmtl red paint\n\nnewmtl wood\n");
+    const LoadedMesh again = read_mesh(dir / "out" / "quad.obj");
+    EXPECT_TRUE(again.notices.empty());
+    EXPECT_EQ(again.mesh.materials(), loaded.mesh.materials());
     // A library that is a FIFO is not opened (it could block for ever); the mesh loads.
     ASSERT_EQ(mkfifo((dir / "quad.mtl").c_str(), 0600), 0);
     const LoadedMesh piped = read_mesh(dir / "quad.obj");

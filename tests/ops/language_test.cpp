@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -366,6 +367,37 @@ TEST(OpsLanguage, RunStepsStopsOrSkipsRefusals) {
         EXPECT_EQ(std::string(e.what()), "flip:0-1 refused: cannot flip: boundary edge");
     }
     EXPECT_TRUE(test::identical(stopped, quad));
+}
+
+// One grammar names an element in --ops, --select and the session; --select's older
+// spellings stay accepted.
+TEST(OpsLanguage, ElementNamesHaveOneGrammar) {
+    using K = ElementRef::Kind;
+    const auto is = [](std::string_view text, K kind, std::uint32_t a, std::uint32_t b = 0) {
+        const std::optional<ElementName> n = parse_element_name(text);
+        ASSERT_TRUE(n.has_value()) << text;
+        EXPECT_EQ(n->kind, kind) << text;
+        EXPECT_EQ(n->a, a) << text;
+        if (kind == K::Edge || kind == K::Halfedge) {
+            EXPECT_EQ(n->b, b) << text;
+        }
+    };
+    is("v12", K::Vertex, 12);
+    is("v:12", K::Vertex, 12);
+    is("f7", K::Face, 7);
+    is("f:7", K::Face, 7);
+    is("3-4", K::Edge, 3, 4);
+    is("e:3-4", K::Edge, 3, 4);
+    is("h3-4", K::Halfedge, 3, 4);
+    is("h:3-4", K::Halfedge, 3, 4);
+    for (const char* bad : {"", "v", "v:", "vx", "3-", "-4", "3", "e3-4", "x:3", "v-1", "f1.5",
+                            "h3", "3-4-5", "v99999999999"}) {
+        EXPECT_FALSE(parse_element_name(bad).has_value()) << bad;
+    }
+    // The steps read elements with it.
+    EXPECT_EQ(parse_step("dissolve:v12").a, 12u);
+    EXPECT_EQ(parse_step("flip:3-4").b, 4u);
+    EXPECT_NE(syntax_error("flip:h3-4").find("expected flip:A-B"), std::string::npos);
 }
 
 }  // namespace

@@ -16,6 +16,11 @@ struct Material {
     Vec3 base_colour{1.0, 1.0, 1.0};  ///< OBJ's Kd, glTF's baseColorFactor (rgb)
     double opacity = 1.0;             ///< OBJ's d (1 - Tr), glTF's baseColorFactor alpha
     std::string base_colour_texture;  ///< OBJ's map_Kd, glTF's baseColorTexture image (a path)
+    /// Whether the file said the colour and the opacity: an OBJ material whose .mtl is missing
+    /// or has no Kd (d, Tr) line has neither, and is written back without them rather than
+    /// with invented values.
+    bool has_base_colour = true;
+    bool has_opacity = true;
     /// Lines of an OBJ .mtl this material had that MeshEdit has no meaning for ("Ks 0 0 0",
     /// "illum 2"), written back as they were.
     std::vector<std::string> other;

@@ -177,6 +177,18 @@ std::optional<std::string> session_header_value(std::string_view text, std::stri
 Step make_step(std::string_view verb, const Mesh& mesh, const ElementRef& target = {},
                std::span<const double> amounts = {}, const ElementRef& second = {});
 
+/// An element named in text, the one grammar of `--ops` steps, `--select` and the viewer's
+/// session: `v12` (a vertex), `3-4` (the edge between two vertices), `h3-4` (the halfedge
+/// 3 -> 4), `f7` (a face); the older `--select` spellings `v:12`, `e:3-4`, `h:3-4`, `f:7` are
+/// accepted too. Indices only: whether the mesh has them is the caller's question.
+struct ElementName {
+    ElementRef::Kind kind = ElementRef::Kind::None;
+    std::uint32_t a = 0;  ///< the vertex or face; an edge's or halfedge's first end
+    std::uint32_t b = 0;  ///< the second end
+};
+/// Parses one element name; nullopt when `text` is none.
+std::optional<ElementName> parse_element_name(std::string_view text);
+
 /// The elements a step names. \throws OpError (not a refusal) if the mesh has no such
 /// element (a vertex or face index out of range or deleted, no edge between two vertices).
 Vertex named_vertex(const Mesh& mesh, const Step& step);
