@@ -5,7 +5,7 @@
 # `make fuzz FUZZ_RUNS=1000000` is the 10⁶ mode). A timeout or an out-of-memory input is
 # saved and counted, and the target goes on from where it was (the corpus is kept) until its
 # runs or seconds are used up; a crash ends the target. Inputs are at most FUZZ_MAX_LEN bytes
-# (default 4096 for a reader, 2048 for .bez, 1024 for a session, 512 for an --ops list: small
+# (default 4096 for a reader, 2048 for .bez, 512 for an --ops list or a session: small
 # inputs keep the rate up, and a longer list or more patches repeat what a shorter one
 # reaches). Seeds come from the project's own files
 # (dae/, bez/, tests/io/data, tests/fuzz/regressions) and from OBJ and glTF conversions of the
@@ -28,8 +28,7 @@ jobs=${FUZZ_JOBS:-$(nproc)}
 # max_len TARGET: the longest input it is given (FUZZ_MAX_LEN for every target when set).
 max_len() {
     case $1 in
-        ops) echo "${FUZZ_MAX_LEN:-512}" ;;
-        session) echo "${FUZZ_MAX_LEN:-1024}" ;;
+        ops | session) echo "${FUZZ_MAX_LEN:-512}" ;;
         bez) echo "${FUZZ_MAX_LEN:-2048}" ;;
         *) echo "${FUZZ_MAX_LEN:-4096}" ;;
     esac
