@@ -274,15 +274,16 @@ std::size_t non_triangles(const Mesh& mesh) {
 
 // Loop is defined on triangles; rather than cut polygons the user did not ask to cut, it
 // says so and names the step that does (the core's loop_subdivide() still triangulates).
-// A whole-mesh subdivision in the middle of a phased Loop would carry its half-done state
-// into a new mesh.
-std::string phased_loop_refusal(const Mesh& mesh) {
+// A whole-mesh subdivision, simplification or remesh in the middle of a phased Loop would
+// carry its half-done state into a new mesh (the next phase threw "split did not append the
+// vertex" or "flip refused"); `verb` names the refused one.
+std::string phased_loop_refusal(const Mesh& mesh, const char* verb = "subdivide") {
     const int next = next_loop_phase(mesh);
-    return next == 1
-               ? std::string()
-               : "cannot subdivide: a phased Loop is under way (phase " + std::to_string(next) +
-                     " of 4 is next: `loop_step:" + std::to_string(5 - next) +
-                     "` finishes it, undo goes back)";
+    return next == 1 ? std::string()
+                     : "cannot " + std::string(verb) + ": a phased Loop is under way (phase " +
+                           std::to_string(next) +
+                           " of 4 is next: `loop_step:" + std::to_string(5 - next) +
+                           "` finishes it, undo goes back)";
 }
 
 std::string check_loop(const Mesh& mesh, const Step& step) {
@@ -333,7 +334,7 @@ std::string check_loop_step_verb(const Mesh& mesh, const Step& step) {
 }
 StepResult run_loop_step(Mesh& mesh, const Step& step, const RunOptions& options) {
     StepResult result;
-    result.renumbers = next_loop_phase(mesh) == 1 && mesh.has_garbage();
+    result.renumbers = next_loop_phase(mesh) <= 2 && mesh.has_garbage();
     LoopOptions loop;
     loop.weights = options.weights;
     for (int phase = 0; phase < step.levels; ++phase) {
@@ -395,6 +396,9 @@ SimplifyOptions simplify_options(const Mesh& mesh, const Step& step) {
     return options;
 }
 std::string check_simplify_step(const Mesh& mesh, const Step& step) {
+    if (std::string why = phased_loop_refusal(mesh, "simplify"); !why.empty()) {
+        return why;
+    }
     const double r = step.amounts[0];
     if (!(r > 0.0 && r < 1.0) && !(is_face_count(r) && r == std::floor(r) && r <= 1e18)) {
         return "cannot simplify: keep a share of the faces above 0 and below 1, or a whole "
@@ -433,6 +437,9 @@ RemeshOptions remesh_options(const Step& step) {
     return options;
 }
 std::string check_remesh_step(const Mesh& mesh, const Step& step) {
+    if (std::string why = phased_loop_refusal(mesh, "remesh"); !why.empty()) {
+        return why;
+    }
     const double n = step.amounts[1];
     if (!(n >= 1 && n <= 100) || n != std::floor(n)) {
         return "cannot remesh: iterations must be a whole number from 1 to 100, not " +

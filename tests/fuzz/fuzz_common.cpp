@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
+#include <span>
 #include <string>
 
 #include "meshedit/core/budget.h"
@@ -23,21 +25,43 @@
 namespace meshedit::fuzz {
 namespace {
 
-// Meshes up to this many faces get the write → read round trip and a Loop level.
+// Meshes up to this many faces get the write → read round trip.
 constexpr std::size_t kSmallFaces = 4000;
+// Meshes up to this many faces get a whole-mesh operation, within kWholeMeshBudget (whose
+// comment says why): simplify and a remesh at the mean length cost in proportion to the mesh
+// they start from, which the budget does not bound.
+constexpr std::size_t kWholeMeshFaces = 1000;
 
-// The canonical face list of a mesh: each face's corners from its smallest index.
-std::vector<std::vector<std::uint32_t>> faces_of(const Mesh& mesh) {
-    std::vector<std::vector<std::uint32_t>> out;
+// The canonical face list of a mesh: each face's corners from its smallest index, the faces
+// sorted. Flat (per face its corner count, then its corners): no allocation per face.
+std::vector<std::uint32_t> faces_of(const Mesh& mesh) {
+    std::vector<std::uint32_t> corners;
+    std::vector<std::size_t> starts;
     for (const Face f : mesh.faces()) {
-        std::vector<std::uint32_t> c;
+        starts.push_back(corners.size());
+        corners.push_back(0);
+        const auto first = static_cast<std::ptrdiff_t>(corners.size());
         for (const Vertex v : mesh.vertices(f)) {
-            c.push_back(v.idx());
+            corners.push_back(v.idx());
         }
-        std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
-        out.push_back(std::move(c));
+        corners[starts.back()] = static_cast<std::uint32_t>(corners.size() - starts.back() - 1);
+        std::rotate(corners.begin() + first,
+                    std::min_element(corners.begin() + first, corners.end()), corners.end());
     }
-    std::sort(out.begin(), out.end());
+    const auto run = [&](std::size_t start) {
+        return std::span<const std::uint32_t>(corners.data() + start, corners[start] + 1);
+    };
+    std::sort(starts.begin(), starts.end(), [&](std::size_t a, std::size_t b) {
+        const auto x = run(a);
+        const auto y = run(b);
+        return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end());
+    });
+    std::vector<std::uint32_t> out;
+    out.reserve(corners.size());
+    for (const std::size_t start : starts) {
+        const auto r = run(start);
+        out.insert(out.end(), r.begin(), r.end());
+    }
     return out;
 }
 
@@ -123,10 +147,15 @@ void one_local_op(Mesh& mesh, std::uint64_t seed) {
 
 void round_trip(const Mesh& mesh) {
     // OBJ keeps doubles exactly; garbage is collected by the writer, so compare with a
-    // collected copy. In memory: the text write_obj() writes, read back by the OBJ parser
-    // (a file per execution cost more than the parse itself).
-    Mesh dense = mesh;
-    dense.garbage_collection();
+    // collected copy (made only when there is garbage). In memory: the text write_obj()
+    // writes, read back by the OBJ parser (a file per execution cost more than the parse
+    // itself).
+    std::optional<Mesh> collected;
+    if (mesh.has_garbage()) {
+        collected.emplace(mesh);
+        collected->garbage_collection();
+    }
+    const Mesh& dense = collected ? *collected : mesh;
     if (dense.n_faces() == 0) {
         return;  // nothing to read back: readers refuse a file without faces
     }
@@ -152,7 +181,7 @@ void round_trip(const Mesh& mesh) {
 }  // namespace
 
 void set_up() {
-    set_memory_budget(std::size_t{256} << 20);
+    set_memory_budget(kBudget);
 }
 
 void check(bool condition, std::string_view what) {
@@ -195,7 +224,13 @@ void exercise(Mesh mesh, std::uint64_t seed) {
     }
     round_trip(mesh);
     // One whole-mesh operation per input, picked by its hash (all four took three quarters of
-    // an execution; a mutation changes the hash, so the corpus reaches every one).
+    // an execution; a mutation changes the hash, so the corpus reaches every one), within the
+    // small budget: a bigger result is refused by the operation's own check (remesh's
+    // estimate, or its guard as the mesh grows: a BudgetError that leaves the mesh as it was).
+    if (mesh.n_faces() > kWholeMeshFaces) {
+        return;
+    }
+    const WholeMeshBudget small;
     const std::uint64_t whole = (seed * 0x9E3779B97F4A7C15ull) >> 62;  // 0 … 3
     if (whole == 0 && is_loop_ok(mesh) && plan_loop(mesh).ok()) {
         Mesh loop = mesh;
@@ -209,22 +244,18 @@ void exercise(Mesh mesh, std::uint64_t seed) {
         simplify(simplified, half);
         check_valid(simplified, "simplify");
     }
-    // Remeshing at the mean length; not when that would make thousands of times more
-    // triangles (one huge face among tiny ones), which is valid but slow.
+    // Remeshing at the mean length, one round.
     RemeshOptions once;
     once.iterations = 1;
-    double area = 0.0, length = 0.0;
-    for (Face f : mesh.faces()) {
-        area += 0.5 * norm(face_area_vector(mesh, f));
-    }
-    for (Edge e : mesh.edges()) {
-        length += distance(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)));
-    }
-    length /= static_cast<double>(std::max<std::size_t>(1, mesh.n_edges()));
-    const bool modest = length > 0.0 && area / (0.43 * length * length) < 20.0 * kSmallFaces;
-    if (whole == 2 && modest && check_remesh(mesh, once).empty()) {
+    if (whole == 2 && check_remesh(mesh, once).empty()) {
         Mesh remeshed = mesh;
-        remesh(remeshed, once);
+        try {
+            remesh(remeshed, once);
+        } catch (const BudgetError&) {
+            check(faces_of(remeshed) == faces_of(mesh) &&
+                      remeshed.position_vector() == mesh.position_vector(),
+                  "a remesh stopped by the budget changed the mesh");
+        }
         check_valid(remeshed, "remesh");
     }
     if (whole == 3 && plan_quad_subdivision(mesh).ok()) {

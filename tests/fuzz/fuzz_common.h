@@ -4,7 +4,8 @@
 /// the mesh, validate() it, run one local operation picked by the input's own bytes behind its
 /// predicate (validate again, or check the refusal changed nothing), write the mesh out and
 /// read it back in memory (the same mesh), and on small meshes one whole-mesh operation (Loop,
-/// simplify, remesh or Catmull–Clark, picked by the hash). Anything wrong aborts,
+/// simplify, remesh or Catmull–Clark, picked by the hash) within kWholeMeshBudget. Anything
+/// wrong aborts,
 /// which libFuzzer (or the replay driver) reports with the input that did it.
 
 #include <cstddef>
@@ -18,9 +19,30 @@
 
 namespace meshedit::fuzz {
 
-/// Sets what every target shares: a small memory budget (so a hostile size is refused, not
-/// allocated). Nothing is written to disk. Call once, from the target.
+/// The memory budget of a target: a hostile size is refused, not allocated.
+inline constexpr std::size_t kBudget = std::size_t{256} << 20;
+
+/// The memory budget of a whole-mesh operation inside a target (a subdivision level,
+/// simplify, remesh, the steps of an --ops list or a session): a Loop or Catmull–Clark level
+/// that makes about 900 faces, a remesh to about 870 triangles. The algorithms run the same
+/// code on a small mesh as on a big one (their threads start at 50,000 vertices or 100,000
+/// faces), and what is bigger is refused by their budget checks, which are tested that way;
+/// under the sanitizers one remesh to 2,000 triangles cost as much as a hundred small inputs.
+inline constexpr std::size_t kWholeMeshBudget = std::size_t{256} << 10;
+
+/// Sets what every target shares: the memory budget kBudget. Nothing is written to disk.
+/// Call once, from the target.
 void set_up();
+
+/// While it lives the memory budget is kWholeMeshBudget (below the 64 MiB floor), then
+/// kBudget again.
+class WholeMeshBudget {
+public:
+    WholeMeshBudget() { set_memory_budget_without_floor(kWholeMeshBudget); }
+    ~WholeMeshBudget() { set_memory_budget(kBudget); }
+    WholeMeshBudget(const WholeMeshBudget&) = delete;
+    WholeMeshBudget& operator=(const WholeMeshBudget&) = delete;
+};
 
 /// Aborts with `what` on stderr when `condition` is false (kept in release builds).
 void check(bool condition, std::string_view what);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/loop_steps.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/ops/ops.h"
@@ -238,6 +239,37 @@ TEST(OpsLanguage, LoopLevelsArePlannedBeforeAnyStep) {
             << e.what();
     }
     EXPECT_TRUE(test::identical(mesh, before));
+}
+
+// Found by fuzz_session (tests/fuzz/regressions/session/phased_loop_then_simplify.txt): in
+// the middle of a phased Loop, simplify and remesh are refused as the subdivisions are (they
+// would rebuild the mesh under the phases' marks, and the next phase threw), and a local edit
+// that deletes elements leaves a mesh the next phase still splits.
+TEST(OpsLanguage, APhasedLoopRefusesSimplifyAndRemeshAndSurvivesACollapse) {
+    const char* const refused[][2] = {
+        {"loop_step,simplify",
+         "simplify refused: cannot simplify: a phased Loop is under way (phase 2 of 4 is next: "
+         "`loop_step:3` finishes it, undo goes back)"},
+        {"loop_step:2,remesh",
+         "remesh refused: cannot remesh: a phased Loop is under way (phase 3 of 4 is next: "
+         "`loop_step:2` finishes it, undo goes back)"},
+    };
+    for (const auto& [list, message] : refused) {
+        SCOPED_TRACE(list);
+        Mesh mesh = shapes::icosahedron();
+        try {
+            apply_steps(mesh, parse(list));
+            FAIL() << "ran";
+        } catch (const OpError& e) {
+            EXPECT_TRUE(e.refused());
+            EXPECT_STREQ(e.what(), message);
+        }
+        EXPECT_VALID(mesh);
+    }
+    Mesh mesh = shapes::icosahedron();
+    apply_steps(mesh, parse("loop_step,collapse:0-1,dissolve:v2,loop_step:3"));
+    EXPECT_EQ(next_loop_phase(mesh), 1);
+    EXPECT_VALID(mesh);
 }
 
 TEST(OpsLanguage, DocsTableIsGenerated) {

@@ -228,6 +228,9 @@ LoopStepReport loop_step(Mesh& mesh, const LoopOptions& options) {
                              std::to_string(mesh.n_edges()) + " edge points (nothing moved yet)";
             break;
         case 2:
+            if (mesh.has_garbage()) {
+                mesh.garbage_collection();  // a local edit since phase 1 deleted elements
+            }
             report.count = split_edges(mesh, progress);
             report.message = "Loop 2/4: split " + std::to_string(report.count) + " edges";
             break;
