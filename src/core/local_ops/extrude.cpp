@@ -80,6 +80,16 @@ Vec3 lift_of(const ExtrudeBase& r, double height) {
     return height == 0 ? Vec3{0, 0, 0} : height * newell_normal(r.corners, r.centre);
 }
 
+// The inner corners' places and what they carry: the one code extrude_face() and an
+// interactive extrude's later moves (extrude_positions()) run. \pre the amounts were checked.
+void place_corners(Mesh& mesh, const ExtrudeBase& r, double height, double shrink) {
+    const Vec3 lift = lift_of(r, height);
+    for (std::uint32_t i = 0; i < r.corners.size(); ++i) {
+        mesh.position(Vertex(r.first_vertex + i)) = inner_corner(r, i, shrink, lift);
+    }
+    carry_extruded(mesh, r, shrink);
+}
+
 }  // namespace
 
 ExtrudeBase extrude_base(const Mesh& mesh, Face f) {
@@ -120,11 +130,7 @@ OpStatus extrude_positions(Mesh& mesh, const ExtrudeBase& r, double height, doub
     if (const OpStatus ok = is_extrude_positions_ok(r, height, shrink); !ok) {
         return ok;
     }
-    const Vec3 lift = lift_of(r, height);
-    for (std::uint32_t i = 0; i < r.corners.size(); ++i) {
-        mesh.position(Vertex(r.first_vertex + i)) = inner_corner(r, i, shrink, lift);
-    }
-    carry_extruded(mesh, r, shrink);
+    place_corners(mesh, r, height, shrink);
     return OpStatus::ok();
 }
 
@@ -209,8 +215,7 @@ OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink) {
         mesh.set_halfedge(q(i), k(i));
     }
     mesh.set_halfedge(f, k(0));
-    // The corners' places and what they carry: the one code an interactive extrude reruns.
-    extrude_positions(mesh, base, height, shrink);
+    place_corners(mesh, base, height, shrink);  // checked above, by is_extrude_ok()
     return f;
 }
 
