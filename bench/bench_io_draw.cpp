@@ -50,12 +50,12 @@
 #include "meshedit/core/face_bvh.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/io/io.h"
-#include "meshedit/render/camera.h"
-#include "meshedit/render/cpu_pick.h"
+#include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/cpu_pick.h"
+#include "meshedit/overlay/shading.h"
 #include "meshedit/render/mesh_renderer.h"
 #include "meshedit/render/overlay_renderer.h"
 #include "meshedit/render/render_target.h"
-#include "meshedit/render/shading.h"
 
 namespace {
 

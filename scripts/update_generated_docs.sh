@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Rewrites the generated blocks of the documents (the README's keys table, docs/cli.md's table
-# of --ops verbs) from what the code generates now, by running the tests that check them and
-# pasting what they print. Usage: scripts/update_generated_docs.sh [BUILD_DIR]
+# of --ops verbs and of formats, docs/architecture.md's layer table) from what the code generates now, by
+# running the tests that check them and pasting what they print.
+# Usage: scripts/update_generated_docs.sh [BUILD_DIR]
 set -euo pipefail
 build=${1:-build}
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -25,3 +26,6 @@ PY
 }
 update "$root/README.md" keys "$build/tests/viewer/viewer_tests" 'Bindings.ReadmeKeysTableIsGenerated'
 update "$root/docs/cli.md" ops "$build/tests/ops_tests" 'OpsLanguage.DocsTableIsGenerated'
+update "$root/docs/cli.md" formats "$build/tests/formats_tests" 'FormatTable.DocsTableIsGenerated'
+cmake -DROOT="$root" -DLAYERS="$build/layers.cmake" -DWRITE_DOCS=ON -P "$root/tests/check_layers.cmake" |
+    sed -n 's/^-- updated /updated /p'

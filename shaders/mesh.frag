@@ -1,5 +1,5 @@
 #version 330 core
-// Shading modes 0-9 (include/meshedit/render/shading.h is the table) and the wireframe.
+// Shading modes 0-9 (include/meshedit/overlay/shading.h is the table) and the wireframe.
 // Lights are fixed in view space, so every camera angle is lit the same way.
 //
 // MeshRenderer compiles one variant per mode and wireframe switch (MESHEDIT_MODE,
@@ -32,7 +32,7 @@ uniform float u_wire_width;   // pixels
 uniform vec4 u_wire_color;
 uniform vec2 u_depth_range;   // view-space distance of the nearest and farthest scene point
 // Blinn-Phong (mode 1): the viewer's shading panel edits these; the defaults in
-// include/meshedit/render/shading.h reproduce the fixed look of the golden images.
+// include/meshedit/overlay/shading.h reproduce the fixed look of the golden images.
 uniform float u_ambient;      // scales the sky-to-ground ambient term
 uniform float u_diffuse;
 uniform float u_specular;

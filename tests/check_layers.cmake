@@ -1,133 +1,219 @@
-# The layer table: which headers each part of the code may include. Run by ctest
-# (layers_include_only_what_they_may, label core); fails naming every offending file and
-# include. docs/architecture.md draws the same table as a picture.
+# The layer test (ctest layers_include_only_what_they_may, label core), driven by the CMake
+# targets themselves: <build>/layers.cmake (cmake/layers.cmake) lists, for every target of
+# src/ and tools/, the files its source list names, the project targets it links and the
+# other headers it declares (meshedit_other_headers). A file may include
+#   - a project file owned by its own target or by a target it links, directly or not: the
+#     link graph is the layer table (the core's floors link only the floor below, the
+#     GL-free libraries link no GL library);
+#   - the standard library, and the other headers its target declares.
+# Every file under src/, include/ and tools/ must be named by exactly one target. No folder
+# under src/ may hold more than a fifth of the lines of src/ and include/.
 #
-# A rule is: a name; a regex matched against the file's path below the repository root (the
-# first rule that matches a file is its layer); the project headers it may include, as a regex
-# on the path after "meshedit/"; and the other headers it may include, as a regex on the text
-# between < and >. Standard headers (no '/' and no '.') are always allowed, and so are private
-# headers beside the file ("name.h", no '/').
-cmake_policy(SET CMP0007 NEW)
-set(std_posix "fcntl\\.h|unistd\\.h|signal\\.h|sys/(stat|mman|types)\\.h")
-set(gl "GL/glcorearb\\.h|glm/.*")
-set(rules
-    # name | files | project headers | other headers
-    "core|^(include/meshedit|src)/core/|^core/|^sys/mman\\.h$"
-    "bezier|^(include/meshedit|src)/bezier/|^(core|bezier)/|^$"
-    "files|^(include/meshedit|src)/files/|^(core|files)/|^(${std_posix})$"
-    "io|^(include/meshedit|src)/io/|^(core|bezier|files|io)/|^(${std_posix}|pugixml\\.hpp|tiny_gltf\\.h|meshoptimizer\\.h|nlohmann/json\\.hpp)$"
-    "ops|^(include/meshedit|src)/ops/|^(core|ops)/|^$"
-    "render, GL-free part (overlay geometry, camera, CPU picking)|^(include/meshedit/render/(overlay|camera|shading|op_diagram|colormap|cpu_pick)\\.h|src/render/(overlay|camera|scene_marks|stencil_marks|op_diagram|op_diagram_names|op_diagram_change|colormap|shading|cpu_pick)\\.cpp)$|^(core|bezier)/|render/(overlay|camera|shading|op_diagram|colormap|cpu_pick)\\.h$|^glm/.*$"
-    "render|^(include/meshedit|src)/render/|^(core|bezier|files|render)/|^(${gl}|OpenImageIO/(imageio|imagebuf|imagebufalgo)\\.h|unistd\\.h)$"
-    "viewer logic (no GL, no window)|^(include/meshedit/viewer/|src/viewer/(bindings|history|transaction|editor|editor_[a-z]+|element_info|paths)\\.cpp$)|^(core|bezier|files|io|ops|viewer)/|render/(overlay|camera|shading|op_diagram|colormap)\\.h$|^$"
-    "viewer window|^src/viewer/|^(core|bezier|files|io|ops|render|viewer)/|^(${gl}|GLFW/glfw3\\.h|imgui\\.h|imgui_stdlib\\.h|backends/imgui_impl_(glfw|opengl3)\\.h)$"
-    "command line style (and the exit-status ladder)|^src/command_line/|^(core|files|ops)/|^CLI/CLI\\.hpp$"
-    "cli (meshedit)|^src/cli/|^(core|bezier|files|io|ops)/|^(CLI/CLI\\.hpp|nlohmann/json\\.hpp|unistd\\.h)$"
-    "headless (meshedit-render)|^src/headless/|^(core|bezier|files|io|ops|render)/|^(CLI/CLI\\.hpp|GL/osmesa\\.h|GL/glcorearb\\.h|EGL/egl(ext)?\\.h|dlfcn\\.h)$"
-    "tools|^tools/|^(core|bezier|files|io|ops)/|^$"
-    "python (the meshedit module)|^src/python/|^(core|bezier|files|io|ops)/|^pybind11/.*$"
-)
-
-# The floors of src/core, lowest first (src/core/CMakeLists.txt).
-set(core_floors mesh local_ops algorithms teaching)
+#   cmake -DROOT=<repo> -DLAYERS=<build>/layers.cmake [-DMOVE=target=file] -P check_layers.cmake
+#   cmake -DROOT=<repo> -DLAYERS=<build>/layers.cmake -DWRITE_DOCS=ON -P check_layers.cmake
+# MOVE moves one file into another target's list first (the test that shows a GL file listed
+# in the GL-free library fails). WRITE_DOCS rewrites docs/architecture.md's layer table, which
+# the check otherwise compares with what it would write.
+cmake_minimum_required(VERSION 3.20)  # IN_LIST, list(POP_FRONT)
+include(${LAYERS})
 set(bad "")
-set(unassigned "")
-file(GLOB_RECURSE sources RELATIVE ${ROOT}
-    ${ROOT}/include/*.h ${ROOT}/src/*.h ${ROOT}/src/*.cpp ${ROOT}/tools/*.cpp)
-foreach(file ${sources})
-    set(layer "")
-    foreach(rule ${rules})
-        string(REPLACE "|^" ";^" parts "${rule}")
-        # parts: name;files;project;other (the regexes start with ^, the name does not)
-        list(GET parts 0 name)
-        list(GET parts 1 files)
-        if(file MATCHES "${files}")
-            set(layer "${name}")
-            list(GET parts 2 project)
-            list(GET parts 3 other)
-            break()
-        endif()
+
+# Owners.
+foreach(key ${layer_targets})
+    foreach(file ${${key}_files})
+        string(MAKE_C_IDENTIFIER "${file}" id)
+        set(owner_${id} ${key})
     endforeach()
-    if(layer STREQUAL "")
-        list(APPEND unassigned "${file}")
-        continue()
-    endif()
-    file(STRINGS ${ROOT}/${file} lines REGEX "^[ \t]*#[ \t]*include")
-    foreach(line ${lines})
-        if(line MATCHES "#[ \t]*include[ \t]*\"([^\"]+)\"")
-            set(header "${CMAKE_MATCH_1}")
-            if(NOT header MATCHES "/")
-                continue()  # a private header beside the file
-            endif()
-            if(file MATCHES "^src/core/([a-z_]+)/" AND header MATCHES "^([a-z_]+)/[a-z_]+\\.h$")
-                # The core's floors: a private header of the same floor or one below.
-                string(REGEX MATCH "^src/core/([a-z_]+)/" _ "${file}")
-                set(from "${CMAKE_MATCH_1}")
-                string(REGEX MATCH "^([a-z_]+)/" _ "${header}")
-                set(to "${CMAKE_MATCH_1}")
-                list(FIND core_floors "${from}" from_floor)
-                list(FIND core_floors "${to}" to_floor)
-                if(from_floor LESS 0 OR to_floor LESS 0 OR to_floor GREATER from_floor OR
-                   NOT EXISTS "${ROOT}/src/core/${header}")
-                    list(APPEND bad "${file}: ${line}  (the core's floor ${from} may include private headers of its own floor or those below: ${core_floors})")
-                endif()
-                continue()
-            endif()
-            if(header MATCHES "^meshedit/(.*)$")
-                set(inside "${CMAKE_MATCH_1}")
-                if(NOT inside MATCHES "${project}")
-                    list(APPEND bad "${file}: ${line}  (the ${layer} layer may not include meshedit/${inside})")
-                endif()
-            else()
-                list(APPEND bad "${file}: ${line}  (project headers are included as \"meshedit/...\")")
-            endif()
-        elseif(line MATCHES "#[ \t]*include[ \t]*<([^>]+)>")
-            set(header "${CMAKE_MATCH_1}")
-            if(header MATCHES "^[a-z_0-9]+$")
-                continue()  # the standard library
-            endif()
-            if(NOT header MATCHES "${other}")
-                list(APPEND bad "${file}: ${line}  (the ${layer} layer may not include <${header}>)")
-            endif()
+endforeach()
+if(MOVE)
+    string(REGEX MATCH "^([^=]+)=(.+)$" _ "${MOVE}")
+    string(REPLACE "-" "_dash_" to "${CMAKE_MATCH_1}")
+    string(MAKE_C_IDENTIFIER "${to}" to)
+    set(file "${CMAKE_MATCH_2}")
+    string(MAKE_C_IDENTIFIER "${file}" id)
+    list(REMOVE_ITEM ${owner_${id}}_files "${file}")
+    list(APPEND ${to}_files "${file}")
+    set(owner_${id} ${to})
+endif()
+foreach(key ${layer_targets})
+    foreach(file ${${key}_files})
+        string(MAKE_C_IDENTIFIER "${file}" id)
+        if(NOT owner_${id} STREQUAL key)
+            list(APPEND bad "${file} is listed by both ${${key}_name} and ${${owner_${id}}_name}")
         endif()
     endforeach()
 endforeach()
 
-# Folders that say what they hold: none under src/ holds more than a fifth of the code of
-# src/ and include/ (the core was one flat folder of 27% before its floors).
+# What each target may reach: itself and everything it links, transitively.
+foreach(key ${layer_targets})
+    set(reach_${key} ${key})
+    set(todo ${${key}_uses})
+    while(todo)
+        list(POP_FRONT todo name)
+        string(REPLACE "-" "_dash_" used "${name}")
+        string(MAKE_C_IDENTIFIER "${used}" used)
+        if(NOT used IN_LIST reach_${key})
+            list(APPEND reach_${key} ${used})
+            list(APPEND todo ${${used}_uses})
+        endif()
+    endwhile()
+    # Other headers as one regular expression: "glm/*" matches a folder.
+    set(pattern "")
+    foreach(header ${${key}_other})
+        string(REGEX REPLACE "([.+?^$()])" "\\\\\\1" header "${header}")
+        string(REPLACE "*" ".*" header "${header}")
+        list(APPEND pattern "${header}")
+    endforeach()
+    list(JOIN pattern "|" pattern)
+    set(other_${key} "^(${pattern})$")
+endforeach()
+
+function(check_include key file line header quoted)
+    set(who "${file} (${${key}_name})")
+    if(NOT quoted)
+        if(header MATCHES "^[a-z_0-9]+$" OR header MATCHES "${other_${key}}")
+            return()  # the standard library, or a header the target declares
+        endif()
+        set(bad ${bad} "${who}: ${line}  (not among the other headers ${${key}_name} declares: ${${key}_other})" PARENT_SCOPE)
+        return()
+    endif()
+    get_filename_component(dir "${file}" DIRECTORY)
+    if(header MATCHES "^meshedit/")
+        set(path "include/${header}")
+    elseif(header MATCHES "/")
+        set(path "src/${header}")  # a core floor's private header: "mesh/parallel.h"
+    else()
+        set(path "${dir}/${header}")  # beside the file, or in a folder a target it links exports
+        if(NOT EXISTS "${ROOT}/${path}")
+            foreach(used ${reach_${key}})
+                foreach(owned ${${used}_files})
+                    if(owned MATCHES "/${header}$")
+                        set(path "${owned}")
+                    endif()
+                endforeach()
+            endforeach()
+        endif()
+    endif()
+    if(NOT EXISTS "${ROOT}/${path}")
+        if(NOT header MATCHES "${other_${key}}")
+            set(bad ${bad} "${who}: ${line}  (no file ${path}, and a generated file goes among the target's other headers)" PARENT_SCOPE)
+        endif()
+        return()
+    endif()
+    string(MAKE_C_IDENTIFIER "${path}" id)
+    set(owner "${owner_${id}}")
+    if(owner STREQUAL "")
+        return()  # reported once, as a file no target names
+    endif()
+    if(NOT owner IN_LIST reach_${key})
+        set(bad ${bad} "${who}: ${line}  (${path} belongs to ${${owner}_name}, which ${${key}_name} does not link)" PARENT_SCOPE)
+    endif()
+endfunction()
+
+foreach(key ${layer_targets})
+    foreach(file ${${key}_files})
+        file(STRINGS ${ROOT}/${file} lines REGEX "^[ \t]*#[ \t]*include")
+        foreach(line ${lines})
+            if(line MATCHES "#[ \t]*include[ \t]*\"([^\"]+)\"")
+                check_include(${key} "${file}" "${line}" "${CMAKE_MATCH_1}" ON)
+            elseif(line MATCHES "#[ \t]*include[ \t]*<([^>]+)>")
+                check_include(${key} "${file}" "${line}" "${CMAKE_MATCH_1}" OFF)
+            endif()
+        endforeach()
+    endforeach()
+endforeach()
+
+# Every file has a target; no folder under src/ holds more than a fifth of the code.
+file(GLOB_RECURSE sources RELATIVE ${ROOT}
+    ${ROOT}/include/*.h ${ROOT}/src/*.h ${ROOT}/src/*.cpp ${ROOT}/tools/*.cpp)
 set(total 0)
 set(folders "")
 foreach(file ${sources})
+    string(MAKE_C_IDENTIFIER "${file}" id)
+    if(NOT DEFINED owner_${id})
+        list(APPEND bad "${file} is named by no target's source list (add it to its CMakeLists.txt)")
+    endif()
     if(file MATCHES "^tools/")
         continue()
     endif()
     file(STRINGS ${ROOT}/${file} all_lines)
     list(LENGTH all_lines n)
     math(EXPR total "${total} + ${n}")
-    if(file MATCHES "^(src/.*)/[^/]+$")
-        string(MAKE_C_IDENTIFIER "${CMAKE_MATCH_1}" key)
-        if(NOT DEFINED lines_${key})
-            set(lines_${key} 0)
-            list(APPEND folders "${CMAKE_MATCH_1}")
+    if(file MATCHES "^src/([^/]+)/")
+        set(folder "${CMAKE_MATCH_1}")
+        if(NOT DEFINED lines_${folder})
+            set(lines_${folder} 0)
+            list(APPEND folders "${folder}")
         endif()
-        math(EXPR lines_${key} "${lines_${key}} + ${n}")
+        math(EXPR lines_${folder} "${lines_${folder}} + ${n}")
     endif()
 endforeach()
 foreach(folder ${folders})
-    string(MAKE_C_IDENTIFIER "${folder}" key)
-    math(EXPR share "100 * ${lines_${key}} / ${total}")
+    math(EXPR share "100 * ${lines_${folder}} / ${total}")
     if(share GREATER 20)
-        list(APPEND bad "${folder}: ${lines_${key}} of ${total} lines (${share}%), more than a fifth: split it into folders that say what they hold")
+        list(APPEND bad "src/${folder}: ${lines_${folder}} of ${total} lines (${share}%), more than a fifth: split it into folders that say what they hold")
     endif()
 endforeach()
 
-if(unassigned)
-    list(JOIN unassigned "\n  " text)
-    message(FATAL_ERROR "files in no layer (add them to tests/check_layers.cmake):\n  ${text}")
+# The table docs/architecture.md shows, from the same lists: each target, its folders, the
+# project targets it links directly and its other headers.
+set(table "| target | files in | links | other headers |\n|---|---|---|---|\n")
+foreach(key ${layer_targets})
+    set(dirs "")
+    foreach(file ${${key}_files})
+        get_filename_component(dir "${file}" DIRECTORY)
+        list(APPEND dirs "`${dir}`")
+    endforeach()
+    list(REMOVE_DUPLICATES dirs)
+    list(JOIN dirs ", " dirs)
+    set(uses "")
+    foreach(name ${${key}_uses})
+        list(APPEND uses "`${name}`")
+    endforeach()
+    list(JOIN uses ", " uses)
+    set(other "")
+    foreach(header ${${key}_other})
+        list(APPEND other "`${header}`")
+    endforeach()
+    list(JOIN other ", " other)
+    foreach(cell dirs uses other)
+        if(${cell} STREQUAL "")
+            set(${cell} "—")
+        endif()
+    endforeach()
+    string(APPEND table "| `${${key}_name}` | ${dirs} | ${uses} | ${other} |\n")
+endforeach()
+set(doc "${ROOT}/docs/architecture.md")
+file(READ "${doc}" text)
+set(begin "<!-- layers:begin -->\n")
+set(end "<!-- layers:end -->")
+string(FIND "${text}" "${begin}" i)
+string(FIND "${text}" "${end}" j)
+if(MOVE)
+    # a test of the check itself: the table is not compared
+elseif(i LESS 0 OR j LESS i)
+    list(APPEND bad "docs/architecture.md has no layers:begin … layers:end block for the layer table")
+else()
+    string(LENGTH "${begin}" n)
+    math(EXPR i "${i} + ${n}")
+    math(EXPR count "${j} - ${i}")
+    string(SUBSTRING "${text}" ${i} ${count} current)
+    if(NOT current STREQUAL table)
+        if(WRITE_DOCS)
+            string(SUBSTRING "${text}" 0 ${i} head)
+            string(SUBSTRING "${text}" ${j} -1 tail)
+            file(WRITE "${doc}" "${head}${table}${tail}")
+            message(STATUS "updated docs/architecture.md")
+        else()
+            list(APPEND bad "docs/architecture.md's layer table differs from the targets (scripts/update_generated_docs.sh rewrites it)")
+        endif()
+    endif()
 endif()
+
 if(bad)
     list(JOIN bad "\n  " text)
-    message(FATAL_ERROR "includes that cross the layer table (tests/check_layers.cmake):\n  ${text}")
+    message(FATAL_ERROR "the layer table (the CMake targets' source and link lists) is broken:\n  ${text}")
 endif()
 list(LENGTH sources n)
-message(STATUS "${n} files include only what their layer may")
+list(LENGTH layer_targets t)
+message(STATUS "${n} files in ${t} targets include only what their targets link")

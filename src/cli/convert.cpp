@@ -133,10 +133,13 @@ Command add_convert(CLI::App& meshedit) {
             ->type_name("LIST");
     add_density_option(*app, s->density);
     app->add_flag("--ascii", s->ascii, "write PLY and STL as text rather than binary");
+    const std::string formats = mesh_extension_list(" ");
     app->footer(
-        "Reads IN (.dae .gltf .glb .obj .off .ply .stl, or a .bez tessellated at --density),\n"
-        "applies the --ops edits in order and writes OUT in the format of its extension (.dae\n"
-        ".gltf .glb .obj .off .ply .stl; PLY and STL binary unless --ascii).\n"
+        "Reads IN (" + formats +
+        ", or a .bez tessellated at --density),\n"
+        "applies the --ops edits in order and writes OUT in the format of its extension\n(" +
+        formats +
+        "; PLY and STL binary unless --ascii).\n"
         "A .bzc curve converts only to .bzc, and a .bez to .bez keeps its patches (both written\n"
         "as the CS184 course's skeleton reads them). OUT is written to a temporary file and\n"
         "renamed, so a failed run never leaves a partial OUT.\n"

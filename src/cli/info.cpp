@@ -325,9 +325,8 @@ Command add_info(CLI::App& meshedit) {
                   "of every scalar field (docs/fields.md)");
     add_density_option(*app, s->density);
     app->footer(
-        "Describes a mesh (.dae .gltf .glb .obj .off .ply .stl), a Bezier patch set (.bez) or a "
-        "Bezier "
-        "curve\n"
+        "Describes a mesh (" + mesh_extension_list(" ") +
+        "), a Bezier patch set (.bez) or a Bezier curve\n"
         "(.bzc). For a mesh: vertices, edges, faces, boundary loops, connected components,\n"
         "Euler characteristic, genus, manifold (the loader repaired nothing), crease edges,\n"
         "bounding box, unit, and what the loader repaired or noticed. A .bez is tessellated\n"

@@ -3,6 +3,7 @@
 #include "options.h"
 
 #include "meshedit/core/fields.h"
+#include "meshedit/io/io.h"
 
 #include <algorithm>
 #include <charconv>
@@ -16,7 +17,7 @@
 
 #include "command_line.h"
 #include "gl_context.h"
-#include "meshedit/render/shading.h"
+#include "meshedit/overlay/shading.h"
 
 namespace meshedit::headless {
 namespace {
@@ -82,15 +83,6 @@ std::string shading_table() {
     return table;
 }
 
-std::uint32_t parse_index(std::string_view text, std::size_t size, const std::string& spec) {
-    const auto index = parse_number<std::uint32_t>(text, "index in --select");
-    if (index >= size) {
-        throw UsageError("--select " + spec + ": index " + std::string(text) + " out of range (" +
-                         std::to_string(size) + ")");
-    }
-    return index;
-}
-
 // The values of the options that take text: checked after parsing, with the words the
 // program has always used.
 struct Raw {
@@ -148,11 +140,11 @@ int parse_options(int argc, char** argv, Options& o) {
         "meshedit-render");
     command_line::style(app);
     Raw raw;
-    app.add_option(
-           "FILE", o.input,
-           "a mesh (.dae .gltf .glb .obj .off .ply .stl: smooth shaded, boundary and crease edges "
-           "drawn), Bezier patches (.bez, tessellated) or a Bezier curve (.bzc, in the "
-           "[0,1]^2 square)")
+    app.add_option("FILE", o.input,
+                   "a mesh (" + meshedit::mesh_extension_list(" ") +
+                       ": smooth shaded, boundary and crease edges drawn), Bezier patches (.bez, "
+                       "tessellated) or a Bezier curve (.bzc, in the "
+                       "[0,1]^2 square)")
         ->required();
     app.add_option("-o,--output", o.output, "the image to write")->type_name("OUT.png")->required();
     app.add_option("--size", raw.size, "image size in pixels (default 512x384)")->type_name("WxH");

@@ -14,8 +14,8 @@
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/stencil.h"
-#include "meshedit/render/camera.h"
-#include "meshedit/render/colormap.h"
+#include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/colormap.h"
 
 namespace meshedit::headless {
 

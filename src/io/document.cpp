@@ -25,7 +25,8 @@ bool is_document_extension(const std::string& extension) {
 }
 
 const char* document_extensions() {
-    return ".dae, .gltf, .glb, .obj, .off, .ply, .stl, .bez or .bzc";
+    static const std::string text = mesh_extension_list(", ") + ", .bez or .bzc";
+    return text.c_str();
 }
 
 LoadedDocument read_document(const std::filesystem::path& path, const ReadOptions& options) {

@@ -1,9 +1,11 @@
-// The front door of meshedit_io: dispatch by extension to each format's reader and writer,
-// and read_mesh(). Nothing else: the helpers writers share are in io_util.cpp, file access in
-// meshedit_files, whole documents (meshes, patches, curves) in document.cpp.
+// The front door of meshedit_io: the table of formats, dispatch by extension through it to
+// each format's reader and writer, and read_mesh(). Nothing else: the helpers writers share are in
+// io_util.cpp, file access in meshedit_files, whole documents (meshes, patches, curves) in
+// document.cpp.
 
 #include "meshedit/io/io.h"
 
+#include <algorithm>
 #include <system_error>
 
 #include "io_util.h"
@@ -21,16 +23,78 @@ namespace fs = std::filesystem;
 
 namespace meshedit {
 
-// ----------------------------------------------------------------- reading
+// ----------------------------------------------------------------- the formats
+
+namespace {
+
+void write_off_ignoring_flags(const Mesh& mesh, const fs::path& path, const IoFlags&) {
+    write_off(mesh, path);  // OFF has no normals and no binary variant
+}
+
+// Each row: extension, name, reader, writer, then what the format keeps: polygons, every
+// double, creases, corner attributes (UVs, the file's normals, materials), PLY properties.
+constexpr MeshFormat kFormats[] = {
+    {".dae", "COLLADA", read_collada, write_collada, true, true, true, false, false},
+    {".gltf", "glTF", read_gltf, write_gltf, false, false, false, true, false},
+    {".glb", "glTF", read_gltf, write_gltf, false, false, false, true, false},
+    {".obj", "OBJ", read_obj, write_obj, true, true, false, true, false},
+    {".off", "OFF", read_off, write_off_ignoring_flags, true, true, false, false, false},
+    {".ply", "PLY", read_ply, write_ply, true, true, false, false, true},
+    {".stl", "STL", read_stl, write_stl, false, false, false, false, false},
+};
+
+// "OBJ and glTF": the names of the formats that keep what `keeps` asks, each once.
+std::string names_of_formats(bool MeshFormat::*keeps) {
+    std::vector<std::string> names;
+    for (const MeshFormat& format : kFormats) {
+        if (format.*keeps && std::find(names.begin(), names.end(), format.name) == names.end()) {
+            names.emplace_back(format.name);
+        }
+    }
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    }
+    return text;
+}
+
+}  // namespace
+
+std::span<const MeshFormat> mesh_formats() {
+    return kFormats;
+}
+
+const MeshFormat* find_mesh_format(const std::string& extension) {
+    for (const MeshFormat& format : kFormats) {
+        if (extension == format.extension) {
+            return &format;
+        }
+    }
+    return nullptr;
+}
 
 bool is_mesh_extension(const std::string& extension) {
-    return extension == ".dae" || extension == ".gltf" || extension == ".glb" ||
-           extension == ".obj" || extension == ".off" || extension == ".ply" || extension == ".stl";
+    return find_mesh_format(extension) != nullptr;
+}
+
+std::string mesh_extension_list(const std::string& separator) {
+    std::string text;
+    for (const MeshFormat& format : kFormats) {
+        text += (text.empty() ? "" : separator) + format.extension;
+    }
+    return text;
 }
 
 const char* mesh_extensions() {
-    return ".dae, .gltf, .glb, .obj, .off, .ply or .stl";
+    static const std::string text = [] {
+        std::string list = mesh_extension_list(", ");
+        const std::size_t last = list.rfind(", ");
+        return list.replace(last, 2, " or ");
+    }();
+    return text.c_str();
 }
+
+// ----------------------------------------------------------------- reading
 
 MeshSoup read_soup(const fs::path& path) {
     const std::string ext = file_extension(path);
@@ -45,12 +109,7 @@ MeshSoup read_soup(const fs::path& path) {
                           ? std::string("no file extension; expected ") + mesh_extensions()
                           : "unknown extension '" + ext + "'; expected " + mesh_extensions());
     }
-    MeshSoup soup = ext == ".dae"   ? read_collada(path)
-                    : ext == ".obj" ? read_obj(path)
-                    : ext == ".off" ? read_off(path)
-                    : ext == ".ply" ? read_ply(path)
-                    : ext == ".stl" ? read_stl(path)
-                                    : read_gltf(path);
+    MeshSoup soup = find_mesh_format(ext)->read(path);
     // One wording, whatever the format, for a file with nothing to load (an empty OBJ, a
     // text file named .obj, a glTF of lines only): never an empty mesh from a file.
     if (soup.soup.n_faces() == 0) {
@@ -103,73 +162,72 @@ LoadedMesh read_mesh(const fs::path& path) {
 
 std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& ext) {
     std::vector<std::string> unkept;
-    const bool obj = ext == ".obj";
-    const bool off = ext == ".off";
-    const bool gltf = ext == ".gltf" || ext == ".glb";
-    const bool ply = ext == ".ply";
-    const bool stl = ext == ".stl";
-    if (!ply) {
+    const MeshFormat* format = find_mesh_format(ext);
+    if (format == nullptr) {
+        return unkept;
+    }
+    const std::string name = format->name;
+    if (!format->ply_properties) {
         std::string names;
         for (const auto& [kind, list] : {std::pair{"v:ply:", mesh.property_names<Vertex>()},
                                          std::pair{"f:ply:", mesh.property_names<Face>()}}) {
-            for (const std::string& name : list) {
-                if (name.rfind(kind, 0) == 0) {
-                    names += (names.empty() ? "" : ", ") + name;
+            for (const std::string& property : list) {
+                if (property.rfind(kind, 0) == 0) {
+                    names += (names.empty() ? "" : ", ") + property;
                 }
             }
         }
         if (!names.empty()) {
-            unkept.push_back("the PLY properties " + names + " (only PLY keeps them)");
+            unkept.push_back("the PLY properties " + names + " (only " +
+                             names_of_formats(&MeshFormat::ply_properties) + " keeps them)");
         }
     }
-    if (!obj && !gltf) {
-        // OBJ and glTF write the attributes of the attributes issue so far.
-        const std::string format = ext == ".dae" ? "COLLADA" : ext.substr(1);
+    if (!format->corner_attributes) {
+        const std::string writers = names_of_formats(&MeshFormat::corner_attributes);
         if (mesh.has_property<Halfedge>(kTexCoordProperty)) {
-            unkept.push_back(
-                "texture coordinates (MeshEdit writes them to OBJ and glTF only so "
-                "far)");
+            unkept.push_back("texture coordinates (MeshEdit writes them to " + writers +
+                             " only so far)");
         }
         if (mesh.has_property<Halfedge>(kCornerNormalProperty)) {
-            unkept.push_back("the file's normals (the " + format +
+            unkept.push_back("the file's normals (the " + name +
                              " file gets normals computed from the faces, if any)");
         }
         const auto material = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
         if (material && !mesh.materials().empty()) {
             unkept.push_back(std::to_string(mesh.materials().size()) +
-                             " material(s) and which faces use them (MeshEdit writes them to "
-                             "OBJ and glTF only so far)");
+                             " material(s) and which faces use them (MeshEdit writes them to " +
+                             writers + " only so far)");
         }
     }
-    if (!obj && !off && !gltf && !ply && !stl) {
-        return unkept;  // COLLADA keeps polygons, creases and every double
-    }
-    std::size_t creases = 0;
-    if (const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
-        for (const Edge e : mesh.edges()) {
-            creases += crease[e] != 0 ? 1 : 0;
+    if (!format->creases) {
+        std::size_t creases = 0;
+        if (const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+            for (const Edge e : mesh.edges()) {
+                creases += crease[e] != 0 ? 1 : 0;
+            }
+        }
+        if (creases > 0) {
+            unkept.push_back(std::to_string(creases) + " crease mark" + (creases == 1 ? "" : "s") +
+                             " (" + name + " has no crease edges)");
         }
     }
-    const std::string format = obj ? "OBJ" : off ? "OFF" : ply ? "PLY" : stl ? "STL" : "glTF";
-    if (creases > 0) {
-        unkept.push_back(std::to_string(creases) + " crease mark" + (creases == 1 ? "" : "s") +
-                         " (" + format + " has no crease edges)");
-    }
-    if (gltf || stl) {
+    if (!format->polygons) {
         std::size_t polygons = 0;
         for (const Face f : mesh.faces()) {
             polygons += mesh.is_triangle(f) ? 0 : 1;
         }
         if (polygons > 0) {
             unkept.push_back(std::to_string(polygons) + " polygon" + (polygons == 1 ? "" : "s") +
-                             " (" + format + " stores triangles: each is fanned)");
+                             " (" + name + " stores triangles: each is fanned)");
         }
+    }
+    if (!format->doubles) {
         for (const Vertex v : mesh.vertices()) {
             const Vec3& p = mesh.position(v);
             if (static_cast<double>(static_cast<float>(p.x)) != p.x ||
                 static_cast<double>(static_cast<float>(p.y)) != p.y ||
                 static_cast<double>(static_cast<float>(p.z)) != p.z) {
-                unkept.push_back("coordinates beyond 32-bit float precision (" + format +
+                unkept.push_back("coordinates beyond 32-bit float precision (" + name +
                                  " stores floats)");
                 break;
             }
@@ -180,26 +238,16 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
 
 std::vector<std::string> write_mesh(const Mesh& mesh, const fs::path& path, const IoFlags& flags) {
     const std::string ext = file_extension(path);
-    std::optional<Mesh> storage;
-    const Mesh& dense = io_util::compacted(mesh, storage);
-    if (ext == ".dae") {
-        write_collada(dense, path, flags);
-    } else if (ext == ".gltf" || ext == ".glb") {
-        write_gltf(dense, path, flags);
-    } else if (ext == ".obj") {
-        write_obj(dense, path, flags);
-    } else if (ext == ".off") {
-        write_off(dense, path);
-    } else if (ext == ".ply") {
-        write_ply(dense, path, flags);
-    } else if (ext == ".stl") {
-        write_stl(dense, path, flags);
-    } else {
+    const MeshFormat* format = find_mesh_format(ext);
+    if (format == nullptr) {
         throw IoError(path.string(), "",
                       ext.empty()
                           ? std::string("no file extension; expected ") + mesh_extensions()
                           : "cannot write '" + ext + "' files; expected " + mesh_extensions());
     }
+    std::optional<Mesh> storage;
+    const Mesh& dense = io_util::compacted(mesh, storage);
+    format->write(dense, path, flags);
     return unkept_by_format(dense, ext);
 }
 

@@ -1,6 +1,7 @@
 // The table of verbs: each row names a core operation and says how it is written, checked,
 // run and described. The functions here only translate between a step and the core's API;
-// the operations themselves, with their predicates and diagrams, are in src/core.
+// the operations themselves, with their predicates and diagrams, are in src/local_ops
+// and src/algorithms.
 
 #include <algorithm>
 #include <array>

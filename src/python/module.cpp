@@ -422,7 +422,7 @@ PYBIND11_MODULE(_meshedit, m) {
         });
 
     m.def("read", &read_path, py::arg("path"), py::arg("density") = 8,
-          "Reads a mesh file (.dae .gltf .glb .obj .off .ply .stl).");
+          ("Reads a mesh file (" + meshedit::mesh_extension_list(" ") + ").").c_str());
     m.def("verbs", &verb_table, "The edit language's verb table.");
     m.def("field_names", [] {
         std::vector<std::string> names;

@@ -3,7 +3,7 @@
 
 #include "meshedit/render/shader_program.h"
 #include "meshedit/files/files.h"
-#include "meshedit/render/shader_log.h"
+#include "meshedit/overlay/shader_log.h"
 
 #include <unistd.h>
 

@@ -16,9 +16,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "meshedit/files/io_error.h"
+#include "meshedit/overlay/overlay.h"
 #include "meshedit/render/image.h"
 #include "meshedit/render/labels.h"
-#include "meshedit/render/overlay.h"
 #include "meshedit/render/user_shaders.h"
 #include "meshedit/viewer/paths.h"
 

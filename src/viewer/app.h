@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "meshedit/core/face_bvh.h"
-#include "meshedit/render/camera.h"
+#include "meshedit/overlay/camera.h"
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/scene.h"
 #include "meshedit/viewer/editor.h"

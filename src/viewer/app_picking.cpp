@@ -10,7 +10,7 @@
 #include <chrono>
 
 #include "app.h"
-#include "meshedit/render/cpu_pick.h"
+#include "meshedit/overlay/cpu_pick.h"
 
 namespace meshedit::viewer {
 

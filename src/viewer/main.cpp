@@ -9,6 +9,7 @@
 
 #include "app.h"
 #include "command_line.h"
+#include "meshedit/io/io.h"
 
 namespace {
 
@@ -29,11 +30,10 @@ bool parse_size(std::string_view text, int& width, int& height) {
 
 int main(int argc, char** argv) {
     meshedit::viewer::ViewerOptions options;
-    CLI::App app(
-        "Opens FILE (.dae .gltf .glb .obj .off .ply .stl mesh, .bez Bezier patches, .bzc Bezier "
-        "curve) in "
-        "the interactive editor. Press ? or F1 in the window for every key and mouse action.",
-        "meshedit [view]");
+    CLI::App app("Opens FILE (" + meshedit::mesh_extension_list(" ") +
+                     " mesh, .bez Bezier patches, .bzc Bezier curve) in the interactive editor. "
+                     "Press ? or F1 in the window for every key and mouse action.",
+                 "meshedit [view]");
     meshedit::command_line::style(app);
     std::string file;
     std::string size;

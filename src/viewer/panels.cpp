@@ -6,7 +6,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "meshedit/render/shading.h"
+#include "meshedit/io/io.h"
+#include "meshedit/overlay/shading.h"
 #include "meshedit/viewer/paths.h"
 
 namespace meshedit::viewer {
@@ -500,12 +501,13 @@ void Panels::draw_prompt(PanelRequests& requests) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(viewport->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::TextUnformatted(
-            prompt_ == Prompt::SaveAs
-                ? "File name (.dae .obj .off .ply .stl .gltf .glb for meshes, .bzc for curves):"
+        const std::string formats = mesh_extension_list(" ");
+        const std::string text =
+            prompt_ == Prompt::SaveAs ? "File name (" + formats + " for meshes, .bzc for curves):"
             : prompt_ == Prompt::ExportSession
                 ? "Session file (meshedit convert IN OUT --ops @FILE replays it):"
-                : "File to open (.dae .obj .off .ply .stl .gltf .glb .bez .bzc):");
+                : "File to open (" + formats + " .bez .bzc):";
+        ImGui::TextUnformatted(text.c_str());
         if (prompt_fresh_) {
             ImGui::SetKeyboardFocusHere();
             prompt_fresh_ = false;

@@ -14,8 +14,8 @@
 
 struct ImGuiInputTextCallbackData;
 
-#include "meshedit/render/camera.h"
-#include "meshedit/render/overlay.h"
+#include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/overlay.h"
 #include "meshedit/viewer/editor.h"
 
 namespace meshedit::viewer {

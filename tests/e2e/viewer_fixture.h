@@ -27,7 +27,7 @@
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/io/io.h"
-#include "meshedit/render/camera.h"
+#include "meshedit/overlay/camera.h"
 #include "session.h"
 #include "support/image_compare.h"
 #include "support/mesh_compare.h"

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "meshedit/render/shader_log.h"
+#include "meshedit/overlay/shader_log.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view log(reinterpret_cast<const char*>(data), size);

@@ -6,7 +6,7 @@
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh_change.h"
 #include "meshedit/core/shapes.h"
-#include "meshedit/render/op_diagram.h"
+#include "meshedit/overlay/op_diagram.h"
 
 namespace meshedit {
 namespace {

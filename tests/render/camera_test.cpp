@@ -1,6 +1,6 @@
 // When the renderer may cull back faces: only for closed, outward surfaces that the near plane
 // cannot cut open (the image would otherwise lose the inside it shows through the cut).
-#include "meshedit/render/camera.h"
+#include "meshedit/overlay/camera.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Colour maps and the default colouring of fields: the maps' ends and monotone lightness,
 // NaN shown as missing, signed fields symmetric about 0, valence centred on the regular one.
 
-#include "meshedit/render/colormap.h"
+#include "meshedit/overlay/colormap.h"
 
 #include <gtest/gtest.h>
 

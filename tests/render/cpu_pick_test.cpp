@@ -2,7 +2,7 @@
 // at 100 pixels per unit, where every radius and band lands at a known pixel. Its agreement
 // with the ID pass itself is pick_agreement_test.cpp's.
 
-#include "meshedit/render/cpu_pick.h"
+#include "meshedit/overlay/cpu_pick.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // flip_split.cpp and collapse.cpp show, its list of changes is exact, and both pictures are
 // embeddings (every face turns counter-clockwise, no two vertices meet).
 
-#include "meshedit/render/op_diagram.h"
+#include "meshedit/overlay/op_diagram.h"
 
 #include <gtest/gtest.h>
 

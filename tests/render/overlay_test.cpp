@@ -1,7 +1,7 @@
 // Overlay geometry (no GL): exact counts, positions and colours of the primitives that the
 // renderer will draw, checked against values worked out by hand.
 
-#include "meshedit/render/overlay.h"
+#include "meshedit/overlay/overlay.h"
 
 #include <gtest/gtest.h>
 

@@ -17,7 +17,7 @@
 #include "meshedit/core/face_bvh.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/io/io.h"
-#include "meshedit/render/cpu_pick.h"
+#include "meshedit/overlay/cpu_pick.h"
 #include "meshedit/render/mesh_renderer.h"
 #include "meshedit/render/render_target.h"
 #include "support/fixtures.h"

@@ -1,6 +1,6 @@
 // The shader compile log as one line: Mesa's locations rewritten, lines joined, long logs cut.
 
-#include "meshedit/render/shader_log.h"
+#include "meshedit/overlay/shader_log.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 /// it): each op either succeeds, or returns a refusal with a reason and leaves the mesh
 /// exactly as it was. Each has a pure predicate (`is_*_ok`) the UI can call to grey out a
 /// command; the op calls the same predicate first. Diagrams: docs/halfedge.md and above each
-/// op in src/core/local_ops/flip_split.cpp, collapse.cpp and triangulate.cpp.
+/// op in src/local_ops/flip_split.cpp, collapse.cpp and triangulate.cpp.
 
 #include <cstdint>
 #include <string_view>
@@ -127,7 +127,7 @@ OpResult<Face> triangulate(Mesh& mesh, Face f);
 std::size_t triangulate(Mesh& mesh);
 
 // ------------------------------------------- removing and filling
-// (src/core/local_ops/dissolve.cpp)
+// (src/local_ops/dissolve.cpp)
 
 /// \return ok if `f` is live and no corner of it would be on two holes once it is gone (a
 /// corner already on the boundary must have a side of `f` on that boundary).
@@ -161,7 +161,7 @@ OpStatus is_dissolve_vertex_ok(const Mesh& mesh, Vertex v);
 OpResult<Face> dissolve_vertex(Mesh& mesh, Vertex v);
 
 // ------------------------------------------------------------- welding
-// (src/core/local_ops/weld.cpp)
+// (src/local_ops/weld.cpp)
 
 /// \return ok if `e1` and `e2` are two live boundary edges of different faces whose weld
 /// would not make a face visit a vertex twice, nor an edge join a vertex to itself, nor two
@@ -173,7 +173,7 @@ OpStatus is_weld_ok(const Mesh& mesh, Edge e1, Edge e2);
 /// at a vertex are zipped there. \return `e1`.
 OpResult<Edge> weld(Mesh& mesh, Edge e1, Edge e2);
 
-// ------------------------------------------------------------ faces (src/core/local_ops/poke.cpp)
+// ------------------------------------------------------------ faces (src/local_ops/poke.cpp)
 
 /// \return ok if `f` is live.
 OpStatus is_poke_ok(const Mesh& mesh, Face f);
@@ -184,7 +184,7 @@ OpStatus is_poke_ok(const Mesh& mesh, Face f);
 OpResult<Vertex> poke(Mesh& mesh, Face f);
 
 // ------------------------------------------------ inset and extrude
-// (src/core/local_ops/extrude.cpp)
+// (src/local_ops/extrude.cpp)
 
 /// \return ok if `f` is live, the amounts are finite, `shrink` is below 1 and, for a height
 /// other than 0, `f` has an area (so a normal).
@@ -221,7 +221,7 @@ OpStatus is_extrude_positions_ok(const ExtrudeBase& base, double height, double 
 /// \pre extrude_face(base.f, …) ran just after `base` was taken, and nothing since but this.
 OpStatus extrude_positions(Mesh& mesh, const ExtrudeBase& base, double height, double shrink);
 
-// ------------------------------------------------------------ bevel (src/core/local_ops/bevel.cpp)
+// ------------------------------------------------------------ bevel (src/local_ops/bevel.cpp)
 
 /// \return ok if `v` is live with at least three edges and 0 <= t < 1.
 OpStatus is_bevel_vertex_ok(const Mesh& mesh, Vertex v, double t);
@@ -239,7 +239,7 @@ OpStatus is_bevel_edge_ok(const Mesh& mesh, Edge e, double t);
 OpResult<Face> bevel_edge(Mesh& mesh, Edge e, double t);
 
 // ----------------------------------------------------- orientation
-// (src/core/local_ops/orientation.cpp)
+// (src/local_ops/orientation.cpp)
 
 /// Reverses every face and boundary loop (Scotty3D's flip_orientation): each halfedge
 /// runs the other way, so outward becomes inward. Never refuses; creates and deletes

@@ -429,7 +429,7 @@ private:
     PropertyContainer fprops_;
 
     // Cached views of the connectivity properties (rebound after copy or move). Core
-    // algorithms reach the arrays through MeshArrays (src/core/mesh/mesh_arrays.h), never by name.
+    // algorithms reach the arrays through MeshArrays (src/mesh/mesh_arrays.h), never by name.
     friend struct MeshArrays;
     VertexProperty<Vec3> vpoint_;
     VertexProperty<Halfedge> vhalfedge_;

@@ -72,9 +72,9 @@ SubdivisionPlan plan_loop(const Mesh& mesh, int levels = 1);
 /// inside old faces are not creases.
 ///
 /// Properties follow the attribute carry (docs/halfedge.md, "What every operation carries";
-/// src/core/algorithms/refine_carry.h): a blending vertex property gets the positions' own
+/// src/algorithms/refine_carry.h): a blending vertex property gets the positions' own
 /// weights, edge halves and face parts copy their parent, corners interpolate linearly.
-/// The edge and face layout of the result is documented in src/core/algorithms/subdivision.cpp.
+/// The edge and face layout of the result is documented in src/algorithms/subdivision.cpp.
 /// \throws std::invalid_argument with the reason if is_loop_ok() refuses (nothing changed).
 /// \throws std::length_error if the result would not fit 32-bit indices (checked before
 ///         anything but the triangulation and collection above changes). If building the

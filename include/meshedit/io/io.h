@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -74,11 +75,33 @@ struct IoFlags {
     bool ascii = false;         ///< text rather than binary, for formats that have both (PLY, STL)
 };
 
-/// Formats by extension (lower-case, with dot): ".dae", ".gltf", ".glb", ".obj", ".off", ".ply",
-/// ".stl".
+/// One mesh format: its extension, reader and writer, and what it keeps. The one table of
+/// formats (mesh_formats()): reading and writing dispatch through it, unkept_by_format() reads
+/// what each keeps, and every list of extensions in a message or a help text comes from it.
+struct MeshFormat {
+    const char* extension;  ///< lower-case, with dot: ".obj"
+    const char* name;       ///< "OBJ", for messages
+    MeshSoup (*read)(const std::filesystem::path& path);
+    void (*write)(const Mesh& mesh, const std::filesystem::path& path, const IoFlags& flags);
+    bool polygons;           ///< polygons as they are (else each is fanned into triangles)
+    bool doubles;            ///< every double exactly (else 32-bit floats)
+    bool creases;            ///< crease marks (kCreaseProperty)
+    bool corner_attributes;  ///< texture coordinates, the file's normals, materials
+    bool ply_properties;     ///< the PLY properties MeshEdit has no meaning for (v:ply:*, f:ply:*)
+};
+
+/// Every mesh format, in the order messages list them (.dae, .gltf, .glb, .obj, .off, .ply,
+/// .stl).
+std::span<const MeshFormat> mesh_formats();
+/// The row of `extension` (lower-case, with dot), or nullptr.
+const MeshFormat* find_mesh_format(const std::string& extension);
+/// Formats by extension (lower-case, with dot): a row of mesh_formats().
 bool is_mesh_extension(const std::string& extension);
 /// ".dae, .gltf, .glb, .obj, .off, .ply or .stl", for messages.
 const char* mesh_extensions();
+/// The extensions joined as a help text wants them: mesh_extension_list(" ") is
+/// ".dae .gltf .glb .obj .off .ply .stl".
+std::string mesh_extension_list(const std::string& separator);
 
 /// Reads a mesh file into a soup. \throws IoError (unknown extension, missing file, bad
 /// content), naming the file and the place.

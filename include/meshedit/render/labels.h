@@ -8,10 +8,10 @@
 #include <span>
 #include <string>
 
-#include "meshedit/render/camera.h"
-#include "meshedit/render/colormap.h"
+#include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/colormap.h"
+#include "meshedit/overlay/overlay.h"
 #include "meshedit/render/image.h"
-#include "meshedit/render/overlay.h"
 
 namespace meshedit {
 

@@ -22,12 +22,12 @@
 
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
-#include "meshedit/render/camera.h"
-#include "meshedit/render/colormap.h"
+#include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/colormap.h"
+#include "meshedit/overlay/overlay.h"
+#include "meshedit/overlay/shading.h"
 #include "meshedit/render/environment.h"
-#include "meshedit/render/overlay.h"
 #include "meshedit/render/shader_program.h"
-#include "meshedit/render/shading.h"
 
 namespace meshedit {
 

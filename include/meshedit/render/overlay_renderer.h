@@ -13,8 +13,8 @@
 #include <memory>
 #include <vector>
 
-#include "meshedit/render/camera.h"
-#include "meshedit/render/overlay.h"
+#include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/overlay.h"
 #include "meshedit/render/shader_program.h"
 
 namespace meshedit {

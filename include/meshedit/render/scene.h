@@ -7,9 +7,9 @@
 /// drawing path, several contexts.)
 
 #include "meshedit/core/mesh.h"
-#include "meshedit/render/camera.h"
+#include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/overlay.h"
 #include "meshedit/render/mesh_renderer.h"
-#include "meshedit/render/overlay.h"
 #include "meshedit/render/overlay_renderer.h"
 
 namespace meshedit {

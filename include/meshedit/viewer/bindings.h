@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "meshedit/render/overlay.h"
+#include "meshedit/overlay/overlay.h"
 #include "meshedit/viewer/document.h"
 #include "meshedit/viewer/keys.h"
 

@@ -1,6 +1,6 @@
 // A GLSL compiler's log as one readable line (shader_log.h): one pass, no regex.
 
-#include "meshedit/render/shader_log.h"
+#include "meshedit/overlay/shader_log.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // The rewiring diagram (op_diagram.h): which faces to show, where to put their vertices
 // in the plane, what changed, and the picture. GL-free.
 
-#include "meshedit/render/op_diagram.h"
+#include "meshedit/overlay/op_diagram.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "meshedit/render/op_diagram.h"
+#include "meshedit/overlay/op_diagram.h"
 
 namespace meshedit {
 namespace {

@@ -1,6 +1,6 @@
 // Shading-mode lookup (shading.h).
 
-#include "meshedit/render/shading.h"
+#include "meshedit/overlay/shading.h"
 
 #include <charconv>
 

@@ -1,4 +1,4 @@
-#include "meshedit/render/overlay.h"
+#include "meshedit/overlay/overlay.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,6 +1,6 @@
 // Orbit camera (camera.h).
 
-#include "meshedit/render/camera.h"
+#include "meshedit/overlay/camera.h"
 
 #include <algorithm>
 #include <array>

@@ -21,7 +21,7 @@
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/mesh_change.h"
-#include "meshedit/render/overlay.h"
+#include "meshedit/overlay/overlay.h"
 
 namespace meshedit {
 

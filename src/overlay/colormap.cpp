@@ -1,4 +1,4 @@
-#include "meshedit/render/colormap.h"
+#include "meshedit/overlay/colormap.h"
 
 #include <algorithm>
 #include <array>

@@ -1,11 +1,11 @@
-// The names flip(), split() and collapse() give their elements (src/core/local_ops/flip_split.cpp,
-// src/core/local_ops/collapse.cpp: the ASCII diagrams above the code), derived here the way that
+// The names flip(), split() and collapse() give their elements (src/local_ops/flip_split.cpp,
+// src/local_ops/collapse.cpp: the ASCII diagrams above the code), derived here the way that
 // code derives them, so the rewiring diagram (op_diagram.h) labels what a student reads there. A
 // test checks that each name lands on the element the diagram in the source shows.
 
 #include <algorithm>
 
-#include "meshedit/render/op_diagram.h"
+#include "meshedit/overlay/op_diagram.h"
 
 namespace meshedit::op_diagram_detail {
 namespace {

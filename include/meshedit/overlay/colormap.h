@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "meshedit/core/fields.h"
-#include "meshedit/render/overlay.h"
+#include "meshedit/overlay/overlay.h"
 
 namespace meshedit {
 

@@ -1,6 +1,6 @@
 // Picking on the CPU by pick.frag's rules (cpu_pick.h).
 
-#include "meshedit/render/cpu_pick.h"
+#include "meshedit/overlay/cpu_pick.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // add_scene_marks(): the overlay of a frame besides feature edges (overlay.h). GL-free.
 
-#include "meshedit/render/overlay.h"
+#include "meshedit/overlay/overlay.h"
 
 namespace meshedit {
 

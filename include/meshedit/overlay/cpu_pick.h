@@ -23,7 +23,7 @@
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/face_bvh.h"
 #include "meshedit/core/mesh.h"
-#include "meshedit/render/camera.h"
+#include "meshedit/overlay/camera.h"
 
 namespace meshedit {
 

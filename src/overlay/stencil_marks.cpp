@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "meshedit/render/overlay.h"
+#include "meshedit/overlay/overlay.h"
 
 namespace meshedit {
 
