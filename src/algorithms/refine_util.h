@@ -165,7 +165,7 @@ inline void write_prev_from_next(Mesh& mesh, unsigned threads, loop_rules::Progr
     });
 }
 
-/// Records level `level`'s counts in `plan` and refuses it (false, with plan.refusal) when
+/// Records level `level`'s counts in `plan` and refuses it (false, with plan.status) when
 /// they exceed 32-bit handles or the memory budget: `per_face` bytes per face, four times
 /// over (the level's own temporaries, an undo snapshot or a writer's copy, normals, file
 /// buffers).
@@ -176,11 +176,12 @@ inline bool plan_level(SubdivisionPlan& plan, int level, double v, double e, dou
     const std::string what = "cannot subdivide: level " + std::to_string(level) + " (" +
                              std::to_string(static_cast<unsigned long long>(f)) + " faces) ";
     if (2.0 * e >= static_cast<double>(kInvalidIndex) || v >= static_cast<double>(kInvalidIndex)) {
-        plan.refusal = what + "would exceed the 2^32 - 1 elements 32-bit handles can number";
+        plan.status = OpStatus::composed(
+            what + "would exceed the 2^32 - 1 elements 32-bit handles can number");
         return false;
     }
     if (const auto over = over_budget(plan.bytes)) {
-        plan.refusal = what + *over;
+        plan.status = OpStatus::composed(what + *over);
         return false;
     }
     return true;

@@ -327,9 +327,8 @@ private:
     RemeshReport report_;
 };
 
-}  // namespace
-
-std::string check_remesh(const Mesh& mesh, const RemeshOptions& options) {
+// check_remesh()'s reason as text (composed: it names lengths and counts).
+std::string why_not_remesh(const Mesh& mesh, const RemeshOptions& options) {
     if (std::string why = refuse_unless_triangles(mesh, "remesh", "remeshing"); !why.empty()) {
         return why;
     }
@@ -364,8 +363,14 @@ std::string check_remesh(const Mesh& mesh, const RemeshOptions& options) {
     return {};
 }
 
+}  // namespace
+
+OpStatus check_remesh(const Mesh& mesh, const RemeshOptions& options) {
+    return OpStatus::composed(why_not_remesh(mesh, options));
+}
+
 RemeshReport remesh(Mesh& mesh, const RemeshOptions& options) {
-    MESHEDIT_ASSERT(check_remesh(mesh, options).empty());
+    MESHEDIT_ASSERT(check_remesh(mesh, options));
     if (options.progress) {
         options.progress(0.0);
     }

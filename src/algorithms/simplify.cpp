@@ -360,9 +360,8 @@ private:
     SimplifyReport report_;
 };
 
-}  // namespace
-
-std::string check_simplify(const Mesh& mesh, const SimplifyOptions& options) {
+// check_simplify()'s reason as text (composed: it names counts).
+std::string why_not_simplify(const Mesh& mesh, const SimplifyOptions& options) {
     if (std::string why = refuse_unless_triangles(mesh, "simplify", "QEM"); !why.empty()) {
         return why;
     }
@@ -387,8 +386,14 @@ std::string check_simplify(const Mesh& mesh, const SimplifyOptions& options) {
     return {};
 }
 
+}  // namespace
+
+OpStatus check_simplify(const Mesh& mesh, const SimplifyOptions& options) {
+    return OpStatus::composed(why_not_simplify(mesh, options));
+}
+
 SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options) {
-    MESHEDIT_ASSERT(check_simplify(mesh, options).empty());
+    MESHEDIT_ASSERT(check_simplify(mesh, options));
     if (options.progress) {
         options.progress(0.0);
     }

@@ -328,8 +328,8 @@ OpStatus is_loop_ok(const Mesh& mesh) {
 
 SubdivisionPlan plan_loop(const Mesh& mesh, int levels) {
     SubdivisionPlan plan;
-    if (const OpStatus ok = is_loop_ok(mesh); !ok) {
-        plan.refusal = ok.reason();
+    plan.status = is_loop_ok(mesh);
+    if (!plan.ok()) {
         return plan;
     }
     // Triangulating a k-gon first makes k - 2 triangles and k - 3 new edges.

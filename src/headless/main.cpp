@@ -26,6 +26,7 @@
 #include "meshedit/io/document.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/display_data.h"
 #include "meshedit/overlay/op_diagram.h"
 #include "meshedit/overlay/overlay.h"
 #include "meshedit/overlay/shading.h"
@@ -133,7 +134,6 @@ int run(const Options& options) {
     const BezierCurve& curve = doc.curve;
     const std::vector<BezierPatch>& patches = doc.patches;
     OverlayBatch overlay;
-    const OverlayStyle style;
     SceneContent scene;
     std::optional<OpDiagram> diagram;
     if (is_curve) {
@@ -157,10 +157,6 @@ int run(const Options& options) {
         } else if (options.op_diagram) {
             throw UsageError("--op-diagram draws the last step of --ops: give --ops");
         }
-        if (options.features.value_or(!is_surface)) {
-            add_feature_edges(mesh, style, overlay);
-        }
-        add_loop_phase_marks(mesh, style, overlay);
         scene.mesh = &mesh;
         scene.patches = patches;
         scene.show_nets = options.net && is_surface;
@@ -178,32 +174,32 @@ int run(const Options& options) {
             }
             if (const Stencil s = subdivision_stencil(mesh, scene.selected, *options.stencil);
                 !s.ok()) {
-                throw UsageError("--stencil: " + s.refusal);
+                throw UsageError("--stencil: " + s.status.text());
             }
             scene.stencil = options.stencil;
         }
     }
-    // --field: the values and their colouring.
+    // What is drawn besides the mesh, derived as the window derives it: the features (for a
+    // mesh, not a surface's tessellation unless --features), the scene's marks, the field.
+    DisplayData display;
     const FieldInfo* field = options.field.empty() ? nullptr : find_field(options.field);
-    std::vector<double> field_values;
-    FieldColoring coloring;
     if (field != nullptr) {
         if (is_curve || diagram) {
             throw UsageError("--field colours a mesh: not a curve or an --op-diagram");
         }
-        FieldOptions field_options;
-        field_options.source = Vertex(options.field_source);
-        if (options.field_source >= mesh.vertices_size() || mesh.is_deleted(field_options.source)) {
+        if (options.field_source >= mesh.vertices_size() ||
+            mesh.is_deleted(Vertex(options.field_source))) {
             throw UsageError("--field-source v" + std::to_string(options.field_source) +
                              ": no such vertex");
         }
-        field_values = compute_field(mesh, *field, field_options);
-        coloring = default_coloring(*field, field_values);
-        if (options.colormap) {
-            coloring.map = *options.colormap;
-        }
     }
-    add_scene_marks(scene, style, overlay);
+    FieldRequest wanted;
+    wanted.info = field;
+    wanted.source = Vertex(options.field_source);
+    wanted.colormap = options.colormap;
+    const FieldDisplay& shown = display.field(mesh, wanted);
+    overlay =
+        display.overlay(scene, !is_curve && options.features.value_or(!is_surface), !is_curve);
     if (diagram) {
         overlay = diagram->picture;
         scene.mesh = nullptr;
@@ -274,7 +270,7 @@ int run(const Options& options) {
     }
     renderer.upload(is_curve || diagram ? nullptr : &mesh);
     if (field != nullptr) {
-        renderer.mesh().set_field(field->site, field_values, coloring);
+        renderer.mesh().set_field(field->site, shown.values, shown.coloring);
     }
     renderer.overlay().upload(overlay);
     context->finish();
@@ -291,7 +287,7 @@ int run(const Options& options) {
     lap("readback");
     draw_labels(image, overlay.labels, camera, diagram ? diagram_font_px(w) : 0);
     if (field != nullptr) {
-        draw_legend(image, coloring,
+        draw_legend(image, shown.coloring,
                     std::string(field->title) +
                         (field->unit.empty() ? "" : " (" + std::string(field->unit) + ")"));
     }

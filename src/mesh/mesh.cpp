@@ -91,6 +91,46 @@ void Mesh::derive(H to, const std::uint32_t* from, const double* weight, std::si
 }
 
 template <class H>
+std::vector<std::byte> Mesh::attribute_values(H h) const {
+    const PropertyContainer& c = container<H>();
+    std::size_t bytes = 0;
+    for (std::size_t a = kFirstAttribute[kind_of<H>()]; a < c.n_properties(); ++a) {
+        bytes += c.array(a).element_bytes();
+    }
+    std::vector<std::byte> values(bytes);
+    std::byte* out = values.data();
+    for (std::size_t a = kFirstAttribute[kind_of<H>()]; a < c.n_properties(); ++a) {
+        c.array(a).save(h.idx(), out);
+        out += c.array(a).element_bytes();
+    }
+    return values;
+}
+
+template <class H>
+void Mesh::set_attribute_values(H h, const std::vector<std::byte>& values) {
+    PropertyContainer& c = container<H>();
+    const std::byte* in = values.data();
+    const std::byte* end = values.data() + values.size();
+    if (values.empty()) {
+        return;
+    }
+    if (recorder_ != nullptr) {
+        record(kind_of<H>(), h.idx());
+    }
+    for (std::size_t a = kFirstAttribute[kind_of<H>()]; a < c.n_properties(); ++a) {
+        MESHEDIT_ASSERT(in + c.array(a).element_bytes() <= end);
+        c.array(a).load(h.idx(), in);
+        in += c.array(a).element_bytes();
+    }
+    MESHEDIT_ASSERT(in == end);
+}
+
+template std::vector<std::byte> Mesh::attribute_values(Vertex) const;
+template std::vector<std::byte> Mesh::attribute_values(Halfedge) const;
+template void Mesh::set_attribute_values(Vertex, const std::vector<std::byte>&);
+template void Mesh::set_attribute_values(Halfedge, const std::vector<std::byte>&);
+
+template <class H>
 void Mesh::permute_attributes(const std::vector<std::uint32_t>& source) {
     PropertyContainer& c = container<H>();
     if (c.n_properties() > kFirstAttribute[kind_of<H>()]) {

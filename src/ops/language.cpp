@@ -498,8 +498,8 @@ bool draws_diagram(const Step& step) {
 }
 
 StepResult run_step(Mesh& mesh, const Step& step, const RunOptions& options) {
-    if (const std::string refusal = step.verb->check(mesh, step); !refusal.empty()) {
-        throw OpError(step.text + " refused: " + refusal, true);
+    if (const OpStatus status = step.verb->check(mesh, step); !status) {
+        throw OpError(step.text + " refused: " + status.text(), true);
     }
     return step.verb->run(mesh, step, options);
 }
@@ -556,13 +556,13 @@ StepsRun run_steps(Mesh& mesh, const std::vector<Step>& steps, OnRefusal on_refu
             if (p.levels > checked) {
                 checked = p.levels;
                 if (const SubdivisionPlan plan = refusal(p); !plan.ok()) {
-                    throw OpError(steps[p.step].text + " refused: " + plan.refusal, true);
+                    throw OpError(steps[p.step].text + " refused: " + plan.status.text(), true);
                 }
             }
         }
         for (const Planned& p : deepest) {
             if (const SubdivisionPlan plan = refusal(p); p.levels > 0 && !plan.ok()) {
-                throw OpError(steps[p.step].text + " refused: " + plan.refusal, true);
+                throw OpError(steps[p.step].text + " refused: " + plan.status.text(), true);
             }
         }
     }
@@ -584,7 +584,7 @@ StepsRun run_steps(Mesh& mesh, const std::vector<Step>& steps, OnRefusal on_refu
         const Step& step = steps[i];
         std::string reason;
         try {
-            reason = step.verb->check(mesh, step);
+            reason = step.verb->check(mesh, step).text();
         } catch (const OpError& e) {
             if (on_refusal == OnRefusal::Stop) {
                 throw;

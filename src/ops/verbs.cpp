@@ -41,14 +41,10 @@ std::string corners(const Mesh& mesh, Face f) {
     return std::to_string(mesh.valence(f)) + " corners";
 }
 
-std::string why(OpStatus status) {
-    return std::string(status.reason());
-}
-
 // ------------------------------------------------------------------ local operations
 
-std::string check_flip(const Mesh& mesh, const Step& step) {
-    return why(is_flip_ok(mesh, named_edge(mesh, step)));
+OpStatus check_flip(const Mesh& mesh, const Step& step) {
+    return is_flip_ok(mesh, named_edge(mesh, step));
 }
 StepResult run_flip(Mesh& mesh, const Step& step, const RunOptions&) {
     const Edge e = named_edge(mesh, step);
@@ -57,8 +53,8 @@ StepResult run_flip(Mesh& mesh, const Step& step, const RunOptions&) {
                  "flipped edge " + idx(e.idx()) + ": " + describe(mesh, ElementRef::edge(e)));
 }
 
-std::string check_split(const Mesh& mesh, const Step& step) {
-    return why(is_split_ok(mesh, named_edge(mesh, step)));
+OpStatus check_split(const Mesh& mesh, const Step& step) {
+    return is_split_ok(mesh, named_edge(mesh, step));
 }
 StepResult run_split(Mesh& mesh, const Step& step, const RunOptions&) {
     const Edge e = named_edge(mesh, step);
@@ -67,8 +63,8 @@ StepResult run_split(Mesh& mesh, const Step& step, const RunOptions&) {
                  "split edge " + idx(e.idx()) + ": new vertex " + idx(m.idx()));
 }
 
-std::string check_bisect(const Mesh& mesh, const Step& step) {
-    return why(is_bisect_ok(mesh, named_edge(mesh, step)));
+OpStatus check_bisect(const Mesh& mesh, const Step& step) {
+    return is_bisect_ok(mesh, named_edge(mesh, step));
 }
 StepResult run_bisect(Mesh& mesh, const Step& step, const RunOptions&) {
     const Edge e = named_edge(mesh, step);
@@ -77,11 +73,11 @@ StepResult run_bisect(Mesh& mesh, const Step& step, const RunOptions&) {
                  "bisected edge " + idx(e.idx()) + ": new vertex " + idx(m.idx()));
 }
 
-std::string check_collapse(const Mesh& mesh, const Step& step) {
+OpStatus check_collapse(const Mesh& mesh, const Step& step) {
     if (step.target == Target::Face) {
-        return why(is_collapse_face_ok(mesh, named_face(mesh, step)));
+        return is_collapse_face_ok(mesh, named_face(mesh, step));
     }
-    return why(is_collapse_ok(mesh, named_edge(mesh, step)));
+    return is_collapse_ok(mesh, named_edge(mesh, step));
 }
 StepResult run_collapse(Mesh& mesh, const Step& step, const RunOptions&) {
     if (step.target == Target::Face) {
@@ -96,11 +92,11 @@ StepResult run_collapse(Mesh& mesh, const Step& step, const RunOptions&) {
                  "collapsed edge " + idx(e.idx()) + " into vertex " + idx(v.idx()));
 }
 
-std::string check_dissolve(const Mesh& mesh, const Step& step) {
+OpStatus check_dissolve(const Mesh& mesh, const Step& step) {
     if (step.target == Target::Vertex) {
-        return why(is_dissolve_vertex_ok(mesh, named_vertex(mesh, step)));
+        return is_dissolve_vertex_ok(mesh, named_vertex(mesh, step));
     }
-    return why(is_dissolve_edge_ok(mesh, named_edge(mesh, step)));
+    return is_dissolve_edge_ok(mesh, named_edge(mesh, step));
 }
 StepResult run_dissolve(Mesh& mesh, const Step& step, const RunOptions&) {
     if (step.target == Target::Vertex) {
@@ -120,8 +116,8 @@ StepResult run_dissolve(Mesh& mesh, const Step& step, const RunOptions&) {
                                           " (selected)");
 }
 
-std::string check_make_boundary(const Mesh& mesh, const Step& step) {
-    return why(is_make_boundary_ok(mesh, named_face(mesh, step)));
+OpStatus check_make_boundary(const Mesh& mesh, const Step& step) {
+    return is_make_boundary_ok(mesh, named_face(mesh, step));
 }
 StepResult run_make_boundary(Mesh& mesh, const Step& step, const RunOptions&) {
     const Face f = named_face(mesh, step);
@@ -135,12 +131,12 @@ Halfedge hole_side(const Mesh& mesh, Edge e) {
     const Halfedge h = mesh.halfedge(e, 0);
     return mesh.is_boundary(h) ? h : mesh.halfedge(e, 1);
 }
-std::string check_fill(const Mesh& mesh, const Step& step) {
+OpStatus check_fill(const Mesh& mesh, const Step& step) {
     const Edge e = named_edge(mesh, step);
     if (!mesh.is_boundary(e)) {
-        return "cannot fill: the edge is not on a hole (pick a boundary edge)";
+        return OpStatus::refused("cannot fill: the edge is not on a hole (pick a boundary edge)");
     }
-    return why(is_fill_hole_ok(mesh, hole_side(mesh, e)));
+    return is_fill_hole_ok(mesh, hole_side(mesh, e));
 }
 StepResult run_fill(Mesh& mesh, const Step& step, const RunOptions&) {
     const Face f = *fill_hole(mesh, hole_side(mesh, named_edge(mesh, step)));
@@ -148,8 +144,8 @@ StepResult run_fill(Mesh& mesh, const Step& step, const RunOptions&) {
                                           std::to_string(mesh.valence(f)) + " corners)");
 }
 
-std::string check_weld(const Mesh& mesh, const Step& step) {
-    return why(is_weld_ok(mesh, named_edge(mesh, step), named_second_edge(mesh, step)));
+OpStatus check_weld(const Mesh& mesh, const Step& step) {
+    return is_weld_ok(mesh, named_edge(mesh, step), named_second_edge(mesh, step));
 }
 StepResult run_weld(Mesh& mesh, const Step& step, const RunOptions&) {
     const Edge e1 = named_edge(mesh, step);
@@ -159,8 +155,8 @@ StepResult run_weld(Mesh& mesh, const Step& step, const RunOptions&) {
                                            " into one edge (selected)");
 }
 
-std::string check_poke(const Mesh& mesh, const Step& step) {
-    return why(is_poke_ok(mesh, named_face(mesh, step)));
+OpStatus check_poke(const Mesh& mesh, const Step& step) {
+    return is_poke_ok(mesh, named_face(mesh, step));
 }
 StepResult run_poke(Mesh& mesh, const Step& step, const RunOptions&) {
     const Face f = named_face(mesh, step);
@@ -170,8 +166,8 @@ StepResult run_poke(Mesh& mesh, const Step& step, const RunOptions&) {
                                             " in a fan of " + std::to_string(n) + " triangles");
 }
 
-std::string check_extrude(const Mesh& mesh, const Step& step) {
-    return why(is_extrude_ok(mesh, named_face(mesh, step), step.amounts[0], step.amounts[1]));
+OpStatus check_extrude(const Mesh& mesh, const Step& step) {
+    return is_extrude_ok(mesh, named_face(mesh, step), step.amounts[0], step.amounts[1]);
 }
 StepResult run_extrude(Mesh& mesh, const Step& step, const RunOptions&) {
     const Face f = *extrude_face(mesh, named_face(mesh, step), step.amounts[0], step.amounts[1]);
@@ -180,8 +176,8 @@ StepResult run_extrude(Mesh& mesh, const Step& step, const RunOptions&) {
                                           number_text(step.amounts[1]));
 }
 
-std::string check_inset(const Mesh& mesh, const Step& step) {
-    return why(is_inset_ok(mesh, named_face(mesh, step), step.amounts[0]));
+OpStatus check_inset(const Mesh& mesh, const Step& step) {
+    return is_inset_ok(mesh, named_face(mesh, step), step.amounts[0]);
 }
 StepResult run_inset(Mesh& mesh, const Step& step, const RunOptions&) {
     const Face f = *inset_face(mesh, named_face(mesh, step), step.amounts[0]);
@@ -189,11 +185,11 @@ StepResult run_inset(Mesh& mesh, const Step& step, const RunOptions&) {
                  "inset face " + idx(f.idx()) + ", shrink " + number_text(step.amounts[0]));
 }
 
-std::string check_bevel(const Mesh& mesh, const Step& step) {
+OpStatus check_bevel(const Mesh& mesh, const Step& step) {
     if (step.target == Target::Vertex) {
-        return why(is_bevel_vertex_ok(mesh, named_vertex(mesh, step), step.amounts[0]));
+        return is_bevel_vertex_ok(mesh, named_vertex(mesh, step), step.amounts[0]);
     }
-    return why(is_bevel_edge_ok(mesh, named_edge(mesh, step), step.amounts[0]));
+    return is_bevel_edge_ok(mesh, named_edge(mesh, step), step.amounts[0]);
 }
 StepResult run_bevel(Mesh& mesh, const Step& step, const RunOptions&) {
     const double t = step.amounts[0];
@@ -208,9 +204,9 @@ StepResult run_bevel(Mesh& mesh, const Step& step, const RunOptions&) {
 
 // Boundary edges may be marked too: harmless, Loop treats them as sharp anyway, and the
 // mark survives if the boundary is later closed.
-std::string check_crease(const Mesh& mesh, const Step& step) {
+OpStatus check_crease(const Mesh& mesh, const Step& step) {
     named_edge(mesh, step);
-    return {};
+    return OpStatus::ok();
 }
 StepResult run_crease(Mesh& mesh, const Step& step, const RunOptions&) {
     const Edge e = named_edge(mesh, step);
@@ -225,16 +221,17 @@ StepResult run_crease(Mesh& mesh, const Step& step, const RunOptions&) {
 
 // move:vI:X,Y,Z: what the viewer records for a drag or a move, rotate or scale (the exact
 // final position, so a replay is bit-identical).
-std::string check_move(const Mesh& mesh, const Step& step) {
+OpStatus check_move(const Mesh& mesh, const Step& step) {
     named_vertex(mesh, step);
     const Vec3 p{step.amounts[0], step.amounts[1], step.amounts[2]};
     if (!is_finite(p)) {
-        return "cannot move: the position must be finite";
+        return OpStatus::refused("cannot move: the position must be finite");
     }
     if (!std::isfinite(sqrnorm(p))) {  // as a drag: normals and areas square coordinates
-        return "cannot move: the position is beyond the range of numbers (its square overflows)";
+        return OpStatus::refused(
+            "cannot move: the position is beyond the range of numbers (its square overflows)");
     }
-    return {};
+    return OpStatus::ok();
 }
 StepResult run_move(Mesh& mesh, const Step& step, const RunOptions&) {
     const Vertex v = named_vertex(mesh, step);
@@ -249,8 +246,8 @@ StepResult run_move(Mesh& mesh, const Step& step, const RunOptions&) {
 // compact: the numbering a file gets, now. The viewer renumbers when it saves and after a
 // whole-mesh edit (local edits leave tombstones) and records this step, so a recorded session
 // names the same elements on replay.
-std::string check_compact(const Mesh&, const Step&) {
-    return {};
+OpStatus check_compact(const Mesh&, const Step&) {
+    return OpStatus::ok();
 }
 StepResult run_compact(Mesh& mesh, const Step&, const RunOptions&) {
     const bool had_garbage = mesh.has_garbage();
@@ -278,29 +275,32 @@ std::size_t non_triangles(const Mesh& mesh) {
 // A whole-mesh subdivision, simplification or remesh in the middle of a phased Loop would
 // carry its half-done state into a new mesh (the next phase threw "split did not append the
 // vertex" or "flip refused"); `verb` names the refused one.
-std::string phased_loop_refusal(const Mesh& mesh, const char* verb = "subdivide") {
+OpStatus phased_loop_refusal(const Mesh& mesh, const char* verb = "subdivide") {
     const int next = next_loop_phase(mesh);
-    return next == 1 ? std::string()
-                     : "cannot " + std::string(verb) + ": a phased Loop is under way (phase " +
-                           std::to_string(next) +
-                           " of 4 is next: `loop_step:" + std::to_string(5 - next) +
-                           "` finishes it, undo goes back)";
+    if (next == 1) {
+        return OpStatus::ok();
+    }
+    return OpStatus::composed("cannot " + std::string(verb) +
+                              ": a phased Loop is under way (phase " + std::to_string(next) +
+                              " of 4 is next: `loop_step:" + std::to_string(5 - next) +
+                              "` finishes it, undo goes back)");
 }
 
-std::string check_loop(const Mesh& mesh, const Step& step) {
-    if (std::string why = phased_loop_refusal(mesh); !why.empty()) {
+OpStatus check_loop(const Mesh& mesh, const Step& step) {
+    if (const OpStatus why = phased_loop_refusal(mesh); !why) {
         return why;
     }
     if (mesh.n_faces() == 0) {
-        return "cannot subdivide: the mesh has no faces";
+        return OpStatus::refused("cannot subdivide: the mesh has no faces");
     }
     if (const std::size_t n = non_triangles(mesh); n > 0) {
-        return "cannot subdivide: Loop needs triangles and " + std::to_string(n) + " of the " +
-               std::to_string(mesh.n_faces()) +
-               " faces are polygons (triangulate them first: the `triangulate` step, Ctrl+T "
-               "in the viewer)";
+        return OpStatus::composed(
+            "cannot subdivide: Loop needs triangles and " + std::to_string(n) + " of the " +
+            std::to_string(mesh.n_faces()) +
+            " faces are polygons (triangulate them first: the `triangulate` step, Ctrl+T "
+            "in the viewer)");
     }
-    return plan_loop(mesh, step.levels).refusal;
+    return plan_loop(mesh, step.levels).status;
 }
 StepResult run_loop(Mesh& mesh, const Step& step, const RunOptions& options) {
     StepResult result;
@@ -318,16 +318,17 @@ StepResult run_loop(Mesh& mesh, const Step& step, const RunOptions& options) {
 }
 
 // loop_step, loop_step:N: the next N phases of a phased Loop (core/loop_steps.h).
-std::string check_loop_step_verb(const Mesh& mesh, const Step& step) {
+OpStatus check_loop_step_verb(const Mesh& mesh, const Step& step) {
     const int next = next_loop_phase(mesh);
     if (step.levels > 5 - next) {
-        return "cannot step Loop: " + std::to_string(step.levels) + " phases asked, but phase " +
-               std::to_string(next) + " of 4 is next (" + std::to_string(5 - next) + " remain)";
+        return OpStatus::composed("cannot step Loop: " + std::to_string(step.levels) +
+                                  " phases asked, but phase " + std::to_string(next) +
+                                  " of 4 is next (" + std::to_string(5 - next) + " remain)");
     }
     if (next == 1) {
         Step one = step;
         one.levels = 1;
-        if (std::string why = check_loop(mesh, one); !why.empty()) {
+        if (const OpStatus why = check_loop(mesh, one); !why) {
             return why;
         }
     }
@@ -349,14 +350,14 @@ SubdivisionPlan plan_loop_step(const Mesh& mesh, int levels) {
     return plan_loop(mesh, levels);
 }
 
-std::string check_quads(const Mesh& mesh, const Step& step) {
-    if (std::string why = phased_loop_refusal(mesh); !why.empty()) {
+OpStatus check_quads(const Mesh& mesh, const Step& step) {
+    if (const OpStatus why = phased_loop_refusal(mesh); !why) {
         return why;
     }
     if (mesh.n_faces() == 0) {
-        return "cannot subdivide: the mesh has no faces";
+        return OpStatus::refused("cannot subdivide: the mesh has no faces");
     }
-    return plan_quad_subdivision(mesh, step.levels).refusal;
+    return plan_quad_subdivision(mesh, step.levels).status;
 }
 StepResult run_quads(Mesh& mesh, const Step& step, const RunOptions& options, QuadScheme scheme) {
     StepResult result;
@@ -396,15 +397,16 @@ SimplifyOptions simplify_options(const Mesh& mesh, const Step& step) {
     options.max_error = step.amounts[1];
     return options;
 }
-std::string check_simplify_step(const Mesh& mesh, const Step& step) {
-    if (std::string why = phased_loop_refusal(mesh, "simplify"); !why.empty()) {
+OpStatus check_simplify_step(const Mesh& mesh, const Step& step) {
+    if (const OpStatus why = phased_loop_refusal(mesh, "simplify"); !why) {
         return why;
     }
     const double r = step.amounts[0];
     if (!(r > 0.0 && r < 1.0) && !(is_face_count(r) && r == std::floor(r) && r <= 1e18)) {
-        return "cannot simplify: keep a share of the faces above 0 and below 1, or a whole "
-               "number of faces, not " +
-               number_text(r);
+        return OpStatus::composed(
+            "cannot simplify: keep a share of the faces above 0 and below 1, or a whole "
+            "number of faces, not " +
+            number_text(r));
     }
     return check_simplify(mesh, simplify_options(mesh, step));
 }
@@ -437,14 +439,15 @@ RemeshOptions remesh_options(const Step& step) {
     options.iterations = static_cast<int>(step.amounts[1]);
     return options;
 }
-std::string check_remesh_step(const Mesh& mesh, const Step& step) {
-    if (std::string why = phased_loop_refusal(mesh, "remesh"); !why.empty()) {
+OpStatus check_remesh_step(const Mesh& mesh, const Step& step) {
+    if (const OpStatus why = phased_loop_refusal(mesh, "remesh"); !why) {
         return why;
     }
     const double n = step.amounts[1];
     if (!(n >= 1 && n <= 100) || n != std::floor(n)) {
-        return "cannot remesh: iterations must be a whole number from 1 to 100, not " +
-               number_text(n);
+        return OpStatus::composed(
+            "cannot remesh: iterations must be a whole number from 1 to 100, not " +
+            number_text(n));
     }
     return check_remesh(mesh, remesh_options(step));
 }
@@ -463,11 +466,11 @@ StepResult run_remesh(Mesh& mesh, const Step& step, const RunOptions& options) {
     return result;
 }
 
-std::string check_triangulate(const Mesh& mesh, const Step& step) {
+OpStatus check_triangulate(const Mesh& mesh, const Step& step) {
     if (step.target == Target::Face) {
-        return why(is_triangulate_ok(mesh, named_face(mesh, step)));
+        return is_triangulate_ok(mesh, named_face(mesh, step));
     }
-    return {};
+    return OpStatus::ok();
 }
 StepResult run_triangulate(Mesh& mesh, const Step& step, const RunOptions&) {
     if (step.target == Target::Face) {
@@ -493,8 +496,8 @@ StepResult run_triangulate(Mesh& mesh, const Step& step, const RunOptions&) {
     return result;
 }
 
-std::string check_flip_orientation(const Mesh&, const Step&) {
-    return {};
+OpStatus check_flip_orientation(const Mesh&, const Step&) {
+    return OpStatus::ok();
 }
 StepResult run_flip_orientation(Mesh& mesh, const Step&, const RunOptions&) {
     flip_orientation(mesh);

@@ -198,22 +198,22 @@ int next_loop_phase(const Mesh& mesh) {
     return 1;
 }
 
-std::string check_loop_step(const Mesh& mesh) {
+OpStatus check_loop_step(const Mesh& mesh) {
     if (next_loop_phase(mesh) != 1) {
-        return {};
+        return OpStatus::ok();
     }
     if (const OpStatus ok = is_loop_ok(mesh); !ok) {
-        return std::string(ok.reason());
+        return ok;
     }
     if (!mesh.is_triangle_mesh()) {
-        return "cannot step Loop: the phases are shown on triangles (Ctrl+T or triangulate "
-               "first)";
+        return OpStatus::refused(
+            "cannot step Loop: the phases are shown on triangles (Ctrl+T or triangulate first)");
     }
-    return {};
+    return OpStatus::ok();
 }
 
 LoopStepReport loop_step(Mesh& mesh, const LoopOptions& options) {
-    MESHEDIT_ASSERT(check_loop_step(mesh).empty());
+    MESHEDIT_ASSERT(check_loop_step(mesh));
     LoopStepReport report;
     report.phase = next_loop_phase(mesh);
     loop_rules::Progress progress(options.progress);

@@ -179,8 +179,9 @@ void loop_edge(const Mesh& mesh, Edge e, Terms& terms, Stencil& out) {
     for (unsigned i = 0; i < 2; ++i) {
         const Face f = mesh.face(e, i);
         if (!mesh.is_triangle(f)) {
-            out.refusal = "Loop needs triangles: face " + std::to_string(f.idx()) + " has " +
-                          std::to_string(mesh.valence(f)) + " corners (Ctrl+T triangulates)";
+            out.status = OpStatus::composed(
+                "Loop needs triangles: face " + std::to_string(f.idx()) + " has " +
+                std::to_string(mesh.valence(f)) + " corners (Ctrl+T triangulates)");
             return;
         }
     }
@@ -250,7 +251,7 @@ const char* scheme_name(StencilScheme scheme) {
 Stencil subdivision_stencil(const Mesh& mesh, ElementRef element, StencilScheme scheme) {
     Stencil out;
     if (!is_live(mesh, element)) {
-        out.refusal = "no stencil: " + describe(mesh, element);
+        out.status = OpStatus::composed("no stencil: " + describe(mesh, element));
         return out;
     }
     if (element.kind == ElementRef::Kind::Halfedge) {
@@ -277,7 +278,8 @@ Stencil subdivision_stencil(const Mesh& mesh, ElementRef element, StencilScheme 
             break;
         case ElementRef::Kind::Face:
             if (loop) {
-                out.refusal = "Loop makes no face points: hover a vertex or an edge";
+                out.status =
+                    OpStatus::refused("Loop makes no face points: hover a vertex or an edge");
                 break;
             }
             out.rule = "face";

@@ -446,10 +446,12 @@ void App::apply(const Outcome& outcome) {
         set_status(outcome.message, outcome.refused);
     }
     const unsigned c = outcome.changes;
+    const bool mesh_changed = (c & (kTopology | kGeometry | kDocument)) != 0;
     if (!follow_mesh_change(outcome)) {  // not a recorded change: upload, rebuild the tree lazily
-        if (c & (kTopology | kGeometry | kDocument)) {
-            pick_bvh_stale_ = true;
-        }
+        DisplayData::Change change;
+        change.mesh = mesh_changed;
+        change.features = (c & kDisplay) != 0;
+        display_.follow(editor_.mesh(), change);
         if (c & (kTopology | kDocument)) {
             upload_document();
         } else if (c & kGeometry) {
@@ -458,15 +460,15 @@ void App::apply(const Outcome& outcome) {
         }
     }
     if (c & (kTopology | kGeometry | kDocument | kDisplay | kSelection)) {
-        refresh_field((c & (kTopology | kGeometry | kDocument)) != 0);
+        refresh_field((c & (kTopology | kDocument)) != 0);
     }
     if ((c & kDisplay) && !camera_.orthographic && camera_.trackball != editor_.view().trackball) {
         camera_.set_trackball(editor_.view().trackball);
     }
     if (c & (kTopology | kGeometry | kSelection | kDisplay | kCurve | kDocument)) {
-        // Feature edges walk every edge: redone only when the mesh or a crease changed,
-        // not when the selection or hover moves.
-        rebuild_overlay((c & (kTopology | kGeometry | kDisplay | kDocument)) != 0);
+        // Feature edges walk every edge: display_ redoes them only when the mesh or a
+        // crease changed, not when the selection or hover moves.
+        rebuild_overlay();
     }
     if (c & kResetCamera) {
         reset_camera();
@@ -510,17 +512,8 @@ void App::upload_document() {
     cursor_moved_ = true;  // the caller rebuilds the overlay
 }
 
-void App::rebuild_overlay(bool features_changed) {
-    const OverlayStyle style;
+void App::rebuild_overlay() {
     const ViewState& view = editor_.view();
-    if (features_changed) {
-        features_.clear();
-        if (editor_.mode() == Mode::Mesh) {
-            add_feature_edges(editor_.mesh(), style, features_);
-            add_loop_phase_marks(editor_.mesh(), style, features_);
-        }
-    }
-    OverlayBatch batch = features_;
     SceneContent scene;
     const Document& doc = editor_.document();
     if (mesh_mode()) {
@@ -539,7 +532,9 @@ void App::rebuild_overlay(bool features_changed) {
     if (mesh_mode()) {
         scene.stencil = view.stencil;
     }
-    add_scene_marks(scene, style, batch);
+    // Surfaces (tessellated patches) show their nets, not the tessellation's features.
+    const bool features = editor_.mode() == Mode::Mesh;
+    OverlayBatch batch = display_.overlay(scene, features, features);
     labels_ = std::move(batch.labels);
     scene_->overlay().upload(batch);
     redraw_frames_ = kSettleFrames;
@@ -624,7 +619,8 @@ void App::draw_frame() {
     int window_w = 1, window_h = 1;
     glfwGetWindowSize(window_, &window_w, &window_h);
     draw_labels(labels_, camera_, window_w, window_h);
-    const PanelRequests requests = panels_.draw(editor_, stats, status_, status_error_, field_);
+    const PanelRequests requests =
+        panels_.draw(editor_, stats, status_, status_error_, display_.field());
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glfwSwapBuffers(window_);

@@ -9,7 +9,6 @@
 
 #include <glm/glm.hpp>
 
-#include "meshedit/core/face_bvh.h"
 #include "meshedit/overlay/camera.h"
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/scene.h"
@@ -72,13 +71,14 @@ private:
     void set_status(std::string message, bool error);
 
     void upload_document();
-    /// Uploads the overlay: cached boundary/crease edges (recomputed if `features_changed`),
-    /// control nets or the curve, hover and selection highlights.
-    void rebuild_overlay(bool features_changed = false);
-    /// Recomputes the scalar field shown (Alt+F) and colours the surface by it, or clears
-    /// it (app_shading.cpp): when `mesh_changed` (an upload also drops the colours), else
-    /// only if the field, its colour settings or distance's source vertex changed.
-    void refresh_field(bool mesh_changed = false);
+    /// Uploads the overlay: display_'s features (boundary and crease edges, a phased Loop's
+    /// marks), control nets or the curve, hover and selection highlights.
+    void rebuild_overlay();
+    /// Asks display_ for the scalar field shown (Alt+F) and colours the surface by it, or
+    /// clears it (app_shading.cpp): display_ recomputes it when the mesh changed, else only
+    /// if the field, its colour settings or distance's source vertex changed; `upload` gives
+    /// the colours to a mesh just uploaded even when the values stand.
+    void refresh_field(bool upload = false);
     void reset_camera();
     /// Centres the camera on the selection, close enough that it fills about a third of the
     /// view.
@@ -132,14 +132,11 @@ private:
     float scene_radius_ = 1.0f;
 
     std::unique_ptr<SceneRenderer> scene_;
-    FaceBvh pick_bvh_;                     ///< picking's, of editor_.mesh()
-    std::uint64_t pick_bvh_revision_ = 0;  ///< the document revision it was built for
-    bool pick_bvh_stale_ = true;           ///< the mesh moved since (revision unchanged)
-    std::uint64_t applied_revision_ = 0;   ///< the document's revision after the last apply()
-    FieldDisplay field_;
+    /// Features, the field and the picking tree of editor_.mesh() (overlay/display_data.h).
+    DisplayData display_;
+    std::uint64_t applied_revision_ = 0;  ///< the document's revision after the last apply()
     std::filesystem::path user_shader_dir_;
     bool starters_checked_ = false;
-    OverlayBatch features_;                    ///< boundary and crease edges of the current mesh
     std::vector<OverlayBatch::Label> labels_;  ///< the overlay's text, drawn with the panels
 
     Panels panels_;

@@ -52,15 +52,11 @@ ElementRef App::pick_at_cursor() {
     // after the document changes: a new revision, or geometry moved under the same one (a
     // drag, an interactive edit; see apply()).
     const Mesh& mesh = editor_.mesh();
-    if (pick_bvh_stale_ || pick_bvh_revision_ != editor_.document().revision) {
-        pick_bvh_.build(mesh);
-        pick_bvh_revision_ = editor_.document().revision;
-        pick_bvh_stale_ = false;
-    }
+    const FaceBvh& tree = display_.picking_tree(mesh, editor_.document().revision);
     const float scale = static_cast<float>(size.y) / std::max(1.0f, ImGui::GetIO().DisplaySize.y);
-    const ElementRef hit = cpu_pick(pick_bvh_, mesh, camera_, size.x, size.y, static_cast<int>(p.x),
-                                    static_cast<int>(p.y), scene_->mesh().culls_back_faces(camera_),
-                                    6.0f * scale, 4.0f * scale);
+    const ElementRef hit =
+        cpu_pick(tree, mesh, camera_, size.x, size.y, static_cast<int>(p.x), static_cast<int>(p.y),
+                 scene_->mesh().culls_back_faces(camera_), 6.0f * scale, 4.0f * scale);
     last_pick_ms_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return is_live(editor_.mesh(), hit) ? hit : ElementRef{};
@@ -92,12 +88,13 @@ bool App::follow_mesh_change(const Outcome& outcome) {
         return false;
     }
     // The tree is brought along only if it showed the document just before this command.
-    if (!pick_bvh_stale_ && pick_bvh_revision_ == applied_revision_) {
-        pick_bvh_.update(editor_.mesh(), faces_to_redraw(editor_.mesh(), *region));
-        pick_bvh_revision_ = editor_.document().revision;
-    } else {
-        pick_bvh_stale_ = true;
-    }
+    DisplayData::Change change;
+    change.mesh = true;
+    change.features = (changes & kDisplay) != 0;
+    change.region = &*region;
+    change.before = applied_revision_;
+    change.after = editor_.document().revision;
+    display_.follow(editor_.mesh(), change);
     scene_->mesh().update(editor_.mesh(), region->faces, region->vertices);
     if ((changes & kGeometry) == 0) {
         editor_.set_hover({});  // a drag keeps the hover it has

@@ -89,38 +89,32 @@ RenderOptions App::frame_options() {
     return options;
 }
 
-void App::refresh_field(bool mesh_changed) {
+void App::refresh_field(bool upload) {
     const ViewState& view = editor_.view();
-    if (view.field == nullptr || !mesh_mode() || !scene_->has_mesh()) {
-        field_ = {};
+    FieldRequest request;
+    if (view.field != nullptr && mesh_mode() && scene_->has_mesh()) {
+        request.info = view.field;
+    }
+    if (request.info == nullptr) {
+        display_.field(editor_.mesh(), request);  // clears it
         scene_->mesh().clear_field();
         return;
     }
     const Mesh& mesh = editor_.mesh();
-    FieldOptions options;
     const ElementRef& selected = editor_.selection();
     const bool distance = view.field->name == "distance";
-    options.source =
+    request.source =
         distance && selected.kind == ElementRef::Kind::Vertex && is_live(mesh, selected)
             ? Vertex(selected.index)
             : Vertex(0);
-    // A click or a display toggle leaves the values as they are: O(mesh) saved per event.
-    if (!mesh_changed && field_.info == view.field && field_.source == options.source &&
-        field_.clip == view.field_clip && field_.colormap == view.colormap) {
-        return;
+    request.clip = view.field_clip;
+    request.colormap = view.colormap;
+    bool recomputed = false;
+    const FieldDisplay& field = display_.field(mesh, request, &recomputed);
+    if (recomputed || upload) {
+        scene_->mesh().set_field(view.field->site, field.values, field.coloring);
+        redraw_frames_ = kSettleFrames;
     }
-    field_.info = view.field;
-    field_.clip = view.field_clip;
-    field_.colormap = view.colormap;
-    field_.source = options.source;
-    field_.values = compute_field(mesh, *view.field, options);
-    field_.stats = field_stats(field_.values);
-    field_.coloring = default_coloring(*view.field, field_.values, view.field_clip);
-    if (view.colormap) {
-        field_.coloring.map = *view.colormap;
-    }
-    scene_->mesh().set_field(view.field->site, field_.values, field_.coloring);
-    redraw_frames_ = kSettleFrames;
 }
 
 }  // namespace meshedit::viewer

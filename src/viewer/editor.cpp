@@ -219,10 +219,10 @@ std::optional<OpDiagram> rewiring_of(Mesh& mesh, const MeshChange& change, const
 
 }  // namespace
 
-Outcome Editor::edit(const std::function<std::string()>& check,
+Outcome Editor::edit(const std::function<OpStatus()>& check,
                      const std::function<Edited(Document&)>& apply, bool local) {
-    if (std::string reason = check(); !reason.empty()) {
-        return refused(std::move(reason));
+    if (const OpStatus status = check(); !status) {
+        return refused(status.text());
     }
     const bool recorded = local && doc_.mode != Mode::Curve;
     diagram_.reset();

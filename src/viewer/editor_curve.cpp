@@ -31,7 +31,7 @@ Outcome Editor::run_curve(Action action) {
         return "de Casteljau level " + std::to_string(view_.level) + " of " +
                std::to_string(last_level);
     };
-    const auto no_refusal = [] { return std::string(); };
+    const auto no_refusal = [] { return OpStatus::ok(); };
 
     switch (action.command) {
         case Command::LevelDown:
@@ -88,8 +88,8 @@ Outcome Editor::run_curve(Action action) {
         }
         case Command::RemovePoint: {
             const auto check = [&] {
-                return n <= 2 ? std::string("a curve needs at least 2 control points")
-                              : std::string();
+                return n <= 2 ? OpStatus::refused("a curve needs at least 2 control points")
+                              : OpStatus::ok();
             };
             Outcome outcome = edit(check, [&](Document& doc) {
                 const std::size_t i = acted_on(doc.selection, n);
@@ -147,7 +147,7 @@ Outcome Editor::run_surface(Command command) {
         density = *(it - 1);
     }
     const bool had_edits = pristine_revisions_.count(doc_.revision) == 0;
-    Outcome outcome = edit([] { return std::string(); },
+    Outcome outcome = edit([] { return OpStatus::ok(); },
                            [&](Document& doc) {
                                TessellationOptions options;
                                options.density = density;

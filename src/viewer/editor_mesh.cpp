@@ -72,7 +72,7 @@ Outcome Editor::edit_steps(const std::vector<ops::Step>& steps, std::string_view
                            bool topology) {
     // Each step's predicate runs once, in run_steps(); a list none of whose steps could run
     // is refused with the first reason, the recording rolled back.
-    return edit([] { return std::string(); },
+    return edit([] { return OpStatus::ok(); },
                 [&](Document& doc) {
                     const StepsRun run = run_steps(doc.mesh, steps, what);
                     if (run.ran == 0) {

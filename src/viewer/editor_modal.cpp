@@ -1,7 +1,8 @@
-// The editor's interactive edits (editor.h, Modal), each one recorded transaction: extrude and
-// inset run their verb once and then only move the corners it made (a position amendment of
-// the recorded change per mouse move); bevel rewinds its recorded preview and re-runs its verb
-// (its carry blends elements in place, so a rerun needs their values from before); move,
+// The editor's interactive edits (editor.h, Modal), each one recorded transaction: extrude,
+// inset and bevel run their verb once and then only move the corners it made (a position
+// amendment of the recorded change per mouse move; a bevel also derives what its corners
+// carry again, from the values it kept). Bevels that touch one another rewind the recorded
+// preview and run again instead, so that the session's steps replay to the same bits. Move,
 // rotate and scale set the selected vertices from their positions as they were. Confirming
 // commits one undo step; cancelling rolls back.
 
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <optional>
 #include <string_view>
+#include <unordered_set>
 
 #include "meshedit/core/local_ops.h"
 #include "meshedit/ops/ops.h"
@@ -26,6 +28,68 @@ constexpr double kPixelsPerUnit = 300.0;
 // Unitless amounts stop short of 1, where the new face would be a point.
 constexpr double kMaxFraction = 0.95;
 constexpr double kPi = 3.14159265358979323846;
+
+// What a bevel step will make, taken before it runs; none when the step would refuse (the
+// refusal is run_steps()'s to report). \throws ops::OpError if the step names no element.
+std::optional<BevelBase> bevel_base(const Mesh& mesh, const ops::Step& step) {
+    const double t = step.amounts[0];
+    if (step.target == ops::Target::Vertex) {
+        const Vertex v = ops::named_vertex(mesh, step);
+        if (is_bevel_vertex_ok(mesh, v, t)) {
+            return bevel_vertex_base(mesh, v);
+        }
+    } else if (step.target == ops::Target::Edge) {
+        const Edge e = ops::named_edge(mesh, step);
+        if (is_bevel_edge_ok(mesh, e, t)) {
+            return bevel_edge_base(mesh, e);
+        }
+    }
+    return std::nullopt;
+}
+
+// Whether the bevels can be placed one by one at a new amount without running again: none
+// reads a vertex, halfedge or face another one writes (its corners, its new halfedges and
+// face, the faces' corners it blends in place).
+bool independent(const Mesh& mesh, const std::vector<BevelBase>& bevels) {
+    if (bevels.size() < 2) {
+        return true;
+    }
+    const auto vertex = [](Vertex v) { return (std::uint64_t{1} << 62) | v.idx(); };
+    const auto face = [](Face f) { return (std::uint64_t{2} << 62) | f.idx(); };
+    const auto halfedge = [](Halfedge h) { return std::uint64_t{h.idx()}; };
+    const auto writes = [&](const BevelBase& b) {
+        std::unordered_set<std::uint64_t> out{face(b.face)};
+        const std::size_t n = b.o.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const Halfedge made =
+                Mesh::halfedge(Edge(b.first_edge + static_cast<std::uint32_t>(i)), 0);
+            out.insert({vertex(b.w[i]), halfedge(Mesh::twin(b.o[(i + 1) % n])), halfedge(made),
+                        halfedge(Mesh::twin(made))});
+        }
+        return out;
+    };
+    std::vector<std::unordered_set<std::uint64_t>> written;
+    for (const BevelBase& b : bevels) {
+        written.push_back(writes(b));
+    }
+    for (std::size_t j = 0; j < bevels.size(); ++j) {
+        const BevelBase& b = bevels[j];
+        for (std::size_t i = 0; i < b.o.size(); ++i) {
+            const std::uint64_t reads[] = {vertex(b.from[i]),       vertex(mesh.to_vertex(b.o[i])),
+                                           halfedge(b.at_start[i]), halfedge(b.at_next[i]),
+                                           halfedge(b.o[i]),        halfedge(Mesh::twin(b.o[i])),
+                                           face(mesh.face(b.o[i]))};
+            for (std::size_t k = 0; k < bevels.size(); ++k) {
+                for (const std::uint64_t x : reads) {
+                    if (k != j && written[k].count(x) != 0) {
+                        return false;
+                    }
+                }
+            }
+        }
+    }
+    return true;
+}
 
 const char* verb_of(Modal kind) {
     switch (kind) {
@@ -258,6 +322,9 @@ Outcome Editor::apply_modal() {
     if (faces && !m.built.empty()) {
         return move_extruded();
     }
+    if (m.kind == Modal::Bevel && !m.bevelled.empty()) {
+        return move_bevelled();
+    }
     // Back to the document before the edit (in the time of what the last preview touched),
     // then the new preview, recorded: no copy of the mesh per mouse move.
     MeshChange::Region region = m.transaction->rewind();
@@ -271,15 +338,19 @@ Outcome Editor::apply_modal() {
         // One step at a time, so that each extrude's base is taken just before it runs.
         m.steps.clear();
         m.built.clear();
+        m.bevelled.clear();
         std::vector<ElementRef> made;
         for (const ops::Step& step : steps) {
             std::optional<ExtrudeBase> base;
-            if (faces) {
-                try {
+            std::optional<BevelBase> bevel;
+            try {
+                if (faces) {
                     base = extrude_base(doc_.mesh, ops::named_face(doc_.mesh, step));
-                } catch (const ops::OpError&) {
-                    // an earlier step removed the face: run_steps() says so below
+                } else if (m.kind == Modal::Bevel) {
+                    bevel = bevel_base(doc_.mesh, step);
                 }
+            } catch (const ops::OpError&) {
+                // an earlier step removed the element: run_steps() says so below
             }
             const StepsRun one = run_steps(doc_.mesh, {step}, verb);
             if (one.ran == 0 && m.refusal.empty()) {
@@ -292,7 +363,13 @@ Outcome Editor::apply_modal() {
                 if (base) {
                     m.built.push_back(std::move(*base));
                 }
+                if (bevel) {
+                    m.bevelled.push_back(std::move(*bevel));
+                }
             }
+        }
+        if (m.steps.empty() || !independent(doc_.mesh, m.bevelled)) {
+            m.bevelled.clear();
         }
         if (m.steps.empty()) {
             m.built.clear();
@@ -374,6 +451,30 @@ Outcome Editor::move_extruded() {
         m.steps.push_back(ops::make_step(v.name, doc_.mesh, ElementRef::face(base.f),
                                          std::span<const double>(m.amounts.data(), v.max_amounts))
                               .text);
+    }
+    return out;
+}
+
+// Bevel after its first preview: the faces stand; each bevel's corners go to the amount now
+// and derive what they carry again (bevel_positions(), the code the operation places them
+// with, so the session's step replays to the same bits).
+Outcome Editor::move_bevelled() {
+    ModalState& m = modal_;
+    const double t = m.amounts[0];
+    for (const BevelBase& base : m.bevelled) {
+        if (const OpStatus ok = is_bevel_positions_ok(base, t); !ok) {
+            m.refusal = ok.text();
+            return {kSelection, modal_status()};  // the last amount that fits stays shown
+        }
+    }
+    for (const BevelBase& base : m.bevelled) {
+        bevel_positions(doc_.mesh, base, t);
+    }
+    Outcome out{kGeometry | kSelection, modal_status()};
+    out.region = m.transaction->amend();
+    ++m.position_amendments;
+    for (std::string& text : m.steps) {
+        text = text.substr(0, text.rfind(':') + 1) + number_text(t);  // "bevel:v3:" + t
     }
     return out;
 }

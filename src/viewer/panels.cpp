@@ -350,7 +350,7 @@ void Panels::draw_stencil(const Editor& editor) {
     const Stencil stencil = subdivision_stencil(mesh, element, *editor.view().stencil);
     ImGui::Text("%s", describe(mesh, element).c_str());
     if (!stencil.ok()) {
-        ImGui::TextWrapped("%s", stencil.refusal.c_str());
+        ImGui::TextWrapped("%s", stencil.status.text().c_str());
         return;
     }
     ImGui::Text("rule: %s", stencil.rule.c_str());

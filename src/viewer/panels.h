@@ -15,6 +15,7 @@
 struct ImGuiInputTextCallbackData;
 
 #include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/display_data.h"
 #include "meshedit/overlay/overlay.h"
 #include "meshedit/viewer/editor.h"
 
@@ -25,18 +26,6 @@ struct FrameStats {
     double pick_ms = 0.0;   ///< the last pick (a ray into the face BVH; a rebuild included)
     int width = 0, height = 0;
     std::size_t triangles = 0;
-};
-
-/// The scalar field on screen (Alt+F): what the window computed for the current mesh.
-struct FieldDisplay {
-    const FieldInfo* info = nullptr;  ///< none shown
-    std::vector<double> values;       ///< by element index of its site
-    FieldColoring coloring;
-    FieldStats stats;
-    Vertex source;  ///< distance: where it is measured from
-    /// The settings it was computed with (ViewState::field_clip, colormap).
-    float clip = 0.0f;
-    std::optional<ColorMap> colormap;
 };
 
 /// What the user asked for in a panel this frame.

@@ -363,7 +363,7 @@ TEST(QuadSubdivisionPlan, CountsMatchTheResult) {
     for (int level = 1; level <= 3; ++level) {
         quad_subdivide(mesh);
         const SubdivisionPlan plan = plan_quad_subdivision(before, level);
-        ASSERT_TRUE(plan.ok()) << plan.refusal;
+        ASSERT_TRUE(plan.ok()) << plan.status;
         EXPECT_EQ(plan.vertices, static_cast<double>(mesh.n_vertices()));
         EXPECT_EQ(plan.edges, static_cast<double>(mesh.n_edges()));
         EXPECT_EQ(plan.faces, static_cast<double>(mesh.n_faces()));
@@ -373,7 +373,7 @@ TEST(QuadSubdivisionPlan, CountsMatchTheResult) {
 TEST(QuadSubdivisionPlan, RefusesWhatWouldNotFit) {
     const SubdivisionPlan plan = plan_quad_subdivision(test::quad_cube(), 16);
     ASSERT_FALSE(plan.ok());
-    EXPECT_EQ(plan.refusal.rfind("cannot subdivide: level ", 0), 0u) << plan.refusal;
+    EXPECT_EQ(plan.status.reason().rfind("cannot subdivide: level ", 0), 0u) << plan.status;
 }
 
 TEST(QuadSubdivision, ProgressRisesToOne) {

@@ -62,7 +62,7 @@ TEST(Stencil, InteriorLoopWeightsAreTheFormulasForValence3To12) {
         for (const auto& [scheme, u] : {std::pair{StencilScheme::LoopWarren, warren(n)},
                                         std::pair{StencilScheme::LoopOriginal, loop_original(n)}}) {
             const Stencil s = subdivision_stencil(mesh, ElementRef::vertex(Vertex(0)), scheme);
-            ASSERT_TRUE(s.ok()) << s.refusal;
+            ASSERT_TRUE(s.ok()) << s.status;
             EXPECT_EQ(s.rule, "interior vertex");
             EXPECT_EQ(s.valence, static_cast<std::size_t>(n));
             ASSERT_EQ(s.terms.size(), static_cast<std::size_t>(n + 1));
@@ -150,11 +150,11 @@ TEST(Stencil, RefusalsNameTheirReason) {
     const Stencil edge =
         subdivision_stencil(cube, ElementRef::edge(Edge(0)), StencilScheme::LoopWarren);
     EXPECT_FALSE(edge.ok());
-    EXPECT_NE(edge.refusal.find("Loop needs triangles"), std::string::npos) << edge.refusal;
+    EXPECT_NE(edge.status.reason().find("Loop needs triangles"), std::string::npos) << edge.status;
     EXPECT_TRUE(edge.terms.empty());
     const Stencil face =
         subdivision_stencil(cube, ElementRef::face(Face(0)), StencilScheme::LoopWarren);
-    EXPECT_NE(face.refusal.find("no face points"), std::string::npos) << face.refusal;
+    EXPECT_NE(face.status.reason().find("no face points"), std::string::npos) << face.status;
     const Stencil dead =
         subdivision_stencil(cube, ElementRef::vertex(Vertex(99)), StencilScheme::CatmullClark);
     EXPECT_FALSE(dead.ok());

@@ -182,15 +182,73 @@ TEST(EditorPolygons, ExtrudeDragBuildsTheTopologyOnce) {
     EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
 }
 
+// A bevel drag builds its faces once and then only places the corners (and derives what they
+// carry again); bevels that touch one another run again at every move instead. Either way
+// the result is bit for bit what the session's steps make.
+void bevel_drag(const std::vector<Vertex>& vertices, std::size_t topology_changes) {
+    Mesh cube = test::quad_cube();
+    auto u = cube.add_property<Vertex, double>("v:u");
+    auto corner = cube.add_property<Halfedge, double>("h:corner");
+    for (Vertex v : cube.vertices()) {
+        u[v] = 2.0 * cube.position(v).x - cube.position(v).z;
+    }
+    for (Halfedge h : cube.halfedges()) {
+        corner[h] = 0.25 * h.idx();
+    }
+    Editor ed = editor_with(cube);
+    ed.select(ElementRef::vertex(vertices[0]));
+    for (std::size_t i = 1; i < vertices.size(); ++i) {
+        ed.toggle_select(ElementRef::vertex(vertices[i]));
+    }
+    ASSERT_FALSE(ed.press(key_of('B'), kCtrl).refused);
+    ModalInput in;
+    for (int k = 1; k <= 100; ++k) {
+        in.dx = 0.9 * k;
+        ed.modal_input(in);
+    }
+    EXPECT_EQ(ed.modal_counts().topology_changes, topology_changes);
+    EXPECT_EQ(ed.modal_counts().position_amendments + ed.modal_counts().topology_changes, 101u);
+    const std::string status = ed.modal_status();
+    ASSERT_FALSE(ed.press(Key::Enter, 0).refused) << status;
+    EXPECT_EQ(ed.history().undo_steps(), 1u);
+
+    const std::vector<std::string>& session = ed.document().session;
+    ASSERT_GE(session.size(), vertices.size());
+    Mesh expected = cube;
+    for (auto text = session.end() - static_cast<std::ptrdiff_t>(vertices.size());
+         text != session.end(); ++text) {
+        const ops::Step step = ops::parse_step(*text);
+        EXPECT_EQ(step.verb->name, "bevel");
+        EXPECT_EQ(step.amounts[0], 0.3) << *text;  // 90 pixels at 300 a unit
+        ASSERT_TRUE(bevel_vertex(expected, Vertex(step.a), step.amounts[0]));
+    }
+    std::string why;
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
+    EXPECT_TRUE(!validate(ed.mesh()).has_value());
+    ed.run({Command::Undo});
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), cube, &why)) << why;
+    ed.run({Command::Redo});
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
+}
+
+TEST(EditorPolygons, BevelDragBuildsTheTopologyOnce) {
+    bevel_drag({Vertex(0), Vertex(6)}, 1);  // opposite corners of the cube: apart
+}
+
+TEST(EditorPolygons, BevelDragOfNeighboursRunsAgain) {
+    bevel_drag({Vertex(0), Vertex(1)}, 101);  // one edge apart: the second reads the first
+}
+
 // A refused amount (shrink 1) applies nothing and says why.
 TEST(EditorPolygons, RefusedAmountIsNotApplied) {
     const Mesh cube = test::quad_cube();
     Editor ed = editor_with(cube);
     ed.select(ElementRef::vertex(Vertex(0)));
     ed.press(key_of('B'), kCtrl);
+    const Mesh shown = ed.mesh();  // the bevel's faces at amount 0
     type(ed, "1");
     EXPECT_NE(ed.modal_status().find("refused: cannot bevel"), std::string::npos);
-    EXPECT_TRUE(test::identical(ed.mesh(), cube));
+    EXPECT_TRUE(test::identical(ed.mesh(), shown));  // the last amount that fits stays
     const Outcome out = ed.press(Key::Enter, 0);
     EXPECT_TRUE(out.refused);
     EXPECT_TRUE(test::identical(ed.mesh(), cube));

@@ -11,25 +11,9 @@
 #include <vector>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/op_status.h"
 
 namespace meshedit {
-
-/// Whether an operation is allowed; when not, the reason for a status line, always in the
-/// form "cannot <verb>: <why>" ("cannot flip: boundary edge"), so that every caller (the
-/// editor, `--ops`, tests) shows it as it is. The reason is a string literal: no allocation.
-class OpStatus {
-public:
-    static constexpr OpStatus ok() { return OpStatus(); }
-    static constexpr OpStatus refused(std::string_view reason) { return OpStatus(reason); }
-
-    explicit constexpr operator bool() const { return reason_.empty(); }
-    constexpr std::string_view reason() const { return reason_; }
-
-private:
-    constexpr OpStatus() = default;
-    explicit constexpr OpStatus(std::string_view reason) : reason_(reason) {}
-    std::string_view reason_;
-};
 
 /// Which operation's code names the elements of a rewiring diagram (h0, t0, a, b, v0 … as
 /// the diagrams above flip, split and collapse and in docs/halfedge.md call them); ByIndex:
@@ -237,6 +221,36 @@ OpStatus is_bevel_edge_ok(const Mesh& mesh, Edge e, double t);
 /// (Scotty3D refuses boundary edges; Blender bevels them, and so does MeshEdit).
 /// \return the new face.
 OpResult<Face> bevel_edge(Mesh& mesh, Edge e, double t);
+
+/// What a bevel of a vertex or an edge will make, taken just before it runs (as Scotty3D's
+/// bevel_positions() takes its start positions): the fan of halfedges split apart, the
+/// corner each one leaves after the bevel (the reused vertex or the one it appends), where
+/// each corner starts to slide, and the values the bevel's carry overwrites in place (of
+/// the reused corners and of the corners of the faces around). The interactive bevel builds
+/// the topology once and then only calls bevel_positions().
+struct BevelBase {
+    Face face;                       ///< the face the bevel makes
+    std::vector<Halfedge> o;         ///< the fan; corner w[i] slides along o[i]
+    std::vector<Vertex> w;           ///< the corners
+    std::vector<bool> reused;        ///< w[i] was a vertex before (the bevelled one, an end)
+    std::vector<Vertex> from;        ///< the vertex w[i] slides from
+    std::vector<Vec3> start;         ///< from[i]'s position before the bevel
+    std::vector<Halfedge> at_start;  ///< loop i's corner at from[i] (before the bevel)
+    std::vector<Halfedge> at_next;   ///< loop i's corner just before to_vertex(o[i+1])
+    std::uint32_t first_edge = 0;    ///< the new edge of loop i is first_edge + i
+    std::vector<std::vector<std::byte>> kept_w;         ///< reused w[i]'s attribute values
+    std::vector<std::vector<std::byte>> kept_arriving;  ///< twin(o[i+1])'s attribute values
+};
+/// \pre is_bevel_vertex_ok() / is_bevel_edge_ok() (any amount). Pure.
+BevelBase bevel_vertex_base(const Mesh& mesh, Vertex v);
+BevelBase bevel_edge_base(const Mesh& mesh, Edge e);
+/// \return ok if bevel_positions() can place the corners at `t` (0 <= t < 1). Pure.
+OpStatus is_bevel_positions_ok(const BevelBase& base, double t);
+/// Puts the corners a bevel made where the same bevel at amount `t` puts them and derives
+/// what they carry again with t's weights: the mesh is then bit for bit what the bevel at
+/// `t` makes. Writes only elements the bevel wrote (what a recorded change's refresh_after()
+/// takes in). \pre the bevel ran just after `base` was taken, and nothing since but this.
+OpStatus bevel_positions(Mesh& mesh, const BevelBase& base, double t);
 
 // ----------------------------------------------------- orientation
 // (src/local_ops/orientation.cpp)

@@ -28,10 +28,10 @@ namespace meshedit {
 /// The phase loop_step() runs next on `mesh`: 1 when no phased Loop is under way, else 2–4.
 int next_loop_phase(const Mesh& mesh);
 
-/// Why the next phase cannot run, or empty: phase 1 refuses what loop_subdivide() refuses
+/// Why the next phase cannot run, or ok: phase 1 refuses what loop_subdivide() refuses
 /// (is_loop_ok()); a triangle mesh is needed (polygons: triangulate first, so that the
 /// phases show Loop itself). Pure.
-std::string check_loop_step(const Mesh& mesh);
+OpStatus check_loop_step(const Mesh& mesh);
 
 /// What a phase did.
 struct LoopStepReport {
@@ -40,7 +40,7 @@ struct LoopStepReport {
     std::string message;    ///< "split 18 edges (phase 2 of 4: …)"
 };
 
-/// Runs the next phase. \pre check_loop_step(mesh) is empty.
+/// Runs the next phase. \pre check_loop_step(mesh) is ok.
 LoopStepReport loop_step(Mesh& mesh, const LoopOptions& options = {});
 
 }  // namespace meshedit

@@ -204,6 +204,15 @@ public:
     /// value. Not recorded (a whole-array write). No cost without attributes.
     template <class H>
     void permute_attributes(const std::vector<std::uint32_t>& source);
+    /// Element `h`'s values in every attribute of its kind, as bytes (empty without
+    /// attributes): what an operation that rewrites `h` in place keeps, to derive from it
+    /// again at another amount (bevel_positions()).
+    template <class H>
+    std::vector<std::byte> attribute_values(H h) const;
+    /// Puts back values attribute_values() took of `h` (while the same attributes exist).
+    /// Tells the recorder, like every setter.
+    template <class H>
+    void set_attribute_values(H h, const std::vector<std::byte>& values);
     /// An element nothing old describes (an edge across a face): the properties' defaults.
     template <class H>
     void carry_default(H to) {

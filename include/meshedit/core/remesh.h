@@ -9,6 +9,7 @@
 #include <string>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/op_status.h"
 
 namespace meshedit {
 
@@ -26,18 +27,18 @@ struct RemeshReport {
     std::size_t splits = 0, collapses = 0, flips = 0;
 };
 
-/// Why remesh() cannot run, or empty: polygons (triangulate first), no faces, a target
+/// Why remesh() cannot run, or ok: polygons (triangulate first), no faces, a target
 /// length that is negative, not finite, or so small against the mesh that the result would
 /// not fit (more than about 100 million triangles or the memory budget), iterations out of
 /// 1 to 100. Pure.
-std::string check_remesh(const Mesh& mesh, const RemeshOptions& options);
+OpStatus check_remesh(const Mesh& mesh, const RemeshOptions& options);
 
 /// Remeshes in place. Boundary edges and crease edges are features: their vertices move only
 /// along them (features are split at midpoints and collapsed along themselves, never smoothed)
 /// and a vertex on three or more feature edges never moves. Every other vertex is smoothed in
 /// its tangent plane and projected onto the closest point of the input surface (a
 /// TriangleTree of the input as it was). Collapses keep the link condition and turn no face
-/// over; garbage is collected at the end. \pre check_remesh() returned empty.
+/// over; garbage is collected at the end. \pre check_remesh() returned ok.
 /// \post validate(mesh) passes.
 RemeshReport remesh(Mesh& mesh, const RemeshOptions& options);
 

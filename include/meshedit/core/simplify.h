@@ -9,6 +9,7 @@
 #include <string>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/op_status.h"
 
 namespace meshedit {
 
@@ -38,10 +39,10 @@ struct SimplifyReport {
     bool stopped_early = false;
 };
 
-/// Why simplify() cannot run with `options`, or empty: the mesh has polygons (QEM here works
+/// Why simplify() cannot run with `options`, or ok: the mesh has polygons (QEM here works
 /// on triangles: triangulate first), no faces, a target of 0 or not below the face count, a
 /// negative or NaN error bound or angle. Pure.
-std::string check_simplify(const Mesh& mesh, const SimplifyOptions& options);
+OpStatus check_simplify(const Mesh& mesh, const SimplifyOptions& options);
 
 /// Collapses edges, cheapest quadric error first, until the mesh has at most
 /// options.target_faces faces or the next error exceeds options.max_error.
@@ -53,7 +54,7 @@ std::string check_simplify(const Mesh& mesh, const SimplifyOptions& options);
 /// quadric (a 3 × 3 solve; the best of the two ends and the midpoint when the system is
 /// ill-conditioned), and is refused when a face that stays would turn by more than
 /// max_normal_change_deg. Deleted elements stay tombstoned (garbage collection is the
-/// caller's). \pre check_simplify() returned empty. \post validate(mesh) passes.
+/// caller's). \pre check_simplify() returned ok. \post validate(mesh) passes.
 SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options);
 
 }  // namespace meshedit

@@ -33,7 +33,7 @@ struct StencilTerm {
 struct Stencil {
     /// Which rule applies: "interior vertex", "dart", "boundary vertex", "crease vertex",
     /// "corner", "isolated vertex", "interior edge", "boundary edge", "crease edge", "face".
-    /// Empty when there is no stencil (see `refusal`).
+    /// Empty when there is no stencil (see `status`).
     std::string rule;
     std::size_t valence = 0;  ///< vertex stencils: the number of edges at the vertex
     /// Contributing old vertices: the element's own first (a vertex; an edge's two ends;
@@ -43,10 +43,10 @@ struct Stencil {
     /// The formula with the numbers filled in, a line each, for the panel (Latin-1 only: the
     /// viewer's font has no Σ or π).
     std::vector<std::string> formula;
-    /// Why there is no stencil ("Loop needs triangles: face 3 has 4 corners …"), or empty.
-    std::string refusal;
+    /// Why there is no stencil ("Loop needs triangles: face 3 has 4 corners …"), or ok.
+    OpStatus status = OpStatus::ok();
 
-    bool ok() const { return refusal.empty(); }
+    bool ok() const { return static_cast<bool>(status); }
 };
 
 /// The stencil of `element` (a vertex, an edge, a face; a halfedge stands for its edge)

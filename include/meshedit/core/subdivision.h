@@ -53,9 +53,9 @@ struct SubdivisionPlan {
     /// Estimated peak memory in bytes: the last level's arrays four times over (the level's
     /// own temporaries, an undo snapshot or a writer's copy, normals, file buffers).
     double bytes = 0;
-    /// Empty when the levels may run; else why not, as "cannot subdivide: level 3 would …".
-    std::string refusal;
-    bool ok() const { return refusal.empty(); }
+    /// Ok when the levels may run; else why not, as "cannot subdivide: level 3 would …".
+    OpStatus status = OpStatus::ok();
+    bool ok() const { return static_cast<bool>(status); }
 };
 SubdivisionPlan plan_loop(const Mesh& mesh, int levels = 1);
 

@@ -108,10 +108,10 @@ struct Verb {
     /// For the viewer's key table, as the step applies to the selection or the whole mesh
     /// ("flip the selected edge").
     std::string_view key_help;
-    /// Why the step cannot run on `mesh` ("cannot flip: boundary edge"), or empty. Pure.
+    /// Why the step cannot run on `mesh` ("cannot flip: boundary edge"), or ok. Pure.
     /// \throws OpError (not a refusal) if the step names an element the mesh does not have.
-    std::string (*check)(const Mesh& mesh, const Step& step);
-    /// Runs the step. \pre check() returned empty.
+    OpStatus (*check)(const Mesh& mesh, const Step& step);
+    /// Runs the step. \pre check() returned ok.
     StepResult (*run)(Mesh& mesh, const Step& step, const RunOptions& options);
     /// For subdivision verbs (kLevels): what K levels would make and whether they fit, asked
     /// for a whole list before any step runs; null for the others.

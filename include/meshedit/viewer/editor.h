@@ -283,7 +283,7 @@ private:
     };
 
     /// The edit funnel (editor.cpp), as Scotty3D's Model::update_mesh: `check` says why the
-    /// edit cannot run (empty: it can) without touching anything; then a Transaction begins
+    /// edit cannot run (ok: it can) without touching anything; then a Transaction begins
     /// (transaction.h), `apply` changes the document, and on an exception (no memory, a file
     /// that cannot be read) the transaction rolls back and the edit is refused with the
     /// reason; otherwise deleted elements are collected (the selection remapped), the result
@@ -292,7 +292,7 @@ private:
     /// A `local` edit (one that changes what it touches: the element verbs) is a Recorded
     /// transaction (core/mesh_change.h): no snapshot, no garbage collection, so it costs what
     /// it touches at any mesh size. Any other is a Snapshot.
-    Outcome edit(const std::function<std::string()>& check,
+    Outcome edit(const std::function<OpStatus()>& check,
                  const std::function<Edited(Document&)>& apply, bool local = false);
     /// What edit() does to the document's own state after a successful edit: selection,
     /// hover.
@@ -325,11 +325,16 @@ private:
         std::vector<std::string> steps;  ///< Extrude, Inset, Bevel: the steps now, for the session
         /// Extrude, Inset: what each extrude that ran needs to move its corners again.
         std::vector<ExtrudeBase> built;
+        /// Bevel: what each bevel that ran needs to place its corners again; empty when two
+        /// bevels touch what the other wrote (each preview then runs them all again).
+        std::vector<BevelBase> bevelled;
         std::size_t topology_changes = 0;     ///< previews that ran the verb
         std::size_t position_amendments = 0;  ///< previews that only moved what it made
     };
     /// Extrude, Inset with their topology built: moves the corners to the amounts now.
     Outcome move_extruded();
+    /// Bevel with its topology built: places the corners at the amount now.
+    Outcome move_bevelled();
     /// Runs the modal edit with its amounts: rewinds the preview, records the new one.
     Outcome apply_modal();
     /// Undo (`forward` false) or redo, after ending a drag and cancelling an interactive edit.

@@ -1,0 +1,89 @@
+// The display data both programs derive from a document (display_data.h).
+
+#include "meshedit/overlay/display_data.h"
+
+namespace meshedit {
+
+void DisplayData::follow(const Mesh& mesh, const Change& change) {
+    if (change.mesh) {
+        features_stale_ = true;
+        field_stale_ = true;
+        if (change.region != nullptr && !tree_stale_ && tree_revision_ == change.before) {
+            tree_.update(mesh, faces_to_redraw(mesh, *change.region));
+            tree_revision_ = change.after;
+        } else {
+            tree_stale_ = true;
+        }
+    }
+    if (change.features) {
+        features_stale_ = true;
+    }
+}
+
+const OverlayBatch& DisplayData::features(const Mesh& mesh, bool edges, bool marks) {
+    if (features_stale_ || edges != features_edges_ || marks != features_marks_) {
+        const OverlayStyle style;
+        features_.clear();
+        if (edges) {
+            add_feature_edges(mesh, style, features_);
+        }
+        if (marks) {
+            add_loop_phase_marks(mesh, style, features_);
+        }
+        features_stale_ = false;
+        features_edges_ = edges;
+        features_marks_ = marks;
+    }
+    return features_;
+}
+
+OverlayBatch DisplayData::overlay(const SceneContent& scene, bool edges, bool marks) {
+    OverlayBatch batch;
+    if (scene.mesh != nullptr && (edges || marks)) {
+        batch = features(*scene.mesh, edges, marks);
+    }
+    add_scene_marks(scene, OverlayStyle(), batch);
+    return batch;
+}
+
+const FieldDisplay& DisplayData::field(const Mesh& mesh, const FieldRequest& request,
+                                       bool* recomputed) {
+    if (request.info == nullptr) {
+        field_ = {};
+        field_stale_ = true;
+        return field_;
+    }
+    // A click or a display toggle leaves the values as they are: O(mesh) saved per event.
+    if (!field_stale_ && field_.info == request.info && field_.source == request.source &&
+        field_.clip == request.clip && field_.colormap == request.colormap) {
+        return field_;
+    }
+    FieldOptions options;
+    options.source = request.source;
+    field_.info = request.info;
+    field_.source = request.source;
+    field_.clip = request.clip;
+    field_.colormap = request.colormap;
+    field_.values = compute_field(mesh, *request.info, options);
+    field_.stats = field_stats(field_.values);
+    field_.coloring = default_coloring(*request.info, field_.values, request.clip);
+    if (request.colormap) {
+        field_.coloring.map = *request.colormap;
+    }
+    field_stale_ = false;
+    if (recomputed != nullptr) {
+        *recomputed = true;
+    }
+    return field_;
+}
+
+const FaceBvh& DisplayData::picking_tree(const Mesh& mesh, std::uint64_t revision) {
+    if (tree_stale_ || tree_revision_ != revision) {
+        tree_.build(mesh);
+        tree_stale_ = false;
+        tree_revision_ = revision;
+    }
+    return tree_;
+}
+
+}  // namespace meshedit
