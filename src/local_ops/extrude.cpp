@@ -90,11 +90,22 @@ void place_corners(Mesh& mesh, const ExtrudeBase& r, double height, double shrin
     carry_extruded(mesh, r, shrink);
 }
 
+OpStatus is_extrude_face_live(const Mesh& mesh, Face f) {
+    MESHEDIT_ASSERT(mesh.is_valid(f));
+    if (mesh.is_deleted(f)) {
+        return OpStatus::refused("cannot extrude: the face is deleted");
+    }
+    return OpStatus::ok();
+}
+
 }  // namespace
 
 ExtrudeBase extrude_base(const Mesh& mesh, Face f) {
     ExtrudeBase r;
     r.f = f;
+    const std::size_t n = mesh.valence(f);
+    r.sides.reserve(n);
+    r.corners.reserve(n);
     for (const Halfedge side : mesh.halfedges(f)) {
         r.sides.push_back(side);
         r.corners.push_back(mesh.position(mesh.from_vertex(side)));
@@ -135,9 +146,8 @@ OpStatus extrude_positions(Mesh& mesh, const ExtrudeBase& r, double height, doub
 }
 
 OpStatus is_extrude_ok(const Mesh& mesh, Face f, double height, double shrink) {
-    MESHEDIT_ASSERT(mesh.is_valid(f));
-    if (mesh.is_deleted(f)) {
-        return OpStatus::refused("cannot extrude: the face is deleted");
+    if (const OpStatus ok = is_extrude_face_live(mesh, f); !ok) {
+        return ok;
     }
     return is_extrude_positions_ok(extrude_base(mesh, f), height, shrink);
 }
@@ -178,10 +188,14 @@ OpStatus is_inset_ok(const Mesh& mesh, Face f, double shrink) {
 // q[i] = p[i] + shrink (c - p[i]) + height n, with c the average of the corners and n the
 // unit Newell normal of the face (area-weighted, exact for a planar polygon).
 OpResult<Face> extrude_face(Mesh& mesh, Face f, double height, double shrink) {
-    if (const OpStatus ok = is_extrude_ok(mesh, f, height, shrink); !ok) {
+    // is_extrude_ok(), with the base it takes kept for the operation.
+    if (const OpStatus ok = is_extrude_face_live(mesh, f); !ok) {
         return ok;
     }
     const ExtrudeBase base = extrude_base(mesh, f);
+    if (const OpStatus ok = is_extrude_positions_ok(base, height, shrink); !ok) {
+        return ok;
+    }
     const std::vector<Halfedge>& h = base.sides;
     const auto n = static_cast<std::uint32_t>(h.size());
     const std::uint32_t first_v = base.first_vertex, first_e = base.first_edge,
