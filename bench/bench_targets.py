@@ -92,6 +92,22 @@ def remesh_target_rows(jobs):
     return [(label, target, measured, "yes" if all(checks) else "no")]
 
 
+def selection_target_rows(jobs, not_measured):
+    """Issue 37: region selection on a million faces (bench_selection)."""
+    rows = []
+    for job, label, limit in (("select_loop_1m", "edge loop, 1M quads (1000 edges)", 1.0),
+                              ("select_ring_1m", "edge ring, 1M quads (1000 edges)", 1.0),
+                              ("select_linked_1m", "select linked, 1M triangles", 50.0)):
+        x = ok_results(jobs.get(job, [])).get("meshedit", {})
+        if "p99_ms" not in x:
+            rows.append((label, f"p99 ≤ {limit:g} ms", not_measured(job, "not run"), "n/a"))
+            continue
+        rows.append((label, f"p99 ≤ {limit:g} ms",
+                     f"p99 {x['p99_ms']:.3f} ms, p50 {x['median_ms']:.3f} ms",
+                     "yes" if x["p99_ms"] <= limit else "no"))
+    return rows
+
+
 def editor_target_rows(jobs, not_measured):
     """Issue 20: the viewer's command layer and renderer at a million faces (bench_editor)."""
     rows = []
@@ -255,6 +271,7 @@ def targets_table(jobs):
                      not_measured("pick_1m", "bvh missing"), "n/a"))
 
     rows += editor_target_rows(jobs, not_measured)
+    rows += selection_target_rows(jobs, not_measured)
 
     # Loads that were once quadratic: the cost per face (per corner for the polygon) stays
     # flat from 100k to 1M.

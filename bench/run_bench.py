@@ -73,6 +73,8 @@ DEFAULT_CONFIGS = {
     + [(f"extrude_all_faces_{size}", "meshedit") for size in ("10k", "100k", "1m")],
     "bench_editor": [("editor_edits_torus_1m", "all"), ("editor_edits_scan_1m", "all"),
                      ("editor_loop_1m", "core"), ("editor_loop_1m", "viewer")],
+    "bench_selection": [(job, "meshedit") for job in ("select_loop_1m", "select_ring_1m",
+                                                       "select_linked_1m", "select_grow_1m")],
     "bench_catmark": [
         (job, impl)
         for job in ["cc_1m_1level"] + [f"cc_100k_levels_{k}" for k in range(1, 4)]
@@ -81,7 +83,7 @@ DEFAULT_CONFIGS = {
 }
 PROGRAMS = ["bench_bandwidth", "bench_loop", "bench_catmark", "bench_simplify", "bench_remesh",
             "bench_ops", "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor",
-            "bench_python"]
+            "bench_selection", "bench_python"]
 # The warm protocol (bench_util.h, `--warm`): the same configurations again with every
 # implementation reusing its memory across repetitions, so algorithm cost shows apart from
 # page-fault cost. Reported under the job's name + "_warm"; the targets are checked on both.

@@ -242,4 +242,40 @@ Mesh quad_sphere(int k) {
     return build_mesh(soup);
 }
 
+Mesh quad_grid(int nx, int ny) {
+    MESHEDIT_ASSERT(nx >= 1 && ny >= 1);
+    PolygonSoup soup;
+    for (int j = 0; j <= ny; ++j) {
+        for (int i = 0; i <= nx; ++i) {
+            soup.positions.push_back({double(i), double(j), 0.0});
+        }
+    }
+    auto id = [&](int i, int j) { return Index(j * (nx + 1) + i); };
+    for (int j = 0; j < ny; ++j) {
+        for (int i = 0; i < nx; ++i) {
+            soup.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    }
+    return build_mesh(soup);
+}
+
+Mesh quad_torus(int m, int n) {
+    MESHEDIT_ASSERT(m >= 3 && n >= 3);
+    PolygonSoup soup;
+    for (int i = 0; i < m; ++i) {
+        for (int j = 0; j < n; ++j) {
+            const double u = kTwoPi * i / m, w = kTwoPi * j / n;
+            soup.positions.push_back({(1.0 + 0.4 * std::cos(w)) * std::cos(u),
+                                      (1.0 + 0.4 * std::cos(w)) * std::sin(u), 0.4 * std::sin(w)});
+        }
+    }
+    auto id = [&](int i, int j) { return Index(((i + m) % m) * n + (j + n) % n); };
+    for (int i = 0; i < m; ++i) {
+        for (int j = 0; j < n; ++j) {
+            soup.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    }
+    return build_mesh(soup);
+}
+
 }  // namespace meshedit::shapes

@@ -72,6 +72,12 @@ Outcome Editor::run(Action action) {
         case Command::SelectAll:
         case Command::SelectNone:
         case Command::SelectLoop:
+        case Command::SelectEdgeLoop:
+        case Command::SelectEdgeRing:
+        case Command::SelectLinked:
+        case Command::SelectMore:
+        case Command::SelectLess:
+        case Command::SelectInvert:
         case Command::FrameSelection:
         case Command::Validate:
             return run_selection(c);

@@ -203,6 +203,13 @@ Outcome Editor::run_selection(Command command) {
             return select_none();
         case Command::SelectLoop:
             return select_boundary_loop();
+        case Command::SelectEdgeLoop:
+        case Command::SelectEdgeRing:
+        case Command::SelectLinked:
+        case Command::SelectMore:
+        case Command::SelectLess:
+        case Command::SelectInvert:
+            return select_region(command);
         case Command::FrameSelection:
             if (!selection_bounds()) {
                 return refused("select something to frame first");

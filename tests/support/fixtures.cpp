@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <tuple>
+#include <vector>
 
 #include "meshedit/core/shapes.h"
 
@@ -38,6 +39,23 @@ Mesh quad_cube() {
          {1, 1, 1},
          {-1, 1, 1}},
         {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
+}
+
+Mesh two_copies(const Mesh& mesh, const Vec3& offset) {
+    PolygonSoup soup = to_polygon_soup(mesh);
+    const auto n = static_cast<std::uint32_t>(soup.positions.size());
+    const std::size_t faces = soup.n_faces();
+    for (std::uint32_t i = 0; i < n; ++i) {
+        soup.positions.push_back(soup.positions[i] + offset);
+    }
+    for (std::size_t f = 0; f < faces; ++f) {
+        std::vector<std::uint32_t> copy;
+        for (std::uint32_t c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) {
+            copy.push_back(soup.indices[c] + n);
+        }
+        soup.add_face_range(copy);
+    }
+    return build_mesh(soup);
 }
 
 Mesh quad_strip(int n) {

@@ -38,6 +38,10 @@ Mesh quad_cube();
 /// faces (i, i+1, n+2+i, n+1+i).
 Mesh quad_strip(int n);
 
+/// Two copies of `mesh`, the second moved by `offset` and numbered after the first (two
+/// separate pieces: select linked, paths that cannot join).
+Mesh two_copies(const Mesh& mesh, const Vec3& offset);
+
 /// Vertex 0 at the origin surrounded by `n` triangles (a closed one-ring fan whose rim is
 /// the boundary): n + 1 vertices.
 Mesh one_ring(int n);

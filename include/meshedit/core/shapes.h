@@ -43,5 +43,12 @@ Mesh cylinder(int m, int n);
 /// sphere (central projection), welded along cube edges: 6k² + 2 vertices, 12k² edges, 6k²
 /// quads.
 Mesh quad_sphere(int k);
+/// Open grid of nx × ny unit quads in the z = 0 plane, vertex (i, j) at (i, j, 0) with index
+/// j·(nx+1) + i, quad (i, j) = face j·nx + i: every interior vertex has valence 4, so edge
+/// loops and rings run straight across it.
+Mesh quad_grid(int nx, int ny);
+/// Torus of m × n quads (R = 1, r = 0.4, in the z = 0 plane): vertex (i, j) (ring step i,
+/// tube step j) has index i·n + j, quad (i, j) = face i·n + j; every vertex has valence 4.
+Mesh quad_torus(int m, int n);
 
 }  // namespace meshedit::shapes

@@ -47,6 +47,12 @@ enum class Command {
     SelectAll,
     SelectNone,
     SelectLoop,      ///< the hole beside the selected boundary edge
+    SelectEdgeLoop,  ///< the edge loop through the selected edge (selection/selection.h)
+    SelectEdgeRing,  ///< the edge ring through the selected edge
+    SelectLinked,    ///< every face (or vertex, edge) reachable from the selection
+    SelectMore,      ///< grow the selected faces or vertices by one ring
+    SelectLess,      ///< shrink them by one ring
+    SelectInvert,    ///< every live element of the selected kind not selected
     FrameSelection,  ///< the camera centres on the selection
     // Moving the selection through the connectivity.
     Next,

@@ -210,6 +210,8 @@ public:
     /// Ctrl+A: every live element of the active element's kind (faces if nothing is
     /// selected). Alt+A: nothing.
     Outcome select_all();
+    /// Loops, rings, linked, more, less, invert (editor_regions.cpp, selection/selection.h).
+    Outcome select_region(Command command);
     Outcome select_none();
     /// Selects every edge of the hole the selected boundary edge (or halfedge) borders.
     Outcome select_boundary_loop();

@@ -1,0 +1,70 @@
+// The editor's region selection keys (editor_regions.cpp): Alt+E loop, Alt+Shift+E ring,
+// Ctrl+Shift+L linked, Ctrl+= / Ctrl+- more and less, Ctrl+I invert, on a quad grid whose
+// answers are known.
+
+#include <gtest/gtest.h>
+
+#include "meshedit/core/shapes.h"
+#include "meshedit/viewer/editor.h"
+#include "support/fixtures.h"
+#include "viewer/editor_test_util.h"
+
+namespace meshedit::viewer {
+namespace {
+
+// nx × ny unit quads (shapes.h): vertex (i, j) = j·(nx+1) + i, face (i, j) = j·nx + i; with
+// `two`, a copy beside it, numbered after.
+Mesh quad_grid(int nx, int ny, bool two = false) {
+    const Mesh one = shapes::quad_grid(nx, ny);
+    return two ? test::two_copies(one, {double(nx + 2), 0, 0}) : one;
+}
+
+std::size_t count(const Editor& ed) {
+    return ed.selected().size();
+}
+
+TEST(EditorRegions, AltESelectsTheLoopAndAltShiftEtheRing) {
+    Editor ed = editor_with(quad_grid(5, 4));
+    const Edge e = edge_of(ed.mesh(), 2 * 6 + 2, 2 * 6 + 3);  // on the line y = 2
+    ed.select(ElementRef::edge(e));
+    const Outcome loop = ed.press(key_of('E'), kAlt);
+    ASSERT_FALSE(loop.refused) << loop.message;
+    EXPECT_EQ(count(ed), 5u);
+    EXPECT_EQ(ed.selection().index, e.idx());  // the active edge stays active
+    EXPECT_EQ(loop.message, "selected the edge loop: 5 edges");
+    ed.select(ElementRef::edge(edge_of(ed.mesh(), 1 * 6 + 2, 2 * 6 + 2)));  // vertical
+    ASSERT_FALSE(ed.press(key_of('E'), kAlt | kShift).refused);
+    EXPECT_EQ(count(ed), 6u);
+    ed.select(ElementRef::face(Face(0)));
+    const Outcome refused = ed.press(key_of('E'), kAlt);
+    EXPECT_TRUE(refused.refused);
+    EXPECT_EQ(refused.message, "select an edge first, then press Alt+E for its loop");
+}
+
+TEST(EditorRegions, MoreLessInvertAndLinked) {
+    Editor ed = editor_with(quad_grid(5, 5, true));  // faces 0-24 and 25-49
+    ed.select(ElementRef::face(Face(12)));           // the centre of the first piece
+    ASSERT_FALSE(ed.press(Key::Equal, kCtrl).refused);
+    EXPECT_EQ(count(ed), 9u);
+    ASSERT_FALSE(ed.press(Key::KeypadAdd, kCtrl).refused);
+    EXPECT_EQ(count(ed), 25u);
+    ASSERT_FALSE(ed.press(Key::Minus, kCtrl).refused);
+    EXPECT_EQ(count(ed), 9u);
+    ASSERT_FALSE(ed.press(key_of('I'), kCtrl).refused);
+    EXPECT_EQ(count(ed), 41u);  // the other 16 of the first piece and all 25 of the second
+    ed.select(ElementRef::face(Face(30)));
+    ASSERT_FALSE(ed.press(key_of('L'), kCtrl | kShift).refused);
+    EXPECT_EQ(count(ed), 25u);
+    for (const ElementRef& e : ed.selected()) {
+        EXPECT_GE(e.index, 25u);
+    }
+    ed.select(ElementRef::vertex(Vertex(0)));
+    ASSERT_FALSE(ed.press(Key::Equal, kCtrl).refused);
+    EXPECT_EQ(count(ed), 3u);  // the corner and its two neighbours
+    ed.select(ElementRef::edge(Edge(0)));
+    EXPECT_TRUE(ed.press(Key::Equal, kCtrl).refused);
+    EXPECT_EQ(ed.history().undo_steps(), 0u);  // selecting is not an edit
+}
+
+}  // namespace
+}  // namespace meshedit::viewer
