@@ -1,10 +1,13 @@
 // bench_selection: region selection on a million faces (issue 37's targets): an edge loop
 // and an edge ring around a 1000 × 1000 quad torus (1M quads, every vertex of valence 4, so a
 // loop runs 1000 edges), and select linked from one face over the 1000 × 500 triangle torus
-// (1M triangles). MeshEdit only: the targets are absolute (loop ≤ 1 ms, linked ≤ 50 ms).
+// (1M triangles); box select of the middle quarter of a 1280 × 800 view of that torus, through
+// the mesh and of what the view shows (rays into the picking tree, built untimed).
+// MeshEdit only: the targets are absolute (loop ≤ 1 ms, linked ≤ 50 ms, box ≤ 16 ms).
 // Short jobs repeat until the timing is stable (bench_util.h); p99 comes with the median.
 //
-//   bench_selection --job select_loop_1m|select_ring_1m|select_linked_1m|select_grow_1m
+//   bench_selection --job select_loop_1m|select_ring_1m|select_linked_1m|select_grow_1m|
+//                         select_box_1m|select_box_visible_1m
 //                   --impl meshedit [--runs N]
 //   bench_selection --list
 
@@ -17,6 +20,7 @@
 
 #include "bench_util.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/overlay/region_pick.h"
 #include "meshedit/selection/selection.h"
 
 namespace {
@@ -35,8 +39,9 @@ double percentile(std::vector<double> v, double q) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::vector<std::string> names = {"select_grow_1m", "select_linked_1m", "select_loop_1m",
-                                            "select_ring_1m"};
+    const std::vector<std::string> names = {"select_box_1m",  "select_box_visible_1m",
+                                            "select_grow_1m", "select_linked_1m",
+                                            "select_loop_1m", "select_ring_1m"};
     const std::string impls[] = {"meshedit"};
     mb::JobArgs args;
     if (const std::optional<int> done = mb::read_command_line(argc, argv, names, impls, args)) {
@@ -48,7 +53,19 @@ int main(int argc, char** argv) {
         quads ? meshedit::shapes::quad_torus(1000, 1000) : meshedit::shapes::torus(1000, 500);
     std::size_t selected = 0;
     std::vector<double> ms;
-    if (quads) {
+    if (job.rfind("select_box", 0) == 0) {
+        meshedit::Camera camera;
+        camera.frame_mesh(mesh, 1280.0f / 800.0f);
+        meshedit::FaceBvh tree;
+        tree.build(mesh);
+        const meshedit::FaceBvh* visible = job == "select_box_visible_1m" ? &tree : nullptr;
+        const meshedit::ScreenBox box{{320, 200}, {960, 600}, 1280, 800};
+        ms = mb::time_runs(args.runs, nullptr, [&] {
+            selected = meshedit::elements_in_box(mesh, camera, box,
+                                                 meshedit::ElementRef::Kind::Face, visible)
+                           .size();
+        });
+    } else if (quads) {
         // A different edge each repetition, spread over the mesh.
         std::uint32_t k = 0;
         ms = mb::time_runs(args.runs, nullptr, [&] {

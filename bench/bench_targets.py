@@ -97,7 +97,10 @@ def selection_target_rows(jobs, not_measured):
     rows = []
     for job, label, limit in (("select_loop_1m", "edge loop, 1M quads (1000 edges)", 1.0),
                               ("select_ring_1m", "edge ring, 1M quads (1000 edges)", 1.0),
-                              ("select_linked_1m", "select linked, 1M triangles", 50.0)):
+                              ("select_linked_1m", "select linked, 1M triangles", 50.0),
+                              ("select_box_1m", "box select through, 1M triangles", 16.0),
+                              ("select_box_visible_1m", "box select of what shows, 1M triangles",
+                               16.0)):
         x = ok_results(jobs.get(job, [])).get("meshedit", {})
         if "p99_ms" not in x:
             rows.append((label, f"p99 ≤ {limit:g} ms", not_measured(job, "not run"), "n/a"))

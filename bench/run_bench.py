@@ -73,8 +73,9 @@ DEFAULT_CONFIGS = {
     + [(f"extrude_all_faces_{size}", "meshedit") for size in ("10k", "100k", "1m")],
     "bench_editor": [("editor_edits_torus_1m", "all"), ("editor_edits_scan_1m", "all"),
                      ("editor_loop_1m", "core"), ("editor_loop_1m", "viewer")],
-    "bench_selection": [(job, "meshedit") for job in ("select_loop_1m", "select_ring_1m",
-                                                       "select_linked_1m", "select_grow_1m")],
+    "bench_selection": [(job, "meshedit") for job in (
+        "select_loop_1m", "select_ring_1m", "select_linked_1m", "select_grow_1m",
+        "select_box_1m", "select_box_visible_1m")],
     "bench_catmark": [
         (job, impl)
         for job in ["cc_1m_1level"] + [f"cc_100k_levels_{k}" for k in range(1, 4)]

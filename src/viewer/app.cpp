@@ -275,6 +275,9 @@ void App::on_mouse_button(int button, int action, int mods) {
         swallow_release_ = false;
         return;
     }
+    if (box_mouse_button(button, action, mods)) {
+        return;
+    }
     if (action == GLFW_PRESS) {
         press_at_ = cursor_;
         press_button_ = button;
@@ -366,6 +369,9 @@ void App::on_cursor(double x, double y) {
         case DragMode::Element:
             drag_element_to_cursor();
             break;
+        case DragMode::BoxArmed:
+        case DragMode::Box:
+            break;  // the box follows the cursor when the frame is drawn
     }
     redraw_frames_ = kSettleFrames;
 }
@@ -472,6 +478,9 @@ void App::apply(const Outcome& outcome) {
     }
     if (c & kResetCamera) {
         reset_camera();
+    }
+    if (c & kBoxSelect) {
+        drag_ = DragMode::BoxArmed;
     }
     if (c & kFrameSelection) {
         frame_selection();
@@ -619,6 +628,7 @@ void App::draw_frame() {
     int window_w = 1, window_h = 1;
     glfwGetWindowSize(window_, &window_w, &window_h);
     draw_labels(labels_, camera_, window_w, window_h);
+    draw_box();
     const PanelRequests requests =
         panels_.draw(editor_, stats, status_, status_error_, display_.field());
     ImGui::Render();

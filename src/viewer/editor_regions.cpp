@@ -3,7 +3,9 @@
 // (selection/selection.h), the set becomes the selection again, the active element kept
 // where it still belongs.
 
+#include <cstdint>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "meshedit/selection/selection.h"
@@ -158,6 +160,40 @@ Outcome Editor::select_region(Command command) {
     doc_.also_selected = std::move(chosen);
     const std::size_t n = doc_.also_selected.size() + 1;
     return {kSelection, what + " " + std::to_string(n) + noun(kind_of(doc_.selection), n)};
+}
+
+ElementRef::Kind Editor::region_kind() const {
+    const std::vector<ElementRef> now = selected();
+    return now.empty() ? Kind::Face : kind_of(now.back());
+}
+
+Outcome Editor::select_elements(const std::vector<ElementRef>& elements, bool add,
+                                const std::string& what) {
+    std::vector<ElementRef> chosen = add ? selected() : std::vector<ElementRef>{};
+    const auto key = [](const ElementRef& e) {
+        const ElementRef k = as_kind(e);
+        return (std::uint64_t{static_cast<unsigned>(k.kind)} << 32) | k.index;
+    };
+    std::unordered_set<std::uint64_t> have;
+    for (const ElementRef& e : chosen) {
+        have.insert(key(e));
+    }
+    for (const ElementRef& e : elements) {
+        if (is_live(doc_.mesh, e) && have.insert(key(e)).second) {
+            chosen.push_back(e);
+        }
+    }
+    if (chosen.empty()) {
+        doc_.selection = {};
+        doc_.also_selected.clear();
+        return {kSelection, what + ": nothing inside (the selection is empty)"};
+    }
+    doc_.selection = chosen.back();
+    chosen.pop_back();
+    doc_.also_selected = std::move(chosen);
+    const std::size_t n = doc_.also_selected.size() + 1;
+    return {kSelection, what + ": " + std::to_string(n) + noun(kind_of(doc_.selection), n) +
+                            (add ? " selected in all" : " selected")};
 }
 
 }  // namespace meshedit::viewer

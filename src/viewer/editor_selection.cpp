@@ -210,6 +210,8 @@ Outcome Editor::run_selection(Command command) {
         case Command::SelectLess:
         case Command::SelectInvert:
             return select_region(command);
+        case Command::BoxSelect:
+            return {kBoxSelect, "box select: drag a rectangle (Shift adds, Alt selects through)"};
         case Command::FrameSelection:
             if (!selection_bounds()) {
                 return refused("select something to frame first");

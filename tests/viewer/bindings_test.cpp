@@ -78,6 +78,7 @@ const std::vector<Expected>& expected_bindings() {
             {Key::Minus, kCtrl, kMeshModes, {Command::SelectLess}},
             {Key::KeypadSubtract, kCtrl, kMeshModes, {Command::SelectLess}},
             {key_of('I'), kCtrl, kMeshModes, {Command::SelectInvert}},
+            {key_of('B'), 0, kMeshMode, {Command::BoxSelect}},
             {Key::Period, 0, kMeshModes, {Command::FrameSelection}},
             {Key::KeypadDecimal, 0, kMeshModes, {Command::FrameSelection}},
             {key_of('Q'), 0, kMeshModes, {Command::ToggleSmooth}},
@@ -186,7 +187,8 @@ TEST(Bindings, SameKeyDiffersByMode) {
     EXPECT_EQ(lookup(Key::Equal, kShift, Mode::Curve), Action{Command::AddPoint});
     EXPECT_FALSE(lookup(Key::Equal, kShift, Mode::Mesh));
     EXPECT_FALSE(lookup(key_of('F'), 0, Mode::Curve));
-    EXPECT_FALSE(lookup(key_of('B'), 0, Mode::Mesh));
+    EXPECT_EQ(lookup(key_of('B'), 0, Mode::Mesh), Action{Command::BoxSelect});
+    EXPECT_EQ(lookup(key_of('B'), 0, Mode::Surface), Action{Command::ToggleNets});
 }
 
 TEST(Bindings, ModifiersAreExactAndLockBitsIgnored) {

@@ -66,5 +66,25 @@ TEST(EditorRegions, MoreLessInvertAndLinked) {
     EXPECT_EQ(ed.history().undo_steps(), 0u);  // selecting is not an edit
 }
 
+// B hands the drag to the window (kBoxSelect); what the box holds comes back through
+// select_elements(), replacing the selection or, with Shift, adding to it.
+TEST(EditorRegions, BoxSelectsWhatTheWindowFound) {
+    Editor ed = editor_with(quad_grid(3, 3));
+    const Outcome armed = ed.press(key_of('B'), 0);
+    EXPECT_NE(armed.changes & kBoxSelect, 0u);
+    EXPECT_EQ(ed.region_kind(), ElementRef::Kind::Face);
+    ed.select_elements({ElementRef::face(Face(0)), ElementRef::face(Face(1))}, false, "box");
+    EXPECT_EQ(count(ed), 2u);
+    const Outcome added =
+        ed.select_elements({ElementRef::face(Face(1)), ElementRef::face(Face(4))}, true, "box");
+    EXPECT_EQ(count(ed), 3u);  // face 1 once
+    EXPECT_EQ(added.message, "box: 3 faces selected in all");
+    ed.select(ElementRef::vertex(Vertex(5)));
+    EXPECT_EQ(ed.region_kind(), ElementRef::Kind::Vertex);
+    EXPECT_EQ(ed.select_elements({}, false, "box").message,
+              "box: nothing inside (the selection is empty)");
+    EXPECT_EQ(count(ed), 0u);
+}
+
 }  // namespace
 }  // namespace meshedit::viewer

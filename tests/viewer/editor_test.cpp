@@ -93,7 +93,7 @@ TEST(Editor, DisplayTogglesAreNotEdits) {
     EXPECT_FALSE(ed.dirty());
     EXPECT_EQ(ed.history().undo_steps(), 0u);
     // Unbound keys do nothing; commands of another mode are refused when run directly.
-    const Outcome none = ed.press(key_of('B'), 0);
+    const Outcome none = ed.press(key_of('Z'), 0);
     EXPECT_EQ(none.changes, unsigned{kNothing});
     EXPECT_TRUE(none.message.empty());
     EXPECT_TRUE(ed.run({Command::AddPoint}).refused);

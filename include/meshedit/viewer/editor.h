@@ -212,6 +212,12 @@ public:
     Outcome select_all();
     /// Loops, rings, linked, more, less, invert (editor_regions.cpp, selection/selection.h).
     Outcome select_region(Command command);
+    /// Selects `elements` (a box's; active the last), or adds them to the selection;
+    /// `what` names the region in the message.
+    Outcome select_elements(const std::vector<ElementRef>& elements, bool add,
+                            const std::string& what);
+    /// The kind a region selects: the selection's (a halfedge's is Edge), faces if none.
+    ElementRef::Kind region_kind() const;
     Outcome select_none();
     /// Selects every edge of the hole the selected boundary edge (or halfedge) borders.
     Outcome select_boundary_loop();

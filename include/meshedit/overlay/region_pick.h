@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// Box selection (Blender's B): what a rectangle of the screen selects, as Blender does it —
+/// in vertex mode the vertices that land inside, in edge mode the edges both of whose ends
+/// do, in face mode the faces whose centre does. GL-free: points are projected with the
+/// camera's own matrices (project_to_pixels()'s arithmetic), and what the view hides is found
+/// with rays into the picking tree.
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "meshedit/core/element_ref.h"
+#include "meshedit/core/face_bvh.h"
+#include "meshedit/core/mesh.h"
+#include "meshedit/overlay/camera.h"
+
+namespace meshedit {
+
+struct ScreenBox {
+    glm::vec2 a, b;             ///< two opposite corners, pixels from the top-left of the image
+    int width = 1, height = 1;  ///< the image
+};
+
+/// The elements of `kind` (Vertex, Edge, Face; a Halfedge counts as Edge) that `box` selects,
+/// in increasing index order. With `visible` (a tree of `mesh`), only what the view shows: an
+/// element's point (a vertex, a face's centre) counts when a ray from the eye meets nothing
+/// before it; without, everything inside counts (X-ray, "through").
+std::vector<ElementRef> elements_in_box(const Mesh& mesh, const Camera& camera,
+                                        const ScreenBox& box, ElementRef::Kind kind,
+                                        const FaceBvh* visible = nullptr);
+
+}  // namespace meshedit

@@ -1,0 +1,61 @@
+// Box selection (region_pick.h): what a rectangle selects in each mode, through the mesh and
+// only where the view shows it, on a cube seen straight from the front.
+
+#include <gtest/gtest.h>
+
+#include "meshedit/core/face_bvh.h"
+#include "meshedit/core/normals.h"
+#include "meshedit/core/shapes.h"
+#include "meshedit/overlay/region_pick.h"
+#include "support/fixtures.h"
+
+namespace meshedit {
+namespace {
+
+// The cube [-1,1]³ from the front (+Z, azimuth and elevation 0), 200 × 200 pixels.
+Camera front() {
+    Camera camera;
+    camera.azimuth_deg = 0.0f;
+    camera.elevation_deg = 0.0f;
+    camera.distance = 6.0f;
+    camera.scene_radius = 2.0f;
+    return camera;
+}
+
+const ScreenBox kWhole{{0, 0}, {200, 200}, 200, 200};
+
+TEST(BoxSelect, ThroughTheMeshTakesEverythingInside) {
+    const Mesh cube = test::quad_cube();
+    EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Face).size(), 6u);
+    EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Vertex).size(), 8u);
+    EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Edge).size(), 12u);
+    // The left half of the image: the vertices with x = -1, and the edges between them.
+    const ScreenBox left{{0, 0}, {100, 200}, 200, 200};
+    const auto vertices = elements_in_box(cube, front(), left, ElementRef::Kind::Vertex);
+    ASSERT_EQ(vertices.size(), 4u);
+    for (const ElementRef& v : vertices) {
+        EXPECT_EQ(cube.position(Vertex(v.index)).x, -1.0);
+    }
+    EXPECT_EQ(elements_in_box(cube, front(), left, ElementRef::Kind::Edge).size(), 4u);
+    // Corners given either way round select the same.
+    const ScreenBox flipped{{100, 200}, {0, 0}, 200, 200};
+    EXPECT_EQ(elements_in_box(cube, front(), flipped, ElementRef::Kind::Vertex), vertices);
+}
+
+TEST(BoxSelect, VisibleOnlyTakesWhatTheViewShows) {
+    const Mesh cube = test::quad_cube();
+    FaceBvh tree;
+    tree.build(cube);
+    const auto faces = elements_in_box(cube, front(), kWhole, ElementRef::Kind::Face, &tree);
+    ASSERT_EQ(faces.size(), 1u);  // the front face; the others' centres lie behind it
+    EXPECT_GT(face_normal(cube, Face(faces[0].index)).z, 0.0);
+    const auto vertices = elements_in_box(cube, front(), kWhole, ElementRef::Kind::Vertex, &tree);
+    ASSERT_EQ(vertices.size(), 4u);
+    for (const ElementRef& v : vertices) {
+        EXPECT_EQ(cube.position(Vertex(v.index)).z, 1.0);
+    }
+    EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Edge, &tree).size(), 4u);
+}
+
+}  // namespace
+}  // namespace meshedit
