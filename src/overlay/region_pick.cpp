@@ -61,17 +61,15 @@ Vec3 centre(const Mesh& mesh, Face f) {
     return sum / n;
 }
 
-}  // namespace
-
-std::vector<ElementRef> elements_in_box(const Mesh& mesh, const Camera& camera,
-                                        const ScreenBox& box, ElementRef::Kind kind,
-                                        const FaceBvh* visible) {
-    const Projector project(camera, box.width, box.height);
-    const glm::vec2 lo = glm::min(box.a, box.b), hi = glm::max(box.a, box.b);
+// What a region selects: `in_region(pixel)` says whether a projected point lies inside.
+template <class InRegion>
+std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, int width,
+                                        int height, ElementRef::Kind kind, const FaceBvh* visible,
+                                        const InRegion& in_region) {
+    const Projector project(camera, width, height);
     const auto inside = [&](const Vec3& p) {
         const std::optional<glm::vec2> q = project(p);
-        return q && q->x >= lo.x && q->x <= hi.x && q->y >= lo.y && q->y <= hi.y &&
-               (visible == nullptr || shows(*visible, mesh, camera, p));
+        return q && in_region(*q) && (visible == nullptr || shows(*visible, mesh, camera, p));
     };
     std::vector<ElementRef> out;
     if (kind == ElementRef::Kind::Face) {
@@ -97,6 +95,47 @@ std::vector<ElementRef> elements_in_box(const Mesh& mesh, const Camera& camera,
         }
     }
     return out;
+}
+
+}  // namespace
+
+std::vector<ElementRef> elements_in_box(const Mesh& mesh, const Camera& camera,
+                                        const ScreenBox& box, ElementRef::Kind kind,
+                                        const FaceBvh* visible) {
+    const glm::vec2 lo = glm::min(box.a, box.b), hi = glm::max(box.a, box.b);
+    return elements_inside(mesh, camera, box.width, box.height, kind, visible,
+                           [&](const glm::vec2& q) {
+                               return q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
+                           });
+}
+
+std::vector<ElementRef> elements_in_lasso(const Mesh& mesh, const Camera& camera,
+                                          const std::vector<glm::vec2>& outline, int width,
+                                          int height, ElementRef::Kind kind,
+                                          const FaceBvh* visible) {
+    if (outline.size() < 3) {
+        return {};
+    }
+    glm::vec2 lo = outline[0], hi = outline[0];
+    for (const glm::vec2& p : outline) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    // Even-odd: a ray to the right of q crosses the outline an odd number of times.
+    const auto in_outline = [&](const glm::vec2& q) {
+        if (q.x < lo.x || q.x > hi.x || q.y < lo.y || q.y > hi.y) {
+            return false;
+        }
+        bool odd = false;
+        for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+            const glm::vec2 &a = outline[i], &b = outline[j];
+            if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
+                odd = !odd;
+            }
+        }
+        return odd;
+    };
+    return elements_inside(mesh, camera, width, height, kind, visible, in_outline);
 }
 
 }  // namespace meshedit

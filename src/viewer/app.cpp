@@ -275,7 +275,7 @@ void App::on_mouse_button(int button, int action, int mods) {
         swallow_release_ = false;
         return;
     }
-    if (box_mouse_button(button, action, mods)) {
+    if (region_mouse_button(button, action, mods)) {
         return;
     }
     if (action == GLFW_PRESS) {
@@ -372,6 +372,11 @@ void App::on_cursor(double x, double y) {
         case DragMode::BoxArmed:
         case DragMode::Box:
             break;  // the box follows the cursor when the frame is drawn
+        case DragMode::Lasso:
+            if (lasso_.empty() || glm::length(cursor_pixels() - lasso_.back()) >= 3.0f) {
+                lasso_.push_back(cursor_pixels());
+            }
+            break;
     }
     redraw_frames_ = kSettleFrames;
 }
@@ -628,7 +633,7 @@ void App::draw_frame() {
     int window_w = 1, window_h = 1;
     glfwGetWindowSize(window_, &window_w, &window_h);
     draw_labels(labels_, camera_, window_w, window_h);
-    draw_box();
+    draw_region();
     const PanelRequests requests =
         panels_.draw(editor_, stats, status_, status_error_, display_.field());
     ImGui::Render();

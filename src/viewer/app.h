@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -45,8 +46,9 @@ public:
     int run();
 
 private:
-    /// BoxArmed: B was pressed, the next left press starts a box; Box: drawing it.
-    enum class DragMode { None, Pending, Orbit, Pan, Element, BoxArmed, Box };
+    /// BoxArmed: B was pressed, the next left press starts a box; Box: drawing it; Lasso:
+    /// a Ctrl+right-drag drawing an outline.
+    enum class DragMode { None, Pending, Orbit, Pan, Element, BoxArmed, Box, Lasso };
 
     // GLFW callbacks (installed before ImGui's, which chains to them).
     void on_key(int key, int action, int mods);
@@ -109,11 +111,13 @@ private:
     bool follow_mesh_change(const Outcome& outcome);
     /// Moves the dragged vertex or control point under the cursor, in the screen plane.
     void drag_element_to_cursor();
-    /// Box select (app_region.cpp): the press, the rectangle drawn over the frame, the release.
-    bool box_mouse_button(int button, int action, int mods);
-    void draw_box();
-    void finish_box(bool add, bool through);
-    glm::vec2 box_from_{0.0f};  ///< where the box's drag began, framebuffer pixels
+    /// Box and lasso select (app_region.cpp): the press, the outline drawn over the frame,
+    /// the release.
+    bool region_mouse_button(int button, int action, int mods);
+    void draw_region();
+    void finish_region(bool add, bool through);
+    glm::vec2 box_from_{0.0f};      ///< where the box's drag began, framebuffer pixels
+    std::vector<glm::vec2> lasso_;  ///< the lasso's outline so far, framebuffer pixels
 
     void draw_scene(int width, int height);
     void draw_frame();

@@ -1,20 +1,38 @@
-// The window's box select (B): the next left press starts a rectangle, drawn over the frame
-// as the cursor moves; the release selects what it holds (overlay/region_pick.h) in the
-// selection's kind, only what the view shows unless Alt is held; Shift adds to the selection;
-// a right press cancels.
+// The window's box select (B: the next left press starts a rectangle; a right press cancels)
+// and lasso (Ctrl+right-drag draws an outline), drawn over the frame as the cursor moves; the
+// release selects what the region holds (overlay/region_pick.h) in the selection's kind, only
+// what the view shows unless Alt is held; Shift adds to the selection.
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <chrono>
+#include <string>
+#include <vector>
 
 #include "app.h"
 #include "meshedit/overlay/region_pick.h"
 
 namespace meshedit::viewer {
 
-bool App::box_mouse_button(int button, int action, int mods) {
+bool App::region_mouse_button(int button, int action, int mods) {
+    const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+    if (drag_ == DragMode::None && action == GLFW_PRESS && button == GLFW_MOUSE_BUTTON_RIGHT &&
+        ctrl && mesh_mode()) {
+        drag_ = DragMode::Lasso;
+        lasso_ = {cursor_pixels()};
+        return true;
+    }
+    if (drag_ == DragMode::Lasso) {
+        if (action == GLFW_RELEASE && button == GLFW_MOUSE_BUTTON_RIGHT) {
+            drag_ = DragMode::None;
+            finish_region((mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0);
+            lasso_.clear();
+        }
+        redraw_frames_ = kSettleFrames;
+        return true;
+    }
     if (drag_ != DragMode::BoxArmed && drag_ != DragMode::Box) {
         return false;
     }
@@ -32,14 +50,14 @@ bool App::box_mouse_button(int button, int action, int mods) {
         drag_ = DragMode::Box;
     } else if (action == GLFW_RELEASE && drag_ == DragMode::Box) {
         drag_ = DragMode::None;
-        finish_box((mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0);
+        finish_region((mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0);
     }
     redraw_frames_ = kSettleFrames;
     return true;
 }
 
-void App::draw_box() {
-    if (drag_ != DragMode::Box) {
+void App::draw_region() {
+    if (drag_ != DragMode::Box && drag_ != DragMode::Lasso) {
         return;
     }
     // Framebuffer pixels to ImGui's window coordinates.
@@ -47,14 +65,23 @@ void App::draw_box() {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float sx = display.x / static_cast<float>(fb.x),
                 sy = display.y / static_cast<float>(fb.y);
-    const glm::vec2 to = cursor_pixels();
+    const auto at = [&](glm::vec2 p) { return ImVec2(p.x * sx, p.y * sy); };
     ImDrawList* draw = ImGui::GetForegroundDrawList();
-    const ImVec2 a(box_from_.x * sx, box_from_.y * sy), b(to.x * sx, to.y * sy);
-    draw->AddRectFilled(a, b, IM_COL32(255, 160, 40, 40));
-    draw->AddRect(a, b, IM_COL32(255, 160, 40, 220), 0.0f, 0, 1.5f);
+    const ImU32 line = IM_COL32(255, 160, 40, 220);
+    if (drag_ == DragMode::Box) {
+        draw->AddRectFilled(at(box_from_), at(cursor_pixels()), IM_COL32(255, 160, 40, 40));
+        draw->AddRect(at(box_from_), at(cursor_pixels()), line, 0.0f, 0, 1.5f);
+        return;
+    }
+    std::vector<ImVec2> points;
+    for (const glm::vec2& p : lasso_) {
+        points.push_back(at(p));
+    }
+    draw->AddPolyline(points.data(), static_cast<int>(points.size()), line, ImDrawFlags_Closed,
+                      1.5f);
 }
 
-void App::finish_box(bool add, bool through) {
+void App::finish_region(bool add, bool through) {
     if (!mesh_mode() || !scene_->has_mesh()) {
         return;
     }
@@ -63,13 +90,18 @@ void App::finish_box(bool add, bool through) {
     const Mesh& mesh = editor_.mesh();
     const FaceBvh* visible =
         through ? nullptr : &display_.picking_tree(mesh, editor_.document().revision);
-    const ScreenBox box{box_from_, cursor_pixels(), size.x, size.y};
+    const bool lasso = !lasso_.empty();
     const std::vector<ElementRef> inside =
-        elements_in_box(mesh, camera_, box, editor_.region_kind(), visible);
-    // The info panel's "pick" time: a box is a pick of many elements.
+        lasso
+            ? elements_in_lasso(mesh, camera_, lasso_, size.x, size.y, editor_.region_kind(),
+                                visible)
+            : elements_in_box(mesh, camera_, ScreenBox{box_from_, cursor_pixels(), size.x, size.y},
+                              editor_.region_kind(), visible);
+    // The info panel's "pick" time: a region is a pick of many elements.
     last_pick_ms_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    apply(editor_.select_elements(inside, add, through ? "box (through)" : "box"));
+    const std::string what = std::string(lasso ? "lasso" : "box") + (through ? " (through)" : "");
+    apply(editor_.select_elements(inside, add, what));
 }
 
 }  // namespace meshedit::viewer

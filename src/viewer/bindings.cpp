@@ -128,11 +128,13 @@ constexpr std::array kTable{
 };
 
 // The mouse as each mode handles it (App::on_mouse_button, on_cursor, on_scroll).
-const std::array<HelpRow, 13> kMouseRows{{
+const std::array<HelpRow, 15> kMouseRows{{
     {"left-click", "select the element under the cursor (vertex near a corner, edge near an edge, halfedge just inside it, else face)", "mesh, surface"},
     {"Shift+left-click", "add the element under the cursor to the selection, or remove it", "mesh, surface"},
     {"left-drag on empty space / right-drag", "orbit (turntable about the up axis; O: trackball)", "mesh, surface"},
     {"left-drag on a vertex", "move it in the screen plane", "mesh, surface"},
+    {"B, then left-drag", "box select: what the view shows inside the rectangle, in the selection's kind (Shift adds, Alt selects through, right-click cancels)", "mesh"},
+    {"Ctrl+right-drag", "lasso select: what the view shows inside the outline (Shift adds, Alt selects through)", "mesh"},
     {"wheel", "zoom to the cursor", "mesh, surface"},
     {"left-click", "select the control point under the cursor", "curve"},
     {"left-drag on a control point", "move it", "curve"},

@@ -57,5 +57,27 @@ TEST(BoxSelect, VisibleOnlyTakesWhatTheViewShows) {
     EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Edge, &tree).size(), 4u);
 }
 
+// A lasso: an outline of the left half selects what a box there would; a triangle over the
+// top-left corner takes the two vertices there (front and back project to different pixels).
+TEST(LassoSelect, SelectsInsideTheOutline) {
+    const Mesh cube = test::quad_cube();
+    const std::vector<glm::vec2> left{{0, 0}, {100, 0}, {100, 200}, {0, 200}};
+    const ScreenBox box{{0, 0}, {100, 200}, 200, 200};
+    EXPECT_EQ(elements_in_lasso(cube, front(), left, 200, 200, ElementRef::Kind::Vertex),
+              elements_in_box(cube, front(), box, ElementRef::Kind::Vertex));
+    // x + y < 140 pixels: the front corner lands at about (45, 45), the back one at (61, 61).
+    const std::vector<glm::vec2> corner{{0, 0}, {140, 0}, {0, 140}};
+    const auto top_left =
+        elements_in_lasso(cube, front(), corner, 200, 200, ElementRef::Kind::Vertex);
+    ASSERT_EQ(top_left.size(), 2u);
+    for (const ElementRef& v : top_left) {
+        EXPECT_EQ(cube.position(Vertex(v.index)).x, -1.0);
+        EXPECT_EQ(cube.position(Vertex(v.index)).y, 1.0);
+    }
+    EXPECT_TRUE(elements_in_lasso(cube, front(), {{0, 0}, {5, 5}}, 200, 200,
+                                  ElementRef::Kind::Vertex)
+                    .empty());  // fewer than 3 points: no outline
+}
+
 }  // namespace
 }  // namespace meshedit

@@ -280,7 +280,7 @@ TEST(Bindings, HelpRowsMergeByLabelAndHelp) {
     EXPECT_EQ(find("F", "mesh, surface")->action, "flip the selected edge");
     // Key rows come first, then the mouse rows.
     const auto mouse = mouse_rows();
-    ASSERT_EQ(mouse.size(), 13u);
+    ASSERT_EQ(mouse.size(), 15u);
     ASSERT_GE(rows.size(), mouse.size());
     for (std::size_t i = 0; i < mouse.size(); ++i) {
         EXPECT_EQ(rows[rows.size() - mouse.size() + i].keys, mouse[i].keys);

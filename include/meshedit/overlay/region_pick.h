@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// Box selection (Blender's B): what a rectangle of the screen selects, as Blender does it —
-/// in vertex mode the vertices that land inside, in edge mode the edges both of whose ends
-/// do, in face mode the faces whose centre does. GL-free: points are projected with the
-/// camera's own matrices (project_to_pixels()'s arithmetic), and what the view hides is found
+/// Box and lasso selection (Blender's B and Ctrl+right-drag): what a region of the screen selects,
+/// as Blender does it — in vertex mode the vertices that land inside, in edge mode the edges both
+/// of whose ends do, in face mode the faces whose centre does. GL-free: points are projected with
+/// the camera's own matrices (project_to_pixels()'s arithmetic), and what the view hides is found
 /// with rays into the picking tree.
 
 #include <vector>
@@ -29,5 +29,12 @@ struct ScreenBox {
 std::vector<ElementRef> elements_in_box(const Mesh& mesh, const Camera& camera,
                                         const ScreenBox& box, ElementRef::Kind kind,
                                         const FaceBvh* visible = nullptr);
+
+/// The same for a lasso: a closed outline in pixels of a `width` × `height` image (the last
+/// point joins the first); a point is inside by the even-odd rule.
+std::vector<ElementRef> elements_in_lasso(const Mesh& mesh, const Camera& camera,
+                                          const std::vector<glm::vec2>& outline, int width,
+                                          int height, ElementRef::Kind kind,
+                                          const FaceBvh* visible = nullptr);
 
 }  // namespace meshedit
