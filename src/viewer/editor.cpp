@@ -78,6 +78,7 @@ Outcome Editor::run(Action action) {
         case Command::SelectMore:
         case Command::SelectLess:
         case Command::SelectInvert:
+        case Command::SelectPath:
         case Command::BoxSelect:
         case Command::FrameSelection:
         case Command::Validate:

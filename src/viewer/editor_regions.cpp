@@ -130,6 +130,35 @@ Outcome Editor::select_region(Command command) {
             what = more ? "grew the selection to" : "shrank the selection to";
             break;
         }
+        case Command::SelectPath: {
+            const bool two = now.size() == 2 && kind_of(now[0]) == kind_of(now[1]) &&
+                             (kind == Kind::Vertex || kind == Kind::Face);
+            if (!two) {
+                return refused(
+                    "select two vertices or two faces first (click one, Shift+click "
+                    "the other), then press Alt+P");
+            }
+            if (kind == Kind::Vertex) {
+                const auto path =
+                    shortest_vertex_path(mesh, Vertex(now[0].index), Vertex(now[1].index));
+                if (!path) {
+                    return refused("no path joins the two vertices: they are on separate pieces");
+                }
+                for (const Vertex v : *path) {
+                    chosen.push_back(ElementRef::vertex(v));
+                }
+            } else {
+                const auto path = shortest_face_path(mesh, Face(now[0].index), Face(now[1].index));
+                if (!path) {
+                    return refused("no path joins the two faces: they are on separate pieces");
+                }
+                for (const Face f : *path) {
+                    chosen.push_back(ElementRef::face(f));
+                }
+            }
+            what = "selected the shortest path:";
+            break;
+        }
         case Command::SelectInvert:
             if (kind == Kind::Vertex) {
                 take(invert(mesh, set_of<Vertex>(now, mesh.vertices_size(), kind)), vertices);

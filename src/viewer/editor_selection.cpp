@@ -209,6 +209,7 @@ Outcome Editor::run_selection(Command command) {
         case Command::SelectMore:
         case Command::SelectLess:
         case Command::SelectInvert:
+        case Command::SelectPath:
             return select_region(command);
         case Command::BoxSelect:
             return {kBoxSelect, "box select: drag a rectangle (Shift adds, Alt selects through)"};

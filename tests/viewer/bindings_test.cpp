@@ -79,6 +79,7 @@ const std::vector<Expected>& expected_bindings() {
             {Key::KeypadSubtract, kCtrl, kMeshModes, {Command::SelectLess}},
             {key_of('I'), kCtrl, kMeshModes, {Command::SelectInvert}},
             {key_of('B'), 0, kMeshMode, {Command::BoxSelect}},
+            {key_of('P'), kAlt, kMeshModes, {Command::SelectPath}},
             {Key::Period, 0, kMeshModes, {Command::FrameSelection}},
             {Key::KeypadDecimal, 0, kMeshModes, {Command::FrameSelection}},
             {key_of('Q'), 0, kMeshModes, {Command::ToggleSmooth}},

@@ -86,5 +86,26 @@ TEST(EditorRegions, BoxSelectsWhatTheWindowFound) {
     EXPECT_EQ(count(ed), 0u);
 }
 
+// Alt+P: the shortest path between two selected vertices (corner to corner of a 3 × 2 grid:
+// 5 edges, 6 vertices) or faces; refused with one selected or across two pieces.
+TEST(EditorRegions, AltPSelectsTheShortestPath) {
+    Editor ed = editor_with(quad_grid(3, 2, true));  // 12 vertices and 6 faces a piece
+    ed.select(ElementRef::vertex(Vertex(0)));
+    EXPECT_TRUE(ed.press(key_of('P'), kAlt).refused);
+    ed.toggle_select(ElementRef::vertex(Vertex(11)));
+    const Outcome path = ed.press(key_of('P'), kAlt);
+    ASSERT_FALSE(path.refused) << path.message;
+    EXPECT_EQ(path.message, "selected the shortest path: 6 vertices");
+    ed.select(ElementRef::face(Face(0)));
+    ed.toggle_select(ElementRef::face(Face(5)));
+    ASSERT_FALSE(ed.press(key_of('P'), kAlt).refused);
+    EXPECT_EQ(count(ed), 4u);  // (0,0) to (2,1): 3 steps
+    ed.select(ElementRef::face(Face(0)));
+    ed.toggle_select(ElementRef::face(Face(6)));  // the other piece
+    const Outcome apart = ed.press(key_of('P'), kAlt);
+    EXPECT_TRUE(apart.refused);
+    EXPECT_EQ(apart.message, "no path joins the two faces: they are on separate pieces");
+}
+
 }  // namespace
 }  // namespace meshedit::viewer

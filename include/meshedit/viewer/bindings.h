@@ -53,6 +53,7 @@ enum class Command {
     SelectMore,      ///< grow the selected faces or vertices by one ring
     SelectLess,      ///< shrink them by one ring
     SelectInvert,    ///< every live element of the selected kind not selected
+    SelectPath,      ///< the shortest path between the two selected vertices or faces
     BoxSelect,       ///< the next left drag draws a box that selects (the window's part)
     FrameSelection,  ///< the camera centres on the selection
     // Moving the selection through the connectivity.
