@@ -52,6 +52,16 @@ double unit_scale(const Mesh& mesh) {
 
 }  // namespace
 
+Vec3 face_centroid(const Mesh& mesh, Face f) {
+    Vec3 sum{0, 0, 0};
+    std::size_t n = 0;
+    for (const Vertex v : mesh.vertices(f)) {
+        sum += mesh.position(v);
+        ++n;
+    }
+    return n > 0 ? sum / static_cast<double>(n) : sum;
+}
+
 Vec3 face_normal(const Mesh& mesh, Face f) {
     const Vec3 area = face_area_vector(mesh, f);
     if (is_finite(area) && norm(area) > 1e-250) {

@@ -50,16 +50,6 @@ Vec3 flat(const Vec3& p) {
     return {p.x, p.y, 0.0};
 }
 
-Vec3 face_centroid(const Mesh& m, Face f) {
-    Vec3 c;
-    std::size_t n = 0;
-    for (Vertex v : m.vertices(f)) {
-        c += m.position(v);
-        ++n;
-    }
-    return n > 0 ? c / static_cast<double>(n) : c;
-}
-
 void add_halfedge_arrow(const Mesh& m, Halfedge h, const Color& color, const OverlayStyle& style,
                         OverlayBatch& out) {
     const Vec3 a = m.position(m.from_vertex(h));

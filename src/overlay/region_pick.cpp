@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <optional>
 
+#include "meshedit/core/normals.h"
+
 namespace meshedit {
 
 namespace {
@@ -51,16 +53,6 @@ bool shows(const FaceBvh& tree, const Mesh& mesh, const Camera& camera, const Ve
     return !tree.intersect(mesh, ray).has_value();
 }
 
-Vec3 centre(const Mesh& mesh, Face f) {
-    Vec3 sum{0, 0, 0};
-    double n = 0.0;
-    for (const Halfedge h : mesh.halfedges(f)) {
-        sum += mesh.position(mesh.to_vertex(h));
-        n += 1.0;
-    }
-    return sum / n;
-}
-
 // What a region selects: `in_region(pixel)` says whether a projected point lies inside.
 template <class InRegion>
 std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, int width,
@@ -74,7 +66,7 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
     std::vector<ElementRef> out;
     if (kind == ElementRef::Kind::Face) {
         for (const Face f : mesh.faces()) {
-            if (inside(centre(mesh, f))) {
+            if (inside(face_centroid(mesh, f))) {
                 out.push_back(ElementRef::face(f));
             }
         }

@@ -396,16 +396,6 @@ std::optional<std::vector<std::uint32_t>> dijkstra(std::size_t n, std::uint32_t 
     return std::vector<std::uint32_t>(path.rbegin(), path.rend());
 }
 
-Vec3 centroid(const Mesh& mesh, Face f) {
-    Vec3 sum{0, 0, 0};
-    double n = 0.0;
-    for (const Halfedge h : mesh.halfedges(f)) {
-        sum += mesh.position(mesh.to_vertex(h));
-        n += 1.0;
-    }
-    return sum / n;
-}
-
 }  // namespace
 
 std::optional<std::vector<Vertex>> shortest_vertex_path(const Mesh& mesh, Vertex a, Vertex b) {
@@ -436,10 +426,10 @@ std::optional<std::vector<Face>> shortest_face_path(const Mesh& mesh, Face f, Fa
     const auto path =
         dijkstra(mesh.faces_size(), f.idx(), g.idx(), [&](std::uint32_t i, const auto& visit) {
             const Face x(i);
-            const Vec3 c = centroid(mesh, x);
+            const Vec3 c = face_centroid(mesh, x);
             for (const Halfedge h : mesh.halfedges(x)) {
                 if (const Face y = mesh.face(Mesh::twin(h)); y.is_valid()) {
-                    visit(y.idx(), norm(centroid(mesh, y) - c));
+                    visit(y.idx(), norm(face_centroid(mesh, y) - c));
                 }
             }
         });

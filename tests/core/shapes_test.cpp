@@ -18,16 +18,6 @@
 namespace meshedit {
 namespace {
 
-Vec3 face_centroid(const Mesh& mesh, Face f) {
-    Vec3 c;
-    double n = 0.0;
-    for (Vertex v : mesh.vertices(f)) {
-        c += mesh.position(v);
-        n += 1.0;
-    }
-    return c / n;
-}
-
 std::size_t count_faces_with_valence(const Mesh& mesh, std::size_t valence) {
     std::size_t n = 0;
     for (Face f : mesh.faces()) {

@@ -137,6 +137,18 @@ TEST(EditorPolygons, ExtrudeTypedConfirmedOrCancelled) {
 // the same recorded change. Two faces, 100 moves, a user attribute that blends: Enter gives,
 // bit for bit, extrude_face() on each face at the last amounts, one undo step, and the
 // session's steps at those amounts.
+// An interactive edit's result is bit for bit `expected` (what the session's steps make from
+// `before`), valid, and undo and redo give `before` and it back.
+void expect_as_replayed(Editor& ed, const Mesh& before, const Mesh& expected) {
+    std::string why;
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
+    EXPECT_TRUE(!validate(ed.mesh()).has_value());
+    ed.run({Command::Undo});
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), before, &why)) << why;
+    ed.run({Command::Redo});
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
+}
+
 TEST(EditorPolygons, ExtrudeDragBuildsTheTopologyOnce) {
     Mesh cube = test::quad_cube();
     auto u = cube.add_property<Vertex, double>("v:u");
@@ -173,13 +185,7 @@ TEST(EditorPolygons, ExtrudeDragBuildsTheTopologyOnce) {
     }
     EXPECT_EQ(replayed[0].rfind("extrude:f1:", 0), 0u) << replayed[0];
     EXPECT_EQ(replayed[1].rfind("extrude:f2:", 0), 0u) << replayed[1];
-    std::string why;
-    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
-    EXPECT_TRUE(!validate(ed.mesh()).has_value());
-    ed.run({Command::Undo});
-    EXPECT_TRUE(bitwise_equal(ed.mesh(), cube, &why)) << why;
-    ed.run({Command::Redo});
-    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
+    expect_as_replayed(ed, cube, expected);
 }
 
 // A bevel drag builds its faces once and then only places the corners (and derives what they
@@ -222,13 +228,7 @@ void bevel_drag(const std::vector<Vertex>& vertices, std::size_t topology_change
         EXPECT_EQ(step.amounts[0], 0.3) << *text;  // 90 pixels at 300 a unit
         ASSERT_TRUE(bevel_vertex(expected, Vertex(step.a), step.amounts[0]));
     }
-    std::string why;
-    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
-    EXPECT_TRUE(!validate(ed.mesh()).has_value());
-    ed.run({Command::Undo});
-    EXPECT_TRUE(bitwise_equal(ed.mesh(), cube, &why)) << why;
-    ed.run({Command::Redo});
-    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
+    expect_as_replayed(ed, cube, expected);
 }
 
 TEST(EditorPolygons, BevelDragBuildsTheTopologyOnce) {

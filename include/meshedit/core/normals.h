@@ -16,6 +16,8 @@ namespace meshedit {
 Vec3 face_area_vector(const Mesh& mesh, Face f);
 /// Unit normal of `f` (zero for a degenerate face).
 Vec3 face_normal(const Mesh& mesh, Face f);
+/// The mean of `f`'s corners (where a face's dot is drawn and what a box selects it by).
+Vec3 face_centroid(const Mesh& mesh, Face f);
 
 /// Unit face normals for every face index (deleted faces get zero), written into `out`
 /// (resized; its capacity is reused between calls).
