@@ -91,6 +91,9 @@ std::string argument_words(const Verb& verb) {
     if ((verb.takes & kEdgePair) != 0) {
         parts.emplace_back("A-B+C-D (two edges by their vertex indices)");
     }
+    if ((verb.takes & kRegion) != 0) {
+        parts.emplace_back("R (faces: fI or fI..J, joined by +)");
+    }
     if ((verb.takes & kLevels) != 0) {
         parts.emplace_back("K from 1 to " + std::to_string(kMaxLevels));
     }
@@ -106,11 +109,42 @@ std::string argument_words(const Verb& verb) {
     throw SyntaxError("bad op '" + text + "': " + why);
 }
 
-// The target part of a step ("v12", "3-4", "0-1+5-6", "2").
+// A region: "f4", "f4..9", joined by '+' ("f1..3+f7").
+void parse_region(std::string_view arg, Step& step, const std::string& expected) {
+    step.target = Target::Region;
+    std::size_t start = 0;
+    while (start <= arg.size()) {
+        const std::size_t plus = std::min(arg.find('+', start), arg.size());
+        std::string_view item = arg.substr(start, plus - start);
+        if (item.empty() || item.front() != 'f') {
+            bad(step.text, expected);
+        }
+        item.remove_prefix(1);
+        std::array<std::uint32_t, 2> range{};
+        const auto dots = item.find("..");
+        if (!parse_index(item.substr(0, dots), range[0]) ||
+            !parse_index(
+                dots == std::string_view::npos ? item.substr(0, dots) : item.substr(dots + 2),
+                range[1])) {
+            bad(step.text, expected);
+        }
+        if (range[1] < range[0]) {
+            bad(step.text, "a range fI..J needs I <= J");
+        }
+        step.region.push_back(range);
+        start = plus + 1;
+    }
+}
+
+// The target part of a step ("v12", "3-4", "0-1+5-6", "2", "f1..3+f7").
 void parse_target(std::string_view arg, Step& step) {
     const Verb& verb = *step.verb;
     const std::string expected =
         "expected " + std::string(verb.syntax) + " with " + argument_words(verb);
+    if ((verb.takes & kRegion) != 0) {
+        parse_region(arg, step, expected);
+        return;
+    }
     const std::optional<ElementName> name = parse_element_name(arg);
     if (name && name->kind != ElementRef::Kind::Halfedge) {
         step.target = name->kind == ElementRef::Kind::Vertex ? Target::Vertex
@@ -206,6 +240,8 @@ bool Verb::accepts(Target target) const {
             return (takes & kFaceArg) != 0;
         case Target::EdgePair:
             return (takes & kEdgePair) != 0;
+        case Target::Region:
+            return (takes & kRegion) != 0;
     }
     return false;
 }
@@ -487,10 +523,63 @@ ElementRef named_element(const Mesh& mesh, const Step& step) {
             return ElementRef::edge(named_edge(mesh, step));
         case Target::Face:
             return ElementRef::face(named_face(mesh, step));
+        case Target::Region:
+            return ElementRef::face(named_faces(mesh, step).front());
         case Target::None:
             break;
     }
     return {};
+}
+
+std::vector<Face> named_faces(const Mesh& mesh, const Step& step) {
+    MESHEDIT_ASSERT(step.target == Target::Region);
+    std::vector<Face> out;
+    for (const auto& [first, last] : step.region) {
+        for (std::uint64_t f = first; f <= last; ++f) {
+            if (f >= mesh.faces_size() || mesh.is_deleted(Face(std::uint32_t(f)))) {
+                missing(step, "face", std::uint32_t(f), mesh.n_faces(), "faces");
+            }
+            out.push_back(Face(std::uint32_t(f)));
+        }
+    }
+    return out;
+}
+
+Step make_region_step(std::string_view name, const std::vector<Face>& faces,
+                      std::span<const double> amounts) {
+    std::vector<std::uint32_t> sorted;
+    for (const Face f : faces) {
+        sorted.push_back(f.idx());
+    }
+    std::sort(sorted.begin(), sorted.end());
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    MESHEDIT_ASSERT(!sorted.empty());
+    std::string text(name);
+    text += ':';
+    for (std::size_t i = 0; i < sorted.size();) {
+        std::size_t j = i;
+        while (j + 1 < sorted.size() && sorted[j + 1] == sorted[j] + 1) {
+            ++j;
+        }
+        text += i == 0 ? "f" : "+f";
+        text += std::to_string(sorted[i]);
+        if (j > i) {
+            text += "..";
+            text += std::to_string(sorted[j]);
+        }
+        i = j + 1;
+    }
+    const Verb* verb = find_verb(name);
+    MESHEDIT_ASSERT(verb != nullptr && verb->max_amounts >= amounts.size());
+    std::array<double, kMaxAmounts> values = verb->defaults;
+    for (std::size_t i = 0; i < verb->max_amounts; ++i) {
+        if (i < amounts.size()) {
+            values[i] = amounts[i];
+        }
+        text += i == 0 ? ':' : ',';
+        text += number_text(values[i]);
+    }
+    return parse_step(text);
 }
 
 bool draws_diagram(const Step& step) {
@@ -613,6 +702,7 @@ StepsRun run_steps(Mesh& mesh, const std::vector<Step>& steps, OnRefusal on_refu
         if (!result.selected.is_none()) {
             out.made.push_back(result.selected);
         }
+        out.made.insert(out.made.end(), result.selected_too.begin(), result.selected_too.end());
         out.last = result.selected;
         out.last_message = std::move(result.message);
         done += cost[i];

@@ -18,6 +18,7 @@
 #include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/ops/ops.h"
+#include "meshedit/selection/region_ops.h"
 
 namespace meshedit::ops {
 namespace {
@@ -510,6 +511,53 @@ StepResult run_flip_orientation(Mesh& mesh, const Step&, const RunOptions&) {
 constexpr std::array<double, kMaxAmounts> kNoDefaults{};
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
+// ------------------------------------------------------------------ regions
+
+FaceSet region_of(const Mesh& mesh, const Step& step) {
+    FaceSet out(mesh.faces_size());
+    for (const Face f : named_faces(mesh, step)) {
+        out.insert(f);
+    }
+    return out;
+}
+
+// The region's faces after a region step: the first selected, the rest with it.
+StepResult region_result(const std::vector<Face>& faces, std::string message) {
+    StepResult result = local(ElementRef::face(faces.front()), std::move(message));
+    for (std::size_t i = 1; i < faces.size(); ++i) {
+        result.selected_too.push_back(ElementRef::face(faces[i]));
+    }
+    return result;
+}
+
+std::string count_faces(std::size_t n) {
+    return std::to_string(n) + (n == 1 ? " face" : " faces");
+}
+
+OpStatus check_extrude_region(const Mesh& mesh, const Step& step) {
+    return is_extrude_region_ok(mesh, region_of(mesh, step), step.amounts[0]);
+}
+StepResult run_extrude_region(Mesh& mesh, const Step& step, const RunOptions&) {
+    const std::vector<Face> faces = named_faces(mesh, step);
+    RegionExtrude made;
+    extrude_region(mesh, region_of(mesh, step), step.amounts[0], &made);
+    return region_result(faces, "extruded " + count_faces(faces.size()) + " as one region by " +
+                                    number_text(step.amounts[0]) + ": " +
+                                    std::to_string(made.sides.size()) + " walls");
+}
+
+OpStatus check_subdivide_region(const Mesh& mesh, const Step& step) {
+    return is_subdivide_region_ok(mesh, region_of(mesh, step));
+}
+StepResult run_subdivide_region(Mesh& mesh, const Step& step, const RunOptions&) {
+    const std::size_t before = named_faces(mesh, step).size();
+    std::vector<Face> inside;
+    subdivide_region(mesh, region_of(mesh, step), &inside);
+    return region_result(inside, "subdivided " + count_faces(before) + " into " +
+                                     std::to_string(inside.size()) +
+                                     ", their neighbours cut into fans of triangles");
+}
+
 // clang-format off
 constexpr std::array kVerbs{
     Verb{"flip", kEdgeArg, 0, 0, kNoDefaults, "flip:A-B",
@@ -566,6 +614,18 @@ constexpr std::array kVerbs{
          "replaces vertex I or edge A-B with a face whose corners sit a fraction T (0 to below "
          "1) along each edge leaving it",
          "bevel the selected vertex or edge (drag: the amount)", check_bevel, run_bevel},
+    Verb{"extrude_region", kRegion, 1, 1, kNoDefaults, "extrude_region:R:H",
+         "extrudes the faces R as one region by height H along the area-weighted normal of "
+         "each of its pieces: walls join its border to the moved copy, shared sides stay "
+         "joined (Blender's extrude region); the faces R become the top",
+         "extrude the selected faces as one region (drag: the height)", check_extrude_region,
+         run_extrude_region, nullptr, false, kChangesTopology},
+    Verb{"subdivide_region", kRegion, 0, 0, kNoDefaults, "subdivide_region:R",
+         "subdivides the faces R once, linearly: triangles into four, other faces into one "
+         "quad per corner; each face beside R that gains a midpoint is cut into a fan of "
+         "triangles from it (the transition ring)",
+         "subdivide the selected faces once (linear, with a transition ring)",
+         check_subdivide_region, run_subdivide_region, nullptr, false, kChangesTopology},
     Verb{"crease", kEdgeArg, 0, 0, kNoDefaults, "crease:A-B",
          "toggles the `e:crease` mark of A-B (kept by COLLADA, used by Loop)",
          "toggle crease on the selected edge", check_crease, run_crease, nullptr, false, 0},

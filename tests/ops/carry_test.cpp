@@ -87,8 +87,8 @@ Registered register_properties(Mesh& mesh) {
 // Verbs that move vertices off affine combinations of the old ones: the lift of an extrude,
 // a move, the quadric's optimum, the remesher's relaxation, the teaching phases' moves.
 bool places_off_affine(std::string_view verb) {
-    return verb == "extrude" || verb == "move" || verb == "simplify" || verb == "remesh" ||
-           verb == "loop_step";
+    return verb == "extrude" || verb == "extrude_region" || verb == "move" || verb == "simplify" ||
+           verb == "remesh" || verb == "loop_step";
 }
 
 ElementRef random_live(const Mesh& mesh, Kind kind, std::mt19937& rng) {
@@ -105,6 +105,11 @@ ElementRef random_live(const Mesh& mesh, Kind kind, std::mt19937& rng) {
 ops::Step random_step(const Mesh& mesh, const ops::Verb& verb, std::mt19937& rng) {
     if (verb.accepts(ops::Target::None)) {
         return ops::make_step(verb.name, mesh);
+    }
+    if (verb.accepts(ops::Target::Region)) {
+        const double height = 0.25;
+        return ops::make_region_step(verb.name, test::random_region(mesh, rng),
+                                     std::span<const double>(&height, verb.max_amounts));
     }
     if (verb.accepts(ops::Target::EdgePair)) {
         // A weld joins boundary edges: pick two.

@@ -78,7 +78,8 @@ TEST(OpsLanguage, ParsesElementsAndAmounts) {
 TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
     EXPECT_EQ(syntax_error("twist:0-1"),
               "unknown op 'twist:0-1' (the verbs are flip, split, bisect, collapse, dissolve, "
-              "make_boundary, fill, weld, poke, extrude, inset, bevel, crease, move, loop, "
+              "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, "
+              "subdivide_region, crease, move, loop, "
               "loop_step, catmull_clark, linear, simplify, remesh, triangulate, "
               "flip_orientation or compact)");
     EXPECT_EQ(syntax_error("flip:0"),
@@ -205,6 +206,53 @@ TEST(OpsLanguage, RefusalsAndMissingElementsAreTold) {
     }
 }
 
+// A region is faces and ranges joined by '+', written back sorted and merged into ranges;
+// a missing face is bad input, a refusal names the reason.
+TEST(OpsLanguage, RegionsParseRoundTripAndRefuse) {
+    const Step step = parse_step("extrude_region:f1..3+f7:0.5");
+    ASSERT_EQ(step.target, Target::Region);
+    EXPECT_EQ(step.region, (std::vector<std::array<std::uint32_t, 2>>{{1, 3}, {7, 7}}));
+    EXPECT_EQ(step.amounts[0], 0.5);
+    const double h = 0.5;
+    EXPECT_EQ(make_region_step("extrude_region", {Face(7), Face(3), Face(1), Face(2)},
+                               std::span<const double>(&h, 1))
+                  .text,
+              "extrude_region:f1..3+f7:0.5");
+    EXPECT_EQ(make_region_step("subdivide_region", {Face(4)}).text, "subdivide_region:f4");
+    EXPECT_EQ(syntax_error("extrude_region:f3..1:0.5"),
+              "bad op 'extrude_region:f3..1:0.5': a range fI..J needs I <= J");
+    EXPECT_EQ(syntax_error("subdivide_region:3-4"),
+              "bad op 'subdivide_region:3-4': expected subdivide_region:R with R (faces: fI or "
+              "fI..J, joined by +)");
+    EXPECT_EQ(syntax_error("extrude_region:f1"),
+              "bad op 'extrude_region:f1': expected extrude_region:R:H");
+
+    Mesh grid = shapes::quad_grid(3, 3);
+    try {
+        apply_steps(grid, parse("subdivide_region:f8..9"));
+        FAIL() << "a missing face was found";
+    } catch (const OpError& e) {
+        EXPECT_FALSE(e.refused());
+        EXPECT_STREQ(e.what(), "subdivide_region:f8..9: no face 9 (the mesh has 9 faces)");
+    }
+    Mesh cube = test::quad_cube();
+    const Mesh before = cube;
+    try {
+        apply_steps(cube, parse("extrude_region:f0..5:1"));
+        FAIL() << "a closed surface was extruded";
+    } catch (const OpError& e) {
+        EXPECT_TRUE(e.refused());
+        EXPECT_STREQ(e.what(),
+                     "extrude_region:f0..5:1 refused: cannot extrude the region: it is a whole "
+                     "closed surface, with no border to extrude from");
+    }
+    EXPECT_TRUE(test::identical(cube, before));
+    // The run selects the whole region.
+    const StepsRun run = run_steps(grid, parse("extrude_region:f3..5:0.5"), OnRefusal::Stop);
+    EXPECT_EQ(run.made.size(), 3u);
+    EXPECT_VALID(grid);
+}
+
 // Loop refuses polygons, counting them and naming the step that makes it possible.
 TEST(OpsLanguage, LoopRefusesPolygonsAndSaysWhy) {
     Mesh mesh = shapes::quad_sphere(1);
@@ -294,13 +342,16 @@ namespace meshedit::ops {
 namespace {
 
 // The table, not the programs, knows which verbs change the connectivity and get a rewiring
-// diagram: a crease mark and a move do neither; whole-mesh steps get no diagram.
+// diagram: a crease mark and a move do neither; whole-mesh steps get no diagram, nor do the
+// region verbs (their neighbourhood is the whole region).
 TEST(VerbTraits, CreaseAndMoveKeepTheConnectivityAndDrawNoDiagram) {
     for (const Verb& verb : verbs()) {
         const bool keeps = verb.name == "crease" || verb.name == "move";
+        const bool region = (verb.takes & kRegion) != 0;
         EXPECT_EQ((verb.traits & kChangesTopology) != 0, !keeps) << verb.name;
-        EXPECT_EQ((verb.traits & kDrawsDiagram) != 0, !keeps) << verb.name;
+        EXPECT_EQ((verb.traits & kDrawsDiagram) != 0, !keeps && !region) << verb.name;
     }
+    EXPECT_FALSE(draws_diagram(parse_step("extrude_region:f1..3+f7:0.5")));
     EXPECT_TRUE(draws_diagram(parse_step("flip:0-6")));
     EXPECT_TRUE(draws_diagram(parse_step("dissolve:v3")));
     EXPECT_FALSE(draws_diagram(parse_step("crease:0-6")));

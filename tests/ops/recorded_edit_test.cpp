@@ -77,10 +77,16 @@ TEST(RecordedEdit, EveryElementVerbUndoesAndRedoesBitForBit) {
         for (Mesh& mesh : test_meshes()) {
             for (int i = 0; i < 25; ++i) {
                 ElementRef a, b;
-                if (!random_target(mesh, verb, rng, a, b)) {
+                const double height = 0.25;
+                const bool region = verb.accepts(ops::Target::Region);
+                if (!region && !random_target(mesh, verb, rng, a, b)) {
                     continue;
                 }
-                const ops::Step step = ops::make_step(verb.name, mesh, a, {}, b);
+                const ops::Step step =
+                    region
+                        ? ops::make_region_step(verb.name, test::random_region(mesh, rng),
+                                                std::span<const double>(&height, verb.max_amounts))
+                        : ops::make_step(verb.name, mesh, a, {}, b);
                 const Mesh before = mesh;
                 ASSERT_TRUE(test::is_valid(before)) << verb.name << " before";
                 MeshRecorder recorder(mesh);

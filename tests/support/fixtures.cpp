@@ -177,4 +177,23 @@ std::vector<NamedMesh> sweep_corpus() {
     return out;
 }
 
+std::vector<Face> random_region(const Mesh& mesh, std::mt19937& rng) {
+    std::vector<Face> out;
+    for (int tries = 0; tries < 100 && mesh.faces_size() > 0 && out.empty(); ++tries) {
+        const Face f(static_cast<std::uint32_t>(rng() % mesh.faces_size()));
+        if (!mesh.is_deleted(f)) {
+            out.push_back(f);
+        }
+    }
+    if (!out.empty()) {
+        for (const Halfedge h : mesh.halfedges(out.front())) {
+            const Face g = mesh.face(Mesh::twin(h));
+            if (g.is_valid() && rng() % 2 == 0) {
+                out.push_back(g);
+            }
+        }
+    }
+    return out;
+}
+
 }  // namespace meshedit::test

@@ -4,6 +4,7 @@
 /// used by invariant sweeps.
 
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -79,5 +80,9 @@ std::vector<NamedMesh> pillow_family();
 /// Bigger meshes for the sweep (thousands to tens of thousands of faces): a 40,000-face
 /// torus, an icosphere of 5,120 faces and a 20,000-face open grid.
 std::vector<NamedMesh> big_corpus();
+
+/// A random region for the region verbs: a live face and, with odds one in two each, the
+/// faces across its sides (none when the mesh has no face).
+std::vector<Face> random_region(const Mesh& mesh, std::mt19937& rng);
 
 }  // namespace meshedit::test

@@ -36,10 +36,12 @@ enum Arg : unsigned {
     kEdgeArg = 1u << 3,    ///< `flip:A-B`: an edge by the indices of its two ends
     kFaceArg = 1u << 4,    ///< `extrude:f7`: a face by its index
     kEdgePair = 1u << 5,   ///< `weld:A-B+C-D`: two edges
+    /// `extrude_region:f1..3+f7`: a region of faces, as indices and ranges joined by '+'
+    kRegion = 1u << 6,
 };
 
 /// The element kind a step names.
-enum class Target { None, Vertex, Edge, Face, EdgePair };
+enum class Target { None, Vertex, Edge, Face, EdgePair, Region };
 
 struct Verb;
 
@@ -66,6 +68,8 @@ struct Step {
     std::uint32_t c = 0;  ///< EdgePair: the second edge's ends
     std::uint32_t d = 0;
     int levels = 1;  ///< kLevels
+    /// Region: the faces as ranges of indices, first and last included (`f4` is {4, 4}).
+    std::vector<std::array<std::uint32_t, 2>> region;
     /// The amounts (height, shrink, t): as written, the verb's defaults after them.
     std::array<double, kMaxAmounts> amounts{};
     std::string text;  ///< the step as written ("flip:3-4"), for messages
@@ -76,6 +80,8 @@ struct StepResult {
     /// The element the step documents (flip: the edge; split: the new vertex; collapse: the
     /// survivor; crease: the edge); none for whole-mesh steps.
     ElementRef selected;
+    /// A region step's other results (the rest of the extruded region), selected with it.
+    std::vector<ElementRef> selected_too;
     /// Whole-mesh steps that renumber edges, halfedges and faces (vertices keep their
     /// indices): a selected vertex survives them, nothing else does.
     bool renumbers = false;
@@ -177,6 +183,11 @@ std::optional<std::string> session_header_value(std::string_view text, std::stri
 Step make_step(std::string_view verb, const Mesh& mesh, const ElementRef& target = {},
                std::span<const double> amounts = {}, const ElementRef& second = {});
 
+/// The region step `verb` on `faces` (live faces of `mesh`, any order) with `amounts`, its
+/// faces written as sorted ranges ("extrude_region:f4..6+f9:0.5"). \pre `verb` takes kRegion.
+Step make_region_step(std::string_view verb, const std::vector<Face>& faces,
+                      std::span<const double> amounts = {});
+
 /// An element named in text, the one grammar of `--ops` steps, `--select` and the viewer's
 /// session: `v12` (a vertex), `3-4` (the edge between two vertices), `h3-4` (the halfedge
 /// 3 -> 4), `f7` (a face); the older `--select` spellings `v:12`, `e:3-4`, `h:3-4`, `f:7` are
@@ -194,6 +205,9 @@ std::optional<ElementName> parse_element_name(std::string_view text);
 Vertex named_vertex(const Mesh& mesh, const Step& step);
 Edge named_edge(const Mesh& mesh, const Step& step);
 Face named_face(const Mesh& mesh, const Step& step);
+/// The faces a Region step names, as a set over `mesh`'s face indices.
+/// \throws OpError (not a refusal) if one is out of range or deleted.
+std::vector<Face> named_faces(const Mesh& mesh, const Step& step);
 /// A weld's second edge (C-D).
 Edge named_second_edge(const Mesh& mesh, const Step& step);
 /// The element a step names (a weld: its first edge); none for whole-mesh steps.

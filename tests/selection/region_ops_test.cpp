@@ -1,0 +1,225 @@
+// Extrude and subdivide a region of faces as one (region_ops.h), on quad grids and triangle
+// meshes whose answers are known by construction, and against whole-mesh linear subdivision.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "meshedit/core/quad_subdivision.h"
+#include "meshedit/core/shapes.h"
+#include "meshedit/selection/region_ops.h"
+#include "support/fixtures.h"
+#include "support/mesh_compare.h"
+
+namespace meshedit {
+namespace {
+
+FaceSet faces(const Mesh& mesh, const std::vector<std::uint32_t>& indices) {
+    FaceSet out(mesh.faces_size());
+    for (const std::uint32_t f : indices) {
+        out.insert(Face(f));
+    }
+    return out;
+}
+
+// The middle 3 × 3 quads of a 5 × 5 grid: quad (i, j) is face 5 j + i.
+std::vector<std::uint32_t> middle_nine() {
+    std::vector<std::uint32_t> out;
+    for (std::uint32_t j = 1; j <= 3; ++j) {
+        for (std::uint32_t i = 1; i <= 3; ++i) {
+            out.push_back(5 * j + i);
+        }
+    }
+    return out;
+}
+
+double face_area(const Mesh& mesh, Face f) {
+    Vec3 n{0, 0, 0};
+    for (const Halfedge h : mesh.halfedges(f)) {
+        n += cross(mesh.position(mesh.from_vertex(h)), mesh.position(mesh.to_vertex(h)));
+    }
+    return 0.5 * norm(n);
+}
+
+// The expected extrusion of the middle 3 × 3 of a 5 × 5 grid by `h`: the 16 quads around it
+// on the floor, the 9 on top, and 12 walls.
+Mesh expected_extrusion(double h) {
+    std::vector<Vec3> positions;
+    std::vector<std::vector<std::uint32_t>> polygons;
+    std::map<std::array<double, 3>, std::uint32_t> index;
+    const auto at = [&](double x, double y, double z) {
+        const auto [it, made] =
+            index.emplace(std::array<double, 3>{x, y, z}, std::uint32_t(positions.size()));
+        if (made) {
+            positions.push_back({x, y, z});
+        }
+        return it->second;
+    };
+    const auto inside = [](int i, int j) { return i >= 1 && i <= 3 && j >= 1 && j <= 3; };
+    for (int j = 0; j < 5; ++j) {
+        for (int i = 0; i < 5; ++i) {
+            const double z = inside(i, j) ? h : 0.0;
+            polygons.push_back(
+                {at(i, j, z), at(i + 1, j, z), at(i + 1, j + 1, z), at(i, j + 1, z)});
+        }
+    }
+    // Walls along the region's border, counter-clockwise seen from outside.
+    for (int k = 1; k <= 3; ++k) {
+        polygons.push_back({at(k, 1, 0), at(k + 1, 1, 0), at(k + 1, 1, h), at(k, 1, h)});
+        polygons.push_back({at(4, k, 0), at(4, k + 1, 0), at(4, k + 1, h), at(4, k, h)});
+        polygons.push_back({at(k + 1, 4, 0), at(k, 4, 0), at(k, 4, h), at(k + 1, 4, h)});
+        polygons.push_back({at(1, k + 1, 0), at(1, k, 0), at(1, k, h), at(1, k + 1, h)});
+    }
+    return test::mesh_from_faces(positions, polygons);
+}
+
+TEST(ExtrudeRegion, NineQuadsRiseAsOneWithTwelveWalls) {
+    Mesh mesh = shapes::quad_grid(5, 5);
+    RegionExtrude made;
+    ASSERT_TRUE(extrude_region(mesh, faces(mesh, middle_nine()), 0.5, &made));
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(mesh.n_vertices(), 36u + 12u);
+    EXPECT_EQ(mesh.n_edges(), 60u + 24u);
+    EXPECT_EQ(mesh.n_faces(), 25u + 12u);
+    EXPECT_EQ(made.sides.size(), 12u);
+    EXPECT_EQ(made.moved.size(), 16u);
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected_extrusion(0.5)));
+    // The region's faces are the top and still share their inner edges.
+    for (const std::uint32_t f : middle_nine()) {
+        for (const Halfedge h : mesh.halfedges(Face(f))) {
+            EXPECT_EQ(mesh.position(mesh.to_vertex(h)).z, 0.5);
+        }
+    }
+}
+
+TEST(ExtrudeRegion, MovingTheTopAgainEqualsExtrudingThere) {
+    Mesh moved = shapes::quad_grid(5, 5);
+    RegionExtrude made;
+    ASSERT_TRUE(extrude_region(moved, faces(moved, middle_nine()), 0.0, &made));
+    ASSERT_TRUE(extrude_region_positions(moved, made, -0.25));
+    Mesh direct = shapes::quad_grid(5, 5);
+    ASSERT_TRUE(extrude_region(direct, faces(direct, middle_nine()), -0.25));
+    EXPECT_TRUE(test::identical(moved, direct));
+}
+
+TEST(ExtrudeRegion, AtTheBorderTheWallsHangFromIt) {
+    Mesh mesh = shapes::quad_grid(3, 3);
+    ASSERT_TRUE(extrude_region(mesh, faces(mesh, {0, 1}), 1.0));  // two quads in a corner
+    ASSERT_VALID(mesh);
+    // Border of the two quads: 6 sides, all walls (two of them along the grid's edge).
+    EXPECT_EQ(mesh.n_faces(), 9u + 6u);
+    EXPECT_EQ(mesh.n_vertices(), 16u + 6u);
+}
+
+TEST(ExtrudeRegion, CarriesCornerValuesToTheWallsAndTheTop) {
+    Mesh mesh = shapes::quad_grid(5, 5);
+    auto corner = mesh.add_property<Halfedge, double>("h:u");
+    auto value = mesh.add_property<Vertex, double>("v:u");
+    const auto u = [](const Vec3& p) { return p.x + 10.0 * p.y; };
+    for (const Halfedge h : mesh.halfedges()) {
+        corner[h] = u(mesh.position(mesh.to_vertex(h)));
+    }
+    for (const Vertex v : mesh.vertices()) {
+        value[v] = u(mesh.position(v));
+    }
+    ASSERT_TRUE(extrude_region(mesh, faces(mesh, middle_nine()), 2.0));
+    // A corner copies the corner at the same vertex below it: x and y are unchanged.
+    for (const Halfedge h : mesh.halfedges()) {
+        if (mesh.face(h).is_valid()) {
+            EXPECT_EQ(corner[h], u(mesh.position(mesh.to_vertex(h)))) << h.idx();
+        }
+    }
+    for (const Vertex v : mesh.vertices()) {
+        EXPECT_EQ(value[v], u(mesh.position(v))) << v.idx();
+    }
+}
+
+TEST(ExtrudeRegion, RefusesWithItsReasonAndTouchesNothing) {
+    const Mesh grid = shapes::quad_grid(5, 5);
+    const Mesh cube = test::quad_cube();
+    const auto refused = [](const Mesh& before, const FaceSet& region, double height,
+                            const std::string& reason) {
+        Mesh mesh = before;
+        const auto r = extrude_region(mesh, region, height);
+        EXPECT_FALSE(r);
+        EXPECT_NE(std::string(r.reason()).find(reason), std::string::npos) << r.reason();
+        EXPECT_TRUE(test::identical(mesh, before));
+    };
+    refused(cube, faces(cube, {0, 1, 2, 3, 4, 5}), 1.0, "whole closed surface");
+    refused(grid, faces(grid, {0, 6}), 1.0, "touches itself at vertex 7");
+    refused(grid, faces(grid, {}), 1.0, "select one or more live faces");
+    refused(grid, faces(grid, {3}), std::nan(""), "finite");
+    refused(grid, faces(grid, {3}), 1e308, "range of numbers");
+}
+
+TEST(SubdivideRegion, OneQuadSplitsAndItsNeighboursFan) {
+    Mesh mesh = shapes::quad_grid(3, 3);
+    std::vector<Face> inside;
+    ASSERT_TRUE(subdivide_region(mesh, faces(mesh, {4}), &inside));
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(mesh.n_vertices(), 16u + 4u + 1u);
+    // The middle quad is four; its four edge neighbours are three triangles each.
+    EXPECT_EQ(mesh.n_faces(), 8u - 4u + 4u + 12u);
+    ASSERT_EQ(inside.size(), 4u);
+    for (const Face f : inside) {
+        EXPECT_EQ(mesh.valence(f), 4u);
+        EXPECT_DOUBLE_EQ(face_area(mesh, f), 0.25);
+    }
+    double total = 0;
+    std::size_t triangles = 0;
+    for (const Face f : mesh.faces()) {
+        total += face_area(mesh, f);
+        triangles += mesh.valence(f) == 3 ? 1 : 0;
+        // No corner in the middle of a straight side: every corner turns.
+        for (const Halfedge h : mesh.halfedges(f)) {
+            const Vec3 a = mesh.position(mesh.from_vertex(h));
+            const Vec3 b = mesh.position(mesh.to_vertex(h));
+            const Vec3 c = mesh.position(mesh.to_vertex(mesh.next(h)));
+            EXPECT_GT(norm(cross(b - a, c - b)), 1e-12) << "face " << f.idx();
+        }
+    }
+    EXPECT_EQ(triangles, 12u);
+    EXPECT_DOUBLE_EQ(total, 9.0);
+}
+
+TEST(SubdivideRegion, ATriangleBecomesFourAndItsNeighbourTwo) {
+    Mesh mesh = test::two_triangles();
+    std::vector<Face> inside;
+    ASSERT_TRUE(subdivide_region(mesh, faces(mesh, {0}), &inside));
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(inside.size(), 4u);
+    EXPECT_EQ(mesh.n_faces(), 6u);
+    for (const Face f : mesh.faces()) {
+        EXPECT_EQ(mesh.valence(f), 3u);
+    }
+}
+
+TEST(SubdivideRegion, TheWholeQuadMeshEqualsLinearSubdivision) {
+    for (Mesh mesh : {shapes::quad_grid(3, 2), test::quad_cube()}) {
+        Mesh expected = mesh;
+        QuadSubdivisionOptions linear;
+        linear.scheme = QuadScheme::Linear;
+        quad_subdivide(expected, linear);
+        FaceSet all(mesh.faces_size());
+        for (const Face f : mesh.faces()) {
+            all.insert(f);
+        }
+        ASSERT_TRUE(subdivide_region(mesh, all));
+        ASSERT_VALID(mesh);
+        EXPECT_TRUE(test::same_faces_by_position(mesh, expected));
+    }
+}
+
+TEST(SubdivideRegion, RefusesAnEmptyRegion) {
+    Mesh mesh = shapes::quad_grid(2, 2);
+    const Mesh before = mesh;
+    EXPECT_FALSE(subdivide_region(mesh, FaceSet(mesh.faces_size())));
+    EXPECT_TRUE(test::identical(mesh, before));
+}
+
+}  // namespace
+}  // namespace meshedit
