@@ -144,6 +144,25 @@ OpStatus is_extrude_region_ok(const Mesh& mesh, const FaceSet& region, double he
     return OpStatus::ok();
 }
 
+RegionExtrude extrude_region_base(const Mesh& mesh, const FaceSet& region) {
+    RegionExtrude r;
+    region_vertices(mesh, region, pieces_of(mesh, region), r.moved, r.normal);
+    const std::vector<Halfedge> border = border_of(mesh, region);
+    std::unordered_map<std::uint32_t, std::uint32_t> copy;  // border vertex -> its copy
+    for (std::uint32_t i = 0; i < border.size(); ++i) {
+        copy[mesh.from_vertex(border[i]).idx()] =
+            static_cast<std::uint32_t>(mesh.vertices_size()) + i;
+        r.sides.push_back(Face(static_cast<std::uint32_t>(mesh.faces_size()) + i));
+    }
+    for (Vertex& v : r.moved) {
+        r.base.push_back(mesh.position(v));
+        if (const auto it = copy.find(v.idx()); it != copy.end()) {
+            v = Vertex(it->second);
+        }
+    }
+    return r;
+}
+
 // The border sides h[i] run a -> b with face F in the region. New per side: the copy a' of
 // a (q[i]), the rung up[i] = a -> a' (twin down[i]), the top side k[i] = a' -> b' (twin
 // kt[i]) and the quad Q[i]. h[i] leaves F for Q[i]; k[i] takes its place in F; the region's
@@ -165,9 +184,7 @@ OpResult<Face> extrude_region(Mesh& mesh, const FaceSet& region, double height,
     if (const OpStatus ok = is_extrude_region_ok(mesh, region, height); !ok) {
         return ok;
     }
-    const Pieces pieces = pieces_of(mesh, region);
-    RegionExtrude r;
-    region_vertices(mesh, region, pieces, r.moved, r.normal);
+    const RegionExtrude base = extrude_region_base(mesh, region);
     const std::vector<Halfedge> h = border_of(mesh, region);
     const auto n = static_cast<std::uint32_t>(h.size());
     std::unordered_map<std::uint32_t, std::uint32_t> side_of;     // border vertex a -> i
@@ -248,7 +265,6 @@ OpResult<Face> extrude_region(Mesh& mesh, const FaceSet& region, double height,
         if (!mesh.is_boundary(a[i])) {
             mesh.set_halfedge(a[i], h[i]);  // its old anchor may now leave the copy
         }
-        r.sides.push_back(g);
     }
     // Carry (the rule above the diagram).
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -262,20 +278,11 @@ OpResult<Face> extrude_region(Mesh& mesh, const FaceSet& region, double height,
         mesh.carry_default(Edge(first_e + i));
         mesh.carry(Face(first_f + i), mesh.face(k(i)));
     }
-    // The top's vertices: the copies in place of the border vertices.
-    for (std::size_t m = 0; m < r.moved.size(); ++m) {
-        const auto it = side_of.find(r.moved[m].idx());
-        if (it != side_of.end()) {
-            r.moved[m] = q(it->second);
-        }
-        r.base.push_back(mesh.position(r.moved[m]));
-    }
-    extrude_region_positions(mesh, r, height);
-    const Face first = region.elements().front();
+    extrude_region_positions(mesh, base, height);
     if (made != nullptr) {
-        *made = std::move(r);
+        *made = base;
     }
-    return first;
+    return region.elements().front();
 }
 
 OpStatus extrude_region_positions(Mesh& mesh, const RegionExtrude& made, double height) {

@@ -282,6 +282,8 @@ void App::on_mouse_button(int button, int action, int mods) {
         press_at_ = cursor_;
         press_button_ = button;
         press_shift_ = (mods & GLFW_MOD_SHIFT) != 0;
+        press_alt_ = (mods & GLFW_MOD_ALT) != 0;
+        press_ctrl_ = (mods & GLFW_MOD_CONTROL) != 0;
         if (button == GLFW_MOUSE_BUTTON_MIDDLE) {
             drag_ = DragMode::Pan;
             return;
@@ -291,6 +293,10 @@ void App::on_mouse_button(int button, int action, int mods) {
             return;
         }
         if (button != GLFW_MOUSE_BUTTON_LEFT) {
+            return;
+        }
+        if (press_alt_) {
+            drag_ = DragMode::Pending;  // a click selects a loop; a vertex is not dragged
             return;
         }
         // Pressing on a vertex (or control point) selects it and may drag it; anywhere
@@ -313,6 +319,15 @@ void App::on_mouse_button(int button, int action, int mods) {
         apply(outcome);
     } else if (drag_ == DragMode::Pending && button == GLFW_MOUSE_BUTTON_LEFT) {
         const ElementRef hit = pick_at_cursor();
+        if (press_alt_ && mesh_mode()) {
+            // Blender's Alt+click: the loop (Ctrl: the ring) through the edge clicked.
+            apply(editor_.select(hit));
+            apply(editor_.select_region(press_ctrl_ ? Command::SelectEdgeRing
+                                                    : Command::SelectEdgeLoop));
+            drag_ = DragMode::None;
+            cursor_moved_ = true;
+            return;
+        }
         Outcome outcome =
             press_shift_ && mesh_mode() ? editor_.toggle_select(hit) : editor_.select(hit);
         if (outcome.message.empty()) {

@@ -168,8 +168,10 @@ private:
     double last_pick_ms_ = 0.0;
     bool quit_ = false;
 
-    int press_button_ = 0;             ///< the button of the press a Pending drag started with
-    bool press_shift_ = false;         ///< Shift was held: a click toggles, a drag pans
+    int press_button_ = 0;      ///< the button of the press a Pending drag started with
+    bool press_shift_ = false;  ///< Shift was held: a click toggles, a drag pans
+    bool press_alt_ = false;    ///< the press held Alt: a click selects an edge loop (Ctrl: ring)
+    bool press_ctrl_ = false;
     bool swallow_release_ = false;     ///< the press ended an interactive edit
     glm::dvec2 modal_from_{0.0};       ///< framebuffer pixels where the interactive edit began
     glm::dvec2 modal_center_px_{0.0};  ///< the selection's centre on screen then

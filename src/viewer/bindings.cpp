@@ -34,6 +34,8 @@ constexpr std::array kTable{
     Binding{key_of('J'), kNoMods, kMeshModes, edit("weld"), "J", {}},
     Binding{key_of('P'), kShift, kMeshModes, edit("poke"), "Shift+P", {}},
     Binding{key_of('X'), kNoMods, kMeshModes, interactive(Modal::Extrude), "X", "extrude the selected faces: drag up/down for height, left/right for shrink"},
+    Binding{key_of('X'), kShift, kMeshModes, interactive(Modal::ExtrudeRegion), "Shift+X", "extrude the selected faces as one region: drag up/down for the height (walls around its border; shared sides stay joined)"},
+    Binding{key_of('W'), kShift, kMeshModes, edit("subdivide_region"), "Shift+W", {}},
     Binding{key_of('I'), kShift, kMeshModes, interactive(Modal::Inset), "Shift+I", "inset the selected faces: drag for the amount"},
     Binding{key_of('B'), kCtrl, kMeshModes, interactive(Modal::Bevel), "Ctrl+B", "bevel the selected vertices or edges: drag for the amount"},
     Binding{key_of('M'), kNoMods, kMeshModes, interactive(Modal::Move), "M", "move the selection in the screen plane (X/Y/Z lock an axis)"},
@@ -129,12 +131,13 @@ constexpr std::array kTable{
 };
 
 // The mouse as each mode handles it (App::on_mouse_button, on_cursor, on_scroll).
-const std::array<HelpRow, 15> kMouseRows{{
+const std::array<HelpRow, 16> kMouseRows{{
     {"left-click", "select the element under the cursor (vertex near a corner, edge near an edge, halfedge just inside it, else face)", "mesh, surface"},
     {"Shift+left-click", "add the element under the cursor to the selection, or remove it", "mesh, surface"},
     {"left-drag on empty space / right-drag", "orbit (turntable about the up axis; O: trackball)", "mesh, surface"},
     {"left-drag on a vertex", "move it in the screen plane", "mesh, surface"},
     {"B, then left-drag", "box select: what the view shows inside the rectangle, in the selection's kind (Shift adds, Alt selects through, right-click cancels)", "mesh"},
+    {"Alt+left-click", "select the edge loop through the edge under the cursor (Ctrl+Alt+left-click: its ring)", "mesh"},
     {"Ctrl+right-drag", "lasso select: what the view shows inside the outline (Shift adds, Alt selects through)", "mesh"},
     {"wheel", "zoom to the cursor", "mesh, surface"},
     {"left-click", "select the control point under the cursor", "curve"},
@@ -143,7 +146,7 @@ const std::array<HelpRow, 15> kMouseRows{{
     {"wheel", "change t by 0.01 a step", "curve"},
     {"middle-drag / Shift+left-drag", "pan", ""},
     {"drop a file", "open it", ""},
-    {"during X, Shift+I, Ctrl+B, M, R, Alt+S", "move the mouse to set the amount; type a number (digits . - , Backspace) to set it exactly; X/Y/Z lock an axis", "mesh, surface"},
+    {"during X, Shift+X, Shift+I, Ctrl+B, M, R, Alt+S", "move the mouse to set the amount; type a number (digits . - , Backspace) to set it exactly; X/Y/Z lock an axis", "mesh, surface"},
     {"Enter / left-click, Esc / right-click", "apply the interactive edit (one undo step) / cancel it (the mesh as it was)", "mesh, surface"},
 }};
 // clang-format on

@@ -99,6 +99,8 @@ const char* verb_of(Modal kind) {
             return "inset";
         case Modal::Bevel:
             return "bevel";
+        case Modal::ExtrudeRegion:
+            return "extrude_region";
         default:
             return nullptr;
     }
@@ -112,6 +114,8 @@ const char* name_of(Modal kind) {
             return "rotate";
         case Modal::Scale:
             return "scale";
+        case Modal::ExtrudeRegion:
+            return "extrude region";
         default:
             return verb_of(kind);
     }
@@ -254,6 +258,9 @@ Outcome Editor::modal_input(const ModalInput& in) {
         case Modal::Bevel:
             modal_.amounts[0] = std::min(along, kMaxFraction);
             break;
+        case Modal::ExtrudeRegion:
+            modal_.amounts[0] = in.dy * in.pixel;
+            break;
         case Modal::Move:
             modal_.offset = in.offset;
             if (modal_.axis >= 0) {
@@ -325,6 +332,9 @@ Outcome Editor::apply_modal() {
     if (m.kind == Modal::Bevel && !m.bevelled.empty()) {
         return move_bevelled();
     }
+    if (m.kind == Modal::ExtrudeRegion && m.region_built) {
+        return move_region_top();
+    }
     // Back to the document before the edit (in the time of what the last preview touched),
     // then the new preview, recorded: no copy of the mesh per mouse move.
     MeshChange::Region region = m.transaction->rewind();
@@ -339,12 +349,20 @@ Outcome Editor::apply_modal() {
         m.steps.clear();
         m.built.clear();
         m.bevelled.clear();
+        m.region_built.reset();
         std::vector<ElementRef> made;
         for (const ops::Step& step : steps) {
             std::optional<ExtrudeBase> base;
             std::optional<BevelBase> bevel;
             try {
-                if (faces) {
+                if (m.kind == Modal::ExtrudeRegion) {
+                    m.region = ops::named_faces(doc_.mesh, step);
+                    FaceSet set(doc_.mesh.faces_size());
+                    for (const Face f : m.region) {
+                        set.insert(f);
+                    }
+                    m.region_built = extrude_region_base(doc_.mesh, set);
+                } else if (faces) {
                     base = extrude_base(doc_.mesh, ops::named_face(doc_.mesh, step));
                 } else if (m.kind == Modal::Bevel) {
                     bevel = bevel_base(doc_.mesh, step);
@@ -373,6 +391,7 @@ Outcome Editor::apply_modal() {
         }
         if (m.steps.empty()) {
             m.built.clear();
+            m.region_built.reset();
         } else {
             m.refusal.clear();  // some ran: a partial result, as a key on a selection gives
             select_made(doc_, made);
@@ -452,6 +471,24 @@ Outcome Editor::move_extruded() {
                                          std::span<const double>(m.amounts.data(), v.max_amounts))
                               .text);
     }
+    return out;
+}
+
+// Extrude region after its first preview: the walls stand and only the top moves
+// (extrude_region_positions(), the code the operation places it with).
+Outcome Editor::move_region_top() {
+    ModalState& m = modal_;
+    const double height = m.amounts[0];
+    if (const OpStatus ok = extrude_region_positions(doc_.mesh, *m.region_built, height); !ok) {
+        m.refusal = ok.text();
+        return {kSelection, modal_status()};  // the last height that fits stays shown
+    }
+    Outcome out{kGeometry | kSelection, modal_status()};
+    out.region = m.transaction->amend();
+    ++m.position_amendments;
+    m.steps = {
+        ops::make_region_step("extrude_region", m.region, std::span<const double>(&height, 1))
+            .text};
     return out;
 }
 
@@ -536,6 +573,9 @@ std::string Editor::modal_status() const {
             break;
         case Modal::Inset:
             out += " shrink " + number(m.amounts[0]);
+            break;
+        case Modal::ExtrudeRegion:
+            out += " height " + number(m.amounts[0]);
             break;
         case Modal::Bevel:
             out += " t " + number(m.amounts[0]);

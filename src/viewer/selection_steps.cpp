@@ -44,6 +44,9 @@ std::string what_to_select(const ops::Verb& verb) {
     if ((verb.takes & ops::kFaceArg) != 0) {
         kinds.emplace_back("a face");
     }
+    if ((verb.takes & ops::kRegion) != 0) {
+        kinds.emplace_back("faces (click, Shift+click, B or Ctrl+right-drag)");
+    }
     std::string out = "select ";
     for (std::size_t i = 0; i < kinds.size(); ++i) {
         out += i == 0 ? "" : (i + 1 == kinds.size() ? " or " : ", ");
@@ -58,6 +61,20 @@ std::vector<ops::Step> steps_for_selection(const Mesh& mesh, const ops::Verb& ve
                                            const std::vector<ElementRef>& selected,
                                            std::span<const double> amounts, std::string& hint) {
     std::vector<ops::Step> steps;
+    if ((verb.takes & ops::kRegion) != 0) {  // one step on every selected face
+        std::vector<Face> faces;
+        for (const ElementRef& e : selected) {
+            if (e.kind == Kind::Face) {
+                faces.push_back(Face(e.index));
+            }
+        }
+        if (faces.empty()) {
+            hint = what_to_select(verb);
+        } else {
+            steps.push_back(ops::make_region_step(verb.name, faces, amounts));
+        }
+        return steps;
+    }
     if ((verb.takes & ops::kEdgePair) != 0) {
         std::vector<ElementRef> edges;
         for (const ElementRef& e : selected) {

@@ -137,18 +137,6 @@ TEST(EditorPolygons, ExtrudeTypedConfirmedOrCancelled) {
 // the same recorded change. Two faces, 100 moves, a user attribute that blends: Enter gives,
 // bit for bit, extrude_face() on each face at the last amounts, one undo step, and the
 // session's steps at those amounts.
-// An interactive edit's result is bit for bit `expected` (what the session's steps make from
-// `before`), valid, and undo and redo give `before` and it back.
-void expect_as_replayed(Editor& ed, const Mesh& before, const Mesh& expected) {
-    std::string why;
-    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
-    EXPECT_TRUE(!validate(ed.mesh()).has_value());
-    ed.run({Command::Undo});
-    EXPECT_TRUE(bitwise_equal(ed.mesh(), before, &why)) << why;
-    ed.run({Command::Redo});
-    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
-}
-
 TEST(EditorPolygons, ExtrudeDragBuildsTheTopologyOnce) {
     Mesh cube = test::quad_cube();
     auto u = cube.add_property<Vertex, double>("v:u");

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "meshedit/core/shapes.h"
+#include "meshedit/ops/ops.h"
 #include "meshedit/viewer/editor.h"
 #include "support/fixtures.h"
 #include "viewer/editor_test_util.h"
@@ -105,6 +106,57 @@ TEST(EditorRegions, AltPSelectsTheShortestPath) {
     const Outcome apart = ed.press(key_of('P'), kAlt);
     EXPECT_TRUE(apart.refused);
     EXPECT_EQ(apart.message, "no path joins the two faces: they are on separate pieces");
+}
+
+// Shift+X on the middle 3 x 3 of a 5 x 5 grid: the drag builds the walls once and then only
+// moves the top; Enter gives, bit for bit, the session's extrude_region step replayed through
+// the language, and the top stays selected. Shift+W then subdivides it with its transition
+// ring, again as its recorded step replays.
+TEST(EditorRegions, ShiftXExtrudesTheRegionAsOneAndShiftWSubdividesIt) {
+    Mesh grid = quad_grid(5, 5);
+    auto corner = grid.add_property<Halfedge, double>("h:corner");
+    for (const Halfedge h : grid.halfedges()) {
+        corner[h] = 0.5 * h.idx();
+    }
+    Editor ed = editor_with(grid);
+    std::vector<ElementRef> nine;
+    for (const std::uint32_t f : {6u, 7u, 8u, 11u, 12u, 13u, 16u, 17u, 18u}) {
+        nine.push_back(ElementRef::face(Face(f)));
+    }
+    ed.select_elements(nine, false, "box");
+    ASSERT_FALSE(ed.press(key_of('X'), kShift).refused);
+    ModalInput in;
+    in.pixel = 0.01;
+    for (int k = 1; k <= 50; ++k) {
+        in.dy = k;
+        ed.modal_input(in);
+    }
+    EXPECT_EQ(ed.modal_counts().topology_changes, 1u);
+    EXPECT_EQ(ed.modal_counts().position_amendments, 50u);  // the key's preview built it
+    EXPECT_EQ(ed.modal_status().rfind("extrude region height 0.5 ", 0), 0u) << ed.modal_status();
+    ASSERT_FALSE(ed.press(Key::Enter, 0).refused);
+    EXPECT_EQ(ed.history().undo_steps(), 1u);
+    const std::vector<std::string>& session = ed.document().session;
+    ASSERT_FALSE(session.empty());
+    EXPECT_EQ(session.back(), "extrude_region:f6..8+f11..13+f16..18:0.5");
+    EXPECT_EQ(count(ed), 9u);
+    Mesh expected = grid;
+    ops::apply_steps(expected, ops::parse(session.back()));
+    expect_as_replayed(ed, grid, expected);
+
+    const Mesh extruded = ed.mesh();
+    const Outcome sub = ed.press(key_of('W'), kShift);
+    ASSERT_FALSE(sub.refused) << sub.message;
+    EXPECT_EQ(session.back(), "subdivide_region:f6..8+f11..13+f16..18");
+    EXPECT_EQ(count(ed), 36u);
+    Mesh subdivided = extruded;
+    ops::apply_steps(subdivided, ops::parse(session.back()));
+    expect_as_replayed(ed, extruded, subdivided);
+
+    ed.select(ElementRef::vertex(Vertex(0)));
+    const Outcome refused = ed.press(key_of('W'), kShift);
+    EXPECT_TRUE(refused.refused);
+    EXPECT_EQ(refused.message, "select faces (click, Shift+click, B or Ctrl+right-drag) first");
 }
 
 }  // namespace

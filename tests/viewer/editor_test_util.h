@@ -9,6 +9,8 @@
 #include <string>
 
 #include "meshedit/core/attributes.h"
+#include "meshedit/core/mesh_change.h"
+#include "meshedit/core/validate.h"
 #include "meshedit/viewer/editor.h"
 #include "support/scratch_dir.h"
 
@@ -51,6 +53,18 @@ inline Halfedge boundary_halfedge(const Mesh& mesh) {
     }
     ADD_FAILURE() << "no boundary";
     return {};
+}
+
+// An interactive edit's result is bit for bit `expected` (what the session's steps make from
+// `before`), valid, and undo and redo give `before` and it back.
+inline void expect_as_replayed(Editor& ed, const Mesh& before, const Mesh& expected) {
+    std::string why;
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
+    EXPECT_TRUE(!validate(ed.mesh()).has_value());
+    ed.run({Command::Undo});
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), before, &why)) << why;
+    ed.run({Command::Redo});
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), expected, &why)) << why;
 }
 
 }  // namespace meshedit::viewer

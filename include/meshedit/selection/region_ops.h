@@ -32,6 +32,10 @@ OpStatus is_extrude_region_ok(const Mesh& mesh, const FaceSet& region, double he
 /// The faces of the region keep their handles and become the top.
 OpResult<Face> extrude_region(Mesh& mesh, const FaceSet& region, double height,
                               RegionExtrude* made = nullptr);
+/// What extrude_region() will make of `region` (the copies get the next vertex indices, the
+/// walls the next face indices), taken before it runs: for an interactive extrude that builds
+/// the topology once and then only moves the top.
+RegionExtrude extrude_region_base(const Mesh& mesh, const FaceSet& region);
 /// Moves an extruded region's top to `height` (the same positions extrude_region() gives).
 OpStatus extrude_region_positions(Mesh& mesh, const RegionExtrude& made, double height);
 

@@ -26,6 +26,7 @@
 #include "meshedit/overlay/colormap.h"
 #include "meshedit/overlay/op_diagram.h"
 #include "meshedit/overlay/shading.h"
+#include "meshedit/selection/region_ops.h"
 #include "meshedit/viewer/bindings.h"
 #include "meshedit/viewer/history.h"
 #include "meshedit/viewer/outcome.h"
@@ -336,6 +337,9 @@ private:
         /// Bevel: what each bevel that ran needs to place its corners again; empty when two
         /// bevels touch what the other wrote (each preview then runs them all again).
         std::vector<BevelBase> bevelled;
+        /// ExtrudeRegion: the region's faces and, once it ran, what moves its top again.
+        std::vector<Face> region;
+        std::optional<RegionExtrude> region_built;
         std::size_t topology_changes = 0;     ///< previews that ran the verb
         std::size_t position_amendments = 0;  ///< previews that only moved what it made
     };
@@ -343,6 +347,8 @@ private:
     Outcome move_extruded();
     /// Bevel with its topology built: places the corners at the amount now.
     Outcome move_bevelled();
+    /// Extrude region with its walls built: moves the top to the height now.
+    Outcome move_region_top();
     /// Runs the modal edit with its amounts: rewinds the preview, records the new one.
     Outcome apply_modal();
     /// Undo (`forward` false) or redo, after ending a drag and cancelling an interactive edit.
