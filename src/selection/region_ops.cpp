@@ -452,18 +452,22 @@ OpResult<Face> subdivide_region(Mesh& mesh, const FaceSet& region, std::vector<F
             connect_corners(mesh, x, mesh.next(mesh.next(x)));
         }
     }
-    if (inside != nullptr) {
-        inside->clear();
-        for (const Face f : faces) {
-            inside->push_back(f);
-        }
-        for (std::uint32_t f = first_f; f < last_f; ++f) {
-            if (!mesh.is_deleted(Face(f))) {
-                inside->push_back(Face(f));
-            }
+    std::vector<Face> made;
+    for (const Face f : faces) {
+        if (!mesh.is_deleted(f)) {  // a dissolve may have merged it into a new face
+            made.push_back(f);
         }
     }
-    return faces.front();
+    for (std::uint32_t f = first_f; f < last_f; ++f) {
+        if (!mesh.is_deleted(Face(f))) {
+            made.push_back(Face(f));
+        }
+    }
+    const Face first = made.front();
+    if (inside != nullptr) {
+        *inside = std::move(made);
+    }
+    return first;
 }
 
 }  // namespace meshedit

@@ -186,6 +186,22 @@ TEST(SubdivideRegion, OneQuadSplitsAndItsNeighboursFan) {
     EXPECT_DOUBLE_EQ(total, 9.0);
 }
 
+TEST(SubdivideRegion, NineQuadsBecomeThirtySixLiveQuads) {
+    Mesh mesh = shapes::quad_grid(5, 5);
+    std::vector<Face> inside;
+    const auto first = subdivide_region(mesh, faces(mesh, middle_nine()), &inside);
+    ASSERT_TRUE(first);
+    ASSERT_VALID(mesh);
+    ASSERT_EQ(inside.size(), 36u);
+    EXPECT_EQ(*first, inside.front());
+    for (const Face f : inside) {
+        ASSERT_FALSE(mesh.is_deleted(f));
+        EXPECT_DOUBLE_EQ(face_area(mesh, f), 0.25);
+    }
+    // 12 neighbours across the border, each cut into 3 triangles; 4 corner quads untouched.
+    EXPECT_EQ(mesh.n_faces(), 36u + 36u + 4u);
+}
+
 TEST(SubdivideRegion, ATriangleBecomesFourAndItsNeighbourTwo) {
     Mesh mesh = test::two_triangles();
     std::vector<Face> inside;
