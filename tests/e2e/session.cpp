@@ -388,6 +388,35 @@ void ViewerWindow::shift_click(int x, int y) const {
     xdotool({"keydown", "shift", "click", "1", "keyup", "shift"});
 }
 
+void ViewerWindow::modified_click(int x, int y, const std::string& modifier) const {
+    move_to(x, y);
+    xdotool({"keydown", modifier, "click", "1", "keyup", modifier});
+}
+
+void ViewerWindow::drag(int x0, int y0, int x1, int y1, int button,
+                        const std::string& modifier) const {
+    move_to(x0, y0);
+    if (!modifier.empty()) {
+        xdotool({"keydown", modifier});
+    }
+    xdotool({"mousedown", std::to_string(button)});
+    sleep_for(std::chrono::milliseconds(100));
+    // Through the corners of the rectangle, so a lasso drawn this way encloses it.
+    for (const auto& [x, y] : {std::pair{x1, y0}, std::pair{x1, y1}, std::pair{x0, y1}}) {
+        xdotool({"mousemove", std::to_string(x), std::to_string(y)});
+        sleep_for(std::chrono::milliseconds(150));
+    }
+    if (button != 3) {  // a box ends at the far corner
+        xdotool({"mousemove", std::to_string(x1), std::to_string(y1)});
+        sleep_for(std::chrono::milliseconds(150));
+    }
+    xdotool({"mouseup", std::to_string(button)});
+    if (!modifier.empty()) {
+        xdotool({"keyup", modifier});
+    }
+    sleep_for(std::chrono::milliseconds(250));
+}
+
 bool ViewerWindow::capture(const fs::path& png) const {
     static const std::string import = find_program("import");
     const RunResult r = run_program(import, {"-window", id_, "png:" + png.string()}, 30.0);

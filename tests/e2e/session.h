@@ -124,6 +124,11 @@ public:
     void click(int x, int y) const;
     /// move_to(x, y), then a left click with Shift held (adds to the selection).
     void shift_click(int x, int y) const;
+    /// move_to(x, y), then a left click with `modifier` held ("alt", "ctrl+alt").
+    void modified_click(int x, int y, const std::string& modifier) const;
+    /// A drag with `button` (1 left, 3 right) from (x0, y0) to (x1, y1) through a midpoint,
+    /// `modifier` ("ctrl", or empty) held throughout.
+    void drag(int x0, int y0, int x1, int y1, int button, const std::string& modifier = {}) const;
     /// The window as a person sees it (panels included), via `import -window ID`.
     bool capture(const std::filesystem::path& png) const;
 

@@ -7,6 +7,7 @@
 /// Every click lands on a pixel computed from the viewer's opening camera (opening_camera),
 /// so the test follows the mesh rather than hard-coded screen positions.
 
+#include "view_pixels.h"
 #include "viewer_fixture.h"
 
 namespace meshedit::test::e2e {
@@ -14,82 +15,6 @@ namespace {
 
 constexpr int kWidth = 1000;
 constexpr int kHeight = 700;
-
-Vec3 centroid(const Mesh& mesh, Face f) {
-    Vec3 sum{0, 0, 0};
-    int n = 0;
-    for (Vertex v : mesh.vertices(f)) {
-        sum = sum + mesh.position(v);
-        ++n;
-    }
-    return sum * (1.0 / n);
-}
-
-/// The viewer's opening view of the input mesh; edits keep this camera.
-struct View {
-    Camera camera;
-    Vec3 eye;
-    float aspect;
-
-    explicit View(const Mesh& mesh)
-        : camera(opening_camera(mesh, kWidth, kHeight)),
-          aspect(static_cast<float>(kWidth) / static_cast<float>(kHeight)) {
-        const glm::vec3 e = camera.eye();
-        eye = {e.x, e.y, e.z};
-    }
-
-    glm::vec2 pixel(const Vec3& p) const { return project(camera, aspect, p, kWidth, kHeight); }
-
-    /// Cosine between f's normal and the ray from its centroid to the eye: 1 faces us.
-    double facing(const Mesh& mesh, Face f) const {
-        const Vec3 to_eye = eye - centroid(mesh, f);
-        return dot(face_normal(mesh, f), to_eye) / norm(to_eye);
-    }
-};
-
-/// A window pixel to click, clear of the info panel (left) and the status line (bottom).
-struct Pixel {
-    int x = 0;
-    int y = 0;
-};
-
-std::optional<Pixel> clickable(const glm::vec2& p) {
-    const Pixel px{static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y))};
-    const bool inside = px.x > info_panel_pixels(kWidth) + 20 && px.x < kWidth - 10 && px.y > 10 &&
-                        px.y < kHeight - 60;
-    return inside ? std::optional<Pixel>(px) : std::nullopt;
-}
-
-/// Face f picked at its centroid, when it looks at the camera.
-std::optional<Pixel> face_pixel(const View& view, const Mesh& mesh, Face f) {
-    if (view.facing(mesh, f) < 0.3) {
-        return std::nullopt;
-    }
-    return clickable(view.pixel(centroid(mesh, f)));
-}
-
-/// Boundary-to-be edge a-b picked 2 px inside `inside` (the face that stays beside it), so
-/// the ID pass sees the edge band of that face rather than the hole.
-std::optional<Pixel> edge_pixel(const View& view, const Mesh& mesh, Vertex a, Vertex b,
-                                Face inside) {
-    const glm::vec2 mid = view.pixel((mesh.position(a) + mesh.position(b)) * 0.5);
-    const glm::vec2 toward = view.pixel(centroid(mesh, inside)) - mid;
-    if (glm::length(toward) < 8.0f || view.facing(mesh, inside) < 0.3) {
-        return std::nullopt;
-    }
-    return clickable(mid + glm::normalize(toward) * 2.0f);
-}
-
-/// The face beside a-b other than `not_this`.
-Face other_face(const Mesh& mesh, Vertex a, Vertex b, Face not_this) {
-    for (Halfedge h : mesh.halfedges(a)) {
-        if (mesh.to_vertex(h) == b) {
-            const Face f = mesh.face(h);
-            return f == not_this ? mesh.face(Mesh::twin(h)) : f;
-        }
-    }
-    return Face();
-}
 
 /// The vertex to bevel: every face around it looks at the camera, it is at least 10 px from
 /// every other vertex on screen, and it touches no face that shares a corner with `avoid`.
@@ -122,7 +47,7 @@ std::optional<std::pair<Vertex, Pixel>> bevel_target(const View& view, const Mes
                 clearance = std::min(clearance, glm::length(view.pixel(mesh.position(w)) - p));
             }
         }
-        const std::optional<Pixel> px = clickable(p);
+        const std::optional<Pixel> px = clickable(view, p);
         if (px && clearance >= 10.0f && facing > best_facing) {
             best_facing = facing;
             best = std::make_pair(v, *px);
@@ -131,18 +56,12 @@ std::optional<std::pair<Vertex, Pixel>> bevel_target(const View& view, const Mes
     return best;
 }
 
-/// "V n E n F n" of a mesh, as the title shows it.
-std::string counts(const Mesh& mesh) {
-    return "V " + std::to_string(mesh.n_vertices()) + " E " + std::to_string(mesh.n_edges()) +
-           " F " + std::to_string(mesh.n_faces());
-}
-
 TEST_F(ViewerE2E, PolygonExtrudeBevelWeldSave) {
     const fs::path original = source_dir() / "dae" / "quadball.dae";
     const fs::path doc = work_ / "quadball.dae";
     fs::copy_file(original, doc);
     const Mesh input = load(doc);
-    const View view(input);
+    const View view(input, kWidth, kHeight);
 
     // The hole: faces 75 (85-22-23-88) and 74 (84-85-88-87); the weld zips its edges 22-23
     // and 85-22 at their shared corner 22 (the demo of the poly_weld golden).

@@ -64,19 +64,7 @@ TEST_F(ViewerE2E, CubeFlipSaveLoopUndo) {
     ASSERT_FALSE(shot.empty());
     const int free_width = 800 - info_panel_pixels(800);
     EXPECT_TRUE(looks_rendered(shot, free_width, 600));
-    const fs::path golden = e2e_golden_dir() / "cube_flip_loop2.png";
-    if (update_mode()) {
-        fs::create_directories(golden.parent_path());
-        if (!same_file_bytes(shot, golden)) {
-            fs::copy_file(shot, golden, fs::copy_options::overwrite_existing);
-            std::cout << "golden: rewrote " << golden.string() << "\n";
-        }
-    } else {
-        ASSERT_TRUE(fs::exists(golden))
-            << "no reference image " << golden << "; create it with MESHEDIT_UPDATE_GOLDEN=1 "
-            << "and look at it before committing it";
-        EXPECT_TRUE(images_match(shot, golden, out_dir(), "cube_flip_loop2"));
-    }
+    expect_golden(shot, "cube_flip_loop2");
 
     // The headless renderer draws the same picture at the free part's size. The viewer keeps
     // its camera through edits while `meshedit render` frames the final mesh, so Space (reset

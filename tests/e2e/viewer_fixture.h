@@ -348,6 +348,25 @@ protected:
         return path;
     }
 
+    /// `shot` equals the golden image tests/e2e/golden/NAME.png (images_match()'s tolerance);
+    /// with MESHEDIT_UPDATE_GOLDEN=1 it becomes the golden instead (look at it before
+    /// committing it).
+    void expect_golden(const fs::path& shot, const std::string& name) {
+        const fs::path golden = e2e_golden_dir() / (name + ".png");
+        if (update_mode()) {
+            fs::create_directories(golden.parent_path());
+            if (!same_file_bytes(shot, golden)) {
+                fs::copy_file(shot, golden, fs::copy_options::overwrite_existing);
+                std::cout << "golden: rewrote " << golden.string() << "\n";
+            }
+            return;
+        }
+        ASSERT_TRUE(fs::exists(golden))
+            << "no reference image " << golden << "; create it with MESHEDIT_UPDATE_GOLDEN=1 "
+            << "and look at it before committing it";
+        EXPECT_TRUE(images_match(shot, golden, out_dir(), name));
+    }
+
     /// Copies dae/cube.dae to work_/cube.dae, opens it at 800×600 in `viewer` and `window`,
     /// and flips a visible edge by a click and F: the title gets its '*'.
     void open_cube_and_flip(std::unique_ptr<BackgroundProcess>& viewer,
