@@ -1,81 +1,279 @@
-// Box selection (region_pick.h).
+// Box and lasso selection (region_pick.h).
 
 #include "meshedit/overlay/region_pick.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
+#include <thread>
 
-#include "meshedit/core/normals.h"
+#include "meshedit/core/threads.h"
 
 namespace meshedit {
 
 namespace {
 
-// The camera's projection of points into pixels, its matrices taken once.
-class Projector {
-public:
-    Projector(const Camera& camera, int width, int height)
-        : w_(static_cast<float>(std::max(width, 1))),
-          h_(static_cast<float>(std::max(height, 1))),
-          matrix_(camera.projection(w_ / h_) * camera.view()) {}
+// Every vertex in clip space, once: a face's centre is then the average of its corners'
+// clip coordinates (projection is linear before the division by w), so no face needs its
+// own matrix product.
+// The arrays are kept per thread between calls: a million-face mesh's 14 MB would otherwise
+// be fresh pages at every box, whose first touch costs about as much as the pass itself.
+struct Projected {
+    std::vector<glm::vec4>& clip;
+    std::vector<glm::vec3>& screen;     // pixels and NDC depth (when asked for)
+    std::vector<std::uint8_t>& placed;  // 1 where to_screen() succeeded
+    float w = 1, h = 1;
 
-    std::optional<glm::vec2> operator()(const Vec3& p) const {
-        const glm::vec4 clip = matrix_ * glm::vec4(static_cast<float>(p.x), static_cast<float>(p.y),
-                                                   static_cast<float>(p.z), 1.0f);
-        if (clip.w <= 0.0f || clip.z < -clip.w || clip.z > clip.w) {
-            return std::nullopt;
+    // Pixels and NDC depth of a clip-space point; false behind the eye or outside the depth
+    // range.
+    bool to_screen(const glm::vec4& c, glm::vec3& out) const {
+        if (c.w <= 0.0f || c.z < -c.w || c.z > c.w) {
+            return false;
         }
-        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-        return glm::vec2((ndc.x + 1.0f) * 0.5f * w_, (1.0f - ndc.y) * 0.5f * h_);
+        out = {(c.x / c.w + 1.0f) * 0.5f * w, (1.0f - c.y / c.w) * 0.5f * h, c.z / c.w};
+        return true;
+    }
+};
+
+Projected project_all(const Mesh& mesh, const Camera& camera, int width, int height, bool screen) {
+    thread_local std::vector<glm::vec4> clip;
+    thread_local std::vector<glm::vec3> pixels;
+    thread_local std::vector<std::uint8_t> placed;
+    Projected p{clip, pixels, placed};
+    p.w = static_cast<float>(std::max(width, 1));
+    p.h = static_cast<float>(std::max(height, 1));
+    const glm::mat4 m = camera.projection(p.w / p.h) * camera.view();
+    p.clip.resize(mesh.vertices_size());
+    if (screen) {
+        p.screen.resize(mesh.vertices_size());
+        p.placed.assign(mesh.vertices_size(), 0);
+    }
+    for (const Vertex v : mesh.vertices()) {
+        const Vec3& x = mesh.position(v);
+        p.clip[v.idx()] = m * glm::vec4(static_cast<float>(x.x), static_cast<float>(x.y),
+                                        static_cast<float>(x.z), 1.0f);
+        if (screen) {
+            p.placed[v.idx()] = p.to_screen(p.clip[v.idx()], p.screen[v.idx()]) ? 1 : 0;
+        }
+    }
+    return p;
+}
+
+// Runs body(first, last, k) on consecutive ranges of [0, n), one per thread k (thread_count(),
+// fewer for small meshes), and returns how many ranges ran.
+template <class Body>
+unsigned in_ranges(std::size_t n, const Body& body) {
+    const unsigned threads =
+        static_cast<unsigned>(std::clamp<std::size_t>(n / 100000, 1, std::max(1u, thread_count())));
+    std::vector<std::thread> pool;
+    for (unsigned k = 1; k < threads; ++k) {
+        pool.emplace_back([&, k] { body(n * k / threads, n * (k + 1) / threads, k); });
+    }
+    body(0, n / threads, 0u);
+    for (std::thread& t : pool) {
+        t.join();
+    }
+    return threads;
+}
+
+// The faces the view shows in a window of the image (the region's bounding box): for each
+// pixel the nearest face at its centre and that face's depth plane in screen space (the
+// triangle drawn there), as a GPU's depth and ID passes would hold them.
+class DepthBuffer {
+public:
+    DepthBuffer(const Mesh& mesh, const Projected& p, glm::vec2 lo, glm::vec2 hi)
+        : x0_(std::max(0, static_cast<int>(std::floor(lo.x)))),
+          y0_(std::max(0, static_cast<int>(std::floor(lo.y)))),
+          x1_(std::min(static_cast<int>(p.w) - 1, static_cast<int>(std::ceil(hi.x)))),
+          y1_(std::min(static_cast<int>(p.h) - 1, static_cast<int>(std::ceil(hi.y)))) {
+        if (x1_ < x0_ || y1_ < y0_) {
+            return;
+        }
+        const std::size_t size = static_cast<std::size_t>(x1_ - x0_ + 1) * (y1_ - y0_ + 1);
+        // Each thread draws its range of faces into its own buffer; the nearest wins.
+        // Kept per calling thread between boxes (fresh pages cost as much as drawing).
+        thread_local std::vector<std::vector<Pixel>> cache;
+        cache.resize(std::max<std::size_t>(cache.size(), std::max(1u, thread_count())));
+        std::vector<std::vector<Pixel>>& parts = cache;  // this thread's, named in the workers
+        const unsigned ran =
+            in_ranges(mesh.faces_size(), [&](std::size_t first, std::size_t last, unsigned k) {
+                std::vector<Pixel>& buffer = parts[k];
+                buffer.assign(size, Pixel{});
+                glm::vec3 corner[3];
+                for (std::size_t i = first; i < last; ++i) {
+                    const Face f(static_cast<std::uint32_t>(i));
+                    if (mesh.is_deleted(f)) {
+                        continue;
+                    }
+                    std::size_t n = 0;
+                    bool ok = true;
+                    for (const Halfedge h : mesh.halfedges(f)) {
+                        const std::uint32_t v = mesh.to_vertex(h).idx();
+                        ok = ok && p.placed[v] != 0;
+                        corner[std::min<std::size_t>(n, 2)] = p.screen[v];
+                        if (++n >= 3 && ok) {  // a fan: (first, previous, this)
+                            draw(buffer, f, corner[0], corner[1], corner[2]);
+                            corner[1] = corner[2];
+                        }
+                    }
+                    // A face across the eye's plane hides nothing we can place: not drawn.
+                }
+            });
+        pixels_ = parts[0].data();
+        for (unsigned k = 1; k < ran; ++k) {
+            for (std::size_t i = 0; i < size; ++i) {
+                if (parts[k][i].face != kEmpty &&
+                    (pixels_[i].face == kEmpty ||
+                     depth_at(parts[k][i], i) < depth_at(pixels_[i], i))) {
+                    pixels_[i] = parts[k][i];
+                }
+            }
+        }
+    }
+
+    // Whether the view shows a point at screen position `s` (NDC depth s.z): its pixel is
+    // empty, or the face nearest there is one of `own` (the point's face, a vertex's faces),
+    // or that face's plane, taken at the point itself, is not nearer than the point.
+    template <class Own>
+    bool shows(const glm::vec3& s, const Own& own) const {
+        const int x = static_cast<int>(std::floor(s.x)), y = static_cast<int>(std::floor(s.y));
+        if (x < x0_ || x > x1_ || y < y0_ || y > y1_) {
+            return true;
+        }
+        const Pixel& px = pixels_[static_cast<std::size_t>(y - y0_) * (x1_ - x0_ + 1) + (x - x0_)];
+        if (px.face == kEmpty || own(Face(px.face))) {
+            return true;
+        }
+        const float there = px.z0 + px.gx * s.x + px.gy * s.y;
+        return s.z <= there + 1e-6f * (1.0f + std::abs(s.z));
     }
 
 private:
-    float w_, h_;
-    glm::mat4 matrix_;
+    static constexpr std::uint32_t kEmpty = 0xffffffffu;
+    struct Pixel {
+        float z0 = 0, gx = 0, gy = 0;  // the plane z0 + gx x + gy y of the triangle drawn
+        std::uint32_t face = kEmpty;
+    };
+    // The depth of the triangle drawn at pixel i of the window, at its centre.
+    float depth_at(const Pixel& px, std::size_t i) const {
+        const auto row = static_cast<std::size_t>(x1_ - x0_ + 1);
+        const float x = static_cast<float>(x0_ + static_cast<int>(i % row)) + 0.5f;
+        const float y = static_cast<float>(y0_ + static_cast<int>(i / row)) + 0.5f;
+        return px.z0 + px.gx * x + px.gy * y;
+    }
+
+    void draw(std::vector<Pixel>& pixels, Face f, const glm::vec3& a, const glm::vec3& b,
+              const glm::vec3& c) const {
+        const float area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+        if (area == 0.0f || !std::isfinite(area)) {
+            return;
+        }
+        const int xa = std::max(x0_, static_cast<int>(std::ceil(std::min({a.x, b.x, c.x}) - 0.5f)));
+        const int xb =
+            std::min(x1_, static_cast<int>(std::floor(std::max({a.x, b.x, c.x}) - 0.5f)));
+        const int ya = std::max(y0_, static_cast<int>(std::ceil(std::min({a.y, b.y, c.y}) - 0.5f)));
+        const int yb =
+            std::min(y1_, static_cast<int>(std::floor(std::max({a.y, b.y, c.y}) - 0.5f)));
+        if (xa > xb || ya > yb) {
+            return;  // no pixel centre inside (a sub-pixel triangle), or outside the window
+        }
+        // The plane z = z0 + gx x + gy y through the three corners.
+        const float gx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / area;
+        const float gy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / area;
+        const float z0 = a.z - gx * a.x - gy * a.y;
+        const float sign = area > 0.0f ? 1.0f : -1.0f;
+        for (int y = ya; y <= yb; ++y) {
+            const float py = static_cast<float>(y) + 0.5f;
+            for (int x = xa; x <= xb; ++x) {
+                const float px = static_cast<float>(x) + 0.5f;
+                // Inside when the pixel centre is on the inner side of all three edges.
+                const float e0 = sign * ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x));
+                const float e1 = sign * ((c.x - b.x) * (py - b.y) - (c.y - b.y) * (px - b.x));
+                const float e2 = sign * ((a.x - c.x) * (py - c.y) - (a.y - c.y) * (px - c.x));
+                if (e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) {
+                    continue;
+                }
+                const float z = z0 + gx * px + gy * py;
+                Pixel& d = pixels[static_cast<std::size_t>(y - y0_) * (x1_ - x0_ + 1) + (x - x0_)];
+                if (d.face == kEmpty || z < d.z0 + d.gx * px + d.gy * py) {
+                    d = {z0, gx, gy, f.idx()};
+                }
+            }
+        }
+    }
+
+    int x0_, y0_, x1_, y1_;
+    Pixel* pixels_ = nullptr;  // the first thread's buffer, the others merged into it
 };
 
-// Whether the view shows `p`: a ray from the eye (along the view direction when orthographic)
-// meets no face before it. Faces through `p` itself meet it at t = 1, past the bound.
-bool shows(const FaceBvh& tree, const Mesh& mesh, const Camera& camera, const Vec3& p) {
-    const glm::vec3 eye = camera.eye();
-    FaceBvh::Ray ray;
-    if (camera.orthographic) {
-        const glm::vec3 forward = glm::normalize(camera.target - eye);
-        const Vec3 back{forward.x, forward.y, forward.z};
-        const double reach = 4.0 * static_cast<double>(camera.far_plane());
-        ray.origin = p - back * reach;
-        ray.direction = back * reach;
-    } else {
-        ray.origin = Vec3{eye.x, eye.y, eye.z};
-        ray.direction = p - ray.origin;
-    }
-    ray.t_max = 1.0 - 1e-6;
-    return !tree.intersect(mesh, ray).has_value();
-}
-
-// What a region selects: `in_region(pixel)` says whether a projected point lies inside.
+// What a region selects: `in_region(pixel)` says whether a projected point lies inside;
+// [lo, hi] bounds the region.
 template <class InRegion>
 std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, int width,
-                                        int height, ElementRef::Kind kind, const FaceBvh* visible,
-                                        const InRegion& in_region) {
-    const Projector project(camera, width, height);
-    const auto inside = [&](const Vec3& p) {
-        const std::optional<glm::vec2> q = project(p);
-        return q && in_region(*q) && (visible == nullptr || shows(*visible, mesh, camera, p));
-    };
+                                        int height, ElementRef::Kind kind, Reach reach,
+                                        glm::vec2 lo, glm::vec2 hi, const InRegion& in_region) {
+    const Projected p = project_all(mesh, camera, width, height,
+                                    reach == Reach::Visible || kind != ElementRef::Kind::Face);
+    std::optional<DepthBuffer> depth;
+    if (reach == Reach::Visible) {
+        depth.emplace(mesh, p, lo, hi);
+    }
     std::vector<ElementRef> out;
     if (kind == ElementRef::Kind::Face) {
-        for (const Face f : mesh.faces()) {
-            if (inside(face_centroid(mesh, f))) {
-                out.push_back(ElementRef::face(f));
-            }
+        std::vector<std::vector<ElementRef>> parts(std::max(1u, thread_count()));
+        const unsigned ran =
+            in_ranges(mesh.faces_size(), [&](std::size_t first, std::size_t last, unsigned k) {
+                for (std::size_t i = first; i < last; ++i) {
+                    const Face f(static_cast<std::uint32_t>(i));
+                    if (mesh.is_deleted(f)) {
+                        continue;
+                    }
+                    glm::vec4 sum(0.0f);
+                    float n = 0.0f;
+                    for (const Halfedge h : mesh.halfedges(f)) {
+                        sum += p.clip[mesh.to_vertex(h).idx()];
+                        n += 1.0f;
+                    }
+                    glm::vec3 s;
+                    if (p.to_screen(sum / n, s) && in_region(glm::vec2(s)) &&
+                        (!depth || depth->shows(s, [f](Face g) { return g == f; }))) {
+                        parts[k].push_back(ElementRef::face(f));
+                    }
+                }
+            });
+        if (ran == 1) {
+            return std::move(parts[0]);
+        }
+        for (unsigned k = 0; k < ran; ++k) {
+            out.insert(out.end(), parts[k].begin(), parts[k].end());
         }
         return out;
     }
     std::vector<bool> in(mesh.vertices_size(), false);
     for (const Vertex v : mesh.vertices()) {
-        in[v.idx()] = inside(mesh.position(v));
-        if (in[v.idx()] && kind == ElementRef::Kind::Vertex) {
+        const glm::vec3& s = p.screen[v.idx()];
+        if (p.placed[v.idx()] == 0 || !in_region(glm::vec2(s))) {
+            continue;
+        }
+        // One of v's faces nearest at its pixel: v is on what the view shows.
+        const auto around_v = [&](Face g) {
+            if (mesh.is_isolated(v)) {
+                return false;
+            }
+            for (const Halfedge h : mesh.halfedges(v)) {
+                if (mesh.face(h) == g) {
+                    return true;
+                }
+            }
+            return false;
+        };
+        if (depth && !depth->shows(s, around_v)) {
+            continue;
+        }
+        in[v.idx()] = true;
+        if (kind == ElementRef::Kind::Vertex) {
             out.push_back(ElementRef::vertex(v));
         }
     }
@@ -92,10 +290,9 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
 }  // namespace
 
 std::vector<ElementRef> elements_in_box(const Mesh& mesh, const Camera& camera,
-                                        const ScreenBox& box, ElementRef::Kind kind,
-                                        const FaceBvh* visible) {
+                                        const ScreenBox& box, ElementRef::Kind kind, Reach reach) {
     const glm::vec2 lo = glm::min(box.a, box.b), hi = glm::max(box.a, box.b);
-    return elements_inside(mesh, camera, box.width, box.height, kind, visible,
+    return elements_inside(mesh, camera, box.width, box.height, kind, reach, lo, hi,
                            [&](const glm::vec2& q) {
                                return q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
                            });
@@ -103,8 +300,7 @@ std::vector<ElementRef> elements_in_box(const Mesh& mesh, const Camera& camera,
 
 std::vector<ElementRef> elements_in_lasso(const Mesh& mesh, const Camera& camera,
                                           const std::vector<glm::vec2>& outline, int width,
-                                          int height, ElementRef::Kind kind,
-                                          const FaceBvh* visible) {
+                                          int height, ElementRef::Kind kind, Reach reach) {
     if (outline.size() < 3) {
         return {};
     }
@@ -127,7 +323,7 @@ std::vector<ElementRef> elements_in_lasso(const Mesh& mesh, const Camera& camera
         }
         return odd;
     };
-    return elements_inside(mesh, camera, width, height, kind, visible, in_outline);
+    return elements_inside(mesh, camera, width, height, kind, reach, lo, hi, in_outline);
 }
 
 }  // namespace meshedit

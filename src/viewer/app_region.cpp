@@ -88,15 +88,13 @@ void App::finish_region(bool add, bool through) {
     const auto start = std::chrono::steady_clock::now();
     const glm::ivec2 size = framebuffer_size();
     const Mesh& mesh = editor_.mesh();
-    const FaceBvh* visible =
-        through ? nullptr : &display_.picking_tree(mesh, editor_.document().revision);
+    const Reach reach = through ? Reach::Through : Reach::Visible;
     const bool lasso = !lasso_.empty();
     const std::vector<ElementRef> inside =
         lasso
-            ? elements_in_lasso(mesh, camera_, lasso_, size.x, size.y, editor_.region_kind(),
-                                visible)
+            ? elements_in_lasso(mesh, camera_, lasso_, size.x, size.y, editor_.region_kind(), reach)
             : elements_in_box(mesh, camera_, ScreenBox{box_from_, cursor_pixels(), size.x, size.y},
-                              editor_.region_kind(), visible);
+                              editor_.region_kind(), reach);
     // The info panel's "pick" time: a region is a pick of many elements.
     last_pick_ms_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "meshedit/core/face_bvh.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/shapes.h"
@@ -44,17 +46,58 @@ TEST(BoxSelect, ThroughTheMeshTakesEverythingInside) {
 
 TEST(BoxSelect, VisibleOnlyTakesWhatTheViewShows) {
     const Mesh cube = test::quad_cube();
-    FaceBvh tree;
-    tree.build(cube);
-    const auto faces = elements_in_box(cube, front(), kWhole, ElementRef::Kind::Face, &tree);
+    const Reach visible = Reach::Visible;
+    const auto faces = elements_in_box(cube, front(), kWhole, ElementRef::Kind::Face, visible);
     ASSERT_EQ(faces.size(), 1u);  // the front face; the others' centres lie behind it
     EXPECT_GT(face_normal(cube, Face(faces[0].index)).z, 0.0);
-    const auto vertices = elements_in_box(cube, front(), kWhole, ElementRef::Kind::Vertex, &tree);
+    const auto vertices = elements_in_box(cube, front(), kWhole, ElementRef::Kind::Vertex, visible);
     ASSERT_EQ(vertices.size(), 4u);
     for (const ElementRef& v : vertices) {
         EXPECT_EQ(cube.position(Vertex(v.index)).z, 1.0);
     }
-    EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Edge, &tree).size(), 4u);
+    EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Edge, visible).size(), 4u);
+}
+
+// The depth buffer agrees with rays from the eye into the picking tree (the independent way
+// to ask what the view shows) on a torus seen from above at an angle, but for centres within
+// a pixel of a silhouette (where the surface turns away from the eye).
+TEST(BoxSelect, VisibleOnlyAgreesWithRaysIntoTheTree) {
+    const Mesh torus = shapes::torus(60, 30);
+    Camera camera;
+    camera.azimuth_deg = 30.0f;
+    camera.elevation_deg = 35.0f;
+    camera.frame_mesh(torus, 400.0f / 300.0f);
+    FaceBvh tree;
+    tree.build(torus);
+    const ScreenBox whole{{0, 0}, {400, 300}, 400, 300};
+    const auto through = elements_in_box(torus, camera, whole, ElementRef::Kind::Face);
+    ASSERT_EQ(through.size(), torus.n_faces());
+    const auto seen = elements_in_box(torus, camera, whole, ElementRef::Kind::Face, Reach::Visible);
+    std::vector<bool> by_depth(torus.faces_size(), false);
+    for (const ElementRef& f : seen) {
+        by_depth[f.index] = true;
+    }
+    const glm::vec3 e = camera.eye();
+    const Vec3 eye{e.x, e.y, e.z};
+    std::size_t by_ray = 0, differ = 0;
+    for (const Face f : torus.faces()) {
+        FaceBvh::Ray ray;
+        ray.origin = eye;
+        ray.direction = face_centroid(torus, f) - eye;
+        ray.t_max = 1.0 - 1e-6;
+        const bool shown = !tree.intersect(torus, ray).has_value();
+        by_ray += shown ? 1 : 0;
+        if (shown != by_depth[f.idx()]) {
+            ++differ;
+            // Only where the surface turns away: the silhouette, within a pixel.
+            const Vec3 to_eye = eye - face_centroid(torus, f);
+            EXPECT_LT(std::abs(dot(face_normal(torus, f), to_eye)) / norm(to_eye), 0.2)
+                << "face " << f.idx() << ": ray says " << shown;
+        }
+    }
+    EXPECT_GT(by_ray, torus.n_faces() / 3);
+    EXPECT_LT(by_ray, torus.n_faces() * 3 / 4);
+    EXPECT_LE(differ, torus.n_faces() / 20) << seen.size() << " by depth, " << by_ray << " by ray";
 }
 
 // A lasso: an outline of the left half selects what a box there would; a triangle over the

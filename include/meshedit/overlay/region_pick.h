@@ -4,14 +4,14 @@
 /// as Blender does it — in vertex mode the vertices that land inside, in edge mode the edges both
 /// of whose ends do, in face mode the faces whose centre does. GL-free: points are projected with
 /// the camera's own matrices (project_to_pixels()'s arithmetic), and what the view hides is found
-/// with rays into the picking tree.
+/// with a depth buffer of the region, drawn on the CPU (a triangle per pixel of a million-face
+/// mesh costs what the GPU's ID pass would, without a round trip through the driver).
 
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "meshedit/core/element_ref.h"
-#include "meshedit/core/face_bvh.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/overlay/camera.h"
 
@@ -22,19 +22,22 @@ struct ScreenBox {
     int width = 1, height = 1;  ///< the image
 };
 
+/// Whether a region takes only what the view shows or also what is hidden (Blender's X-ray).
+enum class Reach { Visible, Through };
+
 /// The elements of `kind` (Vertex, Edge, Face; a Halfedge counts as Edge) that `box` selects,
-/// in increasing index order. With `visible` (a tree of `mesh`), only what the view shows: an
-/// element's point (a vertex, a face's centre) counts when a ray from the eye meets nothing
-/// before it; without, everything inside counts (X-ray, "through").
+/// in increasing index order. Visible: an element's point (a vertex, a face's centre) counts
+/// when the depth buffer of the faces at its pixel is not nearer than the point by more than
+/// the element's own depth change across a pixel; Through: everything inside counts.
 std::vector<ElementRef> elements_in_box(const Mesh& mesh, const Camera& camera,
                                         const ScreenBox& box, ElementRef::Kind kind,
-                                        const FaceBvh* visible = nullptr);
+                                        Reach reach = Reach::Through);
 
 /// The same for a lasso: a closed outline in pixels of a `width` × `height` image (the last
 /// point joins the first); a point is inside by the even-odd rule.
 std::vector<ElementRef> elements_in_lasso(const Mesh& mesh, const Camera& camera,
                                           const std::vector<glm::vec2>& outline, int width,
                                           int height, ElementRef::Kind kind,
-                                          const FaceBvh* visible = nullptr);
+                                          Reach reach = Reach::Through);
 
 }  // namespace meshedit
