@@ -193,6 +193,11 @@ int App::run() {
 
 // ------------------------------------------------------------------------------ input
 
+void App::tell_view_direction() {
+    const glm::vec3 d = camera_.eye() - camera_.target;
+    editor_.set_view_direction({d.x, d.y, d.z});
+}
+
 void App::on_key(int key, int action, int mods) {
     redraw_frames_ = kSettleFrames;
     if (panels_.prompting()) {
@@ -207,6 +212,7 @@ void App::on_key(int key, int action, int mods) {
         return;
     }
     const bool was_modal = editor_.modal() != Modal::None;
+    tell_view_direction();
     apply(editor_.press(static_cast<Key>(key), static_cast<unsigned>(mods)));
     if (!was_modal && editor_.modal() != Modal::None) {
         start_modal();
@@ -677,6 +683,7 @@ void App::draw_frame() {
         redraw_frames_ = std::max(redraw_frames_, 1);
     }
     if (requests.action) {
+        tell_view_direction();
         apply(editor_.run(*requests.action));
     }
     if (requests.select) {

@@ -52,6 +52,8 @@ private:
 
     // GLFW callbacks (installed before ImGui's, which chains to them).
     void on_key(int key, int action, int mods);
+    /// Tells the editor where the eye is (select by trait: faces turned away).
+    void tell_view_direction();
     void on_mouse_button(int button, int action, int mods);
     void on_cursor(double x, double y);
     void on_scroll(double dy);

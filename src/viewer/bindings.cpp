@@ -63,6 +63,7 @@ constexpr std::array kTable{
     Binding{Key::KeypadSubtract, kCtrl, kMeshModes, {Command::SelectLess}, "Ctrl+- / Ctrl+keypad -", "shrink the selected faces or vertices by one ring"},
     Binding{key_of('B'), kNoMods, kMeshMode, {Command::BoxSelect}, "B", "box select: drag a rectangle with the left button; what the view shows inside it is selected in the selection's kind (faces if none; Shift adds, Alt takes what is hidden too, a right click cancels)"},
     Binding{key_of('P'), kAlt, kMeshModes, {Command::SelectPath}, "Alt+P", "select the shortest path between the two selected vertices (along edges) or faces (across edges)"},
+    Binding{key_of('G'), kShift, kMeshModes, {Command::SelectTrait}, "Shift+G", "select by trait: what the info panel's Selection section names (the border, creases, vertices of valence k, faces of k corners, faces turned away from you by more than an angle)"},
     Binding{key_of('I'), kCtrl, kMeshModes, {Command::SelectInvert}, "Ctrl+I", "invert the selection: every element of its kind not selected (faces if none)"},
     Binding{Key::Period, kNoMods, kMeshModes, {Command::FrameSelection}, ". / keypad .", "frame the selection (centre the camera on it)"},
     Binding{Key::KeypadDecimal, kNoMods, kMeshModes, {Command::FrameSelection}, ". / keypad .", "frame the selection (centre the camera on it)"},

@@ -79,6 +79,7 @@ Outcome Editor::run(Action action) {
         case Command::SelectLess:
         case Command::SelectInvert:
         case Command::SelectPath:
+        case Command::SelectTrait:
         case Command::BoxSelect:
         case Command::FrameSelection:
         case Command::Validate:

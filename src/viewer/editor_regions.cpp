@@ -159,6 +159,40 @@ Outcome Editor::select_region(Command command) {
             what = "selected the shortest path:";
             break;
         }
+        case Command::SelectTrait: {
+            TraitQuery query = tools_.trait;
+            query.direction = toward_eye_;
+            switch (query.trait) {
+                case Trait::Valence:
+                    take(vertices_with(mesh, query), vertices);
+                    what = "selected the vertices of valence " + std::to_string(query.k) + ":";
+                    break;
+                case Trait::Degree:
+                    take(faces_with(mesh, query), faces);
+                    what = "selected the faces of " + std::to_string(query.k) + " corners:";
+                    break;
+                case Trait::Crease:
+                    take(edges_with(mesh, query), edges);
+                    what = "selected the crease edges:";
+                    break;
+                case Trait::FacingAway:
+                    take(faces_with(mesh, query), faces);
+                    what = "selected the faces turned away from you by more than " +
+                           number_text(query.angle_deg) + "°:";
+                    break;
+                case Trait::Boundary:
+                    if (kind == Kind::Vertex) {
+                        take(vertices_with(mesh, query), vertices);
+                    } else if (kind == Kind::Edge) {
+                        take(edges_with(mesh, query), edges);
+                    } else {
+                        take(faces_with(mesh, query), faces);
+                    }
+                    what = "selected the border:";
+                    break;
+            }
+            break;
+        }
         case Command::SelectInvert:
             if (kind == Kind::Vertex) {
                 take(invert(mesh, set_of<Vertex>(now, mesh.vertices_size(), kind)), vertices);

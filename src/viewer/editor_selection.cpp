@@ -210,6 +210,7 @@ Outcome Editor::run_selection(Command command) {
         case Command::SelectLess:
         case Command::SelectInvert:
         case Command::SelectPath:
+        case Command::SelectTrait:
             return select_region(command);
         case Command::BoxSelect:
             return {kBoxSelect, "box select: drag a rectangle (Shift adds, Alt selects through)"};

@@ -77,6 +77,34 @@ void rows_table(const char* id, const std::vector<std::pair<std::string, std::st
     ImGui::EndTable();
 }
 
+// Select by trait (Shift+G): which trait, and its number.
+void draw_trait_choice(TraitQuery& trait, PanelRequests& requests) {
+    static constexpr const char* kNames[] = {"the border", "creases", "vertices of valence k",
+                                             "faces of k corners", "faces turned away"};
+    int chosen = static_cast<int>(trait.trait);
+    ImGui::SetNextItemWidth(170);
+    if (ImGui::Combo("##trait", &chosen, kNames, IM_ARRAYSIZE(kNames))) {
+        trait.trait = static_cast<Trait>(chosen);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("select (Shift+G)")) {
+        requests.action = Action{Command::SelectTrait};
+    }
+    if (trait.trait == Trait::Valence || trait.trait == Trait::Degree) {
+        int k = static_cast<int>(trait.k);
+        ImGui::SetNextItemWidth(120);
+        if (ImGui::InputInt("k", &k)) {
+            trait.k = static_cast<std::size_t>(std::clamp(k, 1, 1000));
+        }
+    } else if (trait.trait == Trait::FacingAway) {
+        float angle = static_cast<float>(trait.angle_deg);
+        ImGui::SetNextItemWidth(170);
+        if (ImGui::SliderFloat("degrees", &angle, 0.0f, 180.0f, "%.0f")) {
+            trait.angle_deg = angle;
+        }
+    }
+}
+
 }  // namespace
 
 void Panels::ask_path(Prompt prompt, const std::filesystem::path& document) {
@@ -213,6 +241,9 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDispl
             rows_table("selection", element_info(editor.mesh(), selection),
                        element_links(editor.mesh(), selection), &requests);
             ImGui::TextDisabled("click an index to select it, hover to see it");
+        }
+        if (doc.mode != Mode::Curve) {
+            draw_trait_choice(editor.tools().trait, requests);
         }
     }
 

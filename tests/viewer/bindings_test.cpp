@@ -59,6 +59,7 @@ const std::vector<Expected>& expected_bindings() {
             // Operations on a region of faces.
             {key_of('X'), kShift, kMeshModes, interactive(Modal::ExtrudeRegion)},
             {key_of('W'), kShift, kMeshModes, edit("subdivide_region")},
+            {key_of('G'), kShift, kMeshModes, {Command::SelectTrait}},
             {key_of('I'), kShift, kMeshModes, interactive(Modal::Inset)},
             {key_of('B'), kCtrl, kMeshModes, interactive(Modal::Bevel)},
             {key_of('M'), 0, kMeshModes, interactive(Modal::Move)},

@@ -159,5 +159,33 @@ TEST(EditorRegions, ShiftXExtrudesTheRegionAsOneAndShiftWSubdividesIt) {
     EXPECT_EQ(refused.message, "select faces (click, Shift+click, B or Ctrl+right-drag) first");
 }
 
+// Shift+G selects by the trait the info panel sets: on a 5 x 5 grid the border faces (16),
+// the border's vertices of valence 3 (16), the quads (25), a crease; turned away from the
+// eye, nothing until the eye goes behind the grid.
+TEST(EditorRegions, ShiftGSelectsByTrait) {
+    Editor ed = editor_with(quad_grid(5, 5));
+    const auto trait = [&](Trait t, std::size_t k = 4) {
+        ed.tools().trait.trait = t;
+        ed.tools().trait.k = k;
+        const Outcome out = ed.press(key_of('G'), kShift);
+        EXPECT_FALSE(out.refused) << out.message;
+        return out.message;
+    };
+    EXPECT_EQ(trait(Trait::Boundary), "selected the border: 16 faces");
+    EXPECT_EQ(trait(Trait::Valence, 3), "selected the vertices of valence 3: 16 vertices");
+    EXPECT_EQ(ed.selected()[0].kind, ElementRef::Kind::Vertex);
+    EXPECT_EQ(trait(Trait::Boundary), "selected the border: 20 vertices");  // in vertex mode
+    EXPECT_EQ(trait(Trait::Degree, 4), "selected the faces of 4 corners: 25 faces");
+    EXPECT_EQ(trait(Trait::Crease), "selected the crease edges: nothing (the selection is empty)");
+    ed.tools().trait.angle_deg = 90;
+    ed.set_view_direction({0, 0, 1});
+    EXPECT_EQ(trait(Trait::FacingAway),
+              "selected the faces turned away from you by more than "
+              "90°: nothing (the selection is empty)");
+    ed.set_view_direction({0, 0, -1});
+    EXPECT_EQ(trait(Trait::FacingAway),
+              "selected the faces turned away from you by more than 90°: 25 faces");
+}
+
 }  // namespace
 }  // namespace meshedit::viewer

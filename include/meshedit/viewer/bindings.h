@@ -54,6 +54,7 @@ enum class Command {
     SelectLess,      ///< shrink them by one ring
     SelectInvert,    ///< every live element of the selected kind not selected
     SelectPath,      ///< the shortest path between the two selected vertices or faces
+    SelectTrait,     ///< every element with the trait the info panel sets (ToolSettings::trait)
     BoxSelect,       ///< the next left drag draws a box that selects (the window's part)
     FrameSelection,  ///< the camera centres on the selection
     // Moving the selection through the connectivity.

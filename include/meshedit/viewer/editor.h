@@ -27,6 +27,7 @@
 #include "meshedit/overlay/op_diagram.h"
 #include "meshedit/overlay/shading.h"
 #include "meshedit/selection/region_ops.h"
+#include "meshedit/selection/selection.h"
 #include "meshedit/viewer/bindings.h"
 #include "meshedit/viewer/history.h"
 #include "meshedit/viewer/outcome.h"
@@ -94,6 +95,9 @@ public:
     /// The amounts the verb called `verb` runs with from a key: at first its defaults (D keeps
     /// half the faces; Shift+R: the mean edge length, 3 rounds). \pre the verb exists.
     Amounts& amounts(std::string_view verb);
+    /// What Shift+G selects (the info panel's Selection section sets it). FacingAway takes
+    /// its direction from the view when it runs (Editor::set_view_direction()).
+    TraitQuery trait;
 
 private:
     std::vector<std::pair<const ops::Verb*, Amounts>> amounts_;
@@ -211,8 +215,12 @@ public:
     /// Ctrl+A: every live element of the active element's kind (faces if nothing is
     /// selected). Alt+A: nothing.
     Outcome select_all();
-    /// Loops, rings, linked, more, less, invert (editor_regions.cpp, selection/selection.h).
+    /// Loops, rings, linked, more, less, invert, path, by trait (editor_regions.cpp,
+    /// selection/selection.h).
     Outcome select_region(Command command);
+    /// The direction from the view's target toward the eye (the window sets it before each
+    /// key): "faces turned away" is measured from it.
+    void set_view_direction(const Vec3& toward_eye) { toward_eye_ = toward_eye; }
     /// Selects `elements` (a box's; active the last), or adds them to the selection;
     /// `what` names the region in the message.
     Outcome select_elements(const std::vector<ElementRef>& elements, bool add,
@@ -380,6 +388,7 @@ private:
     Ledger ledger_;
     ViewState view_;
     ToolSettings tools_;
+    Vec3 toward_eye_{0, 0, 1};
     ProgressHook progress_hook_;
     ElementRef hover_;
     std::optional<OpDiagram> diagram_;
