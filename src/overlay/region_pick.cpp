@@ -326,4 +326,15 @@ std::vector<ElementRef> elements_in_lasso(const Mesh& mesh, const Camera& camera
     return elements_inside(mesh, camera, width, height, kind, reach, lo, hi, in_outline);
 }
 
+std::vector<ElementRef> elements_in_circle(const Mesh& mesh, const Camera& camera, glm::vec2 centre,
+                                           float radius, int width, int height,
+                                           ElementRef::Kind kind, Reach reach) {
+    const glm::vec2 r(radius, radius);
+    return elements_inside(mesh, camera, width, height, kind, reach, centre - r, centre + r,
+                           [&](const glm::vec2& q) {
+                               const glm::vec2 d = q - centre;
+                               return glm::dot(d, d) <= radius * radius;
+                           });
+}
+
 }  // namespace meshedit

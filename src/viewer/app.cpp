@@ -211,6 +211,11 @@ void App::on_key(int key, int action, int mods) {
     if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard) {
         return;
     }
+    if (brush_mode() && (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_ENTER)) {
+        drag_ = DragMode::None;  // Esc ends the brush; it does not clear the selection
+        set_status("brush select ended", false);
+        return;
+    }
     const bool was_modal = editor_.modal() != Modal::None;
     tell_view_direction();
     apply(editor_.press(static_cast<Key>(key), static_cast<unsigned>(mods)));
@@ -392,7 +397,11 @@ void App::on_cursor(double x, double y) {
             break;
         case DragMode::BoxArmed:
         case DragMode::Box:
-            break;  // the box follows the cursor when the frame is drawn
+        case DragMode::BrushArmed:
+            break;  // the box and the circle follow the cursor when the frame is drawn
+        case DragMode::Brush:
+            paint_brush();
+            break;
         case DragMode::Lasso:
             if (lasso_.empty() || glm::length(cursor_pixels() - lasso_.back()) >= 3.0f) {
                 lasso_.push_back(cursor_pixels());
@@ -405,6 +414,11 @@ void App::on_cursor(double x, double y) {
 void App::on_scroll(double dy) {
     redraw_frames_ = kSettleFrames;
     if (ImGui::GetIO().WantCaptureMouse || panels_.contains(glm::vec2(cursor_))) {
+        return;
+    }
+    if (brush_mode()) {  // the wheel sizes the brush, as in Blender
+        brush_radius_ =
+            std::clamp(brush_radius_ * (1.0f + 0.1f * static_cast<float>(dy)), 4.0f, 400.0f);
         return;
     }
     if (!mesh_mode()) {
@@ -507,6 +521,9 @@ void App::apply(const Outcome& outcome) {
     }
     if (c & kBoxSelect) {
         drag_ = DragMode::BoxArmed;
+    }
+    if (c & kBrushSelect) {
+        drag_ = DragMode::BrushArmed;
     }
     if (c & kFrameSelection) {
         frame_selection();

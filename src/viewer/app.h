@@ -47,8 +47,20 @@ public:
 
 private:
     /// BoxArmed: B was pressed, the next left press starts a box; Box: drawing it; Lasso:
-    /// a Ctrl+right-drag drawing an outline.
-    enum class DragMode { None, Pending, Orbit, Pan, Element, BoxArmed, Box, Lasso };
+    /// a Ctrl+right-drag drawing an outline; BrushArmed: Alt+B was pressed, the circle
+    /// follows the cursor; Brush: a left drag painting with it.
+    enum class DragMode {
+        None,
+        Pending,
+        Orbit,
+        Pan,
+        Element,
+        BoxArmed,
+        Box,
+        Lasso,
+        BrushArmed,
+        Brush
+    };
 
     // GLFW callbacks (installed before ImGui's, which chains to them).
     void on_key(int key, int action, int mods);
@@ -118,6 +130,12 @@ private:
     bool region_mouse_button(int button, int action, int mods);
     void draw_region();
     void finish_region(bool add, bool through);
+    /// The brush: selects (or with Shift takes away) what lies under its circle now.
+    void paint_brush();
+    bool brush_mode() const { return drag_ == DragMode::BrushArmed || drag_ == DragMode::Brush; }
+    float brush_radius_ = 25.0f;    ///< framebuffer pixels
+    bool brush_removes_ = false;    ///< the drag began with Shift
+    bool brush_through_ = false;    ///< the drag began with Alt
     glm::vec2 box_from_{0.0f};      ///< where the box's drag began, framebuffer pixels
     std::vector<glm::vec2> lasso_;  ///< the lasso's outline so far, framebuffer pixels
 

@@ -17,6 +17,22 @@
 namespace meshedit::viewer {
 
 bool App::region_mouse_button(int button, int action, int mods) {
+    if (brush_mode()) {
+        if (action == GLFW_PRESS && button == GLFW_MOUSE_BUTTON_RIGHT) {
+            drag_ = DragMode::None;
+            set_status("brush select ended", false);
+            swallow_release_ = true;
+        } else if (action == GLFW_PRESS && button == GLFW_MOUSE_BUTTON_LEFT) {
+            drag_ = DragMode::Brush;
+            brush_removes_ = (mods & GLFW_MOD_SHIFT) != 0;
+            brush_through_ = (mods & GLFW_MOD_ALT) != 0;
+            paint_brush();
+        } else if (action == GLFW_RELEASE && button == GLFW_MOUSE_BUTTON_LEFT) {
+            drag_ = DragMode::BrushArmed;
+        }
+        redraw_frames_ = kSettleFrames;
+        return true;
+    }
     const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0;
     if (drag_ == DragMode::None && action == GLFW_PRESS && button == GLFW_MOUSE_BUTTON_RIGHT &&
         ctrl && mesh_mode()) {
@@ -57,7 +73,7 @@ bool App::region_mouse_button(int button, int action, int mods) {
 }
 
 void App::draw_region() {
-    if (drag_ != DragMode::Box && drag_ != DragMode::Lasso) {
+    if (drag_ != DragMode::Box && drag_ != DragMode::Lasso && !brush_mode()) {
         return;
     }
     // Framebuffer pixels to ImGui's window coordinates.
@@ -68,6 +84,10 @@ void App::draw_region() {
     const auto at = [&](glm::vec2 p) { return ImVec2(p.x * sx, p.y * sy); };
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     const ImU32 line = IM_COL32(255, 160, 40, 220);
+    if (brush_mode()) {
+        draw->AddCircle(at(cursor_pixels()), brush_radius_ * sx, line, 48, 1.5f);
+        return;
+    }
     if (drag_ == DragMode::Box) {
         draw->AddRectFilled(at(box_from_), at(cursor_pixels()), IM_COL32(255, 160, 40, 40));
         draw->AddRect(at(box_from_), at(cursor_pixels()), line, 0.0f, 0, 1.5f);
@@ -100,6 +120,21 @@ void App::finish_region(bool add, bool through) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const std::string what = std::string(lasso ? "lasso" : "box") + (through ? " (through)" : "");
     apply(editor_.select_elements(inside, add, what));
+}
+
+void App::paint_brush() {
+    if (!mesh_mode() || !scene_->has_mesh()) {
+        return;
+    }
+    const glm::ivec2 size = framebuffer_size();
+    const std::vector<ElementRef> under =
+        elements_in_circle(editor_.mesh(), camera_, cursor_pixels(), brush_radius_, size.x, size.y,
+                           editor_.region_kind(), brush_through_ ? Reach::Through : Reach::Visible);
+    if (under.empty()) {
+        return;
+    }
+    apply(brush_removes_ ? editor_.deselect_elements(under, "brush")
+                         : editor_.select_elements(under, true, "brush"));
 }
 
 }  // namespace meshedit::viewer

@@ -62,6 +62,7 @@ constexpr std::array kTable{
     Binding{Key::Minus, kCtrl, kMeshModes, {Command::SelectLess}, "Ctrl+- / Ctrl+keypad -", "shrink the selected faces or vertices by one ring"},
     Binding{Key::KeypadSubtract, kCtrl, kMeshModes, {Command::SelectLess}, "Ctrl+- / Ctrl+keypad -", "shrink the selected faces or vertices by one ring"},
     Binding{key_of('B'), kNoMods, kMeshMode, {Command::BoxSelect}, "B", "box select: drag a rectangle with the left button; what the view shows inside it is selected in the selection's kind (faces if none; Shift adds, Alt takes what is hidden too, a right click cancels)"},
+    Binding{key_of('B'), kAlt, kMeshMode, {Command::BrushSelect}, "Alt+B", "brush select: left drags paint the selection with a circle (Shift+drag takes away, the wheel sizes the circle, Esc or a right click ends it)"},
     Binding{key_of('P'), kAlt, kMeshModes, {Command::SelectPath}, "Alt+P", "select the shortest path between the two selected vertices (along edges) or faces (across edges)"},
     Binding{key_of('G'), kShift, kMeshModes, {Command::SelectTrait}, "Shift+G", "select by trait: what the info panel's Selection section names (the border, creases, vertices of valence k, faces of k corners, faces turned away from you by more than an angle)"},
     Binding{key_of('I'), kCtrl, kMeshModes, {Command::SelectInvert}, "Ctrl+I", "invert the selection: every element of its kind not selected (faces if none)"},
@@ -132,12 +133,13 @@ constexpr std::array kTable{
 };
 
 // The mouse as each mode handles it (App::on_mouse_button, on_cursor, on_scroll).
-const std::array<HelpRow, 16> kMouseRows{{
+const std::array<HelpRow, 17> kMouseRows{{
     {"left-click", "select the element under the cursor (vertex near a corner, edge near an edge, halfedge just inside it, else face)", "mesh, surface"},
     {"Shift+left-click", "add the element under the cursor to the selection, or remove it", "mesh, surface"},
     {"left-drag on empty space / right-drag", "orbit (turntable about the up axis; O: trackball)", "mesh, surface"},
     {"left-drag on a vertex", "move it in the screen plane", "mesh, surface"},
     {"B, then left-drag", "box select: what the view shows inside the rectangle, in the selection's kind (Shift adds, Alt selects through, right-click cancels)", "mesh"},
+    {"Alt+B, then left-drag", "brush select: what the view shows under the circle joins the selection (Shift+drag takes it away, the wheel sizes the circle, Esc ends)", "mesh"},
     {"Alt+left-click", "select the edge loop through the edge under the cursor (Ctrl+Alt+left-click: its ring)", "mesh"},
     {"Ctrl+right-drag", "lasso select: what the view shows inside the outline (Shift adds, Alt selects through)", "mesh"},
     {"wheel", "zoom to the cursor", "mesh, surface"},

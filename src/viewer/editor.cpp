@@ -81,6 +81,7 @@ Outcome Editor::run(Action action) {
         case Command::SelectPath:
         case Command::SelectTrait:
         case Command::BoxSelect:
+        case Command::BrushSelect:
         case Command::FrameSelection:
         case Command::Validate:
             return run_selection(c);

@@ -259,4 +259,33 @@ Outcome Editor::select_elements(const std::vector<ElementRef>& elements, bool ad
                             (add ? " selected in all" : " selected")};
 }
 
+Outcome Editor::deselect_elements(const std::vector<ElementRef>& elements,
+                                  const std::string& what) {
+    const auto key = [](const ElementRef& e) {
+        const ElementRef k = as_kind(e);
+        return (std::uint64_t{static_cast<unsigned>(k.kind)} << 32) | k.index;
+    };
+    std::unordered_set<std::uint64_t> gone;
+    for (const ElementRef& e : elements) {
+        gone.insert(key(e));
+    }
+    std::vector<ElementRef> kept;
+    for (const ElementRef& e : selected()) {
+        if (gone.count(key(e)) == 0) {
+            kept.push_back(e);
+        }
+    }
+    if (kept.empty()) {
+        doc_.selection = {};
+        doc_.also_selected.clear();
+        return {kSelection, what + ": the selection is empty"};
+    }
+    doc_.selection = kept.back();
+    kept.pop_back();
+    doc_.also_selected = std::move(kept);
+    const std::size_t n = doc_.also_selected.size() + 1;
+    return {kSelection,
+            what + ": " + std::to_string(n) + noun(kind_of(doc_.selection), n) + " selected"};
+}
+
 }  // namespace meshedit::viewer

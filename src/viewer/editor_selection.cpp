@@ -214,6 +214,9 @@ Outcome Editor::run_selection(Command command) {
             return select_region(command);
         case Command::BoxSelect:
             return {kBoxSelect, "box select: drag a rectangle (Shift adds, Alt selects through)"};
+        case Command::BrushSelect:
+            return {kBrushSelect,
+                    "brush select: drag to paint (Shift+drag takes away, wheel: size, Esc ends)"};
         case Command::FrameSelection:
             if (!selection_bounds()) {
                 return refused("select something to frame first");

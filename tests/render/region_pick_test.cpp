@@ -100,6 +100,25 @@ TEST(BoxSelect, VisibleOnlyAgreesWithRaysIntoTheTree) {
     EXPECT_LE(differ, torus.n_faces() / 20) << seen.size() << " by depth, " << by_ray << " by ray";
 }
 
+// A circle (the brush) round the image's centre: the front and back faces' centres both land
+// there; only the front one is seen. A circle off the cube selects nothing.
+TEST(CircleSelect, SelectsInsideTheCircle) {
+    const Mesh cube = test::quad_cube();
+    EXPECT_EQ(
+        elements_in_circle(cube, front(), {100, 100}, 10, 200, 200, ElementRef::Kind::Face).size(),
+        2u);
+    const auto seen = elements_in_circle(cube, front(), {100, 100}, 10, 200, 200,
+                                         ElementRef::Kind::Face, Reach::Visible);
+    ASSERT_EQ(seen.size(), 1u);
+    EXPECT_GT(face_normal(cube, Face(seen[0].index)).z, 0.0);
+    EXPECT_TRUE(
+        elements_in_circle(cube, front(), {5, 5}, 4, 200, 200, ElementRef::Kind::Vertex).empty());
+    // The top-left front corner lands at about (45, 45).
+    EXPECT_EQ(
+        elements_in_circle(cube, front(), {45, 45}, 6, 200, 200, ElementRef::Kind::Vertex).size(),
+        1u);
+}
+
 // A lasso: an outline of the left half selects what a box there would; a triangle over the
 // top-left corner takes the two vertices there (front and back project to different pixels).
 TEST(LassoSelect, SelectsInsideTheOutline) {

@@ -60,6 +60,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('X'), kShift, kMeshModes, interactive(Modal::ExtrudeRegion)},
             {key_of('W'), kShift, kMeshModes, edit("subdivide_region")},
             {key_of('G'), kShift, kMeshModes, {Command::SelectTrait}},
+            {key_of('B'), kAlt, kMeshMode, {Command::BrushSelect}},
             {key_of('I'), kShift, kMeshModes, interactive(Modal::Inset)},
             {key_of('B'), kCtrl, kMeshModes, interactive(Modal::Bevel)},
             {key_of('M'), 0, kMeshModes, interactive(Modal::Move)},
@@ -285,7 +286,7 @@ TEST(Bindings, HelpRowsMergeByLabelAndHelp) {
     EXPECT_EQ(find("F", "mesh, surface")->action, "flip the selected edge");
     // Key rows come first, then the mouse rows.
     const auto mouse = mouse_rows();
-    ASSERT_EQ(mouse.size(), 16u);
+    ASSERT_EQ(mouse.size(), 17u);
     ASSERT_GE(rows.size(), mouse.size());
     for (std::size_t i = 0; i < mouse.size(); ++i) {
         EXPECT_EQ(rows[rows.size() - mouse.size() + i].keys, mouse[i].keys);

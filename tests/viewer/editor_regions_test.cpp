@@ -187,5 +187,22 @@ TEST(EditorRegions, ShiftGSelectsByTrait) {
               "selected the faces turned away from you by more than 90°: 25 faces");
 }
 
+// The brush's Shift+drag takes elements out of the selection; the last one left is active.
+TEST(EditorRegions, DeselectTakesElementsOut) {
+    Editor ed = editor_with(quad_grid(3, 3));
+    std::vector<ElementRef> all;
+    for (std::uint32_t f = 0; f < 9; ++f) {
+        all.push_back(ElementRef::face(Face(f)));
+    }
+    ed.select_elements(all, false, "box");
+    const Outcome out =
+        ed.deselect_elements({ElementRef::face(Face(8)), ElementRef::face(Face(4))}, "brush");
+    EXPECT_EQ(out.message, "brush: 7 faces selected");
+    EXPECT_EQ(count(ed), 7u);
+    EXPECT_EQ(ed.selection().index, 7u);
+    EXPECT_EQ(ed.deselect_elements(all, "brush").message, "brush: the selection is empty");
+    EXPECT_TRUE(ed.selection().is_none());
+}
+
 }  // namespace
 }  // namespace meshedit::viewer

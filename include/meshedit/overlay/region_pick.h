@@ -40,4 +40,10 @@ std::vector<ElementRef> elements_in_lasso(const Mesh& mesh, const Camera& camera
                                           int height, ElementRef::Kind kind,
                                           Reach reach = Reach::Through);
 
+/// The same for a circle of `radius` pixels around `centre` (Blender's circle select, the
+/// viewer's brush).
+std::vector<ElementRef> elements_in_circle(const Mesh& mesh, const Camera& camera, glm::vec2 centre,
+                                           float radius, int width, int height,
+                                           ElementRef::Kind kind, Reach reach = Reach::Through);
+
 }  // namespace meshedit

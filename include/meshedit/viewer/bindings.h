@@ -56,6 +56,7 @@ enum class Command {
     SelectPath,      ///< the shortest path between the two selected vertices or faces
     SelectTrait,     ///< every element with the trait the info panel sets (ToolSettings::trait)
     BoxSelect,       ///< the next left drag draws a box that selects (the window's part)
+    BrushSelect,     ///< left drags paint the selection with a circle until Esc (the window's)
     FrameSelection,  ///< the camera centres on the selection
     // Moving the selection through the connectivity.
     Next,

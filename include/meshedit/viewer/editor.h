@@ -221,6 +221,9 @@ public:
     /// The direction from the view's target toward the eye (the window sets it before each
     /// key): "faces turned away" is measured from it.
     void set_view_direction(const Vec3& toward_eye) { toward_eye_ = toward_eye; }
+    /// Takes `elements` out of the selection (a brush's Shift+drag); the active element moves
+    /// to the last one left.
+    Outcome deselect_elements(const std::vector<ElementRef>& elements, const std::string& what);
     /// Selects `elements` (a box's; active the last), or adds them to the selection;
     /// `what` names the region in the message.
     Outcome select_elements(const std::vector<ElementRef>& elements, bool add,

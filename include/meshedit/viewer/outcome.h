@@ -31,6 +31,7 @@ enum Change : unsigned {
     kAskSessionPath = 1u << 13,  ///< the window should ask for a path, then export_session()
     kReloadShaders = 1u << 14,   ///< the window should recompile every shader from disk
     kBoxSelect = 1u << 15,       ///< the window's next left drag draws a box that selects
+    kBrushSelect = 1u << 16,     ///< the window's left drags paint a selection with a circle
 };
 
 /// The result of a command: what changed, and a status line for the user (empty when there
