@@ -528,8 +528,8 @@ void App::apply(const Outcome& outcome) {
     if (c & kFrameSelection) {
         frame_selection();
     }
-    if (c & kFrameMesh) {
-        frame_mesh();
+    if ((c & (kSceneBounds | kDocument)) != 0 && (c & kResetCamera) == 0) {
+        fit_depth_range();
     }
     if ((c & kDisplay) && editor_.view().render.shading >= 8) {
         prepare_user_shaders();

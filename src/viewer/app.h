@@ -102,7 +102,8 @@ private:
     void frame_selection();
     /// Frames the whole mesh as reset_camera() does, keeping the viewing angle (after a
     /// whole-mesh operation, which may shrink or grow the shape).
-    void frame_mesh();
+    /// The scene's sphere (for the near and far planes) from the mesh now; the view stays.
+    void fit_depth_range();
     /// The editor's progress hook: from 0.3 s into a whole-mesh operation on, at most ten
     /// times a second, draws the 3D view as it was and a progress bar (nothing that reads the
     /// half-built document; no event handling).

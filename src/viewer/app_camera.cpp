@@ -1,5 +1,5 @@
-// The window's camera: framing the document (at the start, after Space, after a whole-mesh
-// operation), the selection (.), and the room the info panel takes.
+// The window's camera: framing the document (at the start and after Space; edits and undo
+// keep the user's view), the selection (.), and the room the info panel takes.
 
 #include <GLFW/glfw3.h>
 
@@ -10,17 +10,20 @@
 
 namespace meshedit::viewer {
 
-void App::frame_mesh() {
-    // As reset_camera() frames, into the free part of the window, but from where the camera
-    // looks now.
+void App::fit_depth_range() {
     if (!mesh_mode() || camera_.orthographic || editor_.mesh().n_vertices() == 0) {
         return;
     }
-    const glm::ivec2 size = framebuffer_size();
-    camera_.frame_mesh(editor_.mesh(),
-                       static_cast<float>(size.x - covered_pixels()) / static_cast<float>(size.y));
-    scene_center_ = camera_.target;
-    scene_radius_ = camera_.scene_radius;
+    // The sphere Camera::frame() takes: the box's centre and half its diagonal (one pass, no
+    // copy: undo on a million faces passes here).
+    const Mesh& mesh = editor_.mesh();
+    BoundingBox box;
+    for (const Vertex v : mesh.vertices()) {
+        box.add(mesh.position(v));
+    }
+    const Vec3 c = box.center();
+    scene_center_ = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
+    scene_radius_ = std::max(0.5f * static_cast<float>(box.diagonal()), 1e-6f);
     update_camera_planes();
 }
 

@@ -34,8 +34,10 @@ Outcome Editor::edit_mesh(std::string_view name) {
                         Edited edited;
                         edited.message = result.message;
                         edited.steps = {step.text};
-                        // A whole-mesh operation may shrink or grow the shape: frame it.
-                        edited.changes = kTopology | kSelection | kFrameMesh;
+                        // A whole-mesh operation may shrink or grow the shape: the view stays
+                        // (what the operation did is what the user should see), the depth
+                        // range follows.
+                        edited.changes = kTopology | kSelection | kSceneBounds;
                         if (result.renumbers && doc.selection.kind != ElementRef::Kind::Vertex) {
                             edited.select = ElementRef{};  // only vertices keep their numbers
                         } else if (result.renumbers) {

@@ -97,4 +97,27 @@ inline std::string counts(const Mesh& mesh) {
            " F " + std::to_string(mesh.n_faces());
 }
 
+/// The silhouette's bounding box in a screenshot: pixels that differ from the background
+/// (the gradient is constant along a row, so the row's last pixel stands for it).
+struct Extent {
+    int width = 0;
+    int height = 0;
+};
+/// Only pixels right of `left` and above the last `bottom` rows count (a window's capture:
+/// the info panel and the status line are not the model).
+inline Extent silhouette(const RgbImage& image, int left = 0, int bottom = 0) {
+    int x0 = image.width, y0 = image.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < image.height - bottom; ++y) {
+        for (int x = left; x < image.width - 3; ++x) {
+            if (channel_difference(image, x, y, image, image.width - 1, y) > 40) {
+                x0 = std::min(x0, x);
+                x1 = std::max(x1, x);
+                y0 = std::min(y0, y);
+                y1 = std::max(y1, y);
+            }
+        }
+    }
+    return x1 < 0 ? Extent{} : Extent{x1 - x0 + 1, y1 - y0 + 1};
+}
+
 }  // namespace meshedit::test::e2e

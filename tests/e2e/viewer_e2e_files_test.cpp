@@ -4,6 +4,7 @@
 
 #include "meshedit/core/shapes.h"
 #include "meshedit/files/files.h"
+#include "view_pixels.h"
 #include "viewer_fixture.h"
 
 namespace meshedit::test::e2e {
@@ -94,27 +95,6 @@ TEST_F(ViewerE2E, ExportedSessionReplaysToTheSavedFile) {
     EXPECT_TRUE(same_file_bytes(replayed, doc)) << "the replay differs from the saved file";
     window.key("ctrl+q");
     expect_exit(*viewer, 0);
-}
-
-/// The silhouette's bounding box in a screenshot: pixels that differ from the background
-/// (the gradient is constant along a row, so the row's last pixel stands for it).
-struct Extent {
-    int width = 0;
-    int height = 0;
-};
-Extent silhouette(const RgbImage& image) {
-    int x0 = image.width, y0 = image.height, x1 = -1, y1 = -1;
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width - 3; ++x) {
-            if (channel_difference(image, x, y, image, image.width - 1, y) > 40) {
-                x0 = std::min(x0, x);
-                x1 = std::max(x1, x);
-                y0 = std::min(y0, y);
-                y1 = std::max(y1, y);
-            }
-        }
-    }
-    return x1 < 0 ? Extent{} : Extent{x1 - x0 + 1, y1 - y0 + 1};
 }
 
 // A tower whose data stands along +Z but whose file says Y_UP (as the CS184 course's models

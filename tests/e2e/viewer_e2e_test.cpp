@@ -8,6 +8,7 @@
 /// MESHEDIT_UPDATE_GOLDEN=1 rewrites tests/e2e/golden/ instead of comparing (look at every
 /// rewritten PNG before committing it). The headless goldens of tests/golden/ are only read.
 
+#include "view_pixels.h"
 #include "viewer_fixture.h"
 
 namespace meshedit::test::e2e {
@@ -57,9 +58,22 @@ TEST_F(ViewerE2E, CubeFlipSaveLoopUndo) {
         EXPECT_TRUE(same_mesh(load(doc), load(source_dir() / "dae" / "cube" / "flip.dae")));
     }
 
-    // Loop twice; P writes the 3D view the info panel leaves free (800 − 310 px wide).
+    // Loop twice; P writes the 3D view the info panel leaves free (800 − 310 px wide). The
+    // view stays where it was (Loop shrinks the cube: it looks smaller), as after an undo.
+    window.move_to(780, 20);
+    const fs::path before_loop = logs_ / "before_loop.png";
+    ASSERT_TRUE(window.capture(before_loop));
     window.keys({"l", "l"});
     ASSERT_TRUE(window.wait_title("V 98 E 288 F 192 *", false, 60s, &title)) << title;
+    const fs::path after_loop = logs_ / "after_loop.png";
+    const auto width = [](const fs::path& png) {
+        return silhouette(read_rgb(png), info_panel_pixels(800) + 10, 60).width;
+    };
+    ASSERT_TRUE(wait_until(
+        [&] { return window.capture(after_loop) && width(after_loop) < 0.9 * width(before_loop); },
+        20s, 200ms))
+        << "the cube's silhouette after Loop is " << width(after_loop) << " px wide, before "
+        << width(before_loop) << " px: the view was re-framed";
     const fs::path shot = screenshot(*viewer, window, 1);
     ASSERT_FALSE(shot.empty());
     const int free_width = 800 - info_panel_pixels(800);

@@ -27,6 +27,21 @@ namespace {
 
 // ------------------------------------------------------------------------ mesh operations
 
+// Whole-mesh operations and their undo leave the view where the user put it (issue 40: Loop
+// used to re-frame onto the shrunk mesh): they ask only for the depth range to follow.
+TEST(Editor, WholeMeshEditsAndUndoKeepTheView) {
+    Editor ed = editor_with(test::quad_cube());
+    for (const auto& [key, mods] : {std::pair{key_of('C'), kShift}, std::pair{key_of('T'), kCtrl},
+                                    std::pair{key_of('L'), kNoMods}}) {
+        const Outcome out = ed.press(key, mods);
+        ASSERT_FALSE(out.refused) << out.message;
+        EXPECT_NE(out.changes & kSceneBounds, 0u) << out.message;
+        EXPECT_EQ(out.changes & kResetCamera, 0u) << out.message;
+    }
+    const Outcome undone = ed.run({Command::Undo});
+    EXPECT_EQ(undone.changes & kResetCamera, 0u);
+}
+
 TEST(Editor, FlipEqualsDirectFlip) {
     const Mesh cube = shapes::cube();
     const Edge e = edge_of(cube, 0, 6);

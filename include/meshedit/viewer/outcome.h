@@ -27,7 +27,9 @@ enum Change : unsigned {
     kDocument = 1u << 10,        ///< a different document (open, undo/redo): reframe nothing,
                                  ///< re-upload everything
     kFrameSelection = 1u << 11,  ///< the camera should centre on selection_bounds()
-    kFrameMesh = 1u << 12,       ///< the camera should frame the whole mesh, keeping its angle
+    /// The mesh's extent may have changed (a whole-mesh operation): the depth range follows
+    /// it, the view stays where the user put it, as in Blender (Space frames the mesh).
+    kSceneBounds = 1u << 12,
     kAskSessionPath = 1u << 13,  ///< the window should ask for a path, then export_session()
     kReloadShaders = 1u << 14,   ///< the window should recompile every shader from disk
     kBoxSelect = 1u << 15,       ///< the window's next left drag draws a box that selects
