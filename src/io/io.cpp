@@ -131,6 +131,16 @@ LoadedMesh read_mesh(const fs::path& path) {
     } catch (const TopologyError& e) {
         throw IoError(path.string(), "", e.what());
     }
+    // Every face dropped as degenerate is as empty as a point cloud: refused alike, naming
+    // what was dropped (issue 40), never a faceless mesh with exit 0.
+    if (loaded.mesh.n_faces() == 0) {
+        const std::size_t n = loaded.repairs.dropped_faces.size();
+        throw IoError(path.string(), "",
+                      "holds no faces to load: its " +
+                          (n == 1 ? std::string("only face was")
+                                  : "all " + std::to_string(n) + " faces were") +
+                          " dropped as degenerate (fewer than 3 corners or a repeated corner)");
+    }
     user_properties::attach(soup, loaded.repairs, loaded.mesh);
     soup_attributes::attach(soup, loaded.repairs, loaded.mesh);
     loaded.notices = std::move(soup.notices);

@@ -282,6 +282,14 @@ std::vector<Case> cases() {
                    {},
                    2,
                    "holds no faces to load"});
+    out.push_back({"obj whose only face is degenerate",
+                   [](const fs::path& d) {
+                       write_text(d / "degenerate.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 2\n");
+                       return d / "degenerate.obj";
+                   },
+                   {},
+                   2,
+                   "holds no faces to load: its only face was dropped as degenerate"});
     out.push_back({"obj that is prose",
                    [](const fs::path& d) {
                        write_text(d / "prose.obj", "This is not a mesh.\nNor is this line.\n");
