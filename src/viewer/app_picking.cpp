@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "app.h"
 #include "meshedit/overlay/cpu_pick.h"
@@ -20,6 +21,37 @@ constexpr float kControlPointPickPixels = 12.0f;
 
 glm::vec3 to_glm(const Vec3& p) {
     return {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
+}
+
+// The red line of a boundary edge is drawn half over the hole, where no face is under the
+// cursor: a miss there takes the boundary edge picked nearest around it (samples on a ring
+// of the edge radius and half of it), so the line itself is pickable (issue 40).
+ElementRef boundary_edge_near(const FaceBvh& tree, const Mesh& mesh, const Camera& camera,
+                              int width, int height, glm::vec2 at, bool cull, float vertex_px,
+                              float edge_px) {
+    ElementRef best;
+    float best_distance = edge_px + 1.0f;
+    for (const float r : {0.5f * edge_px, edge_px}) {
+        for (int k = 0; k < 8; ++k) {
+            const float a = static_cast<float>(k) * 0.785398f;  // 45° steps
+            const glm::vec2 q = at + r * glm::vec2(std::cos(a), std::sin(a));
+            const ElementRef e = pick_sample(tree, mesh, camera, width, height, q.x, q.y, cull,
+                                             {vertex_px, edge_px, 0.15f})
+                                     .element;
+            const bool side =
+                e.kind == ElementRef::Kind::Edge || e.kind == ElementRef::Kind::Halfedge;
+            if (!side) {
+                continue;
+            }
+            const Edge edge =
+                e.kind == ElementRef::Kind::Edge ? Edge(e.index) : Mesh::edge(Halfedge(e.index));
+            if (mesh.is_boundary(edge) && r < best_distance) {
+                best_distance = r;
+                best = ElementRef::edge(edge);
+            }
+        }
+    }
+    return best;
 }
 
 }  // namespace
@@ -54,9 +86,14 @@ ElementRef App::pick_at_cursor() {
     const Mesh& mesh = editor_.mesh();
     const FaceBvh& tree = display_.picking_tree(mesh, editor_.document().revision);
     const float scale = static_cast<float>(size.y) / std::max(1.0f, ImGui::GetIO().DisplaySize.y);
-    const ElementRef hit =
-        cpu_pick(tree, mesh, camera_, size.x, size.y, static_cast<int>(p.x), static_cast<int>(p.y),
-                 scene_->mesh().culls_back_faces(camera_), 6.0f * scale, 4.0f * scale);
+    const bool cull = scene_->mesh().culls_back_faces(camera_);
+    ElementRef hit = cpu_pick(tree, mesh, camera_, size.x, size.y, static_cast<int>(p.x),
+                              static_cast<int>(p.y), cull, 6.0f * scale, 4.0f * scale);
+    if (hit.is_none()) {
+        const glm::vec2 centre(std::floor(p.x) + 0.5f, std::floor(p.y) + 0.5f);
+        hit = boundary_edge_near(tree, mesh, camera_, size.x, size.y, centre, cull, 6.0f * scale,
+                                 4.0f * scale);
+    }
     last_pick_ms_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return is_live(editor_.mesh(), hit) ? hit : ElementRef{};

@@ -170,5 +170,48 @@ TEST_F(RegionE2E, LassoDeleteAndAltClickLoopDissolve) {
     expect_replay_equals_saved(*viewer, window, original, doc);
 }
 
+// The red line of a boundary edge is pickable from the line itself (issue 40): a click a
+// pixel outside the grid's border, over no face, selects the border edge, and Delete
+// dissolves it (its face joins the hole).
+TEST_F(RegionE2E, ClickOnTheBorderLineSelectsTheBoundaryEdge) {
+    const fs::path doc = work_ / "grid.obj";
+    write_grid(doc);
+    const Mesh input = load(doc);
+    const View view(input, kWidth, kHeight);
+    const Vertex a(2), b(3);  // the bottom border's edge (2, 0)-(3, 0), beside face 2
+    // A pixel whose centre lies outside the face but on the line (drawn 2.5 px wide): between
+    // 0.3 and 1.1 px beyond the edge, near its middle.
+    const glm::vec2 pa = view.pixel(input.position(a)), pb = view.pixel(input.position(b));
+    const glm::vec2 mid = 0.5f * (pa + pb);
+    glm::vec2 normal = glm::normalize(glm::vec2(pb.y - pa.y, pa.x - pb.x));
+    if (glm::dot(normal, view.pixel(centroid(input, Face(2))) - mid) > 0) {
+        normal = -normal;  // pointing away from the face
+    }
+    std::optional<Pixel> outside;
+    for (int dy = -3; dy <= 3 && !outside; ++dy) {
+        for (int dx = -3; dx <= 3 && !outside; ++dx) {
+            const glm::vec2 centre(std::floor(mid.x) + dx + 0.5f, std::floor(mid.y) + dy + 0.5f);
+            const float beyond = glm::dot(centre - mid, normal);
+            if (beyond > 0.3f && beyond < 1.1f) {
+                outside = clickable(view, centre);
+            }
+        }
+    }
+    ASSERT_TRUE(outside) << "no pixel centre on the outer half of the line";
+
+    auto viewer = start_viewer(doc, std::to_string(kWidth) + "x" + std::to_string(kHeight));
+    const ViewerWindow window(*viewer);
+    ASSERT_TRUE(window.ok());
+    std::string title;
+    ASSERT_TRUE(window.wait_title("V 36 E 60 F 25", false, 20s, &title)) << title;
+    window.click(outside->x, outside->y);
+    window.key("Delete");
+    ASSERT_TRUE(window.wait_title("F 24 *", false, 20s, &title)) << title << "\n" << viewer->err();
+    window.key("ctrl+z");
+    ASSERT_TRUE(window.wait_title("V 36 E 60 F 25", false, 20s, &title)) << title;
+    window.key("ctrl+q");
+    expect_exit(*viewer, 0);
+}
+
 }  // namespace
 }  // namespace meshedit::test::e2e
