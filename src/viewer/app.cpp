@@ -310,15 +310,21 @@ void App::on_mouse_button(int button, int action, int mods) {
             drag_ = DragMode::Pending;  // a click selects a loop; a vertex is not dragged
             return;
         }
-        // Pressing on a vertex (or control point) selects it and may drag it; anywhere
-        // else the press becomes a click (select) or, once it moves, an orbit.
+        // Pressing on the selected vertex (or any control point) drags it; anywhere else, an
+        // unselected vertex included, the press becomes a click (select) or, once it moves,
+        // an orbit. (On a dense mesh the vertex radius covers the whole surface: grabbing
+        // whatever vertex is under a press made every orbit a vertex drag. Blender too
+        // drags only what is selected.)
+        // A curve's control points are few and far apart: pressed, they drag at once.
         const ElementRef hit = pick_at_cursor();
-        if (hit.kind == ElementRef::Kind::Vertex) {
+        const ElementRef& selected = editor_.selection();
+        if (hit.kind == ElementRef::Kind::Vertex && !mesh_mode()) {
             apply(editor_.select(hit));
-            if (editor_.begin_drag()) {
-                drag_ = DragMode::Element;
-                return;
-            }
+        }
+        if (hit.kind == ElementRef::Kind::Vertex && selected.kind == hit.kind &&
+            selected.index == hit.index && editor_.begin_drag()) {
+            drag_ = DragMode::Element;
+            return;
         }
         drag_ = DragMode::Pending;
         return;

@@ -136,8 +136,8 @@ constexpr std::array kTable{
 const std::array<HelpRow, 17> kMouseRows{{
     {"left-click", "select the element under the cursor (vertex near a corner, edge near an edge, halfedge just inside it, else face)", "mesh, surface"},
     {"Shift+left-click", "add the element under the cursor to the selection, or remove it", "mesh, surface"},
-    {"left-drag on empty space / right-drag", "orbit (turntable about the up axis; O: trackball)", "mesh, surface"},
-    {"left-drag on a vertex", "move it in the screen plane", "mesh, surface"},
+    {"left-drag off the selected vertex / right-drag", "orbit (turntable about the up axis; O: trackball)", "mesh, surface"},
+    {"left-drag on the selected vertex", "move it in the screen plane (click a vertex first: a drag that starts anywhere else orbits)", "mesh, surface"},
     {"B, then left-drag", "box select: what the view shows inside the rectangle, in the selection's kind (Shift adds, Alt selects through, right-click cancels)", "mesh"},
     {"Alt+B, then left-drag", "brush select: what the view shows under the circle joins the selection (Shift+drag takes it away, the wheel sizes the circle, Esc ends)", "mesh"},
     {"Alt+left-click", "select the edge loop through the edge under the cursor (Ctrl+Alt+left-click: its ring)", "mesh"},

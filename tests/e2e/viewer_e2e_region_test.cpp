@@ -213,5 +213,34 @@ TEST_F(RegionE2E, ClickOnTheBorderLineSelectsTheBoundaryEdge) {
     expect_exit(*viewer, 0);
 }
 
+// A drag that starts on an unselected vertex orbits (issue 40: on a dense mesh the vertex
+// radius covers the whole surface, and every orbit moved a vertex); a click selects the
+// vertex, and a drag from it then moves it.
+TEST_F(RegionE2E, OnlyTheSelectedVertexIsDragged) {
+    const fs::path doc = work_ / "grid.obj";
+    write_grid(doc);
+    const Mesh input = load(doc);
+    const View view(input, kWidth, kHeight);
+    const std::optional<Pixel> at = clickable(view, view.pixel(input.position(Vertex(14))));
+    ASSERT_TRUE(at);
+
+    auto viewer = start_viewer(doc, std::to_string(kWidth) + "x" + std::to_string(kHeight));
+    const ViewerWindow window(*viewer);
+    ASSERT_TRUE(window.ok());
+    std::string title;
+    ASSERT_TRUE(window.wait_title("V 36 E 60 F 25", false, 20s, &title)) << title;
+    window.drag(at->x, at->y, at->x + 60, at->y + 30, 1);  // an orbit
+    sleep_for(500ms);
+    EXPECT_EQ(window.title().find('*'), std::string::npos) << window.title();
+    window.key("space");  // the opening view again, so the vertex is where it was
+    window.click(at->x, at->y);
+    window.drag(at->x, at->y, at->x + 60, at->y + 30, 1);
+    ASSERT_TRUE(window.wait_title(" *", false, 20s, &title)) << "the selected vertex did not move";
+    window.key("ctrl+z");
+    ASSERT_TRUE(window.wait_title(" *", true, 20s, &title)) << title;
+    window.key("ctrl+q");
+    expect_exit(*viewer, 0);
+}
+
 }  // namespace
 }  // namespace meshedit::test::e2e
