@@ -16,6 +16,15 @@ std::string format_number(double x) {
     return number_text(x);
 }
 
+std::string readable_number(double x) {
+    if (x == 0.0) {
+        return "0";
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", x);
+    return text;
+}
+
 void print_notice(const std::string& text) {
     std::fprintf(stderr, "meshedit: note: %s\n", text.c_str());
 }

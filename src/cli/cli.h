@@ -26,6 +26,9 @@ using command_line::Failure;
 using command_line::UsageError;
 
 /// Shortest round-trip text for a double ("0.1", "-1", "1e-300").
+/// A number as a person reads it in a text report: six significant digits (0.523599, not
+/// 0.5235987755982988); --json keeps every digit.
+std::string readable_number(double x);
 std::string format_number(double x);
 
 /// Prints a notice on stderr as "meshedit: note: <text>".

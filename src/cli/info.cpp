@@ -93,12 +93,12 @@ std::string bbox_text(const BoundingBox& box, int dims) {
     auto point = [dims](const Vec3& p) {
         // Appending (not "(" + …) sidesteps a GCC 12 -Wrestrict false positive.
         std::string s("(");
-        s += format_number(p.x);
+        s += readable_number(p.x);
         s += ", ";
-        s += format_number(p.y);
+        s += readable_number(p.y);
         if (dims == 3) {
             s += ", ";
-            s += format_number(p.z);
+            s += readable_number(p.z);
         }
         s += ")";
         return s;
@@ -183,19 +183,19 @@ Json stats_json(const Mesh& mesh, bool closed) {
 }
 
 void print_stats(const Mesh& mesh, bool closed, long euler_characteristic) {
-    print_row("area", format_number(surface_area(mesh)));
-    print_row("volume", closed ? format_number(signed_volume(mesh)) : "(open: none)");
-    print_row("angle defect", format_number(total_angle_defect(mesh) / std::numbers::pi) +
+    print_row("area", readable_number(surface_area(mesh)));
+    print_row("volume", closed ? readable_number(signed_volume(mesh)) : "(open: none)");
+    print_row("angle defect", readable_number(total_angle_defect(mesh) / std::numbers::pi) +
                                   " pi (Gauss-Bonnet: 2 pi chi = " +
                                   std::to_string(2 * euler_characteristic) + " pi)");
     for (const FieldInfo& info : field_infos()) {
         const FieldStats s = field_stats(compute_field(mesh, info));
         const std::string unit = info.unit.empty() ? "" : " " + std::string(info.unit);
-        print_row(std::string(info.name), s.count == 0 ? "(no values)"
-                                                       : "min " + format_number(s.min) + ", mean " +
-                                                             format_number(s.mean) + ", max " +
-                                                             format_number(s.max) + unit + " (" +
-                                                             std::to_string(s.count) + " values)");
+        print_row(std::string(info.name),
+                  s.count == 0 ? "(no values)"
+                               : "min " + readable_number(s.min) + ", mean " +
+                                     readable_number(s.mean) + ", max " + readable_number(s.max) +
+                                     unit + " (" + std::to_string(s.count) + " values)");
     }
 }
 

@@ -35,6 +35,12 @@ TEST(CliInfo, StatsOfTheCube) {
               std::string::npos)
         << text.out;
     EXPECT_NE(text.out.find("volume:                8\n"), std::string::npos) << text.out;
+    // What a person reads: six significant digits (the JSON above keeps them all).
+    EXPECT_NE(text.out.find("gauss:                 min 0.523599, mean 0.523599, max 0.523599"),
+              std::string::npos)
+        << text.out;
+    EXPECT_NE(text.out.find("bounding box:          (-1, -1, -1) .. (1, 1, 1)"), std::string::npos)
+        << text.out;
 }
 
 }  // namespace
