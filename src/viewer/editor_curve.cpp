@@ -71,9 +71,14 @@ Outcome Editor::run_curve(Action action) {
                                   {}};
                 }
                 const std::size_t i = acted_on(doc.selection, n);
-                const Vec3 p = i + 1 < n ? 0.5 * (points[i] + points[i + 1])
-                               : n >= 2  ? points[i] + 0.5 * (points[i] - points[i - 1])
-                                         : points[i] + Vec3{0.5, 0.0, 0.0};
+                Vec3 p = i + 1 < n ? 0.5 * (points[i] + points[i + 1])
+                         : n >= 2  ? points[i] + 0.5 * (points[i] - points[i - 1])
+                                   : points[i] + Vec3{0.5, 0.0, 0.0};
+                // Rounded to 1e-9, as dragged points are rounded to the pixel: a midpoint of
+                // 0.7 and 1.0 is saved as 0.85, not 0.8500000000000001 (issue 40).
+                for (int k = 0; k < 3; ++k) {
+                    p[k] = std::round(p[k] * 1e9) / 1e9;
+                }
                 points.insert(points.begin() + static_cast<std::ptrdiff_t>(i + 1), p);
                 return Edited{kCurve | kSelection | kDisplay,
                               "added control point " + std::to_string(i + 1) + " (" +

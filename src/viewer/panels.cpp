@@ -269,7 +269,12 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDispl
         ToolSettings& tools = editor.tools();
         ToolSettings::Amounts& keep = tools.amounts("simplify");
         float ratio = static_cast<float>(keep[0]);
-        if (ImGui::SliderFloat("keep", &ratio, 0.01f, 0.99f, "%.2f of the faces")) {
+        // "keep [0.50 of the faces]": the label first, as the sentence reads (ImGui puts a
+        // label after the slider, which read "0.50 of the faces keep").
+        ImGui::TextUnformatted("keep");
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(170);
+        if (ImGui::SliderFloat("##keep", &ratio, 0.01f, 0.99f, "%.2f of the faces")) {
             keep[0] = ratio;
         }
         if (ImGui::Button("simplify (D)")) {
