@@ -412,6 +412,7 @@ void Panels::draw_help(Mode mode) {
         ImGuiCond_Always, ImVec2(0.5f, 0.0f));
     ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
                                         ImVec2(viewport->WorkSize.x, viewport->WorkSize.y - 60));
+    ImGui::SetNextWindowBgAlpha(1.0f);  // opaque: the info panel must not show through
     if (!ImGui::Begin("Keys and mouse (? or F1 to close)", nullptr,
                       ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                           ImGuiWindowFlags_NoCollapse)) {
@@ -433,21 +434,33 @@ void Panels::draw_help(Mode mode) {
     const float column =
         std::clamp((viewport->WorkSize.x - 60.0f) / 2.0f, 300.0f * scale_, 560.0f * scale_);
     const ImVec4 heading(1.0f, 0.7f, 0.3f, 1.0f);
+    // Each section is a table as wide as its column: the keys in a column no wider than a
+    // third of it (a long mouse gesture wraps), the actions in the rest, wrapped at its edge
+    // (issue 40: long keys pushed the actions past the column, where they were cut off).
     const auto section = [&](const std::string& modes) {
         ImGui::TextColored(heading, "%s", modes.empty() ? "everywhere" : modes.c_str());
+        float widest = 0.0f;
+        for (const HelpRow& row : rows) {
+            if (row.modes == modes) {
+                widest = std::max(widest, ImGui::CalcTextSize(row.keys.c_str()).x);
+            }
+        }
         if (ImGui::BeginTable(modes.empty() ? "everywhere" : modes.c_str(), 2,
-                              ImGuiTableFlags_SizingFixedFit)) {
+                              ImGuiTableFlags_SizingFixedFit, ImVec2(column, 0.0f))) {
+            ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed,
+                                    std::min(widest, column / 3.0f));
+            ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
             for (const HelpRow& row : rows) {
                 if (row.modes != modes) {
                     continue;
                 }
                 ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                ImGui::TextUnformatted(row.keys.c_str());
-                ImGui::TableNextColumn();
-                ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + column * 0.68f);
-                ImGui::TextUnformatted(row.action.c_str());
-                ImGui::PopTextWrapPos();
+                for (const std::string* text : {&row.keys, &row.action}) {
+                    ImGui::TableNextColumn();
+                    ImGui::PushTextWrapPos(0.0f);  // the column's right edge
+                    ImGui::TextUnformatted(text->c_str());
+                    ImGui::PopTextWrapPos();
+                }
             }
             ImGui::EndTable();
         }
