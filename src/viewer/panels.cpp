@@ -519,6 +519,9 @@ void Panels::draw_progress(const std::string& verb, double fraction, double seco
 
 void Panels::draw_status(const Editor& editor, const std::string& status, bool status_error) {
     if (begin_status_window()) {
+        // A long line (a refusal naming a file, a list of repairs) wraps inside the window
+        // instead of running off its right edge (issue 40).
+        ImGui::PushTextWrapPos(ImGui::GetMainViewport()->WorkSize.x - 40.0f);
         const ElementRef& hover = editor.hover();
         if (!hover.is_none() && editor.mode() != Mode::Curve) {
             ImGui::TextDisabled("under the cursor: %s", describe(editor.mesh(), hover).c_str());
@@ -532,6 +535,7 @@ void Panels::draw_status(const Editor& editor, const std::string& status, bool s
         } else {
             ImGui::TextDisabled("? or F1: keys and mouse");
         }
+        ImGui::PopTextWrapPos();
     }
     remember_rect();
     ImGui::End();
