@@ -123,15 +123,17 @@ void Panels::draw_field(Editor& editor, const FieldDisplay& field, PanelRequests
     std::snprintf(hi, sizeof hi, "%.4g", field.coloring.hi);
     ImGui::SameLine(std::max(0.0f, width - ImGui::CalcTextSize(hi).x));
     ImGui::TextUnformatted(hi);
-    ImGui::TextWrapped("min %.4g  mean %.4g  max %.4g  (%zu values)", field.stats.min,
-                       field.stats.mean, field.stats.max, field.stats.count);
+    char summary[160];
+    std::snprintf(summary, sizeof summary, "min %.4g, mean %.4g, max %.4g (%zu values)",
+                  field.stats.min, field.stats.mean, field.stats.max, field.stats.count);
+    text_wrapped_at_spaces(summary);
 
     // Under the cursor: the hovered element's value, or those of the field's elements it
     // touches (a face's corners for a vertex field, say).
     const ElementRef& hover = editor.hover();
     const auto near = field_values_at(editor.mesh(), info.site, field.values, hover);
     if (near.empty()) {
-        ImGui::TextDisabled("hover the mesh to read the values under the cursor");
+        text_wrapped_at_spaces("hover the mesh to read the values under the cursor", true);
     } else {
         ImGui::TextUnformatted("under the cursor:");
         constexpr std::size_t kShown = 6;

@@ -145,6 +145,34 @@ void Panels::remember_rect() {
     rects_.emplace_back(glm::vec2(pos.x, pos.y), glm::vec2(pos.x + size.x, pos.y + size.y));
 }
 
+void text_wrapped_at_spaces(const std::string& text, bool disabled) {
+    const float width = std::max(40.0f, ImGui::GetContentRegionAvail().x);
+    const auto emit = [disabled](const std::string& line) {
+        if (disabled) {
+            ImGui::TextDisabled("%s", line.c_str());
+        } else {
+            ImGui::TextUnformatted(line.c_str());
+        }
+    };
+    std::string line;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t space = std::min(text.find(' ', start), text.size());
+        const std::string word = text.substr(start, space - start);
+        const std::string longer = line.empty() ? word : line + " " + word;
+        if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
+            emit(line);
+            line = word;
+        } else {
+            line = longer;
+        }
+        start = space + 1;
+    }
+    if (!line.empty()) {
+        emit(line);
+    }
+}
+
 PanelRequests Panels::draw(Editor& editor, const FrameStats& stats, const std::string& status,
                            bool status_error, const FieldDisplay& field) {
     PanelRequests requests;
@@ -379,7 +407,7 @@ void Panels::draw_stencil(const Editor& editor) {
     ImGui::TextDisabled("%s", scheme_name(*editor.view().stencil));
     const ElementRef element = editor.stencil_element();
     if (element.is_none()) {
-        ImGui::TextWrapped("hover a vertex or an edge to see what makes its new point");
+        text_wrapped_at_spaces("hover a vertex or an edge to see what makes its new point");
         return;
     }
     const Mesh& mesh = editor.mesh();
@@ -391,7 +419,7 @@ void Panels::draw_stencil(const Editor& editor) {
     }
     ImGui::Text("rule: %s", stencil.rule.c_str());
     for (const std::string& line : stencil.formula) {
-        ImGui::TextWrapped("%s", line.c_str());
+        text_wrapped_at_spaces(line);
     }
     if (ImGui::BeginTable("stencil", 2, ImGuiTableFlags_SizingFixedFit)) {
         for (const StencilTerm& term : stencil.terms) {

@@ -41,6 +41,10 @@ struct PanelRequests {
     std::optional<ElementRef> hover;   ///< an index under the mouse in the inspector
 };
 
+/// `text` wrapped at spaces only, to the width left in the window (ImGui's own wrapping also
+/// breaks after a '.', splitting 0.075 into "0." and "075"); greyed with `disabled`.
+void text_wrapped_at_spaces(const std::string& text, bool disabled = false);
+
 /// Draws overlay labels (a stencil's weights) under the panels, each beside where its point
 /// lands in a `width` × `height` window seen through `camera`: light text on a dark box, as
 /// meshedit-render draws them (render/labels.h).
