@@ -10,6 +10,8 @@
 
 #include <tiny_gltf.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cfloat>
@@ -677,6 +679,27 @@ MeshSoup read_gltf(const std::filesystem::path& path) {
     return parse_gltf(read_file(path), path.string(), path.parent_path());
 }
 
+namespace {
+
+// A glTF 1.0 file tinygltf could not read as 2.0: its meshes are an object keyed by name (an
+// array in 2.0), or it has 1.0's techniques and shaders, or its asset says 1.x.
+bool looks_like_gltf1(std::string_view text) {
+    const nlohmann::json j = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+    if (!j.is_object()) {
+        return false;
+    }
+    const auto asset = j.find("asset");
+    if (asset != j.end() && asset->is_object() && asset->contains("version") &&
+        (*asset)["version"].is_string()) {
+        return (*asset)["version"].get<std::string>().rfind('1', 0) == 0;
+    }
+    const auto meshes = j.find("meshes");
+    return (meshes != j.end() && meshes->is_object()) || j.contains("techniques") ||
+           j.contains("shaders");
+}
+
+}  // namespace
+
 MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
                     const std::optional<std::filesystem::path>& folder) {
     if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
@@ -709,6 +732,18 @@ MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
     }
     if (!files.refusal().empty()) {
         throw IoError(file, "", files.refusal());
+    }
+    // glTF 1.0 parses as 2.0 with nothing in it: name the version (issue 40) rather than
+    // "holds no faces". A binary 1.0 file says so in its header (version 1).
+    const bool binary_v1 = binary && bytes.size() >= 8 &&
+                           static_cast<unsigned char>(bytes[4]) == 1 && bytes[5] == 0 &&
+                           bytes[6] == 0 && bytes[7] == 0;
+    const bool declared_v1 = !model.asset.version.empty() && model.asset.version[0] == '1';
+    if (binary_v1 || declared_v1 || (!ok && !binary && looks_like_gltf1(bytes))) {
+        throw IoError(file, "",
+                      "a glTF " + (declared_v1 ? model.asset.version : std::string("1.0")) +
+                          " file; MeshEdit reads glTF 2.0 (convert it first, for example by "
+                          "importing it into Blender and exporting glTF 2.0)");
     }
     if (!ok) {
         gltf_meshopt::check_required(model, file);

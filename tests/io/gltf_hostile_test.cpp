@@ -108,6 +108,22 @@ TEST(GltfHostile, CycleAndRepeatedRootAreRefused) {
                     "refers to node 7, which does not exist");
 }
 
+// glTF 1.0 is named, not "holds no faces" or tinygltf's '"asset" object not found': declared
+// in the asset, guessed from 1.0's object of meshes, or read from a binary header (issue 40).
+TEST(GltfHostile, GltfOneIsNamed) {
+    ScratchDir dir;
+    const std::string wanted = "a glTF 1.0 file; MeshEdit reads glTF 2.0";
+    test::spit(dir / "declared.gltf", R"({"asset": {"version": "1.0"}, "meshes": {}})");
+    EXPECT_CONTAINS(io_error_of([&] { read_gltf(dir / "declared.gltf"); }), wanted);
+    test::spit(dir / "keyed.gltf", R"({"meshes": {"box": {"primitives": []}}, "shaders": {}})");
+    EXPECT_CONTAINS(io_error_of([&] { read_gltf(dir / "keyed.gltf"); }), wanted);
+    const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<char*>(&v), 4); };
+    const std::string json = R"({"asset": {"version": "1.0"}})";
+    test::spit(dir / "old.glb",
+               "glTF" + u32(1) + u32(20 + json.size()) + u32(json.size()) + u32(0) + json);
+    EXPECT_CONTAINS(io_error_of([&] { read_gltf(dir / "old.glb"); }), wanted);
+}
+
 // 16,000 nested arrays in asset.extras crashed tinygltf's recursive JSON conversion; the
 // depth is now checked before tinygltf sees the text, in .gltf and in a .glb's JSON chunk.
 TEST(GltfHostile, DeeplyNestedJsonIsRefused) {
