@@ -38,7 +38,17 @@ std::string read_file(const fs::path& path, std::size_t max_bytes) {
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (!fs::exists(status)) {
-        throw IoError(name, "", "no such file");
+        // A relative path names the folder it was looked for in: a program started from
+        // elsewhere (a desktop launcher, an IDE) looks in a folder the user did not expect.
+        std::string why = "no such file";
+        if (path.is_relative()) {
+            std::error_code cwd_error;
+            const fs::path cwd = fs::current_path(cwd_error);
+            if (!cwd_error) {
+                why += " (looked for it in " + cwd.string() + ")";
+            }
+        }
+        throw IoError(name, "", why);
     }
     if (fs::is_directory(status)) {
         throw IoError(name, "", "is a folder, not a file");

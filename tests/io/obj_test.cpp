@@ -92,6 +92,10 @@ TEST(Obj, Errors) {
     EXPECT_CONTAINS(io_error_of([&] { read_obj(dir / "absent.obj"); }), "absent.obj: no such file");
     EXPECT_CONTAINS(io_error_of([&] { read_mesh(dir / "absent.obj"); }),
                     "absent.obj: no such file");
+    // A relative path says where it was looked for (issue 40: a viewer started elsewhere).
+    EXPECT_CONTAINS(io_error_of([&] { read_mesh("absent_here.obj"); }),
+                    "absent_here.obj: no such file (looked for it in " +
+                        std::filesystem::current_path().string() + ")");
     test::spit(dir / "abc.obj", "v 0 0 0\nv 1 abc 0\nv 0 1 0\nf 1 2 3\n");
     EXPECT_CONTAINS(io_error_of([&] { read_obj(dir / "abc.obj"); }),
                     "abc.obj: line 2: expected a number, found 'abc'");
