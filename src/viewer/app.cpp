@@ -65,6 +65,7 @@ void load_ui_font(float scale) {
 
 App::App(const ViewerOptions& options) {
     editor_.view().up = options.up;
+    editor_.set_up_for_next_open(options.up);
     editor_.set_progress_hook(
         [this](std::string_view verb, double fraction) { show_progress(verb, fraction); });
     glfwSetErrorCallback([](int code, const char* text) {

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "meshedit/ops/ops.h"
+#include "meshedit/viewer/paths.h"
 
 namespace meshedit::viewer {
 
@@ -173,6 +174,7 @@ Outcome Editor::run_display(Action action) {
             return {kResetCamera, ""};
         case Command::CycleUp:
             view_.up = view_.up == UpAxis::Y ? UpAxis::Z : UpAxis::Y;
+            remember_up(session_source_hash_, view_.up == UpAxis::Z ? 'z' : 'y');
             return {kResetCamera | kDisplay, view_.up == UpAxis::Y
                                                  ? "up axis +Y, as the file declares"
                                                  : "up axis +Z (the CS184 course's models are "

@@ -6,6 +6,7 @@
 #include "meshedit/io/document.h"
 #include "meshedit/io/io.h"
 #include "meshedit/viewer/editor.h"
+#include "meshedit/viewer/paths.h"
 
 namespace meshedit::viewer {
 
@@ -37,6 +38,20 @@ std::string one_line(std::string text) {
         text.replace(i, 1, "; ");
     }
     return text;
+}
+
+// Whether the shape is much taller along Z than along Y (and as wide along Z as along X):
+// Z-up data declared Y-up, as the CS184 course's models are, lies on its side.
+bool stands_along_z(const Mesh& mesh) {
+    BoundingBox box;
+    for (const Vertex v : mesh.vertices()) {
+        box.add(mesh.position(v));
+    }
+    if (box.is_empty()) {
+        return false;
+    }
+    const Vec3 size = box.max - box.min;
+    return size.z > 1.5 * size.y && size.z >= size.x;
 }
 
 }  // namespace
@@ -75,6 +90,20 @@ Outcome Editor::open(const std::filesystem::path& path) {
     }
     if (mode == Mode::Surface) {
         pristine_revisions_.insert(doc_.revision);
+    }
+    // Each file opens with its own up axis (issue 40: the choice for one file turned the
+    // next): the command line's for the first, else the one remembered for its content,
+    // else +Y as declared — with a hint when the shape stands along Z instead.
+    const char remembered = remembered_up(session_source_hash_);
+    if (up_for_next_open_) {
+        view_.up = *up_for_next_open_;
+        up_for_next_open_.reset();
+    } else {
+        view_.up = remembered == 'z' ? UpAxis::Z : UpAxis::Y;
+    }
+    if (remembered == 0 && view_.up == UpAxis::Y && mode != Mode::Curve &&
+        stands_along_z(doc_.mesh)) {
+        details += "; it stands along Z, not up: if it lies on its side, Y stands it up";
     }
     return {kDocument | kTopology | kGeometry | kSelection | kDisplay | kCurve | kResetCamera,
             "opened " + file_name(path) + ": " + details};

@@ -2,10 +2,14 @@
 
 #include "meshedit/viewer/paths.h"
 
+#include "meshedit/files/files.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -150,6 +154,69 @@ fs::path screenshot_path(const fs::path& folder, const fs::path& document) {
         if (!fs::exists(path, ec)) {
             return path;
         }
+    }
+}
+
+fs::path settings_folder() {
+    if (const char* config = std::getenv("XDG_CONFIG_HOME");
+        config != nullptr && config[0] == '/') {
+        return fs::path(config) / "meshedit";
+    }
+    const char* home = std::getenv("HOME");
+    return home != nullptr && home[0] == '/' ? fs::path(home) / ".config" / "meshedit" : fs::path();
+}
+
+namespace {
+
+// up_axis.txt's lines ("HASH z"), or none when the file is missing or unreadable.
+std::vector<std::pair<std::string, char>> up_choices(const fs::path& file) {
+    std::vector<std::pair<std::string, char>> out;
+    std::ifstream in(file);
+    std::string hash, axis;
+    while (in >> hash >> axis) {
+        if (axis == "z" || axis == "y") {
+            out.emplace_back(hash, axis[0]);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+char remembered_up(const std::string& hash) {
+    const fs::path folder = settings_folder();
+    if (hash.empty() || folder.empty()) {
+        return 0;
+    }
+    for (const auto& [h, axis] : up_choices(folder / "up_axis.txt")) {
+        if (h == hash) {
+            return axis;
+        }
+    }
+    return 0;
+}
+
+void remember_up(const std::string& hash, char axis) {
+    const fs::path folder = settings_folder();
+    if (hash.empty() || folder.empty()) {
+        return;
+    }
+    const fs::path file = folder / "up_axis.txt";
+    std::string text;
+    for (const auto& [h, a] : up_choices(file)) {
+        if (h != hash) {
+            text += h + " " + a + "\n";
+        }
+    }
+    if (axis == 'z') {
+        text += hash + " z\n";
+    }
+    try {
+        std::error_code ec;
+        fs::create_directories(folder, ec);
+        write_atomically(file, [&](const fs::path& tmp) { write_file(tmp, text); });
+    } catch (const IoError&) {
+        // Only the memory is lost: the file opens as declared next time.
     }
 }
 

@@ -304,11 +304,15 @@ protected:
     }
 
     /// `meshedit FILE --size WxH [MORE…]` with the work folder as its current directory and as its
-    /// pictures folder (XDG_PICTURES_DIR): screenshots go to work_/MeshEdit.
+    /// pictures folder (XDG_PICTURES_DIR): screenshots go to work_/MeshEdit; its settings
+    /// folder is work_/config.
     std::unique_ptr<BackgroundProcess> start_viewer(const fs::path& file, const std::string& size,
                                                     const std::vector<std::string>& more = {}) {
         viewer_stem_ = file.stem().string();
         ::setenv("XDG_PICTURES_DIR", work_.path().c_str(), 1);
+        // The viewer's settings (the up axis remembered per file) stay in the test's folder:
+        // a run must not remember a choice for the next.
+        ::setenv("XDG_CONFIG_HOME", (work_ / "config").c_str(), 1);
         std::vector<std::string> args{file.string(), "--size", size};
         args.insert(args.end(), more.begin(), more.end());
         return std::make_unique<BackgroundProcess>(MESHEDIT_EXE, args, work_.path(), logs_.path());

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -158,6 +159,44 @@ TEST(Editor, SaveRefusals) {
     out = ed.save_as("cube.bzc");
     EXPECT_TRUE(out.refused);
     EXPECT_NE(out.message.find(".obj"), std::string::npos) << out.message;
+}
+
+// Each file opens with its own up axis (issue 40): a tower standing along Z gets a hint, Y
+// stands it up and is remembered for that file's content; the next file (a cube) opens +Y
+// as declared; the tower opens standing again; Y back forgets it.
+TEST(Editor, UpAxisIsPerFileAndRemembered) {
+    TempDir dir;
+    const char* old_config = std::getenv("XDG_CONFIG_HOME");
+    const std::string saved = old_config != nullptr ? old_config : "";
+    ::setenv("XDG_CONFIG_HOME", (dir / "config").c_str(), 1);
+    const fs::path tower = dir / "tower.obj";
+    std::ofstream(tower) << "v 0 0 0\nv 1 0 0\nv 1 0.2 0\nv 0 0 3\nf 1 2 3\nf 1 3 4\n";
+    const fs::path cube = dir / "cube.obj";
+    std::ofstream(cube) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n"
+                           "f 2 3 4\n";
+    Editor ed;
+    Outcome out = ed.open(tower);
+    EXPECT_NE(out.message.find("it stands along Z, not up: if it lies on its side, Y stands it up"),
+              std::string::npos)
+        << out.message;
+    EXPECT_EQ(ed.view().up, UpAxis::Y);
+    ed.press(key_of('Y'), 0);
+    EXPECT_EQ(ed.view().up, UpAxis::Z);
+    out = ed.open(cube);
+    EXPECT_EQ(ed.view().up, UpAxis::Y) << "the tower's choice carried over";
+    EXPECT_EQ(out.message.find("stands along Z"), std::string::npos) << out.message;
+    out = ed.open(tower);
+    EXPECT_EQ(ed.view().up, UpAxis::Z) << "the tower's choice was forgotten";
+    EXPECT_EQ(out.message.find("stands along Z"), std::string::npos) << out.message;
+    ed.press(key_of('Y'), 0);
+    ed.open(cube);
+    ed.open(tower);
+    EXPECT_EQ(ed.view().up, UpAxis::Y);
+    if (saved.empty()) {
+        ::unsetenv("XDG_CONFIG_HOME");
+    } else {
+        ::setenv("XDG_CONFIG_HOME", saved.c_str(), 1);
+    }
 }
 
 }  // namespace

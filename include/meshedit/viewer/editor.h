@@ -221,6 +221,10 @@ public:
     /// The direction from the view's target toward the eye (the window sets it before each
     /// key): "faces turned away" is measured from it.
     void set_view_direction(const Vec3& toward_eye) { toward_eye_ = toward_eye; }
+    /// The up axis the next open() takes whatever the file (the command line's --up for the
+    /// file it names); later opens take each file's own: the one remembered for it (Y
+    /// remembers a choice per file content), else +Y as the file declares.
+    void set_up_for_next_open(UpAxis up) { up_for_next_open_ = up; }
     /// Takes `elements` out of the selection (a brush's Shift+drag); the active element moves
     /// to the last one left.
     Outcome deselect_elements(const std::vector<ElementRef>& elements, const std::string& what);
@@ -392,6 +396,7 @@ private:
     ViewState view_;
     ToolSettings tools_;
     Vec3 toward_eye_{0, 0, 1};
+    std::optional<UpAxis> up_for_next_open_;
     ProgressHook progress_hook_;
     ElementRef hover_;
     std::optional<OpDiagram> diagram_;

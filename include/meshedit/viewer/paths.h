@@ -43,4 +43,15 @@ std::filesystem::path pictures_folder();
 std::filesystem::path screenshot_path(const std::filesystem::path& folder,
                                       const std::filesystem::path& document);
 
+/// The viewer's own settings folder: ${XDG_CONFIG_HOME:-~/.config}/meshedit; empty when
+/// there is no home folder.
+std::filesystem::path settings_folder();
+
+/// The up axis the user chose (Y) for the file whose content hash is `hash`, remembered in
+/// the settings folder's up_axis.txt ("HASH z" lines): 'y' or 'z', or 0 when none is.
+char remembered_up(const std::string& hash);
+/// Remembers `axis` ('y' or 'z') for `hash` (written atomically; a failure to write only
+/// loses the memory). 'y', the default, is stored as no line.
+void remember_up(const std::string& hash, char axis);
+
 }  // namespace meshedit::viewer
