@@ -83,7 +83,7 @@ unsigned in_ranges(std::size_t n, const Body& body) {
 // triangle drawn there), as a GPU's depth and ID passes would hold them.
 class DepthBuffer {
 public:
-    DepthBuffer(const Mesh& mesh, const Projected& p, glm::vec2 lo, glm::vec2 hi)
+    DepthBuffer(const Mesh& mesh, const Projected& p, glm::vec2 lo, glm::vec2 hi, bool cull)
         : x0_(std::max(0, static_cast<int>(std::floor(lo.x)))),
           y0_(std::max(0, static_cast<int>(std::floor(lo.y)))),
           x1_(std::min(static_cast<int>(p.w) - 1, static_cast<int>(std::ceil(hi.x)))),
@@ -114,7 +114,7 @@ public:
                         ok = ok && p.placed[v] != 0;
                         corner[std::min<std::size_t>(n, 2)] = p.screen[v];
                         if (++n >= 3 && ok) {  // a fan: (first, previous, this)
-                            draw(buffer, f, corner[0], corner[1], corner[2]);
+                            draw(buffer, f, corner[0], corner[1], corner[2], cull);
                             corner[1] = corner[2];
                         }
                     }
@@ -165,9 +165,10 @@ private:
     }
 
     void draw(std::vector<Pixel>& pixels, Face f, const glm::vec3& a, const glm::vec3& b,
-              const glm::vec3& c) const {
+              const glm::vec3& c, bool cull) const {
         const float area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-        if (area == 0.0f || !std::isfinite(area)) {
+        // Pixels run down the screen: a counter-clockwise (front) triangle has area < 0.
+        if (area == 0.0f || !std::isfinite(area) || (cull && area > 0.0f)) {
             return;
         }
         const int xa = std::max(x0_, static_cast<int>(std::ceil(std::min({a.x, b.x, c.x}) - 0.5f)));
@@ -208,6 +209,30 @@ private:
     Pixel* pixels_ = nullptr;  // the first thread's buffer, the others merged into it
 };
 
+// Whether face f turns toward the eye: its screen polygon runs counter-clockwise (signed
+// area below zero, pixels running down), as the renderer's culling decides.
+bool faces_viewer(const Mesh& mesh, const Projected& p, Face f) {
+    float area = 0.0f;
+    glm::vec2 first{}, previous{};
+    int corners = 0;
+    for (const Halfedge h : mesh.halfedges(f)) {
+        const std::uint32_t v = mesh.to_vertex(h).idx();
+        if (p.placed[v] == 0) {
+            return true;  // across the eye's plane: not culled, as a partly clipped face
+        }
+        const glm::vec2 q(p.screen[v]);
+        if (corners == 0) {
+            first = q;
+        } else if (corners >= 2) {
+            area +=
+                (previous.x - first.x) * (q.y - first.y) - (q.x - first.x) * (previous.y - first.y);
+        }
+        previous = q;
+        ++corners;
+    }
+    return area < 0.0f;
+}
+
 // What a region selects: `in_region(pixel)` says whether a projected point lies inside;
 // [lo, hi] bounds the region.
 template <class InRegion>
@@ -215,10 +240,11 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
                                         int height, ElementRef::Kind kind, Reach reach,
                                         glm::vec2 lo, glm::vec2 hi, const InRegion& in_region) {
     const Projected p = project_all(mesh, camera, width, height,
-                                    reach == Reach::Visible || kind != ElementRef::Kind::Face);
+                                    reach != Reach::Through || kind != ElementRef::Kind::Face);
+    const bool cull = reach == Reach::VisibleFrontOnly;
     std::optional<DepthBuffer> depth;
-    if (reach == Reach::Visible) {
-        depth.emplace(mesh, p, lo, hi);
+    if (reach != Reach::Through) {
+        depth.emplace(mesh, p, lo, hi, cull);
     }
     std::vector<ElementRef> out;
     if (kind == ElementRef::Kind::Face) {
@@ -238,6 +264,7 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
                     }
                     glm::vec3 s;
                     if (p.to_screen(sum / n, s) && in_region(glm::vec2(s)) &&
+                        (!cull || faces_viewer(mesh, p, f)) &&
                         (!depth || depth->shows(s, [f](Face g) { return g == f; }))) {
                         parts[k].push_back(ElementRef::face(f));
                     }

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "meshedit/overlay/camera.h"
+#include "meshedit/overlay/region_pick.h"
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/scene.h"
 #include "meshedit/viewer/editor.h"
@@ -131,6 +132,8 @@ private:
     bool region_mouse_button(int button, int action, int mods);
     void draw_region();
     void finish_region(bool add, bool through);
+    /// Visible, or VisibleFrontOnly where the renderer culls back faces (region_pick.h).
+    Reach visible_reach() const;
     /// The brush: selects (or with Shift takes away) what lies under its circle now.
     void paint_brush();
     bool brush_mode() const { return drag_ == DragMode::BrushArmed || drag_ == DragMode::Brush; }

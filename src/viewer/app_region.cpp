@@ -108,7 +108,7 @@ void App::finish_region(bool add, bool through) {
     const auto start = std::chrono::steady_clock::now();
     const glm::ivec2 size = framebuffer_size();
     const Mesh& mesh = editor_.mesh();
-    const Reach reach = through ? Reach::Through : Reach::Visible;
+    const Reach reach = through ? Reach::Through : visible_reach();
     const bool lasso = !lasso_.empty();
     const std::vector<ElementRef> inside =
         lasso
@@ -122,14 +122,19 @@ void App::finish_region(bool add, bool through) {
     apply(editor_.select_elements(inside, add, what));
 }
 
+Reach App::visible_reach() const {
+    // What the view shows: with back faces culled when the renderer culls them.
+    return scene_->mesh().culls_back_faces(camera_) ? Reach::VisibleFrontOnly : Reach::Visible;
+}
+
 void App::paint_brush() {
     if (!mesh_mode() || !scene_->has_mesh()) {
         return;
     }
     const glm::ivec2 size = framebuffer_size();
-    const std::vector<ElementRef> under =
-        elements_in_circle(editor_.mesh(), camera_, cursor_pixels(), brush_radius_, size.x, size.y,
-                           editor_.region_kind(), brush_through_ ? Reach::Through : Reach::Visible);
+    const std::vector<ElementRef> under = elements_in_circle(
+        editor_.mesh(), camera_, cursor_pixels(), brush_radius_, size.x, size.y,
+        editor_.region_kind(), brush_through_ ? Reach::Through : visible_reach());
     if (under.empty()) {
         return;
     }

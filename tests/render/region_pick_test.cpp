@@ -56,6 +56,11 @@ TEST(BoxSelect, VisibleOnlyTakesWhatTheViewShows) {
         EXPECT_EQ(cube.position(Vertex(v.index)).z, 1.0);
     }
     EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Edge, visible).size(), 4u);
+    // With back faces culled, as the renderer does for this closed cube: the same answers.
+    const Reach front_only = Reach::VisibleFrontOnly;
+    EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Face, front_only), faces);
+    EXPECT_EQ(elements_in_box(cube, front(), kWhole, ElementRef::Kind::Vertex, front_only),
+              vertices);
 }
 
 // The depth buffer agrees with rays from the eye into the picking tree (the independent way
@@ -72,32 +77,39 @@ TEST(BoxSelect, VisibleOnlyAgreesWithRaysIntoTheTree) {
     const ScreenBox whole{{0, 0}, {400, 300}, 400, 300};
     const auto through = elements_in_box(torus, camera, whole, ElementRef::Kind::Face);
     ASSERT_EQ(through.size(), torus.n_faces());
-    const auto seen = elements_in_box(torus, camera, whole, ElementRef::Kind::Face, Reach::Visible);
-    std::vector<bool> by_depth(torus.faces_size(), false);
-    for (const ElementRef& f : seen) {
-        by_depth[f.index] = true;
-    }
     const glm::vec3 e = camera.eye();
     const Vec3 eye{e.x, e.y, e.z};
-    std::size_t by_ray = 0, differ = 0;
+    std::vector<bool> by_ray(torus.faces_size(), false);
+    std::size_t shown = 0;
     for (const Face f : torus.faces()) {
         FaceBvh::Ray ray;
         ray.origin = eye;
         ray.direction = face_centroid(torus, f) - eye;
         ray.t_max = 1.0 - 1e-6;
-        const bool shown = !tree.intersect(torus, ray).has_value();
-        by_ray += shown ? 1 : 0;
-        if (shown != by_depth[f.idx()]) {
-            ++differ;
-            // Only where the surface turns away: the silhouette, within a pixel.
-            const Vec3 to_eye = eye - face_centroid(torus, f);
-            EXPECT_LT(std::abs(dot(face_normal(torus, f), to_eye)) / norm(to_eye), 0.2)
-                << "face " << f.idx() << ": ray says " << shown;
-        }
+        by_ray[f.idx()] = !tree.intersect(torus, ray).has_value();
+        shown += by_ray[f.idx()] ? 1 : 0;
     }
-    EXPECT_GT(by_ray, torus.n_faces() / 3);
-    EXPECT_LT(by_ray, torus.n_faces() * 3 / 4);
-    EXPECT_LE(differ, torus.n_faces() / 20) << seen.size() << " by depth, " << by_ray << " by ray";
+    EXPECT_GT(shown, torus.n_faces() / 3);
+    EXPECT_LT(shown, torus.n_faces() * 3 / 4);
+    // Both with back faces drawn and culled (the torus is closed, outward, seen from outside).
+    for (const Reach reach : {Reach::Visible, Reach::VisibleFrontOnly}) {
+        std::vector<bool> by_depth(torus.faces_size(), false);
+        for (const ElementRef& f :
+             elements_in_box(torus, camera, whole, ElementRef::Kind::Face, reach)) {
+            by_depth[f.index] = true;
+        }
+        std::size_t differ = 0;
+        for (const Face f : torus.faces()) {
+            if (by_ray[f.idx()] != by_depth[f.idx()]) {
+                ++differ;
+                // Only where the surface turns away: the silhouette, within a pixel.
+                const Vec3 to_eye = eye - face_centroid(torus, f);
+                EXPECT_LT(std::abs(dot(face_normal(torus, f), to_eye)) / norm(to_eye), 0.2)
+                    << "face " << f.idx() << ": ray says " << by_ray[f.idx()];
+            }
+        }
+        EXPECT_LE(differ, torus.n_faces() / 20) << shown << " shown by rays";
+    }
 }
 
 // A circle (the brush) round the image's centre: the front and back faces' centres both land

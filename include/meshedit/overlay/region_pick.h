@@ -23,7 +23,10 @@ struct ScreenBox {
 };
 
 /// Whether a region takes only what the view shows or also what is hidden (Blender's X-ray).
-enum class Reach { Visible, Through };
+/// VisibleFrontOnly is Visible where the renderer culls back faces (MeshRenderer::
+/// culls_back_faces(), back_faces_hidden() in camera.h: a closed, outward mesh seen from
+/// outside): a face turned away is neither drawn into the depth buffer nor selected.
+enum class Reach { Visible, VisibleFrontOnly, Through };
 
 /// The elements of `kind` (Vertex, Edge, Face; a Halfedge counts as Edge) that `box` selects,
 /// in increasing index order. Visible: an element's point (a vertex, a face's centre) counts
