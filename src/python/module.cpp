@@ -258,6 +258,7 @@ py::list verb_table() {
         d["edge"] = (verb.takes & ops::kEdgeArg) != 0;
         d["face"] = (verb.takes & ops::kFaceArg) != 0;
         d["edge_pair"] = (verb.takes & ops::kEdgePair) != 0;
+        d["region"] = (verb.takes & ops::kRegion) != 0;
         d["max_amounts"] = verb.max_amounts;
         d["min_amounts"] = verb.min_amounts;
         d["defaults"] = std::vector<double>(verb.defaults.begin(), verb.defaults.end());

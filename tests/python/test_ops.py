@@ -36,6 +36,9 @@ def test_every_verb_is_a_method():
     (("remesh", (), {"rounds": 5}), "remesh:0,5"),
     (("triangulate", (), {}), "triangulate"),
     (("triangulate", (), {"f": 2}), "triangulate:f2"),
+    (("extrude_region", ([6, 7, 8], 0.5), {}), "extrude_region:f6+f7+f8:0.5"),
+    (("extrude_region", (), {"f": np.array([1, 2]), "height": 1}), "extrude_region:f1+f2:1"),
+    (("subdivide_region", ([4],), {}), "subdivide_region:f4"),
 ])
 def test_calling_convention(call, text):
     verb, args, kwargs = call
@@ -55,6 +58,10 @@ def test_bad_calls_are_type_errors():
         meshedit.step_text("extrude", f=1, height=None)
     with pytest.raises(TypeError, match="at most 0 amounts"):
         meshedit.step_text("dissolve", 12)
+    with pytest.raises(TypeError, match="the region is a list of face indices"):
+        meshedit.step_text("subdivide_region", 4)
+    with pytest.raises(TypeError, match="the region is a list of face indices"):
+        meshedit.step_text("subdivide_region", [1.5])
 
 
 def test_methods_run_the_same_steps_as_the_cli(sample, cli, tmp_path):

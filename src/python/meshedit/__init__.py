@@ -51,6 +51,7 @@ AMOUNT_NAMES = {
     "move": ("x", "y", "z"),
     "simplify": ("ratio", "max_error"),  # ratio: a share below 1, or a whole face count
     "remesh": ("length", "rounds"),
+    "extrude_region": ("height",),
 }
 
 _VERBS = {verb["name"]: verb for verb in verbs()}
@@ -70,20 +71,38 @@ def _edge_text(edge, verb):
     return f"{int(a)}-{int(b)}"
 
 
+def _integer_dtype(x):
+    return getattr(getattr(x, "dtype", None), "kind", "") in ("i", "u")
+
+
+def _region_text(faces, verb, info):
+    """A region's faces as the language writes them: "f6+f7+f8"."""
+    try:
+        indices = [int(x) if _is_index(x) or _integer_dtype(x) else None for x in faces]
+    except TypeError:
+        indices = [None]
+    if not indices or None in indices:
+        raise TypeError(f"{verb}(): the region is a list of face indices ({info['syntax']})")
+    return "+".join(f"f{x}" for x in indices)
+
+
 def step_text(verb, *args, v=None, f=None, e=None, levels=None, **amounts):
     """The edit-language step that mesh.<verb>(*args, **kwargs) runs.
 
     Elements: an edge as two vertex indices (`flip(0, 6)`, or `e=(0, 6)`), a weld's two edges
     as two pairs (`weld((0, 1), (5, 6))`), a vertex as `v=12`, a face as `f=7` (or positionally
     when the verb takes only faces or only vertices: `poke(7)`). Amounts follow, positionally or
-    by name (AMOUNT_NAMES); subdivision verbs take `levels` (`loop(2)`).
+    by name (AMOUNT_NAMES); subdivision verbs take `levels` (`loop(2)`); region verbs take the
+    faces as a list or array of face indices (`extrude_region([6, 7, 8], 0.5)`, or `f=[...]`).
     """
     info = _VERBS.get(verb)
     if info is None:
         raise ValueError(f"unknown verb {verb!r}")
     args = list(args)
     target = ""
-    if e is not None:
+    if info.get("region"):
+        target = _region_text(f if f is not None else (args.pop(0) if args else None), verb, info)
+    elif e is not None:
         target = _edge_text(e, verb)
     elif v is not None:
         if not _is_index(v):
