@@ -546,6 +546,17 @@ StepResult run_extrude_region(Mesh& mesh, const Step& step, const RunOptions&) {
                                     std::to_string(made.sides.size()) + " walls");
 }
 
+OpStatus check_dissolve_region(const Mesh& mesh, const Step& step) {
+    return is_dissolve_region_ok(mesh, region_of(mesh, step));
+}
+StepResult run_dissolve_region(Mesh& mesh, const Step& step, const RunOptions&) {
+    const std::size_t before = named_faces(mesh, step).size();
+    std::vector<Face> merged;
+    dissolve_region(mesh, region_of(mesh, step), &merged);
+    return region_result(merged, "dissolved " + count_faces(before) + " into " +
+                                     count_faces(merged.size()) + " (one per piece)");
+}
+
 OpStatus check_subdivide_region(const Mesh& mesh, const Step& step) {
     return is_subdivide_region_ok(mesh, region_of(mesh, step));
 }
@@ -620,6 +631,12 @@ constexpr std::array kVerbs{
          "joined (Blender's extrude region); the faces R become the top",
          "extrude the selected faces as one region (drag: the height)", check_extrude_region,
          run_extrude_region, nullptr, false, kChangesTopology},
+    Verb{"dissolve_region", kRegion, 0, 0, kNoDefaults, "dissolve_region:R",
+         "merges each piece of the faces R (faces joined across edges) into one face, its inner "
+         "vertices and edges dissolved (Blender's dissolve faces); refused for a piece that is "
+         "not a disk",
+         "merge the selected faces into one face per piece", check_dissolve_region,
+         run_dissolve_region, nullptr, false, kChangesTopology},
     Verb{"subdivide_region", kRegion, 0, 0, kNoDefaults, "subdivide_region:R",
          "subdivides the faces R once, linearly: triangles into four, other faces into one "
          "quad per corner; each face beside R that gains a midpoint is cut into a fan of "

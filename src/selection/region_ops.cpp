@@ -305,6 +305,111 @@ OpStatus extrude_region_positions(Mesh& mesh, const RegionExtrude& made, double 
     return OpStatus::ok();
 }
 
+// ------------------------------------------------------------------ dissolve
+
+namespace {
+
+// The dissolves themselves, without checks: the region's inner vertices (every face around
+// them in the region, none of their halfedges on a hole), in index order, then the edges
+// left between two of its faces. False as soon as one is refused.
+bool dissolve_inside(Mesh& mesh, const FaceSet& region) {
+    std::vector<Vertex> inner;
+    std::vector<Edge> edges;
+    {
+        VertexSet seen(mesh.vertices_size());
+        for (const Face f : region.elements()) {
+            for (const Halfedge h : mesh.halfedges(f)) {
+                const Vertex v = mesh.to_vertex(h);
+                if (seen.contains(v)) {
+                    continue;
+                }
+                seen.insert(v);
+                bool all_inside = true;
+                for (const Halfedge o : mesh.halfedges(v)) {
+                    const Face g = mesh.face(o);
+                    all_inside = all_inside && g.is_valid() && region.contains(g);
+                }
+                if (all_inside) {
+                    inner.push_back(v);
+                }
+            }
+        }
+    }
+    for (const Vertex v : inner) {
+        if (!dissolve_vertex(mesh, v).ok()) {
+            return false;
+        }
+    }
+    // What is left inside: edges whose two sides are (what remains of) region faces.
+    for (std::uint32_t e = 0; e < mesh.edges_size(); ++e) {
+        const Edge edge(e);
+        if (mesh.is_deleted(edge) || mesh.is_boundary(edge)) {
+            continue;
+        }
+        const Face a = mesh.face(edge, 0), b = mesh.face(edge, 1);
+        if (a != b && region.contains(a) && region.contains(b)) {
+            edges.push_back(edge);
+        }
+    }
+    for (const Edge e : edges) {
+        if (!mesh.is_deleted(e) && !dissolve_edge(mesh, e).ok()) {
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+OpStatus is_dissolve_region_ok(const Mesh& mesh, const FaceSet& region) {
+    if (!all_live(mesh, region)) {
+        return OpStatus::refused("cannot dissolve the region: select one or more live faces");
+    }
+    if (border_of(mesh, region).empty()) {
+        return OpStatus::refused(
+            "cannot dissolve the region: it is a whole closed surface, which no one face can "
+            "replace");
+    }
+    if (region.count() < 2) {
+        return OpStatus::refused("cannot dissolve the region: one face is merged already");
+    }
+    std::unordered_map<std::uint32_t, int> leaving;
+    for (const Halfedge h : border_of(mesh, region)) {
+        if (++leaving[mesh.from_vertex(h).idx()] > 1) {
+            return OpStatus::composed("cannot dissolve the region: it touches itself at vertex " +
+                                      std::to_string(mesh.from_vertex(h).idx()) +
+                                      " (the merged face would visit it twice)");
+        }
+    }
+    Mesh trial = mesh;  // the dissolves themselves decide the rest (a piece with a hole in it)
+    FaceSet same = region;
+    if (!dissolve_inside(trial, same)) {
+        return OpStatus::refused(
+            "cannot dissolve the region: a piece of it is not a disk (it has a hole, or its "
+            "faces meet only at a corner)");
+    }
+    return OpStatus::ok();
+}
+
+OpResult<Face> dissolve_region(Mesh& mesh, const FaceSet& region, std::vector<Face>* merged) {
+    if (const OpStatus ok = is_dissolve_region_ok(mesh, region); !ok) {
+        return ok;
+    }
+    [[maybe_unused]] const bool done = dissolve_inside(mesh, region);  // as the trial ran
+    MESHEDIT_ASSERT(done);
+    std::vector<Face> left;
+    for (const Face f : region.elements()) {
+        if (!mesh.is_deleted(f)) {
+            left.push_back(f);
+        }
+    }
+    const Face first = left.front();
+    if (merged != nullptr) {
+        *merged = std::move(left);
+    }
+    return first;
+}
+
 // ------------------------------------------------------------------ subdivide
 
 namespace {

@@ -36,6 +36,7 @@ constexpr std::array kTable{
     Binding{key_of('X'), kNoMods, kMeshModes, interactive(Modal::Extrude), "X", "extrude the selected faces: drag up/down for height, left/right for shrink"},
     Binding{key_of('X'), kShift, kMeshModes, interactive(Modal::ExtrudeRegion), "Shift+X", "extrude the selected faces as one region: drag up/down for the height (walls around its border; shared sides stay joined)"},
     Binding{key_of('W'), kShift, kMeshModes, edit("subdivide_region"), "Shift+W", {}},
+    Binding{Key::Delete, kCtrl, kMeshModes, edit("dissolve_region"), "Ctrl+Delete", {}},
     Binding{key_of('I'), kShift, kMeshModes, interactive(Modal::Inset), "Shift+I", "inset the selected faces: drag for the amount"},
     Binding{key_of('B'), kCtrl, kMeshModes, interactive(Modal::Bevel), "Ctrl+B", "bevel the selected vertices or edges: drag for the amount"},
     Binding{key_of('M'), kNoMods, kMeshModes, interactive(Modal::Move), "M", "move the selection in the screen plane (X/Y/Z lock an axis)"},

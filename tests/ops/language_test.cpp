@@ -79,7 +79,7 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
     EXPECT_EQ(syntax_error("twist:0-1"),
               "unknown op 'twist:0-1' (the verbs are flip, split, bisect, collapse, dissolve, "
               "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, "
-              "subdivide_region, crease, move, loop, "
+              "dissolve_region, subdivide_region, crease, move, loop, "
               "loop_step, catmull_clark, linear, simplify, remesh, triangulate, "
               "flip_orientation or compact)");
     EXPECT_EQ(syntax_error("flip:0"),

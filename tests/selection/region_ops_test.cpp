@@ -237,5 +237,51 @@ TEST(SubdivideRegion, RefusesAnEmptyRegion) {
     EXPECT_TRUE(test::identical(mesh, before));
 }
 
+TEST(DissolveRegion, NineQuadsBecomeOneFaceOfTwelveCorners) {
+    Mesh mesh = shapes::quad_grid(5, 5);
+    auto corner = mesh.add_property<Halfedge, double>("h:u");
+    const auto u = [](const Vec3& p) { return p.x + 10.0 * p.y; };
+    for (const Halfedge h : mesh.halfedges()) {
+        corner[h] = u(mesh.position(mesh.to_vertex(h)));
+    }
+    std::vector<Face> merged;
+    ASSERT_TRUE(dissolve_region(mesh, faces(mesh, middle_nine()), &merged));
+    ASSERT_VALID(mesh);
+    ASSERT_EQ(merged.size(), 1u);
+    EXPECT_EQ(mesh.valence(merged[0]), 12u);
+    EXPECT_EQ(mesh.n_faces(), 25u - 9u + 1u);
+    EXPECT_EQ(mesh.n_vertices(), 36u - 4u);
+    EXPECT_DOUBLE_EQ(face_area(mesh, merged[0]), 9.0);
+    for (const Halfedge h : mesh.halfedges()) {  // every corner kept its value
+        if (mesh.face(h).is_valid()) {
+            EXPECT_EQ(corner[h], u(mesh.position(mesh.to_vertex(h))));
+        }
+    }
+    // Two pieces at once: two merged faces.
+    Mesh two = shapes::quad_grid(5, 5);
+    ASSERT_TRUE(dissolve_region(two, faces(two, {0, 1, 23, 24}), &merged));
+    ASSERT_VALID(two);
+    EXPECT_EQ(merged.size(), 2u);
+    EXPECT_EQ(two.n_faces(), 23u);
+}
+
+TEST(DissolveRegion, RefusesWhatNoOneFaceCanBeAndTouchesNothing) {
+    const Mesh grid = shapes::quad_grid(5, 5);
+    const Mesh cube = test::quad_cube();
+    const auto refused = [](const Mesh& before, const FaceSet& region, const std::string& reason) {
+        Mesh mesh = before;
+        const auto r = dissolve_region(mesh, region);
+        EXPECT_FALSE(r);
+        EXPECT_NE(std::string(r.reason()).find(reason), std::string::npos) << r.reason();
+        EXPECT_TRUE(test::identical(mesh, before));
+    };
+    std::vector<std::uint32_t> ring = middle_nine();
+    ring.erase(ring.begin() + 4);  // the middle 3 x 3 without its centre: an annulus
+    refused(grid, faces(grid, ring), "is not a disk");
+    refused(cube, faces(cube, {0, 1, 2, 3, 4, 5}), "whole closed surface");
+    refused(grid, faces(grid, {12}), "one face is merged already");
+    refused(grid, faces(grid, {0, 6}), "touches itself at vertex 7");
+}
+
 }  // namespace
 }  // namespace meshedit

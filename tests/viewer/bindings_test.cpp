@@ -59,6 +59,7 @@ const std::vector<Expected>& expected_bindings() {
             // Operations on a region of faces.
             {key_of('X'), kShift, kMeshModes, interactive(Modal::ExtrudeRegion)},
             {key_of('W'), kShift, kMeshModes, edit("subdivide_region")},
+            {Key::Delete, kCtrl, kMeshModes, edit("dissolve_region")},
             {key_of('G'), kShift, kMeshModes, {Command::SelectTrait}},
             {key_of('B'), kAlt, kMeshMode, {Command::BrushSelect}},
             {key_of('I'), kShift, kMeshModes, interactive(Modal::Inset)},

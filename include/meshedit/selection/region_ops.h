@@ -39,6 +39,17 @@ RegionExtrude extrude_region_base(const Mesh& mesh, const FaceSet& region);
 /// Moves an extruded region's top to `height` (the same positions extrude_region() gives).
 OpStatus extrude_region_positions(Mesh& mesh, const RegionExtrude& made, double height);
 
+/// \return ok if `region` holds live faces and every piece of it (faces joined across
+/// edges) with more than one face is a disk: one border loop that visits each vertex once, and
+/// V - E + F = 1. Checked by running the dissolves on a copy (O(mesh)): a region operation is
+/// a user's action, not an inner loop.
+OpStatus is_dissolve_region_ok(const Mesh& mesh, const FaceSet& region);
+/// Merges each piece of `region` into one face (Blender's dissolve faces): its inner vertices
+/// are dissolved (dissolve_vertex()), then the edges left between its faces (dissolve_edge());
+/// what each keeps is what those operations carry. \return the faces left, one per piece.
+OpResult<Face> dissolve_region(Mesh& mesh, const FaceSet& region,
+                               std::vector<Face>* merged = nullptr);
+
 /// \return ok if `region` holds at least one live face.
 OpStatus is_subdivide_region_ok(const Mesh& mesh, const FaceSet& region);
 /// Subdivides the faces of `region` once, linearly: each edge of the region gets its
