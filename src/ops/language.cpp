@@ -92,7 +92,7 @@ std::string argument_words(const Verb& verb) {
         parts.emplace_back("A-B+C-D (two edges by their vertex indices)");
     }
     if ((verb.takes & kRegion) != 0) {
-        parts.emplace_back("R (faces: fI or fI..J, joined by +)");
+        parts.emplace_back("R (faces: fI or fI..J, joined by +; sel: the selected faces)");
     }
     if ((verb.takes & kLevels) != 0) {
         parts.emplace_back("K from 1 to " + std::to_string(kMaxLevels));
@@ -109,9 +109,13 @@ std::string argument_words(const Verb& verb) {
     throw SyntaxError("bad op '" + text + "': " + why);
 }
 
-// A region: "f4", "f4..9", joined by '+' ("f1..3+f7").
+// A region: "f4", "f4..9", joined by '+' ("f1..3+f7"), or "sel" (the selection).
 void parse_region(std::string_view arg, Step& step, const std::string& expected) {
     step.target = Target::Region;
+    if (arg == "sel") {
+        step.from_selection = true;
+        return;
+    }
     std::size_t start = 0;
     while (start <= arg.size()) {
         const std::size_t plus = std::min(arg.find('+', start), arg.size());
@@ -669,8 +673,32 @@ StepsRun run_steps(Mesh& mesh, const std::vector<Step>& steps, OnRefusal on_refu
     }
     double done = 0.0;
     StepsRun out;
+    Selection& selection = out.selection;
     for (std::size_t i = 0; i < steps.size(); ++i) {
-        const Step& step = steps[i];
+        // A region written `sel` is the selection's faces now.
+        Step with_selection;
+        if (steps[i].from_selection) {
+            with_selection = steps[i];
+            with_selection.from_selection = false;
+            if (selection.kind == ElementRef::Kind::Face) {
+                for (const std::uint32_t f : selection.indices) {
+                    with_selection.region.push_back({f, f});
+                }
+            }
+            if (with_selection.region.empty()) {
+                const std::string why =
+                    "the selection holds no faces (select:R, or a select_ "
+                    "verb, picks them first)";
+                if (on_refusal == OnRefusal::Stop) {
+                    throw OpError(steps[i].text + " refused: " + why, true);
+                }
+                if (out.refused++ == 0) {
+                    out.first_refusal = steps.size() == 1 ? why : steps[i].text + ": " + why;
+                }
+                continue;
+            }
+        }
+        const Step& step = steps[i].from_selection ? with_selection : steps[i];
         std::string reason;
         try {
             reason = step.verb->check(mesh, step).text();
@@ -698,7 +726,27 @@ StepsRun run_steps(Mesh& mesh, const std::vector<Step>& steps, OnRefusal on_refu
         }
         StepResult result = step.verb->run(mesh, step, run);
         ++out.ran;
-        out.done.push_back(&step);
+        out.done.push_back(&steps[i]);
+        if (step.verb->select != nullptr) {
+            selection = step.verb->select(mesh, step, selection);
+        } else if (result.topology) {
+            // What a step makes is selected after it, as in the viewer; indices that the step
+            // renumbered would name other elements.
+            selection = {};
+            for (const ElementRef* e : {&result.selected}) {
+                if (!e->is_none()) {
+                    selection.kind =
+                        e->kind == ElementRef::Kind::Halfedge ? ElementRef::Kind::Edge : e->kind;
+                    selection.indices.push_back(e->kind == ElementRef::Kind::Halfedge ? e->index / 2
+                                                                                      : e->index);
+                }
+            }
+            for (const ElementRef& e : result.selected_too) {
+                if (e.kind == selection.kind) {
+                    selection.indices.push_back(e.index);
+                }
+            }
+        }
         if (!result.selected.is_none()) {
             out.made.push_back(result.selected);
         }

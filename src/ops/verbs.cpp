@@ -18,7 +18,7 @@
 #include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/ops/ops.h"
-#include "meshedit/selection/region_ops.h"
+#include "region_verbs.h"
 
 namespace meshedit::ops {
 namespace {
@@ -511,64 +511,6 @@ StepResult run_flip_orientation(Mesh& mesh, const Step&, const RunOptions&) {
 constexpr std::array<double, kMaxAmounts> kNoDefaults{};
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
-// ------------------------------------------------------------------ regions
-
-FaceSet region_of(const Mesh& mesh, const Step& step) {
-    FaceSet out(mesh.faces_size());
-    for (const Face f : named_faces(mesh, step)) {
-        out.insert(f);
-    }
-    return out;
-}
-
-// The region's faces after a region step: the first selected, the rest with it.
-StepResult region_result(const std::vector<Face>& faces, std::string message) {
-    StepResult result = local(ElementRef::face(faces.front()), std::move(message));
-    for (std::size_t i = 1; i < faces.size(); ++i) {
-        result.selected_too.push_back(ElementRef::face(faces[i]));
-    }
-    return result;
-}
-
-std::string count_faces(std::size_t n) {
-    return std::to_string(n) + (n == 1 ? " face" : " faces");
-}
-
-OpStatus check_extrude_region(const Mesh& mesh, const Step& step) {
-    return is_extrude_region_ok(mesh, region_of(mesh, step), step.amounts[0]);
-}
-StepResult run_extrude_region(Mesh& mesh, const Step& step, const RunOptions&) {
-    const std::vector<Face> faces = named_faces(mesh, step);
-    RegionExtrude made;
-    extrude_region(mesh, region_of(mesh, step), step.amounts[0], &made);
-    return region_result(faces, "extruded " + count_faces(faces.size()) + " as one region by " +
-                                    number_text(step.amounts[0]) + ": " +
-                                    std::to_string(made.sides.size()) + " walls");
-}
-
-OpStatus check_dissolve_region(const Mesh& mesh, const Step& step) {
-    return is_dissolve_region_ok(mesh, region_of(mesh, step));
-}
-StepResult run_dissolve_region(Mesh& mesh, const Step& step, const RunOptions&) {
-    const std::size_t before = named_faces(mesh, step).size();
-    std::vector<Face> merged;
-    dissolve_region(mesh, region_of(mesh, step), &merged);
-    return region_result(merged, "dissolved " + count_faces(before) + " into " +
-                                     count_faces(merged.size()) + " (one per piece)");
-}
-
-OpStatus check_subdivide_region(const Mesh& mesh, const Step& step) {
-    return is_subdivide_region_ok(mesh, region_of(mesh, step));
-}
-StepResult run_subdivide_region(Mesh& mesh, const Step& step, const RunOptions&) {
-    const std::size_t before = named_faces(mesh, step).size();
-    std::vector<Face> inside;
-    subdivide_region(mesh, region_of(mesh, step), &inside);
-    return region_result(inside, "subdivided " + count_faces(before) + " into " +
-                                     std::to_string(inside.size()) +
-                                     ", their neighbours cut into fans of triangles");
-}
-
 // clang-format off
 constexpr std::array kVerbs{
     Verb{"flip", kEdgeArg, 0, 0, kNoDefaults, "flip:A-B",
@@ -643,6 +585,44 @@ constexpr std::array kVerbs{
          "triangles from it (the transition ring)",
          "subdivide the selected faces once (linear, with a transition ring)",
          check_subdivide_region, run_subdivide_region, nullptr, false, kChangesTopology},
+    // The selection a list carries (run_steps()): set by these, named `sel` by region verbs.
+    Verb{"select", kRegion, 0, 0, kNoDefaults, "select:R",
+         "selects the faces R, for the region verbs that follow to name as `sel`",
+         "select faces", check_select, run_select, nullptr, false, 0, CodeNames::ByIndex,
+         select_faces},
+    Verb{"select_loop", kEdgeArg, 0, 0, kNoDefaults, "select_loop:A-B",
+         "selects the edge loop through A-B (on across vertices of valence 4; stops at poles "
+         "and the border)",
+         "select the edge loop", check_select, run_select, nullptr, false, 0, CodeNames::ByIndex,
+         select_loop},
+    Verb{"select_ring", kEdgeArg, 0, 0, kNoDefaults, "select_ring:A-B",
+         "selects the edge ring through A-B (across quads to the opposite edges)",
+         "select the edge ring", check_select, run_select, nullptr, false, 0, CodeNames::ByIndex,
+         select_ring},
+    Verb{"select_linked", kWholeMesh, 0, 0, kNoDefaults, "select_linked",
+         "selects every face joined to the selection (its pieces)", "select the joined pieces",
+         check_select, run_select, nullptr, false, 0, CodeNames::ByIndex, select_linked},
+    Verb{"select_more", kWholeMesh, 0, 0, kNoDefaults, "select_more",
+         "grows the selected faces (or vertices) by one ring", "grow the selection",
+         check_select, run_select, nullptr, false, 0, CodeNames::ByIndex, select_more},
+    Verb{"select_less", kWholeMesh, 0, 0, kNoDefaults, "select_less",
+         "shrinks the selected faces (or vertices) by one ring", "shrink the selection",
+         check_select, run_select, nullptr, false, 0, CodeNames::ByIndex, select_less},
+    Verb{"select_invert", kWholeMesh, 0, 0, kNoDefaults, "select_invert",
+         "selects every element of the selection's kind it does not hold", "invert the selection",
+         check_select, run_select, nullptr, false, 0, CodeNames::ByIndex, select_invert},
+    Verb{"select_boundary", kWholeMesh, 0, 0, kNoDefaults, "select_boundary",
+         "selects the faces on the border", "select the border's faces", check_select,
+         run_select, nullptr, false, 0, CodeNames::ByIndex, select_boundary},
+    Verb{"select_creases", kWholeMesh, 0, 0, kNoDefaults, "select_creases",
+         "selects the crease edges", "select the creases", check_select, run_select, nullptr,
+         false, 0, CodeNames::ByIndex, select_creases},
+    Verb{"select_valence", kWholeMesh, 1, 1, kNoDefaults, "select_valence:K",
+         "selects the vertices with K edges", "select vertices by valence", check_select,
+         run_select, nullptr, false, 0, CodeNames::ByIndex, select_valence},
+    Verb{"select_degree", kWholeMesh, 1, 1, kNoDefaults, "select_degree:K",
+         "selects the faces with K corners", "select faces by corner count", check_select,
+         run_select, nullptr, false, 0, CodeNames::ByIndex, select_degree},
     Verb{"crease", kEdgeArg, 0, 0, kNoDefaults, "crease:A-B",
          "toggles the `e:crease` mark of A-B (kept by COLLADA, used by Loop)",
          "toggle crease on the selected edge", check_crease, run_crease, nullptr, false, 0},

@@ -79,7 +79,9 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
     EXPECT_EQ(syntax_error("twist:0-1"),
               "unknown op 'twist:0-1' (the verbs are flip, split, bisect, collapse, dissolve, "
               "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, "
-              "dissolve_region, subdivide_region, crease, move, loop, "
+              "dissolve_region, subdivide_region, select, select_loop, select_ring, "
+              "select_linked, select_more, select_less, select_invert, select_boundary, "
+              "select_creases, select_valence, select_degree, crease, move, loop, "
               "loop_step, catmull_clark, linear, simplify, remesh, triangulate, "
               "flip_orientation or compact)");
     EXPECT_EQ(syntax_error("flip:0"),
@@ -223,7 +225,7 @@ TEST(OpsLanguage, RegionsParseRoundTripAndRefuse) {
               "bad op 'extrude_region:f3..1:0.5': a range fI..J needs I <= J");
     EXPECT_EQ(syntax_error("subdivide_region:3-4"),
               "bad op 'subdivide_region:3-4': expected subdivide_region:R with R (faces: fI or "
-              "fI..J, joined by +)");
+              "fI..J, joined by +; sel: the selected faces)");
     EXPECT_EQ(syntax_error("extrude_region:f1"),
               "bad op 'extrude_region:f1': expected extrude_region:R:H");
 
@@ -251,6 +253,53 @@ TEST(OpsLanguage, RegionsParseRoundTripAndRefuse) {
     const StepsRun run = run_steps(grid, parse("extrude_region:f3..5:0.5"), OnRefusal::Stop);
     EXPECT_EQ(run.made.size(), 3u);
     EXPECT_VALID(grid);
+}
+
+// A list carries a selection: select_ verbs set it, `sel` names its faces in a region verb,
+// and what a step makes is selected after it (a script's way to the viewer's keys).
+TEST(OpsLanguage, SelectionVerbsFeedTheRegionVerbs) {
+    Mesh grid = shapes::quad_grid(5, 5);
+    Mesh direct = grid;
+    // The centre face, grown twice: the middle 3 x 3, then the whole grid (5 x 5).
+    StepsRun run = run_steps(grid, parse("select:f12,select_more"), OnRefusal::Stop);
+    EXPECT_EQ(run.selection.indices, (std::vector<std::uint32_t>{6, 7, 8, 11, 12, 13, 16, 17, 18}));
+    run = run_steps(grid, parse("select:f12,select_more,extrude_region:sel:0.5"), OnRefusal::Stop);
+    apply_steps(direct, parse("extrude_region:f6..8+f11..13+f16..18:0.5"));
+    EXPECT_TRUE(test::identical(grid, direct));
+    EXPECT_EQ(run.selection.indices.size(), 9u);  // the top stays selected
+    // Loops and rings are edges; linked, invert and the traits.
+    Mesh flat = shapes::quad_grid(5, 4);
+    run = run_steps(flat, parse("select_loop:14-15"), OnRefusal::Stop);
+    EXPECT_EQ(run.selection.kind, ElementRef::Kind::Edge);
+    EXPECT_EQ(run.selection.indices.size(), 5u);
+    run = run_steps(flat, parse("select_ring:14-15"), OnRefusal::Stop);
+    EXPECT_EQ(run.selection.indices.size(), 5u);
+    EXPECT_EQ(
+        run_steps(flat, parse("select:f0,select_linked"), OnRefusal::Stop).selection.indices.size(),
+        20u);
+    EXPECT_EQ(
+        run_steps(flat, parse("select:f0,select_invert"), OnRefusal::Stop).selection.indices.size(),
+        19u);
+    EXPECT_EQ(run_steps(flat, parse("select_boundary"), OnRefusal::Stop).selection.indices.size(),
+              14u);
+    EXPECT_EQ(run_steps(flat, parse("select_valence:3"), OnRefusal::Stop).selection.indices.size(),
+              14u);
+    EXPECT_EQ(run_steps(flat, parse("select_degree:4"), OnRefusal::Stop).selection.indices.size(),
+              20u);
+    EXPECT_TRUE(
+        run_steps(flat, parse("select_creases"), OnRefusal::Stop).selection.indices.empty());
+    // `sel` with no faces selected is refused with the reason; the mesh is as it was.
+    const Mesh before = flat;
+    try {
+        apply_steps(flat, parse("select_loop:14-15,dissolve_region:sel"));
+        FAIL() << "a region of edges was dissolved";
+    } catch (const OpError& e) {
+        EXPECT_TRUE(e.refused());
+        EXPECT_STREQ(e.what(),
+                     "dissolve_region:sel refused: the selection holds no faces (select:R, or a "
+                     "select_ verb, picks them first)");
+    }
+    EXPECT_TRUE(test::identical(flat, before));
 }
 
 // Loop refuses polygons, counting them and naming the step that makes it possible.
@@ -346,7 +395,7 @@ namespace {
 // region verbs (their neighbourhood is the whole region).
 TEST(VerbTraits, CreaseAndMoveKeepTheConnectivityAndDrawNoDiagram) {
     for (const Verb& verb : verbs()) {
-        const bool keeps = verb.name == "crease" || verb.name == "move";
+        const bool keeps = verb.name == "crease" || verb.name == "move" || verb.select != nullptr;
         const bool region = (verb.takes & kRegion) != 0;
         EXPECT_EQ((verb.traits & kChangesTopology) != 0, !keeps) << verb.name;
         EXPECT_EQ((verb.traits & kDrawsDiagram) != 0, !keeps && !region) << verb.name;

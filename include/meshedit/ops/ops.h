@@ -56,6 +56,13 @@ enum Trait : unsigned {
     kDefaultTraits = kChangesTopology | kDrawsDiagram,
 };
 
+/// The selection a list of steps carries from one step to the next (run_steps()): what the
+/// `select` verbs set and a region verb's `sel` names. Elements of one kind, in order.
+struct Selection {
+    ElementRef::Kind kind = ElementRef::Kind::Face;
+    std::vector<std::uint32_t> indices;
+};
+
 /// At most this many numbers follow a step's element (`extrude:f7:0.2,0.9`).
 inline constexpr std::size_t kMaxAmounts = 3;
 
@@ -70,6 +77,9 @@ struct Step {
     int levels = 1;  ///< kLevels
     /// Region: the faces as ranges of indices, first and last included (`f4` is {4, 4}).
     std::vector<std::array<std::uint32_t, 2>> region;
+    /// Region written `sel`: the faces of the selection run_steps() carries, filled in
+    /// before the step is checked.
+    bool from_selection = false;
     /// The amounts (height, shrink, t): as written, the verb's defaults after them.
     std::array<double, kMaxAmounts> amounts{};
     std::string text;  ///< the step as written ("flip:3-4"), for messages
@@ -129,6 +139,9 @@ struct Verb {
     unsigned traits = kDefaultTraits;
     /// Whose names its rewiring diagram gives the elements, and what region it draws.
     CodeNames names = CodeNames::ByIndex;
+    /// For the selection verbs (`select_loop:3-4`): the selection after the step, from the
+    /// one before; they leave the mesh as it is. Null for the others.
+    Selection (*select)(const Mesh& mesh, const Step& step, const Selection& now) = nullptr;
 
     bool accepts(Target target) const;
 };
@@ -236,6 +249,7 @@ enum class OnRefusal { Stop, Skip };
 
 /// What running a list did.
 struct StepsRun {
+    Selection selection;  ///< the selection after the last step
     std::size_t ran = 0;
     std::size_t refused = 0;  ///< Skip: refused, or naming an element an earlier step removed
     /// Skip: "dissolve:v3: cannot dissolve: …" (a list of one: just the reason).

@@ -1,0 +1,33 @@
+#pragma once
+// Private to meshedit_ops: the functions of the region verbs (extrude_region, dissolve_region,
+// subdivide_region) and of the selection verbs (select, select_loop, …), whose rows are in
+// verbs.cpp's table.
+
+#include "meshedit/ops/ops.h"
+
+namespace meshedit::ops {
+
+OpStatus check_extrude_region(const Mesh& mesh, const Step& step);
+StepResult run_extrude_region(Mesh& mesh, const Step& step, const RunOptions& options);
+OpStatus check_dissolve_region(const Mesh& mesh, const Step& step);
+StepResult run_dissolve_region(Mesh& mesh, const Step& step, const RunOptions& options);
+OpStatus check_subdivide_region(const Mesh& mesh, const Step& step);
+StepResult run_subdivide_region(Mesh& mesh, const Step& step, const RunOptions& options);
+
+/// Every selection verb: check() names what the step names (an error for a missing element),
+/// run() leaves the mesh alone, select() makes the selection.
+OpStatus check_select(const Mesh& mesh, const Step& step);
+StepResult run_select(Mesh& mesh, const Step& step, const RunOptions& options);
+Selection select_faces(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_loop(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_ring(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_linked(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_more(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_less(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_invert(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_boundary(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_creases(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_valence(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_degree(const Mesh& mesh, const Step& step, const Selection& now);
+
+}  // namespace meshedit::ops
