@@ -12,14 +12,6 @@
 namespace meshedit::ops {
 namespace {
 
-StepResult local(ElementRef selected, std::string message, bool topology = true) {
-    StepResult result;
-    result.selected = selected;
-    result.message = std::move(message);
-    result.topology = topology;
-    return result;
-}
-
 FaceSet region_of(const Mesh& mesh, const Step& step) {
     FaceSet out(mesh.faces_size());
     for (const Face f : named_faces(mesh, step)) {

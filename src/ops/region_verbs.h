@@ -3,9 +3,21 @@
 // subdivide_region) and of the selection verbs (select, select_loop, …), whose rows are in
 // verbs.cpp's table.
 
+#include <string>
+#include <utility>
+
 #include "meshedit/ops/ops.h"
 
 namespace meshedit::ops {
+
+/// The result of a step: the element it documents and a sentence.
+inline StepResult local(ElementRef selected, std::string message, bool topology = true) {
+    StepResult result;
+    result.selected = selected;
+    result.message = std::move(message);
+    result.topology = topology;
+    return result;
+}
 
 OpStatus check_extrude_region(const Mesh& mesh, const Step& step);
 StepResult run_extrude_region(Mesh& mesh, const Step& step, const RunOptions& options);

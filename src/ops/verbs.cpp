@@ -28,14 +28,6 @@ std::string idx(std::uint32_t i) {
 }
 
 // The result of a local step: the element it documents and a sentence.
-StepResult local(ElementRef selected, std::string message, bool topology = true) {
-    StepResult result;
-    result.selected = selected;
-    result.message = std::move(message);
-    result.topology = topology;
-    return result;
-}
-
 // The result of an op that deletes elements is named by its size, not its index: the viewer
 // renumbers when it saves, so an index in its status line could later name another element.
 std::string corners(const Mesh& mesh, Face f) {

@@ -246,17 +246,22 @@ Outcome Editor::select_elements(const std::vector<ElementRef>& elements, bool ad
             chosen.push_back(e);
         }
     }
+    return take_selection(std::move(chosen), what + ": nothing inside (the selection is empty)",
+                          what + ": ", add ? " selected in all" : " selected");
+}
+
+Outcome Editor::take_selection(std::vector<ElementRef> chosen, const std::string& if_empty,
+                               const std::string& before, const std::string& after) {
     if (chosen.empty()) {
         doc_.selection = {};
         doc_.also_selected.clear();
-        return {kSelection, what + ": nothing inside (the selection is empty)"};
+        return {kSelection, if_empty};
     }
-    doc_.selection = chosen.back();
+    doc_.selection = chosen.back();  // the last one is active
     chosen.pop_back();
     doc_.also_selected = std::move(chosen);
     const std::size_t n = doc_.also_selected.size() + 1;
-    return {kSelection, what + ": " + std::to_string(n) + noun(kind_of(doc_.selection), n) +
-                            (add ? " selected in all" : " selected")};
+    return {kSelection, before + std::to_string(n) + noun(kind_of(doc_.selection), n) + after};
 }
 
 Outcome Editor::deselect_elements(const std::vector<ElementRef>& elements,
@@ -275,17 +280,8 @@ Outcome Editor::deselect_elements(const std::vector<ElementRef>& elements,
             kept.push_back(e);
         }
     }
-    if (kept.empty()) {
-        doc_.selection = {};
-        doc_.also_selected.clear();
-        return {kSelection, what + ": the selection is empty"};
-    }
-    doc_.selection = kept.back();
-    kept.pop_back();
-    doc_.also_selected = std::move(kept);
-    const std::size_t n = doc_.also_selected.size() + 1;
-    return {kSelection,
-            what + ": " + std::to_string(n) + noun(kind_of(doc_.selection), n) + " selected"};
+    return take_selection(std::move(kept), what + ": the selection is empty", what + ": ",
+                          " selected");
 }
 
 }  // namespace meshedit::viewer

@@ -65,6 +65,28 @@ std::vector<std::uint32_t> faces_in(const View& view, const Mesh& mesh, const Re
 
 class RegionE2E : public ViewerE2E {
 protected:
+    /// The grid written twice: the input a session replays from, and the document.
+    std::pair<fs::path, fs::path> grid_files() {
+        const fs::path original = work_ / "input" / "grid.obj";
+        fs::create_directories(original.parent_path());
+        write_grid(original);
+        const fs::path doc = work_ / "grid.obj";
+        fs::copy_file(original, doc);
+        return {original, doc};
+    }
+
+    /// The viewer on `doc` (the 5 x 5 grid), its window once the title shows the grid.
+    std::unique_ptr<BackgroundProcess> open_grid(const fs::path& doc,
+                                                 std::optional<ViewerWindow>& window) {
+        auto viewer = start_viewer(doc, std::to_string(kWidth) + "x" + std::to_string(kHeight));
+        window.emplace(*viewer);
+        std::string title;
+        if (window->ok()) {
+            EXPECT_TRUE(window->wait_title("V 36 E 60 F 25", false, 20s, &title)) << title;
+        }
+        return viewer;
+    }
+
     /// Moves the pointer off the mesh (no hover highlight) and compares P's screenshot number
     /// `n` with the golden `name`.
     void golden_view(BackgroundProcess& viewer, const ViewerWindow& window, std::size_t n,
@@ -101,22 +123,18 @@ protected:
 
 // B and a drag over the middle 3 x 3, Shift+X with a typed height, Shift+W.
 TEST_F(RegionE2E, BoxSelectExtrudeAndSubdivideTheRegion) {
-    const fs::path original = work_ / "input" / "grid.obj";
-    fs::create_directories(original.parent_path());
-    write_grid(original);
-    const fs::path doc = work_ / "grid.obj";
-    fs::copy_file(original, doc);
+    const auto [original, doc] = grid_files();
     const Mesh input = load(doc);
     const View view(input, kWidth, kHeight);
     const std::vector<std::uint32_t> nine = {6, 7, 8, 11, 12, 13, 16, 17, 18};
     const Rect box = around(view, input, nine, 4);
     ASSERT_EQ(faces_in(view, input, box), nine) << "the opening view skews the grid too much";
 
-    auto viewer = start_viewer(doc, std::to_string(kWidth) + "x" + std::to_string(kHeight));
-    const ViewerWindow window(*viewer);
-    ASSERT_TRUE(window.ok());
+    std::optional<ViewerWindow> opened;
+    auto viewer = open_grid(doc, opened);
+    ASSERT_TRUE(opened && opened->ok());
+    const ViewerWindow& window = *opened;
     std::string title;
-    ASSERT_TRUE(window.wait_title("V 36 E 60 F 25", false, 20s, &title)) << title;
 
     window.key("b");
     window.drag(box.x0, box.y0, box.x1, box.y1, 1);
@@ -139,11 +157,7 @@ TEST_F(RegionE2E, BoxSelectExtrudeAndSubdivideTheRegion) {
 // A lasso (Ctrl+right-drag) round the top-right 2 x 2, Shift+Delete: four holes that merge;
 // Alt+click on an edge of the line x = 1: its loop of 5 edges, Delete dissolves them.
 TEST_F(RegionE2E, LassoDeleteAndAltClickLoopDissolve) {
-    const fs::path original = work_ / "input" / "grid.obj";
-    fs::create_directories(original.parent_path());
-    write_grid(original);
-    const fs::path doc = work_ / "grid.obj";
-    fs::copy_file(original, doc);
+    const auto [original, doc] = grid_files();
     const Mesh input = load(doc);
     const View view(input, kWidth, kHeight);
     const std::vector<std::uint32_t> corner = {18, 19, 23, 24};
@@ -153,11 +167,11 @@ TEST_F(RegionE2E, LassoDeleteAndAltClickLoopDissolve) {
     const std::optional<Pixel> on_edge = edge_pixel(view, input, a, b, Face(2 * kN + 1));
     ASSERT_TRUE(on_edge);
 
-    auto viewer = start_viewer(doc, std::to_string(kWidth) + "x" + std::to_string(kHeight));
-    const ViewerWindow window(*viewer);
-    ASSERT_TRUE(window.ok());
+    std::optional<ViewerWindow> opened;
+    auto viewer = open_grid(doc, opened);
+    ASSERT_TRUE(opened && opened->ok());
+    const ViewerWindow& window = *opened;
     std::string title;
-    ASSERT_TRUE(window.wait_title("V 36 E 60 F 25", false, 20s, &title)) << title;
 
     window.drag(lasso.x0, lasso.y0, lasso.x1, lasso.y1, 3, "ctrl");
     window.key("shift+Delete");
@@ -199,11 +213,11 @@ TEST_F(RegionE2E, ClickOnTheBorderLineSelectsTheBoundaryEdge) {
     }
     ASSERT_TRUE(outside) << "no pixel centre on the outer half of the line";
 
-    auto viewer = start_viewer(doc, std::to_string(kWidth) + "x" + std::to_string(kHeight));
-    const ViewerWindow window(*viewer);
-    ASSERT_TRUE(window.ok());
+    std::optional<ViewerWindow> opened;
+    auto viewer = open_grid(doc, opened);
+    ASSERT_TRUE(opened && opened->ok());
+    const ViewerWindow& window = *opened;
     std::string title;
-    ASSERT_TRUE(window.wait_title("V 36 E 60 F 25", false, 20s, &title)) << title;
     window.click(outside->x, outside->y);
     window.key("Delete");
     ASSERT_TRUE(window.wait_title("F 24 *", false, 20s, &title)) << title << "\n" << viewer->err();
@@ -224,11 +238,11 @@ TEST_F(RegionE2E, OnlyTheSelectedVertexIsDragged) {
     const std::optional<Pixel> at = clickable(view, view.pixel(input.position(Vertex(14))));
     ASSERT_TRUE(at);
 
-    auto viewer = start_viewer(doc, std::to_string(kWidth) + "x" + std::to_string(kHeight));
-    const ViewerWindow window(*viewer);
-    ASSERT_TRUE(window.ok());
+    std::optional<ViewerWindow> opened;
+    auto viewer = open_grid(doc, opened);
+    ASSERT_TRUE(opened && opened->ok());
+    const ViewerWindow& window = *opened;
     std::string title;
-    ASSERT_TRUE(window.wait_title("V 36 E 60 F 25", false, 20s, &title)) << title;
     window.drag(at->x, at->y, at->x + 60, at->y + 30, 1);  // an orbit
     sleep_for(500ms);
     EXPECT_EQ(window.title().find('*'), std::string::npos) << window.title();

@@ -394,6 +394,10 @@ private:
     Document doc_;
     Ledger ledger_;
     ViewState view_;
+    /// Makes `chosen` the selection (its last element active) and says so: `if_empty`, or
+    /// `before` + "N faces" + `after`.
+    Outcome take_selection(std::vector<ElementRef> chosen, const std::string& if_empty,
+                           const std::string& before, const std::string& after);
     ToolSettings tools_;
     Vec3 toward_eye_{0, 0, 1};
     std::optional<UpAxis> up_for_next_open_;
