@@ -60,8 +60,8 @@ struct RepairResult {
     bool changed() const { return count > 0 || corners > 0 || removed_vertices > 0; }
 };
 
-/// A merge distance: absolute, or a fraction of the bounding-box diagonal of the soup's
-/// finite positions.
+/// A merge distance: absolute, or a fraction of the bounding-box diagonal of the vertices
+/// that faces use.
 struct MergeTolerance {
     double value = 1e-6;
     bool relative = true;
