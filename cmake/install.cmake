@@ -1,13 +1,13 @@
 # The installed C++ library (docs/library.md): headers, the static libraries, a CMake package
 # (find_package(MeshEdit) → MeshEdit::core (the floors ::mesh, ::local_ops, ::algorithms,
-# ::teaching), ::bezier, ::selection, ::files, ::io, ::ops, ::overlay, ::render)
+# ::teaching), ::bezier, ::selection, ::files, ::io, ::repair, ::ops, ::overlay, ::render)
 # and a pkg-config file. The programs and shaders install from their own folders.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(MESHEDIT_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/MeshEdit)
-set(meshedit_libraries mesh local_ops algorithms teaching core bezier selection files io ops overlay
-    render)
+set(meshedit_libraries mesh local_ops algorithms teaching core bezier selection files io repair ops
+    overlay render)
 
 foreach(name ${meshedit_libraries})
     set_target_properties(meshedit_${name} PROPERTIES EXPORT_NAME ${name})

@@ -29,6 +29,20 @@ void print_notice(const std::string& text) {
     std::fprintf(stderr, "meshedit: note: %s\n", text.c_str());
 }
 
+void check_mesh_output(const std::filesystem::path& out) {
+    if (!is_mesh_extension(file_extension(out))) {
+        throw IoError(out.string(), "",
+                      "unknown extension '" + out.extension().string() + "' (meshedit writes " +
+                          mesh_extensions() + ")");
+    }
+}
+
+void report_unkept(const std::filesystem::path& out, const std::vector<std::string>& unkept) {
+    for (const std::string& what : unkept) {
+        print_notice(out.string() + ": not kept: " + what);
+    }
+}
+
 LoadedDocument load_surface(const std::filesystem::path& path, int density) {
     if (file_extension(path) == ".bzc") {
         throw IoError(path.string(), "",

@@ -14,6 +14,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "exit_status.h"
 #include "meshedit/io/document.h"
@@ -33,6 +34,14 @@ std::string format_number(double x);
 
 /// Prints a notice on stderr as "meshedit: note: <text>".
 void print_notice(const std::string& text);
+
+/// Refuses an output we cannot write before doing any work, so a typo in the output name
+/// does not cost a long subdivision first. \throws IoError naming it.
+void check_mesh_output(const std::filesystem::path& out);
+
+/// What the output's format could not keep (write_mesh()'s answer), as notes: never lost
+/// without a word.
+void report_unkept(const std::filesystem::path& out, const std::vector<std::string>& unkept);
 
 /// A mesh from any input the mesh commands accept: read_document() on a mesh file, or a .bez
 /// tessellated at `density`. \throws IoError naming the file (a .bzc is refused: it is not a
@@ -54,6 +63,7 @@ Command add_convert(CLI::App& meshedit);
 Command add_subdivide(CLI::App& meshedit);
 Command add_simplify(CLI::App& meshedit);
 Command add_remesh(CLI::App& meshedit);
+Command add_repair(CLI::App& meshedit);
 Command add_check(CLI::App& meshedit);
 Command add_eval(CLI::App& meshedit);
 

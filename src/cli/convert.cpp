@@ -29,23 +29,6 @@ void print_load_messages(const LoadedDocument& input) {
     }
 }
 
-// Refuses an output we cannot write before doing any work, so a typo in the output name
-// does not cost a long subdivision first.
-void check_mesh_output(const std::filesystem::path& out) {
-    if (!is_mesh_extension(file_extension(out))) {
-        throw IoError(out.string(), "",
-                      "unknown extension '" + out.extension().string() + "' (meshedit writes " +
-                          mesh_extensions() + ")");
-    }
-}
-
-// What the output's format could not keep, as notes: never lost without a word.
-void report_unkept(const std::filesystem::path& out, const std::vector<std::string>& unkept) {
-    for (const std::string& what : unkept) {
-        print_notice(out.string() + ": not kept: " + what);
-    }
-}
-
 ops::ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
     ops::ApplyOptions options;
     options.weights = weights;

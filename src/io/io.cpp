@@ -124,12 +124,15 @@ MeshSoup read_soup(const fs::path& path) {
 }
 
 LoadedMesh read_mesh(const fs::path& path) {
-    MeshSoup soup = read_soup(path);
+    return build_loaded_mesh(read_soup(path), path.string());
+}
+
+LoadedMesh build_loaded_mesh(MeshSoup soup, const std::string& name) {
     LoadedMesh loaded;
     try {
         loaded.mesh = build_mesh(soup.soup, &loaded.repairs);
     } catch (const TopologyError& e) {
-        throw IoError(path.string(), "", e.what());
+        throw IoError(name, "", e.what());
     }
     // Every face dropped as degenerate is as empty as a point cloud: refused alike, naming
     // what was dropped (issue 40), never a faceless mesh with exit 0.

@@ -75,30 +75,6 @@ struct TwoWords {
     std::uint32_t second;
 };
 
-void check_input(const PolygonSoup& soup) {
-    const auto& off = soup.face_offsets;
-    if (off.empty() || off.front() != 0 || off.back() != soup.indices.size()) {
-        throw TopologyError("polygon soup: face offsets do not cover the index list");
-    }
-    for (std::size_t f = 0; f + 1 < off.size(); ++f) {
-        if (off[f + 1] < off[f]) {
-            throw TopologyError("polygon soup: face offsets decrease at face " + std::to_string(f));
-        }
-        for (std::uint32_t i = off[f]; i < off[f + 1]; ++i) {
-            if (soup.indices[i] >= soup.positions.size()) {
-                throw TopologyError("face " + std::to_string(f) + " uses vertex " +
-                                    std::to_string(soup.indices[i]) + ", but there are only " +
-                                    std::to_string(soup.positions.size()) + " vertices");
-            }
-        }
-    }
-    for (std::size_t v = 0; v < soup.positions.size(); ++v) {
-        if (!is_finite(soup.positions[v])) {
-            throw TopologyError("vertex " + std::to_string(v) + " has a non-finite coordinate");
-        }
-    }
-}
-
 void collect_faces(const PolygonSoup& soup, SoupHalfedges& fh, BuildReport& report) {
     const std::uint32_t* off = soup.face_offsets.data();
     for (std::uint32_t f = 0; f < soup.n_faces(); ++f) {
@@ -355,8 +331,32 @@ std::uint32_t glue_slits(const SoupHalfedges& fh, memory::Array<std::uint32_t>& 
 
 }  // namespace
 
+void check_polygon_soup(const PolygonSoup& soup) {
+    const auto& off = soup.face_offsets;
+    if (off.empty() || off.front() != 0 || off.back() != soup.indices.size()) {
+        throw TopologyError("polygon soup: face offsets do not cover the index list");
+    }
+    for (std::size_t f = 0; f + 1 < off.size(); ++f) {
+        if (off[f + 1] < off[f]) {
+            throw TopologyError("polygon soup: face offsets decrease at face " + std::to_string(f));
+        }
+        for (std::uint32_t i = off[f]; i < off[f + 1]; ++i) {
+            if (soup.indices[i] >= soup.positions.size()) {
+                throw TopologyError("face " + std::to_string(f) + " uses vertex " +
+                                    std::to_string(soup.indices[i]) + ", but there are only " +
+                                    std::to_string(soup.positions.size()) + " vertices");
+            }
+        }
+    }
+    for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+        if (!is_finite(soup.positions[v])) {
+            throw TopologyError("vertex " + std::to_string(v) + " has a non-finite coordinate");
+        }
+    }
+}
+
 Mesh build_mesh(const PolygonSoup& soup, BuildReport* report_out) {
-    check_input(soup);
+    check_polygon_soup(soup);
     BuildReport report;
     const std::size_t nv_in = soup.positions.size();
     SoupHalfedges fh;

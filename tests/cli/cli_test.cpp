@@ -644,7 +644,7 @@ TEST(CliUsage, HelpEverywhere) {
     const RunResult top = run_meshedit({"--help"});
     EXPECT_EQ(top.exit_code, 0);
     EXPECT_NE(top.out.find("usage: meshedit"), std::string::npos);
-    std::vector<const char*> commands{"info", "convert", "subdivide", "check", "eval"};
+    std::vector<const char*> commands{"info", "convert", "subdivide", "repair", "check", "eval"};
     if (kViewerBuilt) {
         commands.push_back("view");  // answered by meshedit-view
     }

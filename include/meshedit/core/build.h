@@ -70,6 +70,10 @@ public:
 /// (budget.h) before they make a soup that big.
 double build_bytes(double vertices, double corners, double faces);
 
+/// What build_mesh() refuses, checked alone: offsets that do not cover the indices, an index
+/// out of range, a non-finite position. \throws TopologyError naming the face or vertex.
+void check_polygon_soup(const PolygonSoup& soup);
+
 /// Builds a halfedge mesh from `soup`. Vertex `i` of the result is `soup.positions[i]`; the
 /// faces keep their order, minus dropped ones. Non-manifold input is repaired (never refused):
 /// non-manifold and inconsistently oriented edges are cut into boundary edges, then every

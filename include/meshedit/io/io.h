@@ -115,9 +115,14 @@ struct LoadedMesh {
     double unit_meter = 1.0;
 };
 
-/// read_soup() + build_mesh(). \throws IoError (a TopologyError becomes an IoError naming
-/// the file).
+/// read_soup() + build_loaded_mesh(). \throws IoError (a TopologyError becomes an IoError
+/// naming the file).
 LoadedMesh read_mesh(const std::filesystem::path& path);
+
+/// build_mesh() on a soup as read_soup() gives it (or as a repair left it, repair.h), with
+/// everything read_mesh() keeps of it: corner attributes, materials, user properties, creases
+/// and the reader's notices. \throws IoError naming `name` when the soup cannot be built.
+LoadedMesh build_loaded_mesh(MeshSoup soup, const std::string& name);
 
 /// What a file of that extension (".obj") cannot keep of `mesh`, one phrase each ("12 crease
 /// marks (OBJ has no crease edges)", "30 polygons (glTF stores triangles: each is fanned)",

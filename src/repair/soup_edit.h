@@ -1,0 +1,72 @@
+#pragma once
+/// \file
+/// Editing a MeshSoup with its attributes in step (private to meshedit_repair): removing
+/// faces, renumbering vertices, turning faces over, and the wording the steps share.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "meshedit/io/io.h"
+#include "meshedit/repair/repair.h"
+
+namespace meshedit::repair_detail {
+
+/// A vertex that renumber_vertices() removes.
+inline constexpr std::uint32_t kGone = UINT32_MAX;
+
+/// Which vertices some face uses.
+std::vector<bool> used_vertices(const PolygonSoup& soup);
+
+/// Keeps the faces with keep[f], in order, with their corner attributes, materials and face
+/// property values; the others go with theirs.
+void keep_faces(MeshSoup& soup, const std::vector<bool>& keep);
+
+/// Keeps the corners with keep[c] (with their attributes); each face keeps its kept corners
+/// in order, and may be left with fewer than 3 (the caller removes it).
+void keep_corners(MeshSoup& soup, const std::vector<bool>& keep);
+
+/// Renumbers vertex v as new_index[v] (kGone: removed) among `n_new` vertices. A new vertex
+/// takes the position, normal and property values of the lowest old vertex that maps to it.
+/// Faces and creases are renumbered; \return how many creases were dropped (their ends became
+/// one vertex, or one was removed).
+std::size_t renumber_vertices(MeshSoup& soup, const std::vector<std::uint32_t>& new_index,
+                              std::size_t n_new);
+
+/// Removes the vertices that were used (used_before[v]) and are used by no face now.
+/// \return how many; creases dropped with them are added to `dropped_creases`.
+std::size_t remove_unused_vertices(MeshSoup& soup, const std::vector<bool>& used_before,
+                                   std::size_t& dropped_creases);
+
+/// Reverses the corners of face f and their attributes, keeping the first corner first.
+void reverse_face(MeshSoup& soup, std::size_t f);
+
+/// Why a polygon is degenerate (remove_degenerate_faces()), or None.
+enum class Degenerate { None, Few, Pinched, Flat };
+
+/// Drops repeated consecutive corners of a polygon (cyclically: a, a, b, c, a is a, b, c).
+void drop_repeated_corners(std::vector<std::uint32_t>& corners);
+
+/// Whether the polygon through vertices `corners` (no repeated consecutive corners) has fewer
+/// than 3 corners, a corner twice, or zero area: below 1e-12 of its longest side squared,
+/// where rounding cannot tell it from 0.
+Degenerate degenerate(const std::vector<Vec3>& positions,
+                      const std::vector<std::uint32_t>& corners);
+
+/// Appends `index` to result.first while fewer than kRepairShown are listed.
+void note_first(RepairResult& result, std::uint32_t index);
+
+/// "1 face" / "3 faces".
+std::string count_of(std::size_t n, const char* one, const char* many);
+
+/// ": 3, 7, 9" or ": 3, 7, 9, 11, 12, …" (when `count` is more than listed).
+std::string listed(const RepairResult& result);
+
+/// "; and 2 vertices only they used; dropped 1 crease …", what went with the removed faces.
+std::string also_removed(std::size_t vertices, std::size_t creases);
+
+/// A number in the project's shortest round-trip form.
+std::string number(double x);
+
+}  // namespace meshedit::repair_detail
