@@ -124,16 +124,7 @@ MeshSoup read_soup(const fs::path& path) {
 }
 
 LoadedMesh read_mesh(const fs::path& path) {
-    return build_loaded_mesh(read_soup(path), path.string());
-}
-
-LoadedMesh build_loaded_mesh(MeshSoup soup, const std::string& name) {
-    LoadedMesh loaded;
-    try {
-        loaded.mesh = build_mesh(soup.soup, &loaded.repairs);
-    } catch (const TopologyError& e) {
-        throw IoError(name, "", e.what());
-    }
+    LoadedMesh loaded = build_loaded_mesh(read_soup(path), path.string());
     // Every face dropped as degenerate is as empty as a point cloud: refused alike, naming
     // what was dropped (issue 40), never a faceless mesh with exit 0.
     if (loaded.mesh.n_faces() == 0) {
@@ -143,6 +134,16 @@ LoadedMesh build_loaded_mesh(MeshSoup soup, const std::string& name) {
                           (n == 1 ? std::string("only face was")
                                   : "all " + std::to_string(n) + " faces were") +
                           " dropped as degenerate (fewer than 3 corners or a repeated corner)");
+    }
+    return loaded;
+}
+
+LoadedMesh build_loaded_mesh(MeshSoup soup, const std::string& name) {
+    LoadedMesh loaded;
+    try {
+        loaded.mesh = build_mesh(soup.soup, &loaded.repairs);
+    } catch (const TopologyError& e) {
+        throw IoError(name, "", e.what());
     }
     user_properties::attach(soup, loaded.repairs, loaded.mesh);
     soup_attributes::attach(soup, loaded.repairs, loaded.mesh);
