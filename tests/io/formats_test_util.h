@@ -16,6 +16,7 @@
 
 #include "meshedit/core/build.h"
 #include "meshedit/files/io_error.h"
+#include "support/fixtures.h"
 #include "support/scratch_dir.h"
 
 namespace meshedit::test {
@@ -30,18 +31,6 @@ inline std::string slurp(const std::filesystem::path& path) {
 inline void spit(const std::filesystem::path& path, const std::string& bytes) {
     std::ofstream out(path, std::ios::binary);
     out << bytes;
-}
-
-using Faces = std::vector<std::vector<std::uint32_t>>;
-
-/// A soup's faces as lists of corner indices, for exact comparisons.
-inline Faces faces_of(const PolygonSoup& soup) {
-    Faces faces;
-    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-        faces.emplace_back(soup.indices.begin() + soup.face_offsets[f],
-                           soup.indices.begin() + soup.face_offsets[f + 1]);
-    }
-    return faces;
 }
 
 /// `x` rounded to float. Through a volatile: GCC 12 at -O3 (its SLP vectorizer) was seen to

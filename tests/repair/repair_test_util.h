@@ -11,22 +11,10 @@
 
 namespace meshedit::test {
 
-using Faces = std::vector<std::vector<std::uint32_t>>;
-
 inline MeshSoup soup_of(const std::vector<Vec3>& positions, const Faces& faces) {
     MeshSoup soup;
     soup.soup = soup_from_faces(positions, faces);
     return soup;
-}
-
-/// The soup's faces as corner lists, in order.
-inline Faces faces_of(const PolygonSoup& soup) {
-    Faces faces;
-    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-        faces.emplace_back(soup.indices.begin() + soup.face_offsets[f],
-                           soup.indices.begin() + soup.face_offsets[f + 1]);
-    }
-    return faces;
 }
 
 /// The cube [-1,1]³ as six quads (fixtures.h, quad_cube()), each quad reversed when `inward`.

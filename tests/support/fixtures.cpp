@@ -177,6 +177,15 @@ std::vector<NamedMesh> sweep_corpus() {
     return out;
 }
 
+Faces faces_of(const PolygonSoup& soup) {
+    Faces faces;
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        faces.emplace_back(soup.indices.begin() + soup.face_offsets[f],
+                           soup.indices.begin() + soup.face_offsets[f + 1]);
+    }
+    return faces;
+}
+
 std::vector<Face> random_region(const Mesh& mesh, std::mt19937& rng) {
     std::vector<Face> out;
     for (int tries = 0; tries < 100 && mesh.faces_size() > 0 && out.empty(); ++tries) {

@@ -81,6 +81,11 @@ std::vector<NamedMesh> pillow_family();
 /// torus, an icosphere of 5,120 faces and a 20,000-face open grid.
 std::vector<NamedMesh> big_corpus();
 
+/// Faces as lists of corner indices (a soup's, for exact comparisons).
+using Faces = std::vector<std::vector<std::uint32_t>>;
+/// The soup's faces as corner lists, in order.
+Faces faces_of(const PolygonSoup& soup);
+
 /// A random region for the region verbs: a live face and, with odds one in two each, the
 /// faces across its sides (none when the mesh has no face).
 std::vector<Face> random_region(const Mesh& mesh, std::mt19937& rng);
