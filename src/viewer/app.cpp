@@ -535,7 +535,10 @@ void App::apply(const Outcome& outcome) {
     if (c & kFrameSelection) {
         frame_selection();
     }
-    if ((c & (kSceneBounds | kDocument)) != 0 && (c & kResetCamera) == 0) {
+    // The depth range follows a whole-mesh change (an operation, or undoing one); the undo of
+    // a local edit (a recorded region) moves a few vertices and skips the pass over all.
+    const bool whole = (c & kSceneBounds) != 0 || ((c & kDocument) != 0 && !outcome.region);
+    if (whole && (c & kResetCamera) == 0) {
         fit_depth_range();
     }
     if ((c & kDisplay) && editor_.view().render.shading >= 8) {

@@ -1,7 +1,8 @@
-// The window's box select (B: the next left press starts a rectangle; a right press cancels)
-// and lasso (Ctrl+right-drag draws an outline), drawn over the frame as the cursor moves; the
-// release selects what the region holds (overlay/region_pick.h) in the selection's kind, only
-// what the view shows unless Alt is held; Shift adds to the selection.
+// The window's box select (B: the next left press starts a rectangle; a right press cancels),
+// lasso (Ctrl+right-drag draws an outline) and brush (Alt+B: left drags paint with a circle
+// until Esc or a right click), drawn over the frame as the cursor moves. A region selects
+// what it holds (overlay/region_pick.h) in the selection's kind, only what the view shows
+// unless Alt is held; Shift adds to the selection (the brush: takes away from it).
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
