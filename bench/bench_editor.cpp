@@ -5,6 +5,7 @@
 //
 //   bench_editor --job editor_edits_torus_1m|editor_edits_scan_1m [--impl all] [--runs N]
 //   bench_editor --job editor_loop_1m --impl core|viewer [--runs N]
+//   bench_editor --job editor_simplify_1m --impl core|viewer [--runs N]
 //   bench_editor --list
 //
 // editor_edits_*: 200 × N random local edits (F, S or C on a uniformly random live edge,
@@ -20,6 +21,10 @@
 // edits, the history's total.
 // editor_loop_1m: Loop on the 1M torus: `core` loop_subdivide() on a copy; `viewer` the L
 // key through Editor::run plus the upload of the new buffers.
+// editor_simplify_1m: simplify the 1.2M-face scan to half (issue 40): `core` simplify() and
+// the garbage collection on a copy; `viewer` the D key as the window runs it, in the
+// background (Editor::set_background): the worker's copy, the operation, the result put in
+// as an undo step, no GPU.
 
 #include <algorithm>
 #include <chrono>
@@ -32,6 +37,7 @@
 #include "bench_util.h"
 #include "gl_context.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/render/mesh_renderer.h"
 #include "meshedit/viewer/editor.h"
@@ -308,6 +314,48 @@ int run_loop(const std::string& impl, int runs) {
     return 0;
 }
 
+int run_simplify(const std::string& impl, int runs, const std::filesystem::path& data) {
+    const Mesh scan = input_mesh("editor_edits_scan_1m", data);
+    std::vector<double> ms;
+    const int first = mb::warm_protocol() ? -1 : 0;
+    std::size_t faces_out = 0;
+    for (int r = first; r < runs; ++r) {
+        if (impl == "core") {
+            Mesh copy = scan;
+            const auto start = std::chrono::steady_clock::now();
+            SimplifyOptions half;
+            half.target_faces = copy.n_faces() / 2;
+            simplify(copy, half);
+            copy.garbage_collection();
+            if (r >= 0) {
+                ms.push_back(ms_since(start));
+            }
+            faces_out = copy.n_faces();
+            continue;
+        }
+        Editor editor;
+        viewer::Document doc;
+        doc.mesh = scan;
+        editor.set_document(std::move(doc));
+        editor.set_background(true);
+        const auto start = std::chrono::steady_clock::now();
+        const viewer::Outcome started = editor.press(viewer::key_of('D'), viewer::kNoMods);
+        const std::optional<viewer::Outcome> done = editor.wait_job();
+        if (started.refused || !done || done->refused) {
+            std::fprintf(stderr, "bench_editor: D was refused: %s\n", started.message.c_str());
+            return 1;
+        }
+        if (r >= 0) {
+            ms.push_back(ms_since(start));
+        }
+        faces_out = editor.mesh().n_faces();
+    }
+    mb::print_result(
+        "editor_simplify_1m", impl, ms,
+        {{"faces_out", static_cast<double>(faces_out)}, {"peak_rss_mb", mb::peak_rss_mb()}});
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -317,6 +365,7 @@ int main(int argc, char** argv) {
             std::printf("%s all\n", job.c_str());
         }
         std::printf("editor_loop_1m core\neditor_loop_1m viewer\n");
+        std::printf("editor_simplify_1m core\neditor_simplify_1m viewer\n");
         return 0;
     }
     mb::JobArgs args;
@@ -333,6 +382,9 @@ int main(int argc, char** argv) {
         }
         if (args.job == "editor_loop_1m" && (args.impl == "core" || args.impl == "viewer")) {
             return run_loop(args.impl, args.runs);
+        }
+        if (args.job == "editor_simplify_1m" && (args.impl == "core" || args.impl == "viewer")) {
+            return run_simplify(args.impl, args.runs, args.data);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_editor: %s\n", e.what());

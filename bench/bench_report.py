@@ -63,6 +63,10 @@ JOB_TITLES = {
     "editor_edits_scan_1m": "The same on bunny00 Loop-subdivided twice (1,206,530 triangles)",
     "editor_loop_1m": "Loop on the 1M torus: `core` loop_subdivide(), `viewer` the L key "
     "through viewer::Editor plus the upload of the new buffers (target: ≤ 2× core + upload)",
+    "editor_simplify_1m": "D on bunny00 Loop-subdivided twice (1,206,530 triangles) to half: "
+    "`core` simplify() and the garbage collection on a copy, `viewer` the D key as the window "
+    "runs it, in the background (the worker's copy, the result put in as an undo step; no GPU; "
+    "target: ≤ 1.2× core)",
     "draw_1m_triangles": "Headless draw of a 1M-triangle torus at 1280×800 (llvmpipe via EGL, else OSMesa); MeshEdit's "
     "smooth Blinn-Phong renderer (which culls back faces of closed outward meshes) vs a trivial "
     "shader over the same vertex buffer (`bare`), and the trivial shader with back faces culled "

@@ -166,6 +166,17 @@ def editor_target_rows(jobs, not_measured):
         elif not how:
             rows.append(("Loop in the viewer, 1M faces", "≤ 2 × core Loop (+ upload)",
                          not_measured(job, "core or viewer missing"), "n/a"))
+    simp = ok_results(jobs.get("editor_simplify_1m", []))
+    if "core" in simp and "viewer" in simp:
+        core = simp["core"]["median_ms"]
+        v = simp["viewer"]["median_ms"]
+        rows.append(("D in the viewer (in the background), 1.2M-face scan to half",
+                     "≤ 1.2 × core simplify", f"{v:.0f} ms vs core {core:.0f} ms = {v / core:.2f}×",
+                     "yes" if v <= 1.2 * core else "no"))
+    else:
+        rows.append(("D in the viewer (in the background), 1.2M-face scan to half",
+                     "≤ 1.2 × core simplify",
+                     not_measured("editor_simplify_1m", "core or viewer missing"), "n/a"))
     return rows
 
 

@@ -72,7 +72,8 @@ DEFAULT_CONFIGS = {
        for size in ("10k", "100k", "1m")]
     + [(f"extrude_all_faces_{size}", "meshedit") for size in ("10k", "100k", "1m")],
     "bench_editor": [("editor_edits_torus_1m", "all"), ("editor_edits_scan_1m", "all"),
-                     ("editor_loop_1m", "core"), ("editor_loop_1m", "viewer")],
+                     ("editor_loop_1m", "core"), ("editor_loop_1m", "viewer"),
+                     ("editor_simplify_1m", "core"), ("editor_simplify_1m", "viewer")],
     "bench_selection": [(job, "meshedit") for job in (
         "select_loop_1m", "select_ring_1m", "select_linked_1m", "select_grow_1m",
         "select_box_1m", "select_box_visible_1m")],

@@ -66,6 +66,7 @@ void load_ui_font(float scale) {
 App::App(const ViewerOptions& options) {
     editor_.view().up = options.up;
     editor_.set_up_for_next_open(options.up);
+    editor_.set_background(true);  // whole-mesh operations leave the window responsive
     editor_.set_progress_hook(
         [this](std::string_view verb, double fraction) { show_progress(verb, fraction); });
     glfwSetErrorCallback([](int code, const char* text) {
@@ -90,15 +91,19 @@ App::App(const ViewerOptions& options) {
     glfwSetWindowUserPointer(window_, this);
 
     glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) {
+        ++app_of(w).view_events_;
         app_of(w).on_key(key, action, mods);
     });
     glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int mods) {
+        ++app_of(w).view_events_;
         app_of(w).on_mouse_button(button, action, mods);
     });
     glfwSetCursorPosCallback(window_,
                              [](GLFWwindow* w, double x, double y) { app_of(w).on_cursor(x, y); });
-    glfwSetScrollCallback(window_,
-                          [](GLFWwindow* w, double, double dy) { app_of(w).on_scroll(dy); });
+    glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
+        ++app_of(w).view_events_;
+        app_of(w).on_scroll(dy);
+    });
     glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
         app_of(w).on_drop(count, paths);
     });
@@ -107,9 +112,12 @@ App::App(const ViewerOptions& options) {
         App& app = app_of(w);
         app.cursor_moved_ = true;
         app.redraw_frames_ = kSettleFrames;
+        ++app.view_events_;
     });
-    glfwSetWindowRefreshCallback(window_,
-                                 [](GLFWwindow* w) { app_of(w).redraw_frames_ = kSettleFrames; });
+    glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) {
+        app_of(w).redraw_frames_ = kSettleFrames;
+        ++app_of(w).view_events_;
+    });
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -163,6 +171,8 @@ int App::run() {
     while (!quit_) {
         if (redraw_frames_ > 0) {
             glfwPollEvents();
+        } else if (editor_.busy()) {
+            glfwWaitEventsTimeout(0.05);  // the operation's end and progress are polled
         } else if (cursor_moved_) {
             glfwWaitEventsTimeout(kHoverDelaySeconds);
         } else {
@@ -180,6 +190,9 @@ int App::run() {
         if (const std::string t = editor_.title(); t != title) {
             title = t;
             glfwSetWindowTitle(window_, ("MeshEdit — " + title).c_str());
+        }
+        if (editor_.busy()) {
+            follow_job();
         }
         if (editor_.view().render.shading >= 8 && mesh_mode()) {
             redraw_frames_ = std::max(redraw_frames_, 1);  // user shaders may animate (u_time)
@@ -416,6 +429,7 @@ void App::on_cursor(double x, double y) {
             break;
     }
     redraw_frames_ = kSettleFrames;
+    ++view_events_;
 }
 
 void App::on_scroll(double dy) {
@@ -667,11 +681,25 @@ void App::draw_frame() {
     const glm::ivec2 size = framebuffer_size();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, size.x, size.y);
-    draw_scene(size.x, size.y);
+    // While an operation runs, a frame that only moves the progress bar shows the still.
+    const bool busy = editor_.busy();
+    const bool still = busy && view_events_ == still_events_ && still_.holds(size.x, size.y);
+    if (still) {
+        glClear(GL_COLOR_BUFFER_BIT);
+    } else {
+        draw_scene(size.x, size.y);
+        if (busy) {
+            still_.capture(size.x, size.y);
+            still_events_ = view_events_;
+        }
+    }
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    if (still) {
+        still_.draw_behind_panels();
+    }
     FrameStats stats;
     stats.frame_ms = last_frame_ms_;
     stats.pick_ms = last_pick_ms_;
@@ -684,6 +712,9 @@ void App::draw_frame() {
     draw_region();
     const PanelRequests requests =
         panels_.draw(editor_, stats, status_, status_error_, display_.field());
+    if (const auto job = editor_.job_progress()) {
+        panels_.draw_progress(job->verb, job->fraction, job->seconds);
+    }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glfwSwapBuffers(window_);
@@ -721,29 +752,6 @@ void App::draw_frame() {
         editor_.set_hover(*requests.hover);
         rebuild_overlay();
     }
-}
-
-void App::show_progress(std::string_view verb, double fraction) {
-    const double now = glfwGetTime();
-    if (fraction <= 0.0 || progress_started_ < 0.0) {
-        progress_started_ = now;  // a new operation
-        progress_drawn_ = now;
-    }
-    if (now - progress_started_ < 0.3 || now - progress_drawn_ < 0.1) {
-        return;
-    }
-    progress_drawn_ = now;
-    const glm::ivec2 size = framebuffer_size();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, size.x, size.y);
-    draw_scene(size.x, size.y);  // the GPU still holds the mesh as it was
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    panels_.draw_progress(std::string(verb), fraction, now - progress_started_);
-    ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    glfwSwapBuffers(window_);
 }
 
 void App::write_screenshot() {

@@ -16,6 +16,7 @@
 #include "meshedit/render/scene.h"
 #include "meshedit/viewer/editor.h"
 #include "panels.h"
+#include "still_frame.h"
 
 struct GLFWwindow;
 
@@ -109,6 +110,9 @@ private:
     /// times a second, draws the 3D view as it was and a progress bar (nothing that reads the
     /// half-built document; no event handling).
     void show_progress(std::string_view verb, double fraction);
+    /// Each turn of the event loop while an operation runs in the background: its result
+    /// applied once it ended, else a progress frame four times a second.
+    void follow_job();
     /// An interactive edit began (Editor::begin_modal): remember where the cursor and the
     /// selection's centre are. update_modal() feeds the cursor's motion since then.
     void start_modal();
@@ -189,6 +193,14 @@ private:
     double last_frame_ms_ = 0.0;
     double progress_started_ = -1.0;  ///< glfwGetTime() when the running operation began
     double progress_drawn_ = 0.0;     ///< glfwGetTime() of the last progress frame
+    /// While an operation runs in the background: the 3D view as last drawn, shown by the
+    /// frames that only move the progress bar. view_events_ counts what can change the view
+    /// (keys, buttons, drags, the wheel, resizes, applied outcomes); the still is redrawn
+    /// when it moved on.
+    StillFrame still_;
+    std::uint64_t view_events_ = 0;
+    std::uint64_t still_events_ = ~std::uint64_t{0};
+    double job_drawn_ = 0.0;  ///< glfwGetTime() of the last progress frame of the operation
     double last_pick_ms_ = 0.0;
     bool quit_ = false;
 

@@ -25,9 +25,30 @@ bool available(Command command, Mode mode) {
     });
 }
 
-}  // namespace
+/// Commands that only change how the document is shown (run_display()).
+bool display_command(Command c) {
+    switch (c) {
+        case Command::ToggleSmooth:
+        case Command::ToggleWireframe:
+        case Command::Shading:
+        case Command::ToggleInfo:
+        case Command::ToggleHelp:
+        case Command::ResetCamera:
+        case Command::CycleUp:
+        case Command::ToggleTrackball:
+        case Command::CycleStencil:
+        case Command::ToggleDiagram:
+        case Command::CycleField:
+        case Command::ReloadShaders:
+        case Command::CycleColormap:
+        case Command::Screenshot:
+            return true;
+        default:
+            return false;
+    }
+}
 
-Editor::Editor(HistoryLimits limits) : ledger_(limits) {}
+}  // namespace
 
 // ---------------------------------------------------------------------------- commands
 
@@ -44,6 +65,20 @@ Outcome Editor::press(Key key, unsigned mods) {
 
 Outcome Editor::run(Action action) {
     const Command c = action.command;
+    if (busy()) {
+        // While an operation runs, the view is the user's; the document is the operation's.
+        if (c == Command::Escape) {
+            return cancel_job();
+        }
+        if (c == Command::Quit) {
+            cancel_job();
+            wait_job();
+            return quit();
+        }
+        if (c != Command::FrameSelection && !display_command(c)) {
+            return *refuse_if_busy();
+        }
+    }
     end_drag();  // a key during a drag ends it (its transaction commits) before it runs
     if (modal_.kind != Modal::None) {
         // A key the interactive edit does not take (modal_key) applies it first, as in
@@ -63,6 +98,9 @@ Outcome Editor::run(Action action) {
     }
     if (!available(c, doc_.mode)) {
         return refused(std::string("not available in ") + kind_name(doc_.mode) + " mode");
+    }
+    if (display_command(c)) {
+        return run_display(action);
     }
     switch (c) {
         case Command::Edit:
@@ -93,21 +131,6 @@ Outcome Editor::run(Action action) {
         case Command::ToEdge:
         case Command::ToFace:
             return run_navigation(c);
-        case Command::ToggleSmooth:
-        case Command::ToggleWireframe:
-        case Command::Shading:
-        case Command::ToggleInfo:
-        case Command::ToggleHelp:
-        case Command::ResetCamera:
-        case Command::CycleUp:
-        case Command::ToggleTrackball:
-        case Command::CycleStencil:
-        case Command::ToggleDiagram:
-        case Command::CycleField:
-        case Command::ReloadShaders:
-        case Command::CycleColormap:
-        case Command::Screenshot:
-            return run_display(action);
         case Command::Undo:
             return undo();
         case Command::Redo:
@@ -139,6 +162,8 @@ Outcome Editor::run(Action action) {
         case Command::DensityDown:
         case Command::ToggleNets:
             return run_surface(c);
+        default:
+            break;  // display commands, above
     }
     return {};
 }

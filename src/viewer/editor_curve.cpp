@@ -118,6 +118,9 @@ Outcome Editor::run_curve(Action action) {
 }
 
 Outcome Editor::set_t(double t) {
+    if (std::optional<Outcome> busy = refuse_if_busy()) {
+        return *busy;
+    }
     if (doc_.mode != Mode::Curve) {
         return refused("t belongs to curves");
     }

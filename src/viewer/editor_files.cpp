@@ -57,6 +57,9 @@ bool stands_along_z(const Mesh& mesh) {
 }  // namespace
 
 Outcome Editor::open(const std::filesystem::path& path) {
+    if (std::optional<Outcome> busy = refuse_if_busy()) {
+        return *busy;
+    }
     if (dirty() && !ledger_.replace_armed) {
         ledger_.replace_armed = true;
         return refused("unsaved changes to " + file_name(path_) +
@@ -144,6 +147,9 @@ Outcome Editor::save() {
 }
 
 Outcome Editor::save_as(const std::filesystem::path& path) {
+    if (std::optional<Outcome> busy = refuse_if_busy()) {
+        return *busy;
+    }
     const std::string ext = file_extension(path);
     if (doc_.mode == Mode::Curve && ext != ".bzc") {
         return refused("a curve is saved as .bzc, not '" + ext + "'");

@@ -24,26 +24,19 @@ Outcome Editor::edit_mesh(std::string_view name) {
             amounts = std::span<const double>(tools_.amounts(verb->name).data(), verb->max_amounts);
         }
         const ops::Step step = ops::make_step(name, doc_.mesh, ElementRef{}, amounts);
+        if (background_ && doc_.mode == Mode::Mesh) {
+            if (const OpStatus status = verb->check(doc_.mesh, step); !status) {
+                return refused(status.text());
+            }
+            return start_job(*verb, step);
+        }
         return edit([&] { return verb->check(doc_.mesh, step); },
                     [&](Document& doc) {
                         ops::RunOptions run;
                         if (progress_hook_) {
                             run.progress = [&](double f) { progress_hook_(name, f); };
                         }
-                        const ops::StepResult result = verb->run(doc.mesh, step, run);
-                        Edited edited;
-                        edited.message = result.message;
-                        edited.steps = {step.text};
-                        // A whole-mesh operation may shrink or grow the shape: the view stays
-                        // (what the operation did is what the user should see), the depth
-                        // range follows.
-                        edited.changes = kTopology | kSelection | kSceneBounds;
-                        if (result.renumbers && doc.selection.kind != ElementRef::Kind::Vertex) {
-                            edited.select = ElementRef{};  // only vertices keep their numbers
-                        } else if (result.renumbers) {
-                            doc.also_selected.clear();
-                        }
-                        return edited;
+                        return after_whole_mesh(verb->run(doc.mesh, step, run), step.text);
                     });
     }
     // Amount verbs run from a key as drags (begin_modal); here with their defaults.
@@ -54,6 +47,21 @@ Outcome Editor::edit_mesh(std::string_view name) {
         return refused(hint);
     }
     return edit_steps(steps, verb->name, (verb->traits & ops::kChangesTopology) != 0);
+}
+
+Editor::Edited Editor::after_whole_mesh(const ops::StepResult& result, const std::string& step) {
+    Edited edited;
+    edited.message = result.message;
+    edited.steps = {step};
+    // A whole-mesh operation may shrink or grow the shape: the view stays (what the operation
+    // did is what the user should see), the depth range follows.
+    edited.changes = kTopology | kSelection | kSceneBounds;
+    if (result.renumbers && doc_.selection.kind != ElementRef::Kind::Vertex) {
+        edited.select = ElementRef{};  // only vertices keep their numbers
+    } else if (result.renumbers) {
+        doc_.also_selected.clear();
+    }
+    return edited;
 }
 
 Outcome Editor::delete_selection() {
@@ -108,6 +116,11 @@ bool Editor::compact() {
     }
     GarbageCollectionMap map;
     doc_.mesh.garbage_collection(&map);
+    remap_selection(map);
+    return true;
+}
+
+void Editor::remap_selection(const GarbageCollectionMap& map) {
     doc_.selection = remap(doc_.selection, map);
     std::vector<ElementRef> also;
     for (const ElementRef& e : doc_.also_selected) {
@@ -117,7 +130,6 @@ bool Editor::compact() {
     }
     doc_.also_selected = std::move(also);
     hover_ = {};
-    return true;
 }
 
 }  // namespace meshedit::viewer

@@ -47,6 +47,9 @@ const char* noun(Kind kind, std::size_t n) {
 }  // namespace
 
 Outcome Editor::select_region(Command command) {
+    if (std::optional<Outcome> busy = refuse_if_busy()) {
+        return *busy;
+    }
     const Mesh& mesh = doc_.mesh;
     const std::vector<ElementRef> now = selected();
     const ElementRef active = now.empty() ? ElementRef{} : as_kind(now.back());
@@ -232,6 +235,9 @@ ElementRef::Kind Editor::region_kind() const {
 
 Outcome Editor::select_elements(const std::vector<ElementRef>& elements, bool add,
                                 const std::string& what) {
+    if (std::optional<Outcome> busy = refuse_if_busy()) {
+        return *busy;
+    }
     std::vector<ElementRef> chosen = add ? selected() : std::vector<ElementRef>{};
     const auto key = [](const ElementRef& e) {
         const ElementRef k = as_kind(e);
@@ -266,6 +272,9 @@ Outcome Editor::take_selection(std::vector<ElementRef> chosen, const std::string
 
 Outcome Editor::deselect_elements(const std::vector<ElementRef>& elements,
                                   const std::string& what) {
+    if (std::optional<Outcome> busy = refuse_if_busy()) {
+        return *busy;
+    }
     const auto key = [](const ElementRef& e) {
         const ElementRef k = as_kind(e);
         return (std::uint64_t{static_cast<unsigned>(k.kind)} << 32) | k.index;

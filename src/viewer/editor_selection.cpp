@@ -36,6 +36,9 @@ std::string moved_by(bool curve, std::uint32_t index, const Vec3& d) {
 }  // namespace
 
 Outcome Editor::select(ElementRef element) {
+    if (std::optional<Outcome> busy = refuse_if_busy()) {
+        return *busy;
+    }
     bool ok = false;
     if (doc_.mode == Mode::Curve) {
         ok = element.kind == ElementRef::Kind::Vertex &&
@@ -53,6 +56,9 @@ Outcome Editor::select(ElementRef element) {
 }
 
 Outcome Editor::toggle_select(ElementRef element) {
+    if (std::optional<Outcome> busy = refuse_if_busy()) {
+        return *busy;
+    }
     if (doc_.mode == Mode::Curve || !is_live(doc_.mesh, element)) {
         return select(element);
     }
@@ -268,6 +274,9 @@ Outcome Editor::validate_mesh() {
 }
 
 bool Editor::begin_drag() {
+    if (busy()) {
+        return false;  // the document takes no edit while an operation runs
+    }
     const ElementRef& s = doc_.selection;
     if (s.kind != ElementRef::Kind::Vertex) {
         return false;

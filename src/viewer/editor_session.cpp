@@ -13,6 +13,9 @@
 namespace meshedit::viewer {
 
 Outcome Editor::export_session(const std::filesystem::path& path) {
+    if (std::optional<Outcome> busy = refuse_if_busy()) {
+        return *busy;
+    }
     if (doc_.mode != Mode::Mesh) {
         return refused(std::string("sessions record the edits of mesh files, not of a ") +
                        kind_name(doc_.mode));

@@ -44,6 +44,19 @@ Transaction::Transaction(Ledger& ledger, Document& doc, Kind kind)
     }
 }
 
+Transaction::Transaction(Ledger& ledger, Document& doc, Mesh replacement)
+    : ledger_(&ledger),
+      doc_(&doc),
+      kind_(Kind::Snapshot),
+      selection_before_(doc.selection),
+      also_before_(doc.also_selected) {
+    Mesh old = std::exchange(doc.mesh, std::move(replacement));
+    Mesh result = std::exchange(doc.mesh, Mesh());
+    before_.emplace(doc);  // without a mesh: nothing big is copied
+    before_->mesh = std::move(old);
+    doc.mesh = std::move(result);
+}
+
 Transaction::~Transaction() {
     if (open()) {
         roll_back();

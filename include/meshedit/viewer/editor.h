@@ -122,6 +122,11 @@ private:
 class Editor {
 public:
     explicit Editor(HistoryLimits limits = {});
+    /// A running operation is cancelled and waited for.
+    ~Editor();
+    /// Not while busy(): the operation reads the document it was started on.
+    Editor(Editor&&) noexcept;
+    Editor& operator=(Editor&&) noexcept;
 
     // ------------------------------------------------------------- files (editor_files.cpp)
 
@@ -202,6 +207,34 @@ public:
     Outcome cancel_modal();
     /// "extrude height 0.25, shrink 0.1 — Enter/click to apply, Esc/right-click to cancel".
     std::string modal_status() const;
+
+    // ------------------------------------ whole-mesh operations in the background
+    // (editor_jobs.cpp)
+
+    /// On (the window): whole-mesh verbs (subdivide, simplify, remesh, …) run on a worker
+    /// thread, on a copy of the mesh. edit_mesh() then returns at once with kJobStarted; the
+    /// document stays as it was (the window keeps drawing it, hover keeps working) and takes
+    /// no edit, selection, undo or file command until the operation ends; finish_job() then
+    /// puts the result in as one undo step, exactly as the same verb run in place would.
+    /// Off (the default: tests, scripts): they run where called.
+    void set_background(bool on) { background_ = on; }
+    /// An operation is running (or has ended and waits for finish_job()).
+    bool busy() const { return job_ != nullptr; }
+    /// The running operation: its verb, the fraction done (0…1) and the seconds since it began.
+    struct JobProgress {
+        std::string verb;
+        double fraction = 0.0;
+        double seconds = 0.0;
+    };
+    std::optional<JobProgress> job_progress() const;
+    /// When the running operation has ended: its result put in (or its refusal, or "cancelled:
+    /// nothing changed"); nullopt while it runs or when none is. The window calls it every frame.
+    std::optional<Outcome> finish_job();
+    /// Esc while busy: asks the operation to stop at its next progress report; the document
+    /// is never touched. finish_job() reports it once the worker has stopped.
+    Outcome cancel_job();
+    /// Blocks until the running operation ends, then finish_job() (tests, quitting).
+    std::optional<Outcome> wait_job();
 
     // ------------------------------------------------ selection, drags (editor_selection.cpp)
 
@@ -318,6 +351,9 @@ private:
     /// it touches at any mesh size. Any other is a Snapshot.
     Outcome edit(const std::function<OpStatus()>& check,
                  const std::function<Edited(Document&)>& apply, bool local = false);
+    /// The Edited of a whole-mesh verb that ran (`step` its text): the new mesh's selection
+    /// (none when it renumbered, but vertices), message and changes.
+    Edited after_whole_mesh(const ops::StepResult& result, const std::string& step);
     /// What edit() does to the document's own state after a successful edit: selection,
     /// hover.
     void settle(Edited& edited);
@@ -402,6 +438,16 @@ private:
     Vec3 toward_eye_{0, 0, 1};
     std::optional<UpAxis> up_for_next_open_;
     ProgressHook progress_hook_;
+    /// The operation running in the background (editor_jobs.cpp), or null.
+    struct Job;
+    std::unique_ptr<Job> job_;
+    bool background_ = false;
+    /// Starts `verb` (a whole-mesh verb) on a worker thread (set_background()).
+    Outcome start_job(const ops::Verb& verb, ops::Step step);
+    /// Why a command cannot run now, when an operation is running: nullopt if none is.
+    std::optional<Outcome> refuse_if_busy() const;
+    /// Remaps the selection through a garbage collection's map (compact(), finish_job()).
+    void remap_selection(const GarbageCollectionMap& map);
     ElementRef hover_;
     std::optional<OpDiagram> diagram_;
     std::filesystem::path path_;

@@ -34,6 +34,9 @@ enum Change : unsigned {
     kReloadShaders = 1u << 14,   ///< the window should recompile every shader from disk
     kBoxSelect = 1u << 15,       ///< the window's next left drag draws a box that selects
     kBrushSelect = 1u << 16,     ///< the window's left drags paint a selection with a circle
+    /// An operation began in the background (Editor::set_background): the window shows its
+    /// progress and calls Editor::finish_job() every frame until it ends.
+    kJobStarted = 1u << 17,
 };
 
 /// The result of a command: what changed, and a status line for the user (empty when there

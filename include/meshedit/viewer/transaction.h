@@ -71,6 +71,9 @@ public:
     /// Begins: a Recorded or Positions transaction records the mesh from here on (a
     /// Positions one then calls touch() on what it moves); a Snapshot copies the document.
     Transaction(Ledger& ledger, Document& doc, Kind kind);
+    /// A Snapshot whose edit replaces the whole mesh by `replacement` (an operation run in the
+    /// background): the old mesh moves into the undo record instead of being copied.
+    Transaction(Ledger& ledger, Document& doc, Mesh replacement);
     /// Not committed: rolled back.
     ~Transaction();
     Transaction(const Transaction&) = delete;
