@@ -145,10 +145,8 @@ App::App(const ViewerOptions& options) {
         load_environment(options.envmap);
     }
     if (!options.file.empty()) {
+        help_hint_ = true;  // the first window says where the keys are, once the file opened
         open_file(options.file);
-        if (!status_error_) {
-            set_status(status_ + "; ? for help", false);  // the first window says where keys are
-        }
     } else {
         set_status("drop a file on the window or press Ctrl+O to open one; ? for help", false);
     }
@@ -495,14 +493,7 @@ void App::open_file(const std::filesystem::path& path) {
     try {
         apply(editor_.open(path));  // uploads, reframes and rebuilds the overlay
     } catch (const std::exception& e) {
-        // IoError names the file itself; anything else (no memory) gets the path added.
-        std::string message = dynamic_cast<const IoError*>(&e) != nullptr
-                                  ? std::string(e.what())
-                                  : path.string() + ": " + e.what();
-        if (!editor_.path().empty()) {
-            message += " — " + editor_.path().filename().string() + " stays open";
-        }
-        set_status(std::move(message), true);
+        set_status(editor_.open_failure(path, e), true);
     }
 }
 
@@ -511,6 +502,10 @@ void App::apply(const Outcome& outcome) {
     progress_started_ = -1.0;  // the next operation's progress starts afresh
     if (!outcome.message.empty()) {
         set_status(outcome.message, outcome.refused);
+    }
+    if (help_hint_ && !outcome.refused && (outcome.changes & kDocument) != 0) {
+        set_status(status_ + "; ? for help", false);
+        help_hint_ = false;
     }
     const unsigned c = outcome.changes;
     const bool mesh_changed = (c & (kTopology | kGeometry | kDocument)) != 0;

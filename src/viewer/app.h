@@ -203,6 +203,7 @@ private:
     double job_drawn_ = 0.0;  ///< glfwGetTime() of the last progress frame of the operation
     double last_pick_ms_ = 0.0;
     bool quit_ = false;
+    bool help_hint_ = false;  ///< the first document opened says "? for help"
 
     int press_button_ = 0;      ///< the button of the press a Pending drag started with
     bool press_shift_ = false;  ///< Shift was held: a click toggles, a drag pans

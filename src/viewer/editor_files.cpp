@@ -1,5 +1,7 @@
 // The editor's files: open, save, save as, and the window title.
 
+#include <memory>
+#include <stdexcept>
 #include <utility>
 
 #include "meshedit/files/files.h"
@@ -66,7 +68,50 @@ Outcome Editor::open(const std::filesystem::path& path) {
                        ": open again to discard them, or Ctrl+S to save first");
     }
     // Everything is read into a local document first: an IoError leaves the editor as it was.
+    const auto hash_of = [](const std::filesystem::path& file) {
+        try {
+            return content_hash(read_file(file));
+        } catch (const IoError&) {
+            return std::string();  // read a moment ago; a session file just lacks the hash
+        }
+    };
+    if (background_) {
+        struct Read {
+            LoadedDocument loaded;
+            std::string hash;
+        };
+        auto read = std::make_shared<Read>();
+        auto work = [this, read, path, hash_of](Job&) {
+            try {
+                read->loaded = read_document(path);
+                read->hash = hash_of(path);
+            } catch (const std::exception& e) {
+                throw std::runtime_error(open_failure(path, e));
+            }
+        };
+        auto finish = [this, read, path] {
+            return take_loaded(path, std::move(read->loaded), std::move(read->hash));
+        };
+        return start_job("open " + file_name(path), true, false, std::move(work),
+                         std::move(finish));
+    }
     LoadedDocument loaded = read_document(path);
+    return take_loaded(path, std::move(loaded), hash_of(path));
+}
+
+std::string Editor::open_failure(const std::filesystem::path& path, const std::exception& e) const {
+    // IoError names the file itself; anything else (no memory) gets the path added.
+    std::string message = dynamic_cast<const IoError*>(&e) != nullptr
+                              ? std::string(e.what())
+                              : path.string() + ": " + e.what();
+    if (!path_.empty()) {
+        message += " — " + path_.filename().string() + " stays open";
+    }
+    return message;
+}
+
+Outcome Editor::take_loaded(const std::filesystem::path& path, LoadedDocument loaded,
+                            std::string hash) {
     Document doc;
     doc.mode = loaded.kind;
     doc.mesh = std::move(loaded.mesh);
@@ -86,11 +131,7 @@ Outcome Editor::open(const std::filesystem::path& path) {
     }
     const Mode mode = doc.mode;
     set_document(std::move(doc), path);
-    try {
-        session_source_hash_ = content_hash(read_file(path));
-    } catch (const IoError&) {
-        session_source_hash_.clear();  // read a moment ago; a session file just lacks the hash
-    }
+    session_source_hash_ = std::move(hash);
     if (mode == Mode::Surface) {
         pristine_revisions_.insert(doc_.revision);
     }
@@ -162,11 +203,7 @@ Outcome Editor::save_as(const std::filesystem::path& path) {
         return refused("a mesh is saved as " + std::string(mesh_extensions()) + ", not '" + ext +
                        "'");
     }
-    Outcome outcome = write_to(path);
-    if (!outcome.refused) {
-        path_ = path;
-    }
-    return outcome;
+    return write_to(path);  // the document takes the path once it is written
 }
 
 Outcome Editor::write_to(const std::filesystem::path& path) {
@@ -200,6 +237,17 @@ Outcome Editor::write_to(const std::filesystem::path& path) {
                 outcome.changes |=
                     transaction.commit(kTopology | kSelection, "", {"compact"}).changes;
             }
+            if (background_) {
+                // The worker reads the document, which takes no edit until it is written.
+                auto work = [&mesh = doc_.mesh, path](Job&) { write_mesh(mesh, path); };
+                auto finish = [this, path, unkept, changes = outcome.changes] {
+                    return saved(path, unkept, changes);
+                };
+                Outcome started = start_job("save " + file_name(path), false, false,
+                                            std::move(work), std::move(finish));
+                started.changes |= outcome.changes;
+                return started;
+            }
             write_mesh(doc_.mesh, path);  // atomic: temporary file + rename
         }
     } catch (const IoError& e) {
@@ -207,6 +255,13 @@ Outcome Editor::write_to(const std::filesystem::path& path) {
         outcome.refused = true;
         return outcome;
     }
+    return saved(path, unkept, outcome.changes);
+}
+
+Outcome Editor::saved(const std::filesystem::path& path, const std::vector<std::string>& unkept,
+                      unsigned changes) {
+    Outcome outcome{changes};
+    path_ = path;
     ledger_.mark_saved(doc_);
     ledger_.quit_armed = false;
     outcome.changes |= kDisplay;  // the title loses its '*'

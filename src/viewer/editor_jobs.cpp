@@ -1,11 +1,12 @@
-// Whole-mesh operations in the background (editor.h): the worker runs the verb on its own copy
-// of the mesh, so the document the window draws and hovers is never half built, and a cancel
-// only has to throw the copy away. The document takes no command that would change it while
-// the worker runs: its result replaces the mesh the worker copied, nothing else.
+// Long operations in the background (editor.h): whole-mesh verbs, opening and saving. A verb
+// runs on its own copy of the mesh, so the document the window draws and hovers is never
+// half built, and a cancel only has to throw the copy away. The document takes no command
+// that would change it while the worker runs; the result is put in on the UI thread.
 
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <functional>
 #include <new>
 #include <thread>
 
@@ -21,40 +22,34 @@ struct Cancelled {};
 }  // namespace
 
 struct Editor::Job {
-    const ops::Verb* verb = nullptr;
-    ops::Step step;
+    std::string label;      ///< "simplify", "open bunny.ply"
+    bool stoppable = true;  ///< Esc stops it (a save runs to the end: its file is atomic)
+    bool measured = true;   ///< it reports progress
+    /// On the worker: does the work, calling progress(); throws to refuse.
+    std::function<void(Job&)> work;
+    /// On the UI thread, once `work` returned: puts the result in.
+    std::function<Outcome()> finish;
     std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
     std::atomic<double> fraction{0.0};
     std::atomic<bool> cancel{false};
-    std::atomic<bool> done{false};  ///< the fields below are written; release/acquire
-    std::optional<Mesh> result;
-    ops::StepResult step_result;
-    std::optional<GarbageCollectionMap> compacted;
-    std::string error;  ///< why it could not run (an exception's text)
+    std::atomic<bool> done{false};  ///< what the worker wrote is complete; release/acquire
+    std::string error;              ///< why it could not run (an exception's text)
     bool cancelled = false;
     std::jthread worker;  ///< last: joined before the fields it writes go
 
-    void run(const Mesh& source) {
+    void progress(double f) {
+        fraction.store(f, std::memory_order_relaxed);
+        if (stoppable && cancel.load(std::memory_order_relaxed)) {
+            throw Cancelled{};
+        }
+    }
+
+    void run() {
         try {
-            Mesh work = source;  // the document takes no edit while this runs
-            ops::RunOptions options;
-            options.progress = [this](double f) {
-                fraction.store(f, std::memory_order_relaxed);
-                if (cancel.load(std::memory_order_relaxed)) {
-                    throw Cancelled{};
-                }
-            };
-            step_result = verb->run(work, step, options);
-            if (cancel.load()) {
-                throw Cancelled{};
+            work(*this);
+            if (stoppable && cancel.load()) {
+                throw Cancelled{};  // an open that could not be interrupted: its result goes
             }
-            // The garbage collection edit() would do after it, here rather than on the UI
-            // thread; the selection is remapped when the result goes in.
-            if (work.has_garbage()) {
-                compacted.emplace();
-                work.garbage_collection(&*compacted);
-            }
-            result = std::move(work);
         } catch (const Cancelled&) {
             cancelled = true;
         } catch (const std::bad_alloc&) {
@@ -77,16 +72,54 @@ Editor::~Editor() {
     }
 }
 
-Outcome Editor::start_job(const ops::Verb& verb, ops::Step step) {
+Outcome Editor::start_job(std::string label, bool stoppable, bool measured,
+                          std::function<void(Job&)> work, std::function<Outcome()> finish) {
     end_drag();
     diagram_.reset();
     job_ = std::make_unique<Job>();
     Job& job = *job_;
-    job.verb = &verb;
-    job.step = std::move(step);
-    job.worker = std::jthread([&job, &mesh = doc_.mesh] { job.run(mesh); });
-    return {kJobStarted | kDisplay,
-            std::string(verb.name) + " running — you can orbit meanwhile; Esc cancels"};
+    job.label = std::move(label);
+    job.stoppable = stoppable;
+    job.measured = measured;
+    job.work = std::move(work);
+    job.finish = std::move(finish);
+    job.worker = std::jthread([&job] { job.run(); });
+    return {kJobStarted | kDisplay, job.label + " running" + (stoppable ? " — Esc cancels" : "")};
+}
+
+Outcome Editor::start_job(const ops::Verb& verb, ops::Step step) {
+    struct Result {
+        std::optional<Mesh> mesh;
+        ops::StepResult step;
+        std::optional<GarbageCollectionMap> compacted;
+    };
+    auto result = std::make_shared<Result>();
+    auto work = [result, &verb, step, &source = doc_.mesh](Job& job) {
+        Mesh mesh = source;  // the document takes no edit while this runs
+        ops::RunOptions options;
+        options.progress = [&job](double f) { job.progress(f); };
+        result->step = verb.run(mesh, step, options);
+        job.progress(1.0);
+        // The garbage collection edit() would do after it, here rather than on the UI
+        // thread; the selection is remapped when the result goes in.
+        if (mesh.has_garbage()) {
+            result->compacted.emplace();
+            mesh.garbage_collection(&*result->compacted);
+        }
+        result->mesh = std::move(mesh);
+    };
+    auto finish = [this, result, text = step.text] {
+        Transaction transaction(ledger_, doc_, std::move(*result->mesh));
+        Edited edited = after_whole_mesh(result->step, text);
+        settle(edited);
+        if (result->compacted) {
+            remap_selection(*result->compacted);
+            edited.steps.emplace_back("compact");
+        }
+        return transaction.commit(edited.changes, std::move(edited.message),
+                                  std::move(edited.steps));
+    };
+    return start_job(std::string(verb.name), true, true, std::move(work), std::move(finish));
 }
 
 std::optional<Editor::JobProgress> Editor::job_progress() const {
@@ -94,7 +127,7 @@ std::optional<Editor::JobProgress> Editor::job_progress() const {
         return std::nullopt;
     }
     return JobProgress{
-        std::string(job_->verb->name), job_->fraction.load(std::memory_order_relaxed),
+        job_->label, job_->measured ? job_->fraction.load(std::memory_order_relaxed) : -1.0,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - job_->started).count()};
 }
 
@@ -102,8 +135,11 @@ Outcome Editor::cancel_job() {
     if (!job_) {
         return {};
     }
+    if (!job_->stoppable) {
+        return {kDisplay, job_->label + " cannot stop halfway: it ends in a moment"};
+    }
     job_->cancel = true;
-    return {kDisplay, "cancelling " + std::string(job_->verb->name) + "…"};
+    return {kDisplay, "cancelling " + job_->label + "…"};
 }
 
 std::optional<Outcome> Editor::wait_job() {
@@ -122,29 +158,21 @@ std::optional<Outcome> Editor::finish_job() {
     if (job->worker.joinable()) {
         job->worker.join();
     }
-    const std::string name(job->verb->name);
     if (job->cancelled) {
-        return Outcome{kDisplay, name + " cancelled: nothing changed"};
+        return Outcome{kDisplay, job->label + " cancelled: nothing changed"};
     }
-    if (!job->result) {
+    if (!job->error.empty()) {
         return refused(job->error);
     }
-    Transaction transaction(ledger_, doc_, std::move(*job->result));
-    Edited edited = after_whole_mesh(job->step_result, job->step.text);
-    settle(edited);
-    if (job->compacted) {
-        remap_selection(*job->compacted);
-        edited.steps.emplace_back("compact");
-    }
-    return transaction.commit(edited.changes, std::move(edited.message), std::move(edited.steps));
+    return job->finish();
 }
 
 std::optional<Outcome> Editor::refuse_if_busy() const {
     if (!job_) {
         return std::nullopt;
     }
-    return refused(std::string(job_->verb->name) +
-                   " is running: wait for it, or press Esc to cancel it");
+    return refused(job_->label + " is running: wait for it" +
+                   (job_->stoppable ? ", or press Esc to cancel it" : ""));
 }
 
 }  // namespace meshedit::viewer

@@ -539,8 +539,12 @@ static bool begin_status_window() {
 
 void Panels::draw_progress(const std::string& verb, double fraction, double seconds) {
     if (begin_status_window()) {
-        ImGui::Text("%s: %.0f%% (%.1f s)", verb.c_str(), 100.0 * fraction, seconds);
-        ImGui::ProgressBar(static_cast<float>(fraction), ImVec2(240.0f * scale_, 0.0f), "");
+        if (fraction < 0.0) {  // an operation that cannot tell how far it is (reading a file)
+            ImGui::Text("%s (%.1f s)", verb.c_str(), seconds);
+        } else {
+            ImGui::Text("%s: %.0f%% (%.1f s)", verb.c_str(), 100.0 * fraction, seconds);
+            ImGui::ProgressBar(static_cast<float>(fraction), ImVec2(240.0f * scale_, 0.0f), "");
+        }
     }
     ImGui::End();
 }

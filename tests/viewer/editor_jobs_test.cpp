@@ -4,9 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "meshedit/core/shapes.h"
+#include "meshedit/io/io.h"
 #include "support/fixtures.h"
 #include "support/mesh_compare.h"
 #include "viewer/editor_test_util.h"
@@ -136,6 +139,70 @@ TEST(EditorJobs, RefusalIsImmediate) {
     EXPECT_TRUE(out.refused);
     EXPECT_FALSE(ed.busy());
     EXPECT_NE(out.message.find("6 of the 6 faces are polygons"), std::string::npos);
+}
+
+std::string bytes_of(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Opening reads the file on the worker: the same document, message and title as an open in
+// place; a file that cannot be read says the same and leaves the document.
+TEST(EditorJobs, OpenReadsInTheBackground) {
+    TempDir dir;
+    const fs::path file = dir / "ball.obj";
+    write_mesh(shapes::icosphere(3), file);
+
+    Editor here;
+    const Outcome in_place = here.open(file);
+    ASSERT_FALSE(in_place.refused) << in_place.message;
+
+    Editor ed = background_editor(test::quad_cube());
+    const Outcome started = ed.open(file);
+    EXPECT_NE(started.changes & kJobStarted, 0u) << started.message;
+    EXPECT_EQ(ed.job_progress()->verb, "open ball.obj");
+    EXPECT_LT(ed.job_progress()->fraction, 0.0) << "reading does not say how far it is";
+    EXPECT_EQ(ed.mesh().n_faces(), 6u) << "the old document stays until the file is read";
+    const std::optional<Outcome> done = ed.wait_job();
+    ASSERT_TRUE(done.has_value());
+    EXPECT_EQ(done->message, in_place.message);
+    EXPECT_EQ(done->changes, in_place.changes);
+    EXPECT_EQ(ed.title(), here.title());
+    EXPECT_TRUE(test::identical(ed.mesh(), here.mesh()));
+
+    const fs::path missing = dir / "no_such.obj";
+    ASSERT_NE(ed.open(missing).changes & kJobStarted, 0u);
+    const std::optional<Outcome> failed = ed.wait_job();
+    ASSERT_TRUE(failed.has_value());
+    EXPECT_TRUE(failed->refused);
+    EXPECT_NE(failed->message.find("no_such.obj"), std::string::npos) << failed->message;
+    EXPECT_NE(failed->message.find("ball.obj stays open"), std::string::npos) << failed->message;
+    EXPECT_TRUE(test::identical(ed.mesh(), here.mesh()));
+}
+
+// Saving writes on the worker: the same bytes as a save in place; the document is saved (no
+// '*', the new path) once the file is written, not before; Esc cannot stop a save halfway.
+TEST(EditorJobs, SaveWritesInTheBackground) {
+    TempDir dir;
+    Editor here = editor_with(shapes::icosphere(2));
+    ASSERT_FALSE(here.press(key_of('L'), kNoMods).refused);
+    ASSERT_FALSE(here.save_as(dir / "here.ply").refused);
+
+    Editor ed = background_editor(shapes::icosphere(2));
+    ASSERT_NE(ed.press(key_of('L'), kNoMods).changes & kJobStarted, 0u);
+    ASSERT_TRUE(ed.wait_job().has_value());
+    const fs::path file = dir / "there.ply";
+    const Outcome started = ed.save_as(file);
+    ASSERT_NE(started.changes & kJobStarted, 0u) << started.message;
+    EXPECT_TRUE(ed.dirty());
+    const Outcome esc = ed.run({Command::Escape});
+    EXPECT_EQ(esc.message, "save there.ply cannot stop halfway: it ends in a moment");
+    const std::optional<Outcome> done = ed.wait_job();
+    ASSERT_TRUE(done.has_value());
+    EXPECT_EQ(done->message, "saved there.ply");
+    EXPECT_FALSE(ed.dirty());
+    EXPECT_EQ(ed.path(), file);
+    EXPECT_EQ(bytes_of(file), bytes_of(dir / "here.ply"));
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/core/stencil.h"
+#include "meshedit/io/document.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/overlay/camera.h"
 #include "meshedit/overlay/colormap.h"
@@ -212,15 +213,17 @@ public:
     // (editor_jobs.cpp)
 
     /// On (the window): whole-mesh verbs (subdivide, simplify, remesh, …) run on a worker
-    /// thread, on a copy of the mesh. edit_mesh() then returns at once with kJobStarted; the
-    /// document stays as it was (the window keeps drawing it, hover keeps working) and takes
-    /// no edit, selection, undo or file command until the operation ends; finish_job() then
-    /// puts the result in as one undo step, exactly as the same verb run in place would.
-    /// Off (the default: tests, scripts): they run where called.
+    /// thread, on a copy of the mesh, and so do reading a file to open and writing a mesh to
+    /// save. The command then returns at once with kJobStarted; the document stays as it was
+    /// (the window keeps drawing it, hover keeps working) and takes no edit, selection, undo
+    /// or file command until the operation ends; finish_job() then puts the result in (a
+    /// verb's as one undo step, exactly as the same verb run in place would). Off (the
+    /// default: tests, scripts): they run where called.
     void set_background(bool on) { background_ = on; }
     /// An operation is running (or has ended and waits for finish_job()).
     bool busy() const { return job_ != nullptr; }
-    /// The running operation: its verb, the fraction done (0…1) and the seconds since it began.
+    /// The running operation: what it is ("simplify", "open bunny.ply"), the fraction done
+    /// (0…1; −1 when it cannot tell) and the seconds since it began.
     struct JobProgress {
         std::string verb;
         double fraction = 0.0;
@@ -426,7 +429,20 @@ private:
     Outcome quit();
     /// Writes the document to `path` (save and save as).
     Outcome write_to(const std::filesystem::path& path);
+    /// After a mesh or patches were written to `path`: the document is saved, the message says
+    /// what the format could not keep (`unkept`); `changes` adds to the outcome's.
+    Outcome saved(const std::filesystem::path& path, const std::vector<std::string>& unkept,
+                  unsigned changes);
+    /// Open's second half: the read document becomes the editor's (`hash`: the file's
+    /// content_hash(), empty if unknown).
+    Outcome take_loaded(const std::filesystem::path& path, LoadedDocument loaded, std::string hash);
 
+public:
+    /// What a failed open says: the file's own message (an IoError names it) or the path with
+    /// the reason, and which document stays open.
+    std::string open_failure(const std::filesystem::path& path, const std::exception& e) const;
+
+private:
     Document doc_;
     Ledger ledger_;
     ViewState view_;
@@ -444,6 +460,11 @@ private:
     bool background_ = false;
     /// Starts `verb` (a whole-mesh verb) on a worker thread (set_background()).
     Outcome start_job(const ops::Verb& verb, ops::Step step);
+    /// Starts `work` on a worker thread; `finish` puts its result in on the UI thread.
+    /// `label` names it in the status line; `stoppable`: Esc stops it; `measured`: it reports
+    /// progress.
+    Outcome start_job(std::string label, bool stoppable, bool measured,
+                      std::function<void(Job&)> work, std::function<Outcome()> finish);
     /// Why a command cannot run now, when an operation is running: nullopt if none is.
     std::optional<Outcome> refuse_if_busy() const;
     /// Remaps the selection through a garbage collection's map (compact(), finish_job()).
