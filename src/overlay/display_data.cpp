@@ -5,6 +5,7 @@
 namespace meshedit {
 
 void DisplayData::follow(const Mesh& mesh, const Change& change) {
+    settle();
     if (change.mesh) {
         features_stale_ = true;
         field_stale_ = true;
@@ -77,7 +78,29 @@ const FieldDisplay& DisplayData::field(const Mesh& mesh, const FieldRequest& req
     return field_;
 }
 
+void DisplayData::prebuild(const Mesh& mesh, std::uint64_t revision) {
+    settle();
+    if (!tree_stale_ && tree_revision_ == revision) {
+        return;
+    }
+    building_.emplace();
+    building_revision_ = revision;
+    builder_ = std::jthread([this, &mesh] { building_->build(mesh); });
+}
+
+void DisplayData::settle() {
+    if (!builder_.joinable()) {
+        return;
+    }
+    builder_.join();
+    tree_ = std::move(*building_);
+    building_.reset();
+    tree_stale_ = false;
+    tree_revision_ = building_revision_;
+}
+
 const FaceBvh& DisplayData::picking_tree(const Mesh& mesh, std::uint64_t revision) {
+    settle();
     if (tree_stale_ || tree_revision_ != revision) {
         tree_.build(mesh);
         tree_stale_ = false;

@@ -211,6 +211,7 @@ void App::tell_view_direction() {
 }
 
 void App::on_key(int key, int action, int mods) {
+    display_.settle();  // the editor may change the mesh the picking tree is built from
     redraw_frames_ = kSettleFrames;
     if (panels_.prompting()) {
         if (action == GLFW_PRESS && (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)) {
@@ -259,6 +260,7 @@ Vec3 App::world_at(glm::dvec2 p, double ndc_z) const {
 }
 
 void App::update_modal() {
+    display_.settle();  // the edit changes the mesh a picking tree may be built from
     const glm::dvec2 p(cursor_pixels());
     ModalInput in;
     in.dx = p.x - modal_from_.x;
@@ -276,6 +278,7 @@ void App::update_modal() {
 }
 
 void App::on_mouse_button(int button, int action, int mods) {
+    display_.settle();  // the editor may change the mesh the picking tree is built from
     redraw_frames_ = kSettleFrames;
     // ImGui's WantCaptureMouse is from the last drawn frame, which may predate the pointer's
     // arrival (events come in bursts); the panels' rectangles do not move with the pointer.
@@ -459,6 +462,7 @@ void App::on_scroll(double dy) {
 }
 
 void App::on_drop(int count, const char** paths) {
+    display_.settle();  // the editor may change the mesh the picking tree is built from
     if (count > 0) {
         open_file(paths[0]);
         if (count > 1) {
@@ -516,6 +520,9 @@ void App::apply(const Outcome& outcome) {
         display_.follow(editor_.mesh(), change);
         if (c & (kTopology | kDocument)) {
             upload_document();
+            if (!editor_.busy()) {
+                display_.prebuild(editor_.mesh(), editor_.document().revision);
+            }
         } else if (c & kGeometry) {
             scene_->mesh().update_geometry(editor_.mesh());
             cursor_moved_ = true;
@@ -643,6 +650,7 @@ glm::vec3 App::unproject(glm::vec2 p, float ndc_z) const {
 // ---------------------------------------------------------------------------- dragging
 
 void App::drag_element_to_cursor() {
+    display_.settle();  // the edit changes the mesh a picking tree may be built from
     const ElementRef& s = editor_.selection();
     Vec3 position;
     if (mesh_mode()) {
@@ -707,6 +715,7 @@ void App::draw_frame() {
     draw_region();
     const PanelRequests requests =
         panels_.draw(editor_, stats, status_, status_error_, display_.field());
+    display_.settle();  // what the panels ask for may change the mesh
     if (const auto job = editor_.job_progress()) {
         panels_.draw_progress(job->verb, job->fraction, job->seconds);
     }

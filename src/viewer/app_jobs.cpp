@@ -45,6 +45,7 @@ void App::show_progress(std::string_view verb, double fraction) {
 }
 
 void App::follow_job() {
+    display_.settle();  // the result replaces the mesh a picking tree may be read from
     if (const std::optional<Outcome> done = editor_.finish_job()) {
         apply(*done);
         ++view_events_;

@@ -95,5 +95,36 @@ TEST(DisplayData, ThePickingTreeFollowsARecordedChange) {
     }
 }
 
+
+// A tree built ahead on the worker answers as one built when first asked, and is taken, not
+// built again, by the pick at its revision; one for another revision is built afresh.
+TEST(DisplayData, ThePrebuiltTreeIsTheTreeOfItsRevision) {
+    const Mesh mesh = shapes::icosphere(4);
+    DisplayData display;
+    display.prebuild(mesh, 5);
+    display.settle();
+    const FaceBvh fresh(mesh);
+    const FaceBvh& tree = display.picking_tree(mesh, 5);
+    EXPECT_EQ(tree.tree_size(), fresh.tree_size());
+    EXPECT_EQ(tree.rebuilds(), 0u);
+    for (int i = 0; i < 100; ++i) {
+        const double a = 0.1 * i, b = 0.37 * i;
+        const FaceBvh::Ray ray{{0, 0, 0},
+                               {std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)}};
+        const auto x = tree.intersect(mesh, ray);
+        const auto y = fresh.intersect(mesh, ray);
+        ASSERT_EQ(x.has_value(), y.has_value());
+        if (x) {
+            EXPECT_EQ(x->face, y->face);
+            EXPECT_EQ(x->t, y->t);
+        }
+    }
+    // picking_tree() waits for a build under way itself.
+    const Mesh small = shapes::icosphere(1);
+    display.prebuild(small, 6);
+    EXPECT_EQ(display.picking_tree(small, 6).tree_size(), small.n_faces());
+    EXPECT_EQ(display.picking_tree(mesh, 7).tree_size(), mesh.n_faces());
+}
+
 }  // namespace
 }  // namespace meshedit
