@@ -98,6 +98,11 @@ App::App(const ViewerOptions& options) {
         ++app_of(w).view_events_;
         app_of(w).on_mouse_button(button, action, mods);
     });
+    glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned c) {
+        if (App& app = app_of(w); app.panels_.prompting()) {
+            app.panels_.edit_prompt({Panels::PromptEdit::Kind::Char, c});
+        }
+    });
     glfwSetCursorPosCallback(window_,
                              [](GLFWwindow* w, double x, double y) { app_of(w).on_cursor(x, y); });
     glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
@@ -214,10 +219,15 @@ void App::on_key(int key, int action, int mods) {
     display_.settle();  // the editor may change the mesh the picking tree is built from
     redraw_frames_ = kSettleFrames;
     if (panels_.prompting()) {
+        using Edit = Panels::PromptEdit;
         if (action == GLFW_PRESS && (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)) {
             panels_.submit_prompt();
         } else if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) {
             panels_.cancel_prompt();
+        } else if (action != GLFW_RELEASE && key == GLFW_KEY_BACKSPACE) {
+            panels_.edit_prompt({Edit::Kind::Backspace});
+        } else if (action == GLFW_PRESS && key == GLFW_KEY_A && (mods & GLFW_MOD_CONTROL) != 0) {
+            panels_.edit_prompt({Edit::Kind::SelectAll});
         }
         return;
     }
@@ -699,6 +709,14 @@ void App::draw_frame() {
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    if (panels_.prompting()) {
+        // The prompt's text is edited from the queue the window filled (Panels::edit_prompt),
+        // where no key is lost; ImGui must not apply these keys a second time.
+        ImGuiIO& io = ImGui::GetIO();
+        io.KeysDown[GLFW_KEY_BACKSPACE] = false;
+        io.KeysDown[GLFW_KEY_A] = false;
+        io.InputQueueCharacters.resize(0);
+    }
     ImGui::NewFrame();
     if (still) {
         still_.draw_behind_panels();

@@ -105,12 +105,62 @@ void draw_trait_choice(TraitQuery& trait, PanelRequests& requests) {
     }
 }
 
+std::string utf8_of(unsigned c) {
+    std::string out;
+    if (c < 0x80) {
+        out += static_cast<char>(c);
+    } else if (c < 0x800) {
+        out += static_cast<char>(0xC0 | (c >> 6));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+        out += static_cast<char>(0xE0 | (c >> 12));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x110000) {
+        out += static_cast<char>(0xF0 | (c >> 18));
+        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+    return out;
+}
+
+// Applies the queued edits to the active text field, in the order they were typed.
+void apply_edits(const std::vector<Panels::PromptEdit>& edits, ImGuiInputTextCallbackData* data) {
+    using Kind = Panels::PromptEdit::Kind;
+    for (const Panels::PromptEdit& e : edits) {
+        const int from = std::min(data->SelectionStart, data->SelectionEnd);
+        const int to = std::max(data->SelectionStart, data->SelectionEnd);
+        if (e.kind == Kind::SelectAll) {
+            data->SelectionStart = 0;
+            data->SelectionEnd = data->CursorPos = data->BufTextLen;
+            continue;
+        }
+        if (from != to) {
+            data->DeleteChars(from, to - from);  // the selection goes first
+            if (e.kind == Kind::Backspace) {
+                continue;
+            }
+        } else if (e.kind == Kind::Backspace && data->CursorPos > 0) {
+            int start = data->CursorPos - 1;  // back over UTF-8 continuation bytes
+            while (start > 0 && (static_cast<unsigned char>(data->Buf[start]) & 0xC0) == 0x80) {
+                --start;
+            }
+            data->DeleteChars(start, data->CursorPos - start);
+        }
+        if (e.kind == Kind::Char) {
+            data->InsertChars(data->CursorPos, utf8_of(e.c).c_str());
+        }
+    }
+}
+
 }  // namespace
 
 void Panels::ask_path(Prompt prompt, const std::filesystem::path& document) {
     prompt_ = prompt;
     prompt_fresh_ = true;
     place_cursor_ = true;
+    edits_.clear();
     path_ = prompt_start(document, prompt != Prompt::Open);
     folder_ = std::filesystem::path(prompt_start(document, false));
     candidates_.clear();
@@ -123,6 +173,10 @@ int Panels::on_prompt_input(ImGuiInputTextCallbackData* data) {
         // starts the same way every time: the cursor after the text, nothing selected.
         data->CursorPos = data->SelectionStart = data->SelectionEnd = data->BufTextLen;
         self->place_cursor_ = false;
+    }
+    if (data->EventFlag == ImGuiInputTextFlags_CallbackAlways) {
+        apply_edits(self->edits_, data);
+        self->edits_.clear();
     } else if (data->EventFlag == ImGuiInputTextFlags_CallbackCompletion) {
         const Completion c = complete_path(std::string(data->Buf, data->BufTextLen), self->folder_);
         self->candidates_ = c.candidates.size() > 1 ? c.candidates : std::vector<std::string>{};

@@ -65,6 +65,15 @@ public:
     /// (fast typists, xdotool).
     void submit_prompt() { submit_ = true; }
     void cancel_prompt() { cancel_ = true; }
+    /// An edit of the prompt's text as the window received it: a typed character, Backspace,
+    /// Ctrl+A. ImGui 1.86 samples keys once a frame, so on a slow document a press and its
+    /// release between two frames were lost (five Backspaces erased one); the window queues
+    /// every edit here instead, and the text field applies them all, in order, next frame.
+    struct PromptEdit {
+        enum class Kind { Char, Backspace, SelectAll } kind;
+        unsigned c = 0;  ///< Char: the code point
+    };
+    void edit_prompt(PromptEdit edit) { edits_.push_back(edit); }
 
     /// The status line's place during a long whole-mesh operation: "verb: 42% (3.1 s)" and a
     /// bar. Reads nothing of the document.
@@ -111,6 +120,7 @@ private:
     bool prompt_fresh_ = false;  ///< open the popup and focus the text field next frame
     bool place_cursor_ = false;  ///< put the cursor at the end, nothing selected
     bool submit_ = false, cancel_ = false;
+    std::vector<PromptEdit> edits_;  ///< not yet applied to the text field
     std::string path_;
     std::string shader_errors_;
     std::filesystem::path folder_;         ///< relative text is resolved against this

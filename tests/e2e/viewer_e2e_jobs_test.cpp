@@ -2,7 +2,8 @@
 /// End-to-end test of a long operation in a real window (issue 40): the 1.2M-face bunny
 /// (CGAL's bunny00 Loop-subdivided twice), D (simplify to half) running in the background
 /// while the view orbits, Esc (the document as it was), D again to the end, Ctrl+Z (the
-/// original, the camera where the user left it), and Save as to an absolute path.
+/// original, the camera where the user left it), and Save as to an absolute path, then with
+/// Backspaces and to a relative path, on a document whose frames are slow.
 
 #include "meshedit/core/subdivision.h"
 #include "support/demo_meshes.h"
@@ -89,6 +90,18 @@ TEST_F(JobsE2E, SimplifyRunsInTheBackgroundAndEscCancels) {
     ASSERT_TRUE(wait_until([&] { return fs::exists(saved); }, 60s)) << viewer->err();
     ASSERT_TRUE(window.wait_title("bunny_back.ply", false, 30s, &title)) << title;
     EXPECT_TRUE(same_mesh(load(saved), original));
+
+    // Save as again, the field starting at the document's path: eight Backspaces at once
+    // take "back.ply" away (none lost between two slow frames), "two.ply" is typed after.
+    const fs::path two = saved.parent_path() / "bunny_two.ply";
+    edit_prompt(window, "ctrl+shift+s", std::vector<std::string>(8, "BackSpace"), "two.ply");
+    ASSERT_TRUE(window.wait_title("bunny_two.ply", false, 60s, &title)) << title << viewer->err();
+    EXPECT_TRUE(fs::exists(two));
+    // A relative path is relative to the document's folder.
+    fs::create_directories(saved.parent_path() / "rel");
+    answer_prompt(window, "ctrl+shift+s", fs::path("rel/bunny_rel.ply"));
+    ASSERT_TRUE(window.wait_title("bunny_rel.ply", false, 60s, &title)) << title << viewer->err();
+    EXPECT_TRUE(fs::exists(saved.parent_path() / "rel" / "bunny_rel.ply"));
     window.key("ctrl+q");
     expect_exit(*viewer, 0);
 }

@@ -400,6 +400,17 @@ protected:
     /// and Return.
     void answer_prompt(const ViewerWindow& window, const std::string& key,
                        const std::optional<fs::path>& path) {
+        if (path) {
+            edit_prompt(window, key, {"ctrl+a"}, path->string());
+        } else {
+            edit_prompt(window, key, {}, "");
+        }
+    }
+
+    /// `key`, then (once its path prompt shows) `keys` pressed at once (say BackSpace ×5:
+    /// on a slow document they all arrive between two frames), `text` typed, and Return.
+    void edit_prompt(const ViewerWindow& window, const std::string& key,
+                     const std::vector<std::string>& keys, const std::string& text) {
         const fs::path before = logs_ / "before_prompt.png";
         ASSERT_TRUE(window.capture(before));
         window.key(key);
@@ -425,9 +436,11 @@ protected:
             20s, 100ms);
         ASSERT_TRUE(prompt_shown) << "no path prompt after " << key;
         sleep_for(300ms);  // the text field takes the focus one frame after the prompt shows
-        if (path) {
-            window.key("ctrl+a");
-            window.type(path->string());
+        if (!keys.empty()) {
+            window.keys(keys);
+        }
+        if (!text.empty()) {
+            window.type(text);
         }
         window.key("Return");
     }
