@@ -258,17 +258,6 @@ void App::start_modal() {
     modal_depth_ = c.z / c.w;
 }
 
-glm::dmat4 App::clip_of_world() const {
-    return glm::dmat4(camera_.projection(aspect())) * glm::dmat4(camera_.view());
-}
-
-Vec3 App::world_at(glm::dvec2 p, double ndc_z) const {
-    const glm::ivec2 size = framebuffer_size();
-    const glm::dvec4 ndc(2.0 * p.x / size.x - 1.0, 1.0 - 2.0 * p.y / size.y, ndc_z, 1.0);
-    const glm::dvec4 world = glm::inverse(clip_of_world()) * ndc;
-    return {world.x / world.w, world.y / world.w, world.z / world.w};
-}
-
 void App::update_modal() {
     display_.settle();  // the edit changes the mesh a picking tree may be built from
     const glm::dvec2 p(cursor_pixels());
@@ -517,6 +506,9 @@ void App::apply(const Outcome& outcome) {
     if (!outcome.message.empty()) {
         set_status(outcome.message, outcome.refused);
     }
+    if ((outcome.changes & kDisplay) != 0) {
+        hint_wireframe();
+    }
     if (help_hint_ && !outcome.refused && (outcome.changes & kDocument) != 0) {
         set_status(status_ + "; ? for help", false);
         help_hint_ = false;
@@ -629,33 +621,6 @@ void App::rebuild_overlay() {
 }
 
 // ----------------------------------------------------------------------------- camera
-
-glm::ivec2 App::framebuffer_size() const {
-    int w = 1, h = 1;
-    glfwGetFramebufferSize(window_, &w, &h);
-    return {std::max(w, 1), std::max(h, 1)};
-}
-
-float App::aspect() const {
-    const glm::ivec2 s = framebuffer_size();
-    return static_cast<float>(s.x) / static_cast<float>(s.y);
-}
-
-glm::vec2 App::cursor_pixels() const {
-    int ww = 1, wh = 1;
-    glfwGetWindowSize(window_, &ww, &wh);
-    const glm::ivec2 fb = framebuffer_size();
-    return {static_cast<float>(cursor_.x * fb.x / std::max(ww, 1)),
-            static_cast<float>(cursor_.y * fb.y / std::max(wh, 1))};
-}
-
-glm::vec3 App::unproject(glm::vec2 p, float ndc_z) const {
-    const glm::ivec2 size = framebuffer_size();
-    const glm::vec4 ndc(2.0f * (p.x + 0.5f) / static_cast<float>(size.x) - 1.0f,
-                        1.0f - 2.0f * (p.y + 0.5f) / static_cast<float>(size.y), ndc_z, 1.0f);
-    const glm::vec4 world = glm::inverse(camera_.projection(aspect()) * camera_.view()) * ndc;
-    return glm::vec3(world) / world.w;
-}
 
 // ---------------------------------------------------------------------------- dragging
 
@@ -773,39 +738,6 @@ void App::draw_frame() {
                            requests.hover->index != editor_.hover().index)) {
         editor_.set_hover(*requests.hover);
         rebuild_overlay();
-    }
-}
-
-void App::write_screenshot() {
-    // The 3D view the panels leave free (the whole window with the info panel hidden), without
-    // the hover highlight (it follows the mouse, not the document), 4× MSAA like the window.
-    // Its camera is the window's without the lens shift, at that part's aspect: the same
-    // picture, pixel for pixel, and the same as `meshedit render` at that size after Space.
-    const ElementRef hover = editor_.hover();
-    editor_.set_hover({});
-    rebuild_overlay();
-    editor_.set_hover(hover);
-    const glm::ivec2 size = framebuffer_size();
-    const int width = size.x - covered_pixels();
-    RenderTarget target(width, size.y, 4);
-    target.bind();
-    Camera free_part = camera_;
-    free_part.lens_shift_x = 0.0f;
-    scene_->draw(free_part, width, size.y, frame_options());
-    const Image image = target.read();
-    rebuild_overlay();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, size.x, size.y);
-    try {
-        const std::filesystem::path folder = pictures_folder();
-        std::filesystem::create_directories(folder);
-        const std::filesystem::path path = screenshot_path(folder, editor_.path());
-        write_png(image, path);
-        set_status("screenshot saved to " + path.string(), false);
-        std::printf("meshedit: screenshot %s\n", path.c_str());
-        std::fflush(stdout);
-    } catch (const std::exception& e) {
-        set_status(std::string("screenshot failed: ") + e.what(), true);
     }
 }
 

@@ -203,7 +203,13 @@ private:
     double job_drawn_ = 0.0;  ///< glfwGetTime() of the last progress frame of the operation
     double last_pick_ms_ = 0.0;
     bool quit_ = false;
-    bool help_hint_ = false;  ///< the first document opened says "? for help"
+    bool help_hint_ = false;       ///< the first document opened says "? for help"
+    bool wireframe_shown_ = true;  ///< the wireframe setting hint_wireframe() last saw
+    /// The median length on screen, in framebuffer pixels, of the mesh's edges at the
+    /// orbit target's depth (from a thousand of them) (app_shading.cpp).
+    double median_edge_pixels() const;
+    /// After the wireframe was turned on: says when its edges are too short to show.
+    void hint_wireframe();
 
     int press_button_ = 0;      ///< the button of the press a Pending drag started with
     bool press_shift_ = false;  ///< Shift was held: a click toggles, a drag pans

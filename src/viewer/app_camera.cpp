@@ -90,4 +90,42 @@ void App::update_camera_planes() {
     cursor_moved_ = true;
 }
 
+glm::dmat4 App::clip_of_world() const {
+    return glm::dmat4(camera_.projection(aspect())) * glm::dmat4(camera_.view());
+}
+
+Vec3 App::world_at(glm::dvec2 p, double ndc_z) const {
+    const glm::ivec2 size = framebuffer_size();
+    const glm::dvec4 ndc(2.0 * p.x / size.x - 1.0, 1.0 - 2.0 * p.y / size.y, ndc_z, 1.0);
+    const glm::dvec4 world = glm::inverse(clip_of_world()) * ndc;
+    return {world.x / world.w, world.y / world.w, world.z / world.w};
+}
+
+glm::ivec2 App::framebuffer_size() const {
+    int w = 1, h = 1;
+    glfwGetFramebufferSize(window_, &w, &h);
+    return {std::max(w, 1), std::max(h, 1)};
+}
+
+float App::aspect() const {
+    const glm::ivec2 s = framebuffer_size();
+    return static_cast<float>(s.x) / static_cast<float>(s.y);
+}
+
+glm::vec2 App::cursor_pixels() const {
+    int ww = 1, wh = 1;
+    glfwGetWindowSize(window_, &ww, &wh);
+    const glm::ivec2 fb = framebuffer_size();
+    return {static_cast<float>(cursor_.x * fb.x / std::max(ww, 1)),
+            static_cast<float>(cursor_.y * fb.y / std::max(wh, 1))};
+}
+
+glm::vec3 App::unproject(glm::vec2 p, float ndc_z) const {
+    const glm::ivec2 size = framebuffer_size();
+    const glm::vec4 ndc(2.0f * (p.x + 0.5f) / static_cast<float>(size.x) - 1.0f,
+                        1.0f - 2.0f * (p.y + 0.5f) / static_cast<float>(size.y), ndc_z, 1.0f);
+    const glm::vec4 world = glm::inverse(camera_.projection(aspect()) * camera_.view()) * ndc;
+    return glm::vec3(world) / world.w;
+}
+
 }  // namespace meshedit::viewer

@@ -1,20 +1,26 @@
-// Shading 7's environment, the user's shaders (modes 8, 9; Ctrl+R), and the scalar field on
-// screen (Alt+F, core/fields.h): recomputed
-// whenever the mesh, the selection (distance's source) or the field's settings change, and handed
-// to the mesh renderer as colours.
+// Shading 7's environment, the user's shaders (modes 8, 9; Ctrl+R), the scalar field on
+// screen (Alt+F, core/fields.h): recomputed whenever the mesh, the selection (distance's
+// source) or the field's settings change, and handed to the mesh renderer as colours; the
+// wireframe's hint; screenshots (P).
 
 #include "app.h"
 
-#include <cctype>
-#include <cstdio>
-#include <vector>
-
+#include <GL/glcorearb.h>
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "meshedit/files/io_error.h"
 #include "meshedit/render/environment.h"
+#include "meshedit/render/image.h"
 #include "meshedit/render/user_shaders.h"
+#include "meshedit/viewer/paths.h"
 
 namespace meshedit::viewer {
 
@@ -114,6 +120,87 @@ void App::refresh_field(bool upload) {
     if (recomputed || upload) {
         scene_->mesh().set_field(view.field->site, field.values, field.coloring);
         redraw_frames_ = kSettleFrames;
+    }
+}
+
+double App::median_edge_pixels() const {
+    const Mesh& mesh = editor_.mesh();
+    if (mesh.n_edges() == 0) {
+        return 0.0;
+    }
+    // A thousand edges spread over the numbering are enough for a median.
+    std::vector<double> lengths;
+    const std::size_t n = mesh.edges_size();
+    const std::size_t step = std::max<std::size_t>(1, n / 1000);
+    for (std::size_t i = 0; i < n; i += step) {
+        const Edge e(static_cast<std::uint32_t>(i));
+        if (!mesh.is_deleted(e)) {
+            const Halfedge h = Mesh::halfedge(e, 0);
+            lengths.push_back(
+                norm(mesh.position(mesh.to_vertex(h)) - mesh.position(mesh.from_vertex(h))));
+        }
+    }
+    if (lengths.empty()) {
+        return 0.0;
+    }
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    const double world_height =
+        camera_.orthographic
+            ? camera_.ortho_height
+            : 2.0 * camera_.distance * std::tan(camera_.fov_y_deg * 3.14159265358979 / 360.0);
+    return lengths[lengths.size() / 2] * framebuffer_size().y / world_height;
+}
+
+void App::hint_wireframe() {
+    const bool shown = editor_.view().render.wireframe;
+    if (shown == wireframe_shown_) {
+        return;
+    }
+    wireframe_shown_ = shown;
+    // The wire fades out where triangles are under a few pixels (mesh.frag): on a dense mesh
+    // at the opening zoom, W then seems to do nothing (issue 40). Say so.
+    if (shown && mesh_mode()) {
+        if (const double px = median_edge_pixels(); px > 0.0 && px < 3.0) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          "wireframe on — at this zoom its edges are %.1f px long and fade out "
+                          "below 3 px: zoom in to see them",
+                          px);
+            set_status(text, false);
+        }
+    }
+}
+
+void App::write_screenshot() {
+    // The 3D view the panels leave free (the whole window with the info panel hidden), without
+    // the hover highlight (it follows the mouse, not the document), 4× MSAA like the window.
+    // Its camera is the window's without the lens shift, at that part's aspect: the same
+    // picture, pixel for pixel, and the same as `meshedit render` at that size after Space.
+    const ElementRef hover = editor_.hover();
+    editor_.set_hover({});
+    rebuild_overlay();
+    editor_.set_hover(hover);
+    const glm::ivec2 size = framebuffer_size();
+    const int width = size.x - covered_pixels();
+    RenderTarget target(width, size.y, 4);
+    target.bind();
+    Camera free_part = camera_;
+    free_part.lens_shift_x = 0.0f;
+    scene_->draw(free_part, width, size.y, frame_options());
+    const Image image = target.read();
+    rebuild_overlay();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, size.x, size.y);
+    try {
+        const std::filesystem::path folder = pictures_folder();
+        std::filesystem::create_directories(folder);
+        const std::filesystem::path path = screenshot_path(folder, editor_.path());
+        write_png(image, path);
+        set_status("screenshot saved to " + path.string(), false);
+        std::printf("meshedit: screenshot %s\n", path.c_str());
+        std::fflush(stdout);
+    } catch (const std::exception& e) {
+        set_status(std::string("screenshot failed: ") + e.what(), true);
     }
 }
 
