@@ -20,13 +20,51 @@ const char* kind_name(DocumentKind kind) {
     return "";
 }
 
+namespace {
+
+// The documents that are not meshes.
+constexpr const char* kPatchesExtension = ".bez";
+constexpr const char* kCurveExtension = ".bzc";
+
+}  // namespace
+
 bool is_document_extension(const std::string& extension) {
-    return is_mesh_extension(extension) || extension == ".bez" || extension == ".bzc";
+    return is_mesh_extension(extension) || extension == kPatchesExtension ||
+           extension == kCurveExtension;
 }
 
 const char* document_extensions() {
-    static const std::string text = mesh_extension_list(", ") + ", .bez or .bzc";
+    static const std::string text =
+        mesh_extension_list(", ") + ", " + kPatchesExtension + " or " + kCurveExtension;
     return text.c_str();
+}
+
+std::vector<std::string> document_extension_list() {
+    std::vector<std::string> out;
+    for (const MeshFormat& format : mesh_formats()) {
+        if (format.read != nullptr) {
+            out.emplace_back(format.extension);
+        }
+    }
+    out.emplace_back(kPatchesExtension);
+    out.emplace_back(kCurveExtension);
+    return out;
+}
+
+std::vector<std::string> writable_extensions(DocumentKind kind) {
+    std::vector<std::string> out;
+    if (kind == DocumentKind::Curve) {
+        return {kCurveExtension};
+    }
+    if (kind == DocumentKind::Surface) {
+        out.emplace_back(kPatchesExtension);
+    }
+    for (const MeshFormat& format : mesh_formats()) {
+        if (format.write != nullptr) {
+            out.emplace_back(format.extension);
+        }
+    }
+    return out;
 }
 
 LoadedDocument read_document(const std::filesystem::path& path, const ReadOptions& options) {

@@ -94,14 +94,15 @@ App::App(const ViewerOptions& options) {
         ++app_of(w).view_events_;
         app_of(w).on_key(key, action, mods);
     });
+    glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned codepoint) {
+        if (app_of(w).panels_.prompting()) {
+            app_of(w).panels_.prompt_char(codepoint);
+            app_of(w).redraw_frames_ = kSettleFrames;
+        }
+    });
     glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int mods) {
         ++app_of(w).view_events_;
         app_of(w).on_mouse_button(button, action, mods);
-    });
-    glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned c) {
-        if (App& app = app_of(w); app.panels_.prompting()) {
-            app.panels_.edit_prompt({Panels::PromptEdit::Kind::Char, c});
-        }
     });
     glfwSetCursorPosCallback(window_,
                              [](GLFWwindow* w, double x, double y) { app_of(w).on_cursor(x, y); });
@@ -219,15 +220,8 @@ void App::on_key(int key, int action, int mods) {
     display_.settle();  // the editor may change the mesh the picking tree is built from
     redraw_frames_ = kSettleFrames;
     if (panels_.prompting()) {
-        using Edit = Panels::PromptEdit;
-        if (action == GLFW_PRESS && (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)) {
-            panels_.submit_prompt();
-        } else if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) {
-            panels_.cancel_prompt();
-        } else if (action != GLFW_RELEASE && key == GLFW_KEY_BACKSPACE) {
-            panels_.edit_prompt({Edit::Kind::Backspace});
-        } else if (action == GLFW_PRESS && key == GLFW_KEY_A && (mods & GLFW_MOD_CONTROL) != 0) {
-            panels_.edit_prompt({Edit::Kind::SelectAll});
+        if (action != GLFW_RELEASE) {
+            panels_.prompt_key(key, mods);  // every press and repeat, however slow the frames
         }
         return;
     }
@@ -569,15 +563,16 @@ void App::apply(const Outcome& outcome) {
         write_screenshot();
     }
     if (c & kAskSavePath) {
-        panels_.ask_path(Panels::Prompt::SaveAs, editor_.path());
+        panels_.ask_path(ChooserPurpose::SaveAs, editor_.path(), editor_.mode());
     }
     if (c & kAskSessionPath) {
         std::filesystem::path session = editor_.path();
-        panels_.ask_path(Panels::Prompt::ExportSession,
-                         session.empty() ? session : session.replace_extension(".ops"));
+        panels_.ask_path(ChooserPurpose::ExportSession,
+                         session.empty() ? session : session.replace_extension(kSessionExtension),
+                         editor_.mode());
     }
     if (c & kAskOpenPath) {
-        panels_.ask_path(Panels::Prompt::Open, editor_.path());
+        panels_.ask_path(ChooserPurpose::Open, editor_.path(), editor_.mode());
     }
     applied_revision_ = editor_.document().revision;
     if (c & kQuit) {
@@ -674,14 +669,6 @@ void App::draw_frame() {
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
-    if (panels_.prompting()) {
-        // The prompt's text is edited from the queue the window filled (Panels::edit_prompt),
-        // where no key is lost; ImGui must not apply these keys a second time.
-        ImGuiIO& io = ImGui::GetIO();
-        io.KeysDown[GLFW_KEY_BACKSPACE] = false;
-        io.KeysDown[GLFW_KEY_A] = false;
-        io.InputQueueCharacters.resize(0);
-    }
     ImGui::NewFrame();
     if (still) {
         still_.draw_behind_panels();

@@ -1,14 +1,12 @@
 #include "panels.h"
 
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cstdio>
 
 #include "meshedit/io/io.h"
 #include "meshedit/overlay/shading.h"
-#include "meshedit/viewer/paths.h"
 
 namespace meshedit::viewer {
 
@@ -105,86 +103,7 @@ void draw_trait_choice(TraitQuery& trait, PanelRequests& requests) {
     }
 }
 
-std::string utf8_of(unsigned c) {
-    std::string out;
-    if (c < 0x80) {
-        out += static_cast<char>(c);
-    } else if (c < 0x800) {
-        out += static_cast<char>(0xC0 | (c >> 6));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-        out += static_cast<char>(0xE0 | (c >> 12));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    } else if (c < 0x110000) {
-        out += static_cast<char>(0xF0 | (c >> 18));
-        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    }
-    return out;
-}
-
-// Applies the queued edits to the active text field, in the order they were typed.
-void apply_edits(const std::vector<Panels::PromptEdit>& edits, ImGuiInputTextCallbackData* data) {
-    using Kind = Panels::PromptEdit::Kind;
-    for (const Panels::PromptEdit& e : edits) {
-        const int from = std::min(data->SelectionStart, data->SelectionEnd);
-        const int to = std::max(data->SelectionStart, data->SelectionEnd);
-        if (e.kind == Kind::SelectAll) {
-            data->SelectionStart = 0;
-            data->SelectionEnd = data->CursorPos = data->BufTextLen;
-            continue;
-        }
-        if (from != to) {
-            data->DeleteChars(from, to - from);  // the selection goes first
-            if (e.kind == Kind::Backspace) {
-                continue;
-            }
-        } else if (e.kind == Kind::Backspace && data->CursorPos > 0) {
-            int start = data->CursorPos - 1;  // back over UTF-8 continuation bytes
-            while (start > 0 && (static_cast<unsigned char>(data->Buf[start]) & 0xC0) == 0x80) {
-                --start;
-            }
-            data->DeleteChars(start, data->CursorPos - start);
-        }
-        if (e.kind == Kind::Char) {
-            data->InsertChars(data->CursorPos, utf8_of(e.c).c_str());
-        }
-    }
-}
-
 }  // namespace
-
-void Panels::ask_path(Prompt prompt, const std::filesystem::path& document) {
-    prompt_ = prompt;
-    prompt_fresh_ = true;
-    place_cursor_ = true;
-    edits_.clear();
-    path_ = prompt_start(document, prompt != Prompt::Open);
-    folder_ = std::filesystem::path(prompt_start(document, false));
-    candidates_.clear();
-}
-
-int Panels::on_prompt_input(ImGuiInputTextCallbackData* data) {
-    auto* self = static_cast<Panels*>(data->UserData);
-    if (data->EventFlag == ImGuiInputTextFlags_CallbackAlways && self->place_cursor_) {
-        // Whatever ImGui did on activation (it selects all on the first focus), the field
-        // starts the same way every time: the cursor after the text, nothing selected.
-        data->CursorPos = data->SelectionStart = data->SelectionEnd = data->BufTextLen;
-        self->place_cursor_ = false;
-    }
-    if (data->EventFlag == ImGuiInputTextFlags_CallbackAlways) {
-        apply_edits(self->edits_, data);
-        self->edits_.clear();
-    } else if (data->EventFlag == ImGuiInputTextFlags_CallbackCompletion) {
-        const Completion c = complete_path(std::string(data->Buf, data->BufTextLen), self->folder_);
-        self->candidates_ = c.candidates.size() > 1 ? c.candidates : std::vector<std::string>{};
-        data->DeleteChars(0, data->BufTextLen);
-        data->InsertChars(0, c.text.c_str());
-    }
-    return 0;
-}
 
 bool Panels::contains(glm::vec2 point) const {
     return std::any_of(rects_.begin(), rects_.end(), [&](const auto& r) {
@@ -625,71 +544,6 @@ void Panels::draw_status(const Editor& editor, const std::string& status, bool s
     }
     remember_rect();
     ImGui::End();
-}
-
-void Panels::draw_prompt(PanelRequests& requests) {
-    if (prompt_ == Prompt::None) {
-        return;
-    }
-    const char* title = prompt_ == Prompt::SaveAs          ? "Save as"
-                        : prompt_ == Prompt::ExportSession ? "Export session"
-                                                           : "Open";
-    if (prompt_fresh_) {
-        ImGui::OpenPopup(title);
-    }
-    const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(viewport->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const std::string formats = mesh_extension_list(" ");
-        const std::string text =
-            prompt_ == Prompt::SaveAs ? "File name (" + formats + " for meshes, .bzc for curves):"
-            : prompt_ == Prompt::ExportSession
-                ? "Session file (meshedit convert IN OUT --ops @FILE replays it):"
-                : "File to open (" + formats + " .bez .bzc):";
-        ImGui::TextUnformatted(text.c_str());
-        if (prompt_fresh_) {
-            ImGui::SetKeyboardFocusHere();
-            prompt_fresh_ = false;
-        }
-        ImGui::SetNextItemWidth(520);
-        const bool entered = ImGui::InputText("##path", &path_,
-                                              ImGuiInputTextFlags_EnterReturnsTrue |
-                                                  ImGuiInputTextFlags_CallbackAlways |
-                                                  ImGuiInputTextFlags_CallbackCompletion,
-                                              &Panels::on_prompt_input, this);
-        if (!candidates_.empty()) {
-            std::string shown;
-            for (std::size_t i = 0; i < candidates_.size() && i < 12; ++i) {
-                shown += (i ? "   " : "") + candidates_[i];
-            }
-            if (candidates_.size() > 12) {
-                shown += "   … (" + std::to_string(candidates_.size()) + ")";
-            }
-            ImGui::TextDisabled("%s", shown.c_str());
-        }
-        ImGui::TextDisabled("Tab completes a name; ~ is your home folder");
-        const bool ok = ImGui::Button(prompt_ == Prompt::SaveAs          ? "Save"
-                                      : prompt_ == Prompt::ExportSession ? "Export"
-                                                                         : "Open") ||
-                        submit_;
-        ImGui::SameLine();
-        const bool cancel = ImGui::Button("Cancel") || cancel_;
-        submit_ = cancel_ = false;
-        if ((entered || ok) && !path_.empty()) {
-            (prompt_ == Prompt::SaveAs          ? requests.save_as
-             : prompt_ == Prompt::ExportSession ? requests.export_session
-                                                : requests.open) =
-                resolve_prompt_path(path_, folder_);
-            prompt_ = Prompt::None;
-            ImGui::CloseCurrentPopup();
-        } else if (cancel) {
-            prompt_ = Prompt::None;
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::EndPopup();
-    } else if (!prompt_fresh_) {
-        prompt_ = Prompt::None;
-    }
 }
 
 }  // namespace meshedit::viewer

@@ -1,7 +1,7 @@
 #pragma once
 // Private: the Dear ImGui panels of the viewer — info (selection, statistics, shading
-// options), help overlay (from the binding table), status line and the path prompt for
-// "save as" and "open". Reads the Editor, changes only its ViewState.
+// options), help overlay (from the binding table), status line and the file chooser of
+// open, save as and export session. Reads the Editor, changes only its ViewState.
 
 #include <cstddef>
 #include <filesystem>
@@ -12,12 +12,11 @@
 
 #include <glm/glm.hpp>
 
-struct ImGuiInputTextCallbackData;
-
 #include "meshedit/overlay/camera.h"
 #include "meshedit/overlay/display_data.h"
 #include "meshedit/overlay/overlay.h"
 #include "meshedit/viewer/editor.h"
+#include "meshedit/viewer/file_chooser.h"
 
 namespace meshedit::viewer {
 
@@ -53,27 +52,16 @@ void draw_labels(const std::vector<OverlayBatch::Label>& labels, const Camera& c
 
 class Panels {
 public:
-    enum class Prompt { None, SaveAs, Open, ExportSession };
-
-    /// Shows the path prompt (a small modal) for the document at `document`: open starts at
-    /// its folder, save as at its path (paths.h); the cursor always starts at the end, Tab
-    /// completes, and the text is resolved against the starting folder.
-    void ask_path(Prompt prompt, const std::filesystem::path& document);
-    bool prompting() const { return prompt_ != Prompt::None; }
-    /// Return / Esc pressed while prompting. The window forwards them because ImGui 1.86
-    /// polls key state once per frame and misses a press and release within one frame
-    /// (fast typists, xdotool).
-    void submit_prompt() { submit_ = true; }
-    void cancel_prompt() { cancel_ = true; }
-    /// An edit of the prompt's text as the window received it: a typed character, Backspace,
-    /// Ctrl+A. ImGui 1.86 samples keys once a frame, so on a slow document a press and its
-    /// release between two frames were lost (five Backspaces erased one); the window queues
-    /// every edit here instead, and the text field applies them all, in order, next frame.
-    struct PromptEdit {
-        enum class Kind { Char, Backspace, SelectAll } kind;
-        unsigned c = 0;  ///< Char: the code point
-    };
-    void edit_prompt(PromptEdit edit) { edits_.push_back(edit); }
+    /// Shows the file chooser (panel_chooser.cpp, file_chooser.h) for the document at
+    /// `document`, a `mode` document: it lists the document's folder (the current one when
+    /// there is none), the field holds the suggested name (the document's, for the saves).
+    void ask_path(ChooserPurpose purpose, const std::filesystem::path& document, Mode mode);
+    bool prompting() const { return prompting_; }
+    /// A key pressed (or repeated) and a character typed while the chooser shows, straight
+    /// from the GLFW callbacks: the chooser queues them and applies all of them in the next
+    /// frame, where ImGui 1.86 would see one Backspace a frame.
+    void prompt_key(int glfw_key, int mods);
+    void prompt_char(unsigned codepoint);
 
     /// The status line's place during a long whole-mesh operation: "verb: 42% (3.1 s)" and a
     /// bar. Reads nothing of the document.
@@ -116,16 +104,11 @@ private:
     float scale_ = 1.0f;
     float info_left_ = 0.0f, info_right_ = 0.0f;          ///< last drawn edges; right 0 until drawn
     std::vector<std::pair<glm::vec2, glm::vec2>> rects_;  ///< min, max of last frame's panels
-    Prompt prompt_ = Prompt::None;
-    bool prompt_fresh_ = false;  ///< open the popup and focus the text field next frame
-    bool place_cursor_ = false;  ///< put the cursor at the end, nothing selected
-    bool submit_ = false, cancel_ = false;
-    std::vector<PromptEdit> edits_;  ///< not yet applied to the text field
-    std::string path_;
+    bool prompting_ = false;
+    bool prompt_fresh_ = false;   ///< open the popup next frame
+    bool scroll_to_row_ = false;  ///< Up/Down moved the highlighted row
+    FileChooser chooser_;
     std::string shader_errors_;
-    std::filesystem::path folder_;         ///< relative text is resolved against this
-    std::vector<std::string> candidates_;  ///< names Tab found, when there were several
-    static int on_prompt_input(ImGuiInputTextCallbackData* data);
 };
 
 }  // namespace meshedit::viewer

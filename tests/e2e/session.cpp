@@ -358,8 +358,8 @@ bool ViewerWindow::wait_title(const std::string& text, bool absent, Seconds time
     return ok;
 }
 
-void ViewerWindow::keys(const std::vector<std::string>& keys) const {
-    std::vector<std::string> args = {"key", "--delay", "40"};
+void ViewerWindow::keys(const std::vector<std::string>& keys, int delay_ms) const {
+    std::vector<std::string> args = {"key", "--delay", std::to_string(delay_ms)};
     args.insert(args.end(), keys.begin(), keys.end());
     xdotool(args);
 }

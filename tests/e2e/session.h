@@ -112,8 +112,8 @@ public:
     bool wait_title(const std::string& text, bool absent = false,
                     Seconds timeout = std::chrono::seconds(20), std::string* last = nullptr) const;
 
-    /// `xdotool key KEYS…` (e.g. "f", "ctrl+s", "Escape").
-    void keys(const std::vector<std::string>& keys) const;
+    /// `xdotool key KEYS…` (e.g. "f", "ctrl+s", "Escape"), `delay_ms` apart.
+    void keys(const std::vector<std::string>& keys, int delay_ms = 40) const;
     void key(const std::string& key) const { keys({key}); }
     /// Types text into the focused widget.
     void type(const std::string& text) const;

@@ -91,10 +91,12 @@ TEST_F(JobsE2E, SimplifyRunsInTheBackgroundAndEscCancels) {
     ASSERT_TRUE(window.wait_title("bunny_back.ply", false, 30s, &title)) << title;
     EXPECT_TRUE(same_mesh(load(saved), original));
 
-    // Save as again, the field starting at the document's path: eight Backspaces at once
-    // take "back.ply" away (none lost between two slow frames), "two.ply" is typed after.
+    // Save as again, the field starting with the document's name: End, then eight Backspaces
+    // at once take "back.ply" away (none lost between two slow frames), "two.ply" is typed.
     const fs::path two = saved.parent_path() / "bunny_two.ply";
-    edit_prompt(window, "ctrl+shift+s", std::vector<std::string>(8, "BackSpace"), "two.ply");
+    std::vector<std::string> keys{"End"};
+    keys.insert(keys.end(), 8, "BackSpace");
+    edit_prompt(window, "ctrl+shift+s", keys, "two.ply");
     ASSERT_TRUE(window.wait_title("bunny_two.ply", false, 60s, &title)) << title << viewer->err();
     EXPECT_TRUE(fs::exists(two));
     // A relative path is relative to the document's folder.

@@ -390,27 +390,38 @@ protected:
         ASSERT_TRUE(window->wait_title(" *", false, 20s, &title)) << title << "\n" << viewer->err();
     }
 
-    /// Ctrl+O, then (once the prompt shows) its text replaced by `path`, and Return.
+    /// Ctrl+O, then (once the chooser shows) its field replaced by `path`, and Return.
     void open_through_prompt(const ViewerWindow& window, const fs::path& path) {
         answer_prompt(window, "ctrl+o", path);
     }
 
-    /// `key` (Ctrl+O, Ctrl+Shift+S, Ctrl+Shift+E), then (once its path prompt shows) the
-    /// prompt's text replaced by `path` — or, without one, the path the prompt suggests kept —
+    /// `key` (Ctrl+O, Ctrl+Shift+S, Ctrl+Shift+E), then (once its file chooser shows) the
+    /// field's text replaced by `path` — or, without one, the name the chooser suggests kept —
     /// and Return.
     void answer_prompt(const ViewerWindow& window, const std::string& key,
                        const std::optional<fs::path>& path) {
+        ASSERT_NO_FATAL_FAILURE(show_chooser(window, key));
         if (path) {
-            edit_prompt(window, key, {"ctrl+a"}, path->string());
-        } else {
-            edit_prompt(window, key, {}, "");
+            window.key("ctrl+a");
+            window.type(path->string());
         }
+        window.key("Return");
     }
 
-    /// `key`, then (once its path prompt shows) `keys` pressed at once (say BackSpace ×5:
-    /// on a slow document they all arrive between two frames), `text` typed, and Return.
+    /// `key`, then (once its file chooser shows) `keys` pressed at once (say End and
+    /// BackSpace ×8: on a slow document they all arrive between two frames), `text` typed,
+    /// and Return.
     void edit_prompt(const ViewerWindow& window, const std::string& key,
                      const std::vector<std::string>& keys, const std::string& text) {
+        ASSERT_NO_FATAL_FAILURE(show_chooser(window, key));
+        window.keys(keys);
+        window.type(text);
+        window.key("Return");
+    }
+
+    /// `key`, then waits until the file chooser covers much of the window. The chooser takes
+    /// every key from then on, however slow the frames (file_chooser.h).
+    void show_chooser(const ViewerWindow& window, const std::string& key) {
         const fs::path before = logs_ / "before_prompt.png";
         ASSERT_TRUE(window.capture(before));
         window.key(key);
@@ -434,15 +445,7 @@ protected:
                 return changed > 1000;
             },
             20s, 100ms);
-        ASSERT_TRUE(prompt_shown) << "no path prompt after " << key;
-        sleep_for(300ms);  // the text field takes the focus one frame after the prompt shows
-        if (!keys.empty()) {
-            window.keys(keys);
-        }
-        if (!text.empty()) {
-            window.type(text);
-        }
-        window.key("Return");
+        ASSERT_TRUE(prompt_shown) << "no file chooser after " << key;
     }
 
     /// The viewer exits with `code` within a few seconds.

@@ -5,6 +5,7 @@
 /// write every writer goes through. Errors are IoErrors naming the file (io_error.h).
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -16,6 +17,10 @@ namespace meshedit {
 
 /// The extension of `path`, lower-cased, with its dot (".dae"); empty if none.
 std::string file_extension(const std::filesystem::path& path);
+
+/// Appends Unicode code point `codepoint` to `out` in UTF-8 (the encoding of every text the
+/// programs keep: XML read from UTF-16, characters typed into the viewer).
+void append_utf8(std::string& out, std::uint32_t codepoint);
 
 /// The whole file as bytes, read once into a buffer sized from the file (big buffers in huge
 /// pages, see core/memory.h); `/proc`-style files that report no size are read in growing

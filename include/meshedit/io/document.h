@@ -54,4 +54,10 @@ bool is_document_extension(const std::string& extension);
 /// ".dae, .gltf, .glb, .obj, .off, .ply, .stl, .bez or .bzc", for messages.
 const char* document_extensions();
 
+/// Every extension read_document() opens, in the order messages list them.
+std::vector<std::string> document_extension_list();
+/// The extensions a document of `kind` is written as: a mesh as any of mesh_formats() that
+/// has a writer, patches as .bez (or their tessellation as a mesh), a curve as .bzc.
+std::vector<std::string> writable_extensions(DocumentKind kind);
+
 }  // namespace meshedit

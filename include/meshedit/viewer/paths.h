@@ -1,8 +1,8 @@
 #pragma once
 /// \file
-/// The viewer's paths, without a window: the open and save-as prompts (what the field starts
-/// with, what a typed text names, Tab completion) and where screenshots go. The window
-/// (src/viewer/panels.cpp, app.cpp) calls these; tests call them directly.
+/// The viewer's paths, without a window: the file chooser's (the folder it starts in, what a
+/// typed text names, Tab completion; file_chooser.h) and where screenshots go. Tests call
+/// them directly.
 
 #include <filesystem>
 #include <string>
