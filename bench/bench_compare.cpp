@@ -10,6 +10,8 @@
 //   bench_compare --job compare_torus_1m_renumbered|compare_torus_1m_moved --impl meshedit
 //                 [--runs N]
 //   bench_compare --list
+//   bench_compare --write DIR    writes DIR/torus_1m.ply and DIR/torus_1m_renumbered.ply, to
+//                                time `meshedit compare` on the files (docs/cli.md)
 //
 // The copy is made untimed; the timed part is match_topology() and measure_deviation().
 
@@ -20,11 +22,19 @@
 #include "bench_util.h"
 #include "meshedit/core/compare.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/io/io.h"
 #include "support/renumber.h"
 
 namespace mb = meshedit::bench;
 
 int main(int argc, char** argv) {
+    if (argc == 3 && std::string(argv[1]) == "--write") {
+        const meshedit::Mesh a = meshedit::shapes::torus(1000, 500);
+        const std::filesystem::path dir = argv[2];
+        meshedit::write_mesh(a, dir / "torus_1m.ply");
+        meshedit::write_mesh(meshedit::test::renumbered(a, 36), dir / "torus_1m_renumbered.ply");
+        return 0;
+    }
     const std::vector<std::string> names{"compare_torus_1m_moved", "compare_torus_1m_renumbered"};
     const std::string impls[] = {"meshedit"};
     mb::JobArgs args;
