@@ -76,7 +76,7 @@ test-clang:
 # stays under about 25 minutes on 2 cores. run_bench.py first waits for the build's load to
 # settle and refuses a busy machine; BENCH_FLAGS=--allow-busy measures anyway (marked).
 BENCH_TARGETS ?= bench_bandwidth bench_loop bench_ops bench_io_draw bench_build bench_local_ops bench_catmark bench_simplify bench_remesh bench_editor bench_selection\
-	meshedit_python
+	bench_compare meshedit_python
 BENCH_BUDGET  ?= 1500
 BENCH_FLAGS   ?=
 bench:

@@ -53,6 +53,11 @@ JOB_TITLES = {
        "faces in one pairing bucket; 333 s for 1M before issue 14)" for n in BUILD_SIZES},
     **{f"build_polygon_{n}": f"Build one polygon of {n} corners (the repeated-corner check; "
        "208 s for 1M before issue 14)" for n in BUILD_SIZES},
+    "compare_torus_1m_renumbered": "`meshedit compare`'s library call (match_topology() and "
+    "measure_deviation()) on the 1M-triangle torus and a renumbered copy (vertices and faces "
+    "shuffled, first corners rotated) at the same positions",
+    "compare_torus_1m_moved": "The same with the copy moved by 0.001: the match starts from "
+    "signatures, not positions, and the Hausdorff distance is sampled through two trees",
     "dissolves_collapses_1e6_quad100k": "1,000,000 random dissolves and collapses "
     "(dissolve_edge, dissolve_vertex, collapse, collapse_face) on the 100k-face quad-dominant "
     "torus; a fresh copy, untimed, whenever it falls below half its faces",

@@ -66,7 +66,8 @@ def ratio_info(rows):
 # Programs whose every row is MeshEdit's (or, for bench_bandwidth, the machine's bound at
 # both thread counts), and bench_python's MeshEdit impls; elsewhere the impl says (meshedit,
 # meshedit_*). "all" is one process measuring several rows (draw, pick).
-MESHEDIT_PROGRAMS = ("bench_bandwidth", "bench_build", "bench_local_ops", "bench_editor")
+MESHEDIT_PROGRAMS = ("bench_bandwidth", "bench_build", "bench_local_ops", "bench_editor",
+                     "bench_compare")
 MESHEDIT_PYTHON_IMPLS = ("meshedit", "view", "copy", "python_calls", "one_apply")
 
 

@@ -64,6 +64,8 @@ DEFAULT_CONFIGS = {
         (f"build_{shape}_{size}", "meshedit")
         for shape in ("fan_hub_first", "polygon") for size in ("100k", "300k", "1m")
     ] + [("build_torus_1m", "meshedit")],
+    "bench_compare": [(job, "meshedit") for job in ("compare_torus_1m_renumbered",
+                                                    "compare_torus_1m_moved")],
     "bench_local_ops": [("dissolves_collapses_1e6_quad100k", "meshedit")]
     + [(f"local_ops_mix_{size}", "meshedit") for size in ("10k", "100k", "1m", "4m")]
     + [(f"local_ops_window_{size}", "meshedit") for size in ("10k", "100k", "1m", "4m")]
@@ -85,7 +87,7 @@ DEFAULT_CONFIGS = {
 }
 PROGRAMS = ["bench_bandwidth", "bench_loop", "bench_catmark", "bench_simplify", "bench_remesh",
             "bench_ops", "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor",
-            "bench_selection", "bench_python"]
+            "bench_selection", "bench_compare", "bench_python"]
 # The warm protocol (bench_util.h, `--warm`): the same configurations again with every
 # implementation reusing its memory across repetitions, so algorithm cost shows apart from
 # page-fault cost. Reported under the job's name + "_warm"; the targets are checked on both.

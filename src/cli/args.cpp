@@ -25,6 +25,10 @@ std::string readable_number(double x) {
     return text;
 }
 
+void print_row(const std::string& key, const std::string& value) {
+    std::printf("%-22s %s\n", (key + ":").c_str(), value.c_str());
+}
+
 void print_notice(const std::string& text) {
     std::fprintf(stderr, "meshedit: note: %s\n", text.c_str());
 }

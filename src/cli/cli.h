@@ -32,6 +32,9 @@ using command_line::UsageError;
 std::string readable_number(double x);
 std::string format_number(double x);
 
+/// One "key:  value" line of a text report, the values aligned in one column.
+void print_row(const std::string& key, const std::string& value);
+
 /// Prints a notice on stderr as "meshedit: note: <text>".
 void print_notice(const std::string& text);
 
@@ -66,5 +69,6 @@ Command add_remesh(CLI::App& meshedit);
 Command add_repair(CLI::App& meshedit);
 Command add_check(CLI::App& meshedit);
 Command add_eval(CLI::App& meshedit);
+Command add_compare(CLI::App& meshedit);
 
 }  // namespace meshedit::cli

@@ -106,10 +106,6 @@ std::string bbox_text(const BoundingBox& box, int dims) {
     return point(box.min) + " .. " + point(box.max);
 }
 
-void print_row(const std::string& key, const std::string& value) {
-    std::printf("%-22s %s\n", (key + ":").c_str(), value.c_str());
-}
-
 int info_curve(const std::filesystem::path& path, const BezierCurve& curve, bool json) {
     BoundingBox box;
     for (const Vec3& p : curve.control_points) {

@@ -24,8 +24,8 @@ namespace {
 
 // The commands run_builtin() runs (it registers one of each); any other name is a
 // meshedit-COMMAND beside this executable, or a file to view.
-constexpr std::array<std::string_view, 8> kBuiltins{"info",   "convert", "subdivide", "simplify",
-                                                    "remesh", "repair",  "check",     "eval"};
+constexpr std::array<std::string_view, 9> kBuiltins{
+    "info", "convert", "subdivide", "simplify", "remesh", "repair", "check", "eval", "compare"};
 
 using namespace meshedit::cli;
 
@@ -85,8 +85,8 @@ bool looks_like_file(const std::string& word) {
 // The subcommands built into this executable, parsed by CLI11 (command_line.h).
 int run_builtin(int argc, char** argv) {
     CLI::App app(
-        "MeshEdit's command line: describe, convert, edit, subdivide, repair and check meshes, "
-        "and evaluate Bezier curves and patches.",
+        "MeshEdit's command line: describe, convert, edit, subdivide, repair, check and compare "
+        "meshes, and evaluate Bezier curves and patches.",
         "meshedit");
     meshedit::command_line::style(app);
     app.set_version_flag("--version", std::string("meshedit ") + MESHEDIT_VERSION);
@@ -96,7 +96,7 @@ int run_builtin(int argc, char** argv) {
     app.footer(kMoreCommands);
     const Command commands[] = {add_info(app),     add_convert(app), add_subdivide(app),
                                 add_simplify(app), add_remesh(app),  add_repair(app),
-                                add_check(app),    add_eval(app)};
+                                add_check(app),    add_eval(app),    add_compare(app)};
     static_assert(std::size(commands) == kBuiltins.size(), "kBuiltins lists every command");
     for (const Command& c : commands) {
         c.app->group("Commands");
