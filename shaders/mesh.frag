@@ -91,6 +91,14 @@ vec3 envmap_reflection(vec3 n, vec3 v) {
     return sqrt(clamp(c, 0.0, 1.0));
 }
 
+// The on-screen length in pixels of the side between corners j and k, from the screen
+// gradients of their barycentrics (a, b: corner j's d/dx, d/dy; c, d: corner k's): going
+// from corner j to corner k changes them by (-1, 1).
+float side_pixels(float a, float b, float c, float d) {
+    float det = a * d - b * c;
+    return length(vec2(-(b + d), a + c)) / max(abs(det), 1e-12);
+}
+
 void main() {
     vec3 n = normalize(v_normal_view);
     vec3 v = normalize(-v_position_view);
@@ -146,17 +154,26 @@ void main() {
 #if MESHEDIT_WIREFRAME
     {
         // Distance in pixels to each real side (a side's barycentric is 0 on it).
-        vec3 d = v_barycentric / max(fwidth(v_barycentric), vec3(1e-7));
-        float dist = 1e9;
-        if ((v_edge_mask & 1) != 0) dist = min(dist, d.x);
-        if ((v_edge_mask & 2) != 0) dist = min(dist, d.y);
-        if ((v_edge_mask & 4) != 0) dist = min(dist, d.z);
-        float coverage = clamp(0.5 * u_wire_width + 0.5 - dist, 0.0, 1.0);
-        // Fade the wire out where triangles get too small to show their edges (a dense mesh
-        // would otherwise turn solid wire colour): gone below 2 px, full from 6 px.
         vec3 w = fwidth(v_barycentric);
+        vec3 d = v_barycentric / max(w, vec3(1e-7));
+        // Each side fades out by its own length on screen (a dense mesh would otherwise turn
+        // solid wire colour): gone below 3 px, full from 8 px. The length is the side's, not
+        // the triangle's, so the two triangles along an edge fade it alike and a mesh of mixed
+        // sizes fades evenly instead of in speckles (issue 40).
+        vec3 gx = dFdx(v_barycentric);
+        vec3 gy = dFdy(v_barycentric);
+        vec3 fade = vec3(side_pixels(gx.y, gy.y, gx.z, gy.z), side_pixels(gx.z, gy.z, gx.x, gy.x),
+                         side_pixels(gx.x, gy.x, gx.y, gy.y));
+        fade = clamp((fade - 3.0) / 5.0, 0.0, 1.0);
+        // A sliver under 2 px high draws none of its sides: its neighbours draw them, and its
+        // inside would otherwise be all wire.
         float height_px = 1.0 / max(max(w.x, w.y), max(w.z, 1e-7));
-        coverage *= clamp((height_px - 2.0) / 4.0, 0.0, 1.0);
+        fade *= clamp(height_px - 1.0, 0.0, 1.0);
+        vec3 cover = clamp(vec3(0.5 * u_wire_width + 0.5) - d, 0.0, 1.0) * fade;
+        float coverage = 0.0;
+        if ((v_edge_mask & 1) != 0) coverage = max(coverage, cover.x);
+        if ((v_edge_mask & 2) != 0) coverage = max(coverage, cover.y);
+        if ((v_edge_mask & 4) != 0) coverage = max(coverage, cover.z);
         color = mix(color, u_wire_color.rgb, coverage * u_wire_color.a);
     }
 #endif
