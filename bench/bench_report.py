@@ -34,6 +34,10 @@ JOB_TITLES = {
     "Loop-subdivided once (208,000 triangles), L = its mean edge length, 3 iterations; "
     "`min_angle_deg`, `length_spread` (stddev / mean of the edge lengths) and `hausdorff_pct` "
     "by the same code for both",
+    "smooth_1m_uniform": "Laplacian smoothing of a noisy 1M-triangle torus, 10 iterations, "
+    "uniform weights, λ = 0.5 (OpenMesh's JacobiLaplaceSmootherT, C0); `ms_per_iteration`",
+    "smooth_1m_implicit": "One implicit smoothing step (t = 1, cotangent weights) of the same "
+    "torus; `solve_ms`: building the system and the conjugate-gradient solves",
     "qem_bunny_1m_to_100k": "QEM simplification of bunny00 (CGAL's demo data) Loop-subdivided "
     "twice (1,206,530 triangles) to 100,000 faces; `hausdorff_pct` as above",
     "flips_1e6": "1,000,000 random edge flips on the 100k torus",

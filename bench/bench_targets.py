@@ -92,6 +92,24 @@ def remesh_target_rows(jobs):
     return [(label, target, measured, "yes" if all(checks) else "no")]
 
 
+def smooth_target_rows(jobs):
+    """Issue 35: Laplacian smoothing ≤ 1/3 of OpenMesh's JacobiLaplaceSmootherT per
+    iteration on 1M faces; implicit smoothing's solve time reported."""
+    res = ok_results(jobs.get("smooth_1m_uniform", []))
+    me, om = res.get("meshedit"), res.get("openmesh")
+    label = "Laplacian smoothing, 10 uniform iterations, 1M faces"
+    target = "≤ 1/3 of OpenMesh's time per iteration"
+    if me is None or om is None or not om["median_ms"] > 0:
+        return [(label, target, "not measured (smooth_1m_uniform)", "n/a")]
+    r = me["median_ms"] / om["median_ms"]
+    measured = (f"{r:.3f} of OpenMesh ({me['median_ms'] / 10:.1f} vs "
+                f"{om['median_ms'] / 10:.1f} ms per iteration)")
+    implicit = ok_results(jobs.get("smooth_1m_implicit", [])).get("meshedit")
+    if implicit is not None:
+        measured += f"; implicit step solve {implicit.get('solve_ms', 0):.0f} ms"
+    return [(label, target, measured, "yes" if r <= 1 / 3 else "no")]
+
+
 def selection_target_rows(jobs, not_measured):
     """Issue 37: region selection on a million faces (bench_selection)."""
     rows = []
@@ -201,6 +219,7 @@ def targets_table(jobs):
                                     range(1, 4), "1M quads → 4M", "100k mixed faces")
     rows += qem_target_rows(jobs)
     rows += remesh_target_rows(jobs)
+    rows += smooth_target_rows(jobs)
     # The same subdivision targets under the warm protocol (memory reused: no page faults).
     if "loop_1m_1level_warm" in jobs:
         rows += [(r[0] + " (warm)",) + tuple(r[1:]) for r in subdivision_target_rows(

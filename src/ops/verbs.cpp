@@ -19,6 +19,7 @@
 #include "meshedit/core/subdivision.h"
 #include "meshedit/ops/ops.h"
 #include "region_verbs.h"
+#include "smooth_verbs.h"
 
 namespace meshedit::ops {
 namespace {
@@ -660,6 +661,36 @@ constexpr std::array kVerbs{
          "tangential smoothing and projection onto the input; boundaries and creases kept",
          "remesh toward the mean edge length (3 rounds)", check_remesh_step, run_remesh,
          nullptr, false, kDefaultTraits | kToolAmounts},
+    Verb{"smooth", kWholeMesh, 3, 0, {10.0, 0.5, 0.0}, "smooth, smooth:N,L, smooth:N,L,K",
+         "N steps (default 10) of explicit Laplacian smoothing with uniform weights: every "
+         "vertex moves L (0 < L <= 1, default 0.5) of the way to the mean of its neighbours; "
+         "boundary and crease vertices stay; K = 1 scales a closed mesh back to its volume",
+         "smooth the mesh (uniform Laplacian, the info panel's steps and lambda)",
+         check_smooth_uniform, run_smooth_uniform, nullptr, false, kDefaultTraits | kToolAmounts},
+    Verb{"smooth_cotan", kWholeMesh, 3, 0, {10.0, 0.5, 0.0},
+         "smooth_cotan, smooth_cotan:N,L, smooth_cotan:N,L,K",
+         "as smooth, with cotangent weights (triangles): vertices move along the surface's "
+         "normal more than across it",
+         "smooth the mesh (cotangent Laplacian)", check_smooth_cotan, run_smooth_cotan, nullptr,
+         false, kDefaultTraits | kToolAmounts},
+    Verb{"taubin", kWholeMesh, 3, 0, {10.0, 0.5, -0.53}, "taubin, taubin:N,L,M",
+         "N rounds (default 10) of Taubin's smoothing without shrinking: a uniform Laplacian "
+         "step of L (default 0.5), then one of M (below -L, at least -1, default -0.53)",
+         "smooth the mesh without shrinking it (Taubin)", check_taubin, run_taubin, nullptr,
+         false, kDefaultTraits | kToolAmounts},
+    Verb{"smooth_implicit", kWholeMesh, 3, 0, {1.0, 1.0, 0.0},
+         "smooth_implicit, smooth_implicit:T, smooth_implicit:T,N,K",
+         "N (default 1) implicit (backward Euler) smoothing steps of time T (default 1): "
+         "solves (I - T L) x' = x with cotangent weights (uniform on a mesh with polygons); "
+         "K = 1 keeps a closed mesh's volume",
+         "smooth the mesh implicitly (backward Euler)", check_smooth_implicit,
+         run_smooth_implicit, nullptr, false, kDefaultTraits | kToolAmounts},
+    Verb{"fair", kRegion, 0, 0, kNoDefaults, "fair:R",
+         "moves the inner vertices of the faces R so that the bi-Laplacian vanishes there "
+         "(L^2 x = 0, cotangent weights; uniform on a mesh with polygons), every other vertex "
+         "fixed: the patch joins the surface around it smoothly",
+         "fair the selected faces (their border fixed)", check_fair_step, run_fair, nullptr,
+         false, kChangesTopology},
     Verb{"triangulate", kWholeMesh | kFaceArg, 0, 0, kNoDefaults, "triangulate, triangulate:fI",
          "cuts every polygon (or face I) into triangles by diagonals inside it",
          "triangulate every polygon", check_triangulate, run_triangulate},

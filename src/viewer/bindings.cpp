@@ -51,6 +51,8 @@ constexpr std::array kTable{
     Binding{key_of('L'), kAlt, kMeshModes, edit("loop_step"), "Alt+L", {}},
     Binding{key_of('D'), kNoMods, kMeshModes, edit("simplify"), "D", {}},
     Binding{key_of('R'), kShift, kMeshModes, edit("remesh"), "Shift+R", {}},
+    Binding{key_of('M'), kShift, kMeshModes, edit("smooth"), "Shift+M", {}},
+    Binding{key_of('M'), kAlt, kMeshModes, edit("fair"), "Alt+M", {}},
     // Selecting.
     Binding{key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}, "Ctrl+A", "select every element of the selected kind (faces if none)"},
     Binding{key_of('A'), kAlt, kMeshModes, {Command::SelectNone}, "Alt+A", "select nothing"},

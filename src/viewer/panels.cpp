@@ -294,6 +294,22 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDispl
         if (ImGui::Button("remesh (Shift+R)")) {
             requests.action = edit("remesh");
         }
+        ToolSettings::Amounts& smooth = tools.amounts("smooth");  // steps, λ, keep the volume
+        int smooth_steps = static_cast<int>(smooth[0]);
+        if (ImGui::SliderInt("steps", &smooth_steps, 1, 100)) {
+            smooth[0] = smooth_steps;
+        }
+        float lambda = static_cast<float>(smooth[1]);
+        if (ImGui::SliderFloat("lambda", &lambda, 0.01f, 1.0f, "%.2f")) {
+            smooth[1] = lambda;
+        }
+        bool keep_volume = smooth[2] != 0.0;
+        if (ImGui::Checkbox("keep the volume (closed meshes)", &keep_volume)) {
+            smooth[2] = keep_volume ? 1.0 : 0.0;
+        }
+        if (ImGui::Button("smooth (Shift+M)")) {
+            requests.action = edit("smooth");
+        }
         if (ImGui::Button("Catmull-Clark (Shift+C)")) {
             requests.action = edit("catmull_clark");
         }

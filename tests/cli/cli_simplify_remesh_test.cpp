@@ -1,12 +1,13 @@
 // `meshedit simplify` and `meshedit remesh`: the target reached and the file valid; the same
 // mesh as the `--ops` verb; refusals (polygons, targets out of range) and bad usage write
-// nothing.
+// nothing. `--ops smooth:…` last.
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
 
+#include "meshedit/core/smoothing.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/io/io.h"
 #include "run.h"
@@ -120,6 +121,36 @@ TEST(CliRemesh, LengthReachedAndSameAsTheVerb) {
         EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
         EXPECT_FALSE(std::filesystem::exists(out));
     }
+}
+
+// `--ops smooth:…` through the CLI: the torus keeps its connectivity, its vertices move, the
+// volume option gives the volume back (to what OBJ's shortest round-trip digits keep); a
+// refusal (the volume of an open mesh) exits 1 and writes nothing.
+TEST(CliSmooth, OpsSmoothMovesPositionsOnly) {
+    TempDir tmp;
+    const std::string torus = (repo_root() / "dae/torus.dae").string();
+    const Mesh input = read_mesh(torus).mesh;
+    for (const char* ops : {"smooth:5,0.5", "smooth_cotan:5,0.5,1", "taubin",
+                            "smooth_implicit:1,2,1", "fair:f10..40"}) {
+        const std::string out = (tmp / "smooth.obj").string();
+        const RunResult r = run_meshedit({"convert", torus, out, "--ops", ops});
+        ASSERT_EQ(r.exit_code, 0) << ops << ": " << r.err;
+        const Mesh smoothed = read_mesh(out).mesh;
+        EXPECT_FALSE(validate(smoothed)) << ops;
+        EXPECT_EQ(canonical_faces(smoothed), canonical_faces(input)) << ops;
+        EXPECT_FALSE(same_faces_by_position(smoothed, input, 1e-6)) << ops;
+        if (std::string(ops).ends_with(",1")) {
+            EXPECT_NEAR(enclosed_volume(smoothed) / enclosed_volume(input), 1.0, 1e-9) << ops;
+        }
+    }
+    const std::string out = (tmp / "x.obj").string();
+    const RunResult bad = run_meshedit({"convert", teapot(), out, "--ops", "smooth:5,0.5,1"});
+    EXPECT_EQ(bad.exit_code, 1) << bad.err;
+    EXPECT_NE(bad.err.find("smooth:5,0.5,1 refused: cannot smooth: keeping the volume needs a "
+                           "closed mesh"),
+              std::string::npos)
+        << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 }  // namespace

@@ -82,8 +82,8 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
               "dissolve_region, subdivide_region, select, select_loop, select_ring, "
               "select_linked, select_more, select_less, select_invert, select_boundary, "
               "select_creases, select_valence, select_degree, crease, move, loop, "
-              "loop_step, catmull_clark, linear, simplify, remesh, triangulate, "
-              "flip_orientation or compact)");
+              "loop_step, catmull_clark, linear, simplify, remesh, smooth, smooth_cotan, "
+              "taubin, smooth_implicit, fair, triangulate, flip_orientation or compact)");
     EXPECT_EQ(syntax_error("flip:0"),
               "bad op 'flip:0': expected flip:A-B with A-B (an edge by its two vertex indices)");
     EXPECT_EQ(syntax_error("flip:3-3"), "bad op 'flip:3-3': an edge needs two different vertices");
@@ -417,7 +417,9 @@ TEST(VerbTraits, DiagramNamesAndToolAmountsComeFromTheTable) {
                                    : verb.name == "collapse" ? CodeNames::Collapse
                                                              : CodeNames::ByIndex;
         EXPECT_EQ(verb.names, expected) << verb.name;
-        const bool tool = verb.name == "simplify" || verb.name == "remesh";
+        const bool tool = verb.name == "simplify" || verb.name == "remesh" ||
+                          verb.name == "smooth" || verb.name == "smooth_cotan" ||
+                          verb.name == "taubin" || verb.name == "smooth_implicit";
         EXPECT_EQ((verb.traits & kToolAmounts) != 0, tool) << verb.name;
         // Tool amounts are for whole-mesh verbs; element verbs with amounts are drags.
         if (tool) {

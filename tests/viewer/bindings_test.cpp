@@ -73,6 +73,8 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('L'), kCtrl, kMeshModes, edit("linear")},
             {key_of('D'), 0, kMeshModes, edit("simplify")},
             {key_of('R'), kShift, kMeshModes, edit("remesh")},
+            {key_of('M'), kShift, kMeshModes, edit("smooth")},
+            {key_of('M'), kAlt, kMeshModes, edit("fair")},
             {key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}},
             {key_of('A'), kAlt, kMeshModes, {Command::SelectNone}},
             {key_of('L'), kShift, kMeshModes, {Command::SelectLoop}},

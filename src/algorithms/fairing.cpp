@@ -1,0 +1,212 @@
+// Bi-Laplacian fairing of a region (smoothing.h). With K the Laplacian's matrix (K x_i =
+// Σ_j w_ij (x_j − x_i)) and D its diagonal (Σ_j w_ij), L = D⁻¹K and the free rows of L² x = 0
+// are, multiplied by D, the rows of K D⁻¹ K x = 0: symmetric, and positive definite on the
+// free vertices when every piece of them touches a fixed vertex. Only the free vertices and
+// two rings around them take part, so a small region of a big mesh costs its own size.
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "laplacian.h"
+#include "meshedit/core/smoothing.h"
+
+namespace meshedit {
+namespace {
+
+// The region's inner vertices: every face around them in the region, not on the boundary.
+std::vector<Vertex> inner_vertices(const Mesh& mesh, std::span<const Face> region,
+                                   std::vector<std::uint8_t>& in_region) {
+    in_region.assign(mesh.faces_size(), 0);
+    for (const Face f : region) {
+        in_region[f.idx()] = 1;
+    }
+    std::vector<std::uint8_t> seen(mesh.vertices_size(), 0);
+    std::vector<Vertex> inner;
+    for (const Face f : region) {
+        for (const Vertex v : mesh.vertices(f)) {
+            if (seen[v.idx()] != 0) {
+                continue;
+            }
+            seen[v.idx()] = 1;
+            bool all = !mesh.is_boundary(v);
+            for (const Halfedge h : mesh.halfedges(v)) {
+                all = all && in_region[mesh.face(h).idx()] != 0;
+            }
+            if (all) {
+                inner.push_back(v);
+            }
+        }
+    }
+    std::sort(inner.begin(), inner.end());
+    return inner;
+}
+
+// Whether every piece of `inner` (joined by edges) has a vertex outside it as a neighbour.
+bool every_piece_held(const Mesh& mesh, const std::vector<Vertex>& inner) {
+    std::vector<std::uint8_t> state(mesh.vertices_size(), 0);  // 1 inner, 2 visited
+    for (const Vertex v : inner) {
+        state[v.idx()] = 1;
+    }
+    std::vector<Vertex> stack;
+    for (const Vertex start : inner) {
+        if (state[start.idx()] != 1) {
+            continue;
+        }
+        bool held = false;
+        stack.push_back(start);
+        state[start.idx()] = 2;
+        while (!stack.empty()) {
+            const Vertex v = stack.back();
+            stack.pop_back();
+            for (const Vertex w : mesh.vertices(v)) {
+                if (state[w.idx()] == 0) {
+                    held = true;
+                } else if (state[w.idx()] == 1) {
+                    state[w.idx()] = 2;
+                    stack.push_back(w);
+                }
+            }
+        }
+        if (!held) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Solves the free rows of K D⁻¹ K x = 0 for the first `n_free` vertices of `order` (then its
+// first ring up to `n_rows`, then the second ring; `local` numbers them). False when the
+// factorisation fails or the result is not finite (cotangent weights all clamped to 0 around a
+// vertex, a degenerate triangle): the caller tries uniform weights.
+bool solve(const Mesh& mesh, const std::vector<Vertex>& order,
+           const std::vector<std::int64_t>& local, std::size_t n_free, std::size_t n_rows,
+           SmoothWeights weights, Eigen::MatrixX3d& x) {
+    const std::vector<double> w = laplacian::edge_weights(mesh, weights);
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd inverse_d(static_cast<Eigen::Index>(n_rows));
+    for (std::size_t i = 0; i < n_rows; ++i) {
+        double sum = 0.0;
+        for (const Halfedge h : mesh.halfedges(order[i])) {
+            const double wij = w[Mesh::edge(h).idx()];
+            entries.emplace_back(i, local[mesh.to_vertex(h).idx()], wij);
+            sum += wij;
+        }
+        entries.emplace_back(i, i, -sum);
+        // A vertex whose weights all vanish adds nothing to its neighbours' rows.
+        inverse_d[static_cast<Eigen::Index>(i)] = sum > 0.0 ? 1.0 / sum : 0.0;
+    }
+    const auto free = static_cast<Eigen::Index>(n_free);
+    const auto all = static_cast<Eigen::Index>(order.size());
+    Eigen::SparseMatrix<double> k(static_cast<Eigen::Index>(n_rows), all);
+    k.setFromTriplets(entries.begin(), entries.end());
+    const Eigen::SparseMatrix<double> free_rows =
+        k.topRows(free).leftCols(static_cast<Eigen::Index>(n_rows));
+    const Eigen::SparseMatrix<double> a = free_rows * inverse_d.asDiagonal() * k;
+    Eigen::MatrixX3d fixed(all - free, 3);
+    for (Eigen::Index i = free; i < all; ++i) {
+        const Vec3& p = mesh.position(order[static_cast<std::size_t>(i)]);
+        fixed.row(i - free) << p.x, p.y, p.z;
+    }
+    const Eigen::MatrixX3d rhs = -(a.rightCols(all - free) * fixed);
+    const Eigen::SparseMatrix<double> a_free = a.leftCols(free);
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(a_free);
+    if (solver.info() != Eigen::Success) {
+        return false;
+    }
+    x = solver.solve(rhs);
+    return solver.info() == Eigen::Success && x.allFinite();
+}
+
+}  // namespace
+
+OpStatus check_fair(const Mesh& mesh, std::span<const Face> region, const FairOptions& options) {
+    if (region.empty()) {
+        return OpStatus::refused("cannot fair: the region is empty");
+    }
+    for (const Face f : region) {
+        if (!mesh.is_valid(f) || mesh.is_deleted(f)) {
+            return OpStatus::composed("cannot fair: face " + std::to_string(f.idx()) +
+                                      " is not in the mesh");
+        }
+    }
+    if (const std::string why = laplacian::refuse_non_finite(mesh, "fair"); !why.empty()) {
+        return OpStatus::composed(why);
+    }
+    if (options.weights == SmoothWeights::Cotangent && !mesh.is_triangle_mesh()) {
+        return OpStatus::refused(
+            "cannot fair: cotangent weights need triangles (triangulate first: the "
+            "`triangulate` step, Ctrl+T in the viewer)");
+    }
+    std::vector<std::uint8_t> in_region;
+    const std::vector<Vertex> inner = inner_vertices(mesh, region, in_region);
+    if (inner.empty()) {
+        return OpStatus::refused(
+            "cannot fair: the region has no inner vertex (every vertex of it is on its border "
+            "or the mesh's boundary); select a larger region");
+    }
+    if (!every_piece_held(mesh, inner)) {
+        return OpStatus::refused(
+            "cannot fair: the region covers a whole closed part of the mesh, so no fixed "
+            "border holds it; leave some faces of that part out");
+    }
+    return OpStatus::ok();
+}
+
+FairReport fair(Mesh& mesh, std::span<const Face> region, const FairOptions& options) {
+    const auto begin = std::chrono::steady_clock::now();
+    std::vector<std::uint8_t> in_region;
+    const std::vector<Vertex> inner = inner_vertices(mesh, region, in_region);
+    // Local numbering: the free vertices, then the first ring around them, then the second.
+    std::vector<std::int64_t> local(mesh.vertices_size(), -1);
+    std::vector<Vertex> order(inner);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        local[order[i].idx()] = static_cast<std::int64_t>(i);
+    }
+    const auto add_ring = [&](std::size_t from, std::size_t to) {
+        std::vector<Vertex> ring;
+        for (std::size_t i = from; i < to; ++i) {
+            for (const Vertex w : mesh.vertices(order[i])) {
+                if (local[w.idx()] < 0) {
+                    local[w.idx()] = 0;  // claimed; numbered below in index order
+                    ring.push_back(w);
+                }
+            }
+        }
+        std::sort(ring.begin(), ring.end());
+        for (const Vertex w : ring) {
+            local[w.idx()] = static_cast<std::int64_t>(order.size());
+            order.push_back(w);
+        }
+        return order.size();
+    };
+    const std::size_t n_rows = add_ring(0, inner.size());  // free and first ring
+    add_ring(inner.size(), n_rows);                        // the second ring
+
+    Eigen::MatrixX3d x;
+    if (!solve(mesh, order, local, inner.size(), n_rows, options.weights, x) &&
+        !solve(mesh, order, local, inner.size(), n_rows, SmoothWeights::Uniform, x)) {
+        // Cannot happen with uniform weights on the rows check_fair() allows (positive
+        // definite); never write a failed solve.
+        throw std::runtime_error("fair: the bi-Laplacian system could not be solved");
+    }
+    FairReport report;
+    report.moved = inner.size();
+    for (std::size_t i = 0; i < inner.size(); ++i) {
+        const auto row = static_cast<Eigen::Index>(i);
+        const Vec3 p{x(row, 0), x(row, 1), x(row, 2)};
+        report.max_displacement =
+            std::max(report.max_displacement, norm(p - mesh.position(inner[i])));
+        mesh.position(inner[i]) = p;
+    }
+    report.solve_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    return report;
+}
+
+}  // namespace meshedit
