@@ -16,6 +16,9 @@
 // feature edges, or a turn of more than 30 degrees). Feature vertices are not smoothed.
 // Splits put new feature vertices at midpoints of feature edges, and collapses keep feature
 // vertices where they are, so every feature vertex stays on the input's feature polyline.
+// With a feature angle, the edges sharper than it are marked as creases first (CGAL's and
+// pmp's "detect sharp edges"): a mesh read from a format without creases (OFF, STL) keeps
+// its sharp edges straight instead of rounding them.
 
 #include "meshedit/core/remesh.h"
 
@@ -34,6 +37,7 @@
 #include "meshedit/core/closest_point.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/normals.h"
+#include "meshedit/core/number_text.h"
 #include "meshedit/core/validate.h"
 
 namespace meshedit {
@@ -136,17 +140,7 @@ private:
     // A feature vertex that must not move: the end of a crease, three or more feature edges,
     // or two that turn by more than 30 degrees (a corner of a boundary or a crease).
     bool is_corner(Vertex v) const {
-        Vec3 dir[2];
-        int n = 0;
-        for (Halfedge h : mesh_.halfedges(v)) {
-            if (is_feature(Mesh::edge(h))) {
-                if (n < 2) {
-                    dir[n] = normalize(mesh_.position(mesh_.to_vertex(h)) - mesh_.position(v));
-                }
-                ++n;
-            }
-        }
-        return n == 1 || n >= 3 || (n == 2 && dot(dir[0], dir[1]) > -0.866);
+        return is_feature_corner(mesh_, v, [this](Edge e) { return is_feature(e); });
     }
     double length(Edge e) const {
         return distance(mesh_.position(mesh_.vertex(e, 0)), mesh_.position(mesh_.vertex(e, 1)));
@@ -336,6 +330,12 @@ std::string why_not_remesh(const Mesh& mesh, const RemeshOptions& options) {
         return "cannot remesh: iterations must be from 1 to 100, not " +
                std::to_string(options.iterations);
     }
+    if (options.feature_angle_deg != kNoFeatureAngle &&
+        !check_crease_by_angle(options.feature_angle_deg)) {
+        return "cannot remesh: the feature angle must be from 0 to 180 degrees (infinity: off), "
+               "not " +
+               number_text(options.feature_angle_deg);
+    }
     if (!(options.target_length >= 0.0) || !std::isfinite(options.target_length)) {
         return "cannot remesh: the target edge length must be a positive number (0: the mean "
                "edge length)";
@@ -380,6 +380,10 @@ RemeshReport remesh(Mesh& mesh, const RemeshOptions& options) {
         work.garbage_collection();
     }
     RemeshReport report;
+    // Sharp edges found become creases, which the remesher keeps as features.
+    const std::size_t marked = options.feature_angle_deg == kNoFeatureAngle
+                                   ? 0
+                                   : crease_by_angle(work, options.feature_angle_deg);
     {
         // Lengths and areas square coordinates: keep them near 1, the target scaled alike.
         const UnitScale unit(work);
@@ -388,6 +392,7 @@ RemeshReport remesh(Mesh& mesh, const RemeshOptions& options) {
         report = Remesher(work, scaled).run();
         report.target_length = unit.unscaled(report.target_length);
     }
+    report.creases_marked = marked;
     MESHEDIT_ASSERT(!validate(work));
     mesh = std::move(work);
     return report;

@@ -9,6 +9,12 @@
 //        \   /                       |        Q_a' = Q_a + Q_b
 //          d                         d
 //
+// Crease vertices stay exactly on their creases (remesh.cpp's rule, not only the soft pull of
+// the feature planes, which let them drift off by a share of an edge): along a crease the
+// survivor takes an end's place, the corner's if there is one; across, the crease end's; an
+// edge between two crease vertices that is no crease would cut a chord, and never collapses.
+// Without crease marks none of this runs and the result is as before.
+//
 // Candidates live in an indexed 4-ary min-heap of (cost, edge), 8 bytes an entry, with each
 // edge's place in it: a collapse re-keys the edges around the survivor in place and removes
 // the deleted ones, so the heap never holds more than one entry per edge. (A heap of stale
@@ -19,6 +25,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <vector>
 
 #include "local_ops/collapse_guard.h"
@@ -29,6 +37,7 @@
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/normals.h"
+#include "meshedit/core/number_text.h"
 #include "meshedit/core/validate.h"
 
 namespace meshedit {
@@ -192,6 +201,7 @@ private:
 struct Candidate {
     double cost;
     Vec3 position;
+    bool allowed = true;  ///< false: it would pull a crease vertex off its crease
 };
 
 class Simplifier {
@@ -202,7 +212,8 @@ public:
           quadric_(mesh.vertices_size()),
           heap_(mesh.edges_size()),
           cos_limit_(std::cos(options.max_normal_change_deg * M_PI / 180.0)),
-          diagonal_(mesh.bounds().diagonal()) {}
+          diagonal_(mesh.bounds().diagonal()),
+          crease_(mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {}
 
     SimplifyReport run() {
         gather_quadrics();
@@ -220,6 +231,10 @@ public:
             // Computed again rather than stored: the quadrics are read here anyway, and a
             // stored place per edge was one more cache miss per pop.
             const Candidate c = candidate(e);
+            if (!c.allowed) {
+                ++report_.refused_crease;
+                continue;
+            }
             const double error = error_of(c, e);
             if (error > options_.max_error) {
                 continue;
@@ -292,6 +307,11 @@ private:
         const Quadric q = quadric_[a.idx()] + quadric_[b.idx()];
         const Vec3& pa = mesh_.position(a);
         const Vec3& pb = mesh_.position(b);
+        if (crease_) {
+            if (const std::optional<Candidate> held = on_crease(e, q)) {
+                return *held;
+            }
+        }
         Candidate c{0.0, {}};
         Vec3 best;
         // The minimiser, unless it lies far from the edge (a nearly singular system that
@@ -310,6 +330,40 @@ private:
             }
         }
         return c;
+    }
+
+    bool is_crease(Edge e) const { return crease_[e] != 0; }
+    bool on_a_crease(Vertex v) const {
+        for (Edge g : mesh_.edges(v)) {
+            if (is_crease(g)) {
+                return true;
+            }
+        }
+        return false;
+    }
+    // Where the survivor of e must go when an end is on a crease (the file's comment), or
+    // nothing when neither is.
+    std::optional<Candidate> on_crease(Edge e, const Quadric& q) const {
+        const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
+        const bool on_a = on_a_crease(a), on_b = on_a_crease(b);
+        if (!on_a && !on_b) {
+            return std::nullopt;
+        }
+        const Candidate never{std::numeric_limits<double>::infinity(), {}, false};
+        const auto at = [&](Vertex v) {
+            return Candidate{q(mesh_.position(v)), mesh_.position(v)};
+        };
+        if (!is_crease(e)) {
+            return on_a && on_b ? never : at(on_a ? a : b);
+        }
+        const auto crease = [this](Edge g) { return is_crease(g); };
+        const bool corner_a = is_feature_corner(mesh_, a, crease);
+        const bool corner_b = is_feature_corner(mesh_, b, crease);
+        if (corner_a || corner_b) {
+            return corner_a && corner_b ? never : at(corner_a ? a : b);
+        }
+        const Candidate ca = at(a), cb = at(b);
+        return cb.cost < ca.cost ? cb : ca;
     }
 
     // The area-weighted mean squared distance to the planes the collapse gathers: the cost
@@ -357,6 +411,7 @@ private:
     EdgeHeap heap_;
     double cos_limit_;
     double diagonal_;
+    EdgeProperty<std::uint8_t> crease_;  // null: no crease marks, no crease rule
     SimplifyReport report_;
 };
 
@@ -372,6 +427,12 @@ std::string why_not_simplify(const Mesh& mesh, const SimplifyOptions& options) {
     }
     if (!(options.max_error >= 0.0)) {
         return "cannot simplify: the error bound must be a number of 0 or more";
+    }
+    if (options.feature_angle_deg != kNoFeatureAngle &&
+        !check_crease_by_angle(options.feature_angle_deg)) {
+        return "cannot simplify: the feature angle must be from 0 to 180 degrees (infinity: "
+               "off), not " +
+               number_text(options.feature_angle_deg);
     }
     if (!(options.max_normal_change_deg > 0.0 && options.max_normal_change_deg <= 180.0)) {
         return "cannot simplify: the normal-change limit must be above 0 and at most 180 degrees";
@@ -397,11 +458,16 @@ SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options) {
     if (options.progress) {
         options.progress(0.0);
     }
+    // Sharp edges found become creases, which the simplifier holds.
+    const std::size_t marked = options.feature_angle_deg == kNoFeatureAngle
+                                   ? 0
+                                   : crease_by_angle(mesh, options.feature_angle_deg);
     SimplifyReport report;
     {
         const UnitScale unit(mesh);  // quadrics square coordinates: keep them near 1
         report = Simplifier(mesh, options).run();
     }
+    report.creases_marked = marked;
     MESHEDIT_ASSERT(!validate(mesh));
     return report;
 }

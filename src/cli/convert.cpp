@@ -14,6 +14,7 @@
 #include "cli.h"
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/budget.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/files/files.h"
 #include "meshedit/io/io.h"
@@ -41,6 +42,14 @@ ops::ApplyOptions apply_options(ProgressBar& bar, LoopWeights weights) {
 // stands on its own in a log.
 [[noreturn]] void rethrow_with_file(const ops::OpError& e, const std::filesystem::path& in) {
     throw ops::OpError(in.string() + ": " + e.what(), e.refused());
+}
+
+// --feature-angle of simplify and remesh: the third amount of their verbs.
+void add_feature_angle_option(CLI::App& app, double& degrees) {
+    app.add_option("--feature-angle", degrees,
+                   "first mark every edge sharper than DEG degrees (0 to 180) as a crease, "
+                   "which the operation keeps (default: off)")
+        ->type_name("DEG");
 }
 
 // The whole-mesh commands (subdivide, simplify, remesh): IN's mesh through one step of the
@@ -243,6 +252,7 @@ Command add_simplify(CLI::App& meshedit) {
         std::size_t faces = 0;
         double ratio = 0.0;
         double max_error = std::numeric_limits<double>::infinity();
+        double feature_angle = kNoFeatureAngle;
         int density = 8;
     };
     auto s = std::make_shared<Settings>();
@@ -258,12 +268,15 @@ Command add_simplify(CLI::App& meshedit) {
                     "(default: no bound)")
         ->type_name("E")
         ->check(CLI::NonNegativeNumber);
+    add_feature_angle_option(*app, s->feature_angle);
     add_density_option(*app, s->density);
     app->footer(
         "Simplifies IN by edge collapses, cheapest quadric error first (Garland-Heckbert:\n"
         "area-weighted plane quadrics, boundaries and creases held, the survivor at the\n"
         "point of least error, no face turned over), until it has --faces N faces (or --ratio R\n"
         "of them) or the next collapse would exceed --max-error, and writes OUT.\n"
+        "--feature-angle DEG marks the edges sharper than DEG degrees as creases first; crease\n"
+        "vertices stay on their creases.\n"
         "docs/simplify.md has the details.\n"
         "\n"
         "Example:\n"
@@ -271,24 +284,25 @@ Command add_simplify(CLI::App& meshedit) {
         "\n"
         "Exit status: 0 ok, 1 refused (polygons, a target out of range), 2 bad usage, bad\n"
         "input or an unwritable output.");
-    return {
-        app, [s, faces, ratio] {
-            if (faces->count() == 0 && ratio->count() == 0) {
-                throw UsageError("simplify: give --faces N or --ratio R");
-            }
-            if (ratio->count() > 0 && !(s->ratio > 0.0 && s->ratio < 1.0)) {
-                throw UsageError("simplify: --ratio must be above 0 and below 1, not " +
-                                 ratio->as<std::string>());
-            }
-            // Through the language, as `--ops simplify:R,E`: one rounding of a share into a
-            // face count, one refusal and one "stopped at" message for every program.
-            const double kept = faces->count() > 0 ? static_cast<double>(s->faces) : s->ratio;
-            return run_one_step(
-                s->in, s->out, s->density, "simplify", LoopWeights::Warren, [&](const Mesh& mesh) {
-                    return std::optional(ops::make_step("simplify", mesh, ElementRef{},
-                                                        std::array<double, 2>{kept, s->max_error}));
-                });
-        }};
+    return {app, [s, faces, ratio] {
+                if (faces->count() == 0 && ratio->count() == 0) {
+                    throw UsageError("simplify: give --faces N or --ratio R");
+                }
+                if (ratio->count() > 0 && !(s->ratio > 0.0 && s->ratio < 1.0)) {
+                    throw UsageError("simplify: --ratio must be above 0 and below 1, not " +
+                                     ratio->as<std::string>());
+                }
+                // Through the language, as `--ops simplify:R,E`: one rounding of a share into a
+                // face count, one refusal and one "stopped at" message for every program.
+                const double kept = faces->count() > 0 ? static_cast<double>(s->faces) : s->ratio;
+                return run_one_step(
+                    s->in, s->out, s->density, "simplify", LoopWeights::Warren,
+                    [&](const Mesh& mesh) {
+                        return std::optional(ops::make_step(
+                            "simplify", mesh, ElementRef{},
+                            std::array<double, 3>{kept, s->max_error, s->feature_angle}));
+                    });
+            }};
 }
 
 Command add_remesh(CLI::App& meshedit) {
@@ -296,6 +310,7 @@ Command add_remesh(CLI::App& meshedit) {
         std::filesystem::path in, out;
         double length = 0.0;
         int iterations = 3;
+        double feature_angle = kNoFeatureAngle;
         int density = 8;
     };
     auto s = std::make_shared<Settings>();
@@ -305,12 +320,15 @@ Command add_remesh(CLI::App& meshedit) {
     app->add_option("--length", s->length, "the target edge length (default: the mean)")
         ->type_name("L");
     app->add_option("--iterations", s->iterations, "rounds, 1 to 100 (default 3)")->type_name("N");
+    add_feature_angle_option(*app, s->feature_angle);
     add_density_option(*app, s->density);
     app->footer(
         "Remeshes IN toward edges of length L (Botsch-Kobbelt: split edges longer than 4/3 L,\n"
         "collapse those shorter than 4/5 L, flip toward valence 6, smooth tangentially and\n"
         "project onto the input surface, N times) and writes OUT. Boundaries and creases are\n"
-        "kept. docs/remesh.md has the details.\n"
+        "kept; --feature-angle 40 marks the edges sharper than 40 degrees as creases first, so\n"
+        "the sharp edges of a file without crease marks (OFF, STL) stay sharp and straight.\n"
+        "docs/remesh.md has the details.\n"
         "\n"
         "Example:\n"
         "  meshedit remesh dae/teapot.dae even.dae --length 0.15\n"
@@ -323,7 +341,8 @@ Command add_remesh(CLI::App& meshedit) {
                     [&](const Mesh& mesh) {
                         return std::optional(ops::make_step(
                             "remesh", mesh, ElementRef{},
-                            std::array<double, 2>{s->length, static_cast<double>(s->iterations)}));
+                            std::array<double, 3>{s->length, static_cast<double>(s->iterations),
+                                                  s->feature_angle}));
                     });
             }};
 }

@@ -38,4 +38,22 @@ inline bool collapse_turns_a_face(const Mesh& mesh, Edge e, const Vec3& p, doubl
     return false;
 }
 
+/// Whether v is a corner of the feature lines whose edges `is_feature(Edge)` names: the end of
+/// one (a single feature edge), three or more feature edges, or two that turn by more than
+/// 30 degrees. The collapses of remeshing and simplification never move a corner.
+template <class IsFeature>
+bool is_feature_corner(const Mesh& mesh, Vertex v, IsFeature is_feature) {
+    Vec3 dir[2];
+    int n = 0;
+    for (Halfedge h : mesh.halfedges(v)) {
+        if (is_feature(Mesh::edge(h))) {
+            if (n < 2) {
+                dir[n] = normalize(mesh.position(mesh.to_vertex(h)) - mesh.position(v));
+            }
+            ++n;
+        }
+    }
+    return n == 1 || n >= 3 || (n == 2 && dot(dir[0], dir[1]) > -0.866);
+}
+
 }  // namespace meshedit

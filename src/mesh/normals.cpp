@@ -8,11 +8,15 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <numbers>
 
 #include "mesh/mesh_arrays.h"
 #include "mesh/parallel.h"
 #include "mesh/unit_scale.h"
+#include "meshedit/core/assert.h"
 #include "meshedit/core/attributes.h"
+#include "meshedit/core/number_text.h"
 #include "meshedit/core/topology.h"
 
 namespace meshedit {
@@ -456,6 +460,49 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh) {
     std::vector<Vec3> out;
     compute_vertex_normals(mesh, out);
     return out;
+}
+
+double dihedral_angle_deg(const Mesh& mesh, Edge e) {
+    if (mesh.is_boundary(e)) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    const Vec3 a = face_normal(mesh, mesh.face(e, 0)), b = face_normal(mesh, mesh.face(e, 1));
+    if (sqrnorm(a) == 0.0 || sqrnorm(b) == 0.0) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    // atan2 rather than acos of the dot: exact near 0 and 180, where acos loses half the digits.
+    return std::atan2(norm(cross(a, b)), dot(a, b)) * 180.0 / std::numbers::pi;
+}
+
+OpStatus check_crease_by_angle(double degrees) {
+    if (!(degrees >= 0.0 && degrees <= 180.0)) {
+        return OpStatus::composed(
+            "cannot mark creases by angle: the angle must be from 0 to 180 degrees, not " +
+            number_text(degrees));
+    }
+    return OpStatus::ok();
+}
+
+std::size_t crease_by_angle(Mesh& mesh, double degrees) {
+    MESHEDIT_ASSERT(check_crease_by_angle(degrees));
+    auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
+    std::size_t marked = 0;
+    for (Edge e : mesh.edges()) {
+        if (crease && crease[e] != 0) {
+            continue;
+        }
+        // NaN (boundary, degenerate face) compares false: never marked.
+        if (!(dihedral_angle_deg(mesh, e) > degrees)) {
+            continue;
+        }
+        if (!crease) {
+            crease = mesh.property<Edge, std::uint8_t>(kCreaseProperty, 0);
+        }
+        mesh.touch(e);  // a write through the property's handle: tell a recorded edit
+        crease[e] = 1;
+        ++marked;
+    }
+    return marked;
 }
 
 // Around v, clockwise from a sharp (or boundary) edge: the faces up to the next sharp edge

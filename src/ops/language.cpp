@@ -59,9 +59,12 @@ bool parse_amount(std::string_view s, double& out) {
     return ec == std::errc() && end == s.data() + s.size();
 }
 
+// `inf` and `nan` too, as make_step() writes them (`simplify:0.5,inf,40`: no error bound,
+// then a feature angle); no verb is called so.
 bool starts_like_number(std::string_view s) {
-    return !s.empty() && (std::isdigit(static_cast<unsigned char>(s.front())) != 0 ||
-                          s.front() == '-' || s.front() == '+' || s.front() == '.');
+    return !s.empty() &&
+           (std::isdigit(static_cast<unsigned char>(s.front())) != 0 || s.front() == '-' ||
+            s.front() == '+' || s.front() == '.' || s == "inf" || s == "nan");
 }
 
 // 12 levels multiply the face count by 4^12 ≈ 1.7e7: more is never intended.

@@ -13,6 +13,7 @@
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/loop_steps.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/remesh.h"
 #include "meshedit/core/simplify.h"
@@ -376,6 +377,29 @@ StepResult run_linear(Mesh& mesh, const Step& step, const RunOptions& options) {
     return run_quads(mesh, step, options, QuadScheme::Linear);
 }
 
+// crease_by_angle:D marks every interior edge sharper than D degrees as a crease; the
+// creases there stay (Blender's Mark Sharp from Select Sharp Edges).
+OpStatus check_crease_by_angle_step(const Mesh&, const Step& step) {
+    return check_crease_by_angle(step.amounts[0]);
+}
+StepResult run_crease_by_angle(Mesh& mesh, const Step& step, const RunOptions&) {
+    const std::size_t marked = crease_by_angle(mesh, step.amounts[0]);
+    StepResult result;
+    result.topology = false;
+    result.message = "marked " + std::to_string(marked) + (marked == 1 ? " edge" : " edges") +
+                     " sharper than " + number_text(step.amounts[0]) + "° as creases";
+    return result;
+}
+
+// What the feature angle of simplify and remesh (their third amount) marked first.
+std::string creases_marked(std::size_t marked, double degrees) {
+    if (degrees == kNoFeatureAngle) {
+        return {};
+    }
+    return "marked " + std::to_string(marked) + " edges sharper than " + number_text(degrees) +
+           "° as creases; ";
+}
+
 // simplify:R,E keeps about R of the faces (0 < R < 1) or R faces (a whole number), stopping
 // before a collapse whose error exceeds E (left out: no bound). The one place the CLI's
 // --ratio and --faces, the viewer's D and `--ops` turn a share into a face count.
@@ -389,6 +413,7 @@ SimplifyOptions simplify_options(const Mesh& mesh, const Step& step) {
     options.target_faces = is_face_count(r) ? static_cast<std::size_t>(std::min(kept, 1e18))
                                             : static_cast<std::size_t>(std::max(1.0, kept));
     options.max_error = step.amounts[1];
+    options.feature_angle_deg = step.amounts[2];
     return options;
 }
 OpStatus check_simplify_step(const Mesh& mesh, const Step& step) {
@@ -411,7 +436,8 @@ StepResult run_simplify(Mesh& mesh, const Step& step, const RunOptions& options)
     const SimplifyReport report = simplify(mesh, simplify_with);
     StepResult result;
     result.renumbers = true;
-    result.message = "simplified " + std::to_string(before) + " faces to " +
+    result.message = creases_marked(report.creases_marked, simplify_with.feature_angle_deg) +
+                     "simplified " + std::to_string(before) + " faces to " +
                      std::to_string(mesh.n_faces()) + " (" + std::to_string(report.collapses) +
                      " collapses)";
     if (report.stopped_early) {
@@ -431,6 +457,7 @@ RemeshOptions remesh_options(const Step& step) {
     RemeshOptions options;
     options.target_length = step.amounts[0];
     options.iterations = static_cast<int>(step.amounts[1]);
+    options.feature_angle_deg = step.amounts[2];
     return options;
 }
 OpStatus check_remesh_step(const Mesh& mesh, const Step& step) {
@@ -453,7 +480,8 @@ StepResult run_remesh(Mesh& mesh, const Step& step, const RunOptions& options) {
     result.renumbers = true;
     char length[32];
     std::snprintf(length, sizeof length, "%.4g", report.target_length);
-    result.message = "remeshed to edge length " + std::string(length) + ": " +
+    result.message = creases_marked(report.creases_marked, remesh_with.feature_angle_deg) +
+                     "remeshed to edge length " + std::string(length) + ": " +
                      std::to_string(mesh.n_faces()) + " faces (" + std::to_string(report.splits) +
                      " splits, " + std::to_string(report.collapses) + " collapses, " +
                      std::to_string(report.flips) + " flips)";
@@ -619,6 +647,11 @@ constexpr std::array kVerbs{
     Verb{"crease", kEdgeArg, 0, 0, kNoDefaults, "crease:A-B",
          "toggles the `e:crease` mark of A-B (kept by COLLADA, used by Loop)",
          "toggle crease on the selected edge", check_crease, run_crease, nullptr, false, 0},
+    Verb{"crease_by_angle", kWholeMesh, 1, 0, {30.0}, "crease_by_angle, crease_by_angle:D",
+         "marks every interior edge whose dihedral angle (between its faces' normals) exceeds "
+         "D degrees (0 to 180, default 30) as a crease; the creases there stay",
+         "mark the edges sharper than the info panel's feature angle as creases",
+         check_crease_by_angle_step, run_crease_by_angle, nullptr, false, kToolAmounts},
     Verb{"move", kVertexArg, 3, 3, kNoDefaults, "move:vI:X,Y,Z",
          "puts vertex I at (X, Y, Z) (the viewer records drags and move, rotate and scale "
          "this way)",
@@ -647,18 +680,23 @@ constexpr std::array kVerbs{
          "at centroids and midpoints, the surface unchanged",
          "subdivide into quads without smoothing (linear)", check_quads, run_linear,
          plan_quad_subdivision},
-    Verb{"simplify", kWholeMesh, 2, 0, {0.5, kUnbounded}, "simplify, simplify:R, simplify:R,E",
+    Verb{"simplify", kWholeMesh, 3, 0, {0.5, kUnbounded, kNoFeatureAngle},
+         "simplify, simplify:R, simplify:R,E, simplify:R,E,F",
          "QEM simplification (Garland-Heckbert) of a triangle mesh to about R of its faces "
          "(0 < R < 1, default 0.5) or to R faces (a whole number), stopping before a collapse "
-         "whose error exceeds E times the bounding-box diagonal (left out: no bound): edge "
-         "collapses, cheapest quadric error first, boundaries and creases held, no face turned "
-         "over; indices are renumbered when written",
+         "whose error exceeds E times the bounding-box diagonal (left out or `inf`: no bound): "
+         "edge collapses, cheapest quadric error first, boundaries and creases held, no face "
+         "turned over; with F, the edges sharper than F degrees are marked as creases first "
+         "(`crease_by_angle:F`); indices are renumbered when written",
          "simplify the mesh to the share of its faces the info panel sets (QEM)",
          check_simplify_step, run_simplify, nullptr, false, kDefaultTraits | kToolAmounts},
-    Verb{"remesh", kWholeMesh, 2, 0, {0.0, 3.0}, "remesh, remesh:L, remesh:L,N",
+    Verb{"remesh", kWholeMesh, 3, 0, {0.0, 3.0, kNoFeatureAngle},
+         "remesh, remesh:L, remesh:L,N, remesh:L,N,F",
          "isotropic remeshing (Botsch-Kobbelt) of a triangle mesh toward edge length L (0 or "
          "left out: the mean edge length) in N rounds (default 3) of split, collapse, flip, "
-         "tangential smoothing and projection onto the input; boundaries and creases kept",
+         "tangential smoothing and projection onto the input; boundaries and creases kept, and "
+         "with F the edges sharper than F degrees marked as creases first "
+         "(`crease_by_angle:F`), so they stay sharp and straight",
          "remesh toward the mean edge length (3 rounds)", check_remesh_step, run_remesh,
          nullptr, false, kDefaultTraits | kToolAmounts},
     Verb{"smooth", kWholeMesh, 3, 0, {10.0, 0.5, 0.0}, "smooth, smooth:N,L, smooth:N,L,K",

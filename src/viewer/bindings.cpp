@@ -79,6 +79,7 @@ constexpr std::array kTable{
     Binding{key_of('E'), kNoMods, kMeshModes, {Command::ToEdge}, "E", "from the selection go to its edge"},
     Binding{key_of('G'), kNoMods, kMeshModes, {Command::ToFace}, "G", "from the selection go to its face"},
     Binding{key_of('K'), kNoMods, kMeshModes, edit("crease"), "K", {}},
+    Binding{key_of('K'), kShift, kMeshModes, edit("crease_by_angle"), "Shift+K", {}},
     Binding{key_of('W'), kAlt, kMeshModes, {Command::CycleStencil}, "Alt+W", "stencil view: hover a vertex, edge or face to see the old vertices and weights that make its new point (cycles Loop with Warren's weights, Loop's own, Catmull-Clark, off)"},
     Binding{key_of('R'), kAlt, kMeshModes, {Command::ToggleDiagram}, "Alt+R", "rewiring panel: after F, S, C or another local operation, its neighbourhood before and after, halfedges named as in its code"},
     Binding{key_of('F'), kAlt, kMeshModes, {Command::CycleField}, "Alt+F", "scalar field: colour the mesh by Gaussian or mean curvature, valence, triangle quality, dihedral angle, edge length, face area or distance from the selected vertex, with a legend (cycles them, then off)"},

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "meshedit/core/normals.h"
 #include "meshedit/io/io.h"
 #include "meshedit/overlay/shading.h"
 
@@ -309,6 +310,18 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDispl
         }
         if (ImGui::Button("smooth (Shift+M)")) {
             requests.action = edit("smooth");
+        }
+        // One angle for marking sharp edges and, when ticked, for simplify and remesh first.
+        ToolSettings::Amounts& sharp = tools.amounts("crease_by_angle");
+        float angle = static_cast<float>(sharp[0]);
+        if (ImGui::SliderFloat("feature angle", &angle, 0.0f, 180.0f, "%.0f°")) {
+            sharp[0] = angle;
+        }
+        bool keep_sharp = keep[2] != kNoFeatureAngle;
+        ImGui::Checkbox("simplify and remesh keep edges sharper", &keep_sharp);
+        keep[2] = remesh[2] = keep_sharp ? sharp[0] : kNoFeatureAngle;
+        if (ImGui::Button("mark sharp edges as creases (Shift+K)")) {
+            requests.action = edit("crease_by_angle");
         }
         if (ImGui::Button("Catmull-Clark (Shift+C)")) {
             requests.action = edit("catmull_clark");

@@ -11,7 +11,6 @@
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/normals.h"
-#include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/simplify.h"
 #include "support/fixtures.h"
@@ -33,20 +32,6 @@ Mesh simplified(Mesh mesh, const SimplifyOptions& options, SimplifyReport* repor
     if (report != nullptr) {
         *report = r;
     }
-    return mesh;
-}
-
-// The quad cube, linear-subdivided three times (8 × 8 quads a side, all flat) and cut into
-// triangles: 768 triangles on the six planes of [-1/√3, 1/√3]³.
-Mesh flat_sided_cube() {
-    Mesh mesh = shapes::quad_sphere(1);
-    QuadSubdivisionOptions linear;
-    linear.scheme = QuadScheme::Linear;
-    for (int i = 0; i < 3; ++i) {
-        quad_subdivide(mesh, linear);
-    }
-    triangulate(mesh);
-    mesh.garbage_collection();
     return mesh;
 }
 
@@ -94,7 +79,7 @@ TEST(Simplify, FlatGridStaysFlatAndSquare) {
 // Every vertex of the flat-sided cube stays on its surface (on a side plane, an edge or a
 // corner: zero error), so the box is exact; it gets far below its 768 triangles.
 TEST(Simplify, CubeKeepsItsSidesEdgesAndCorners) {
-    const Mesh cube = flat_sided_cube();
+    const Mesh cube = test::flat_sided_cube();
     ASSERT_EQ(cube.n_faces(), 768u);
     const double s = 1.0 / std::sqrt(3.0);
     SimplifyOptions options = to(12);

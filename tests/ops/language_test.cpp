@@ -81,8 +81,8 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
               "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, "
               "dissolve_region, subdivide_region, select, select_loop, select_ring, "
               "select_linked, select_more, select_less, select_invert, select_boundary, "
-              "select_creases, select_valence, select_degree, crease, move, loop, "
-              "loop_step, catmull_clark, linear, simplify, remesh, smooth, smooth_cotan, "
+              "select_creases, select_valence, select_degree, crease, crease_by_angle, move, "
+              "loop, loop_step, catmull_clark, linear, simplify, remesh, smooth, smooth_cotan, "
               "taubin, smooth_implicit, fair, triangulate, flip_orientation or compact)");
     EXPECT_EQ(syntax_error("flip:0"),
               "bad op 'flip:0': expected flip:A-B with A-B (an edge by its two vertex indices)");
@@ -395,7 +395,8 @@ namespace {
 // region verbs (their neighbourhood is the whole region).
 TEST(VerbTraits, CreaseAndMoveKeepTheConnectivityAndDrawNoDiagram) {
     for (const Verb& verb : verbs()) {
-        const bool keeps = verb.name == "crease" || verb.name == "move" || verb.select != nullptr;
+        const bool keeps = verb.name == "crease" || verb.name == "crease_by_angle" ||
+                           verb.name == "move" || verb.select != nullptr;
         const bool region = (verb.takes & kRegion) != 0;
         EXPECT_EQ((verb.traits & kChangesTopology) != 0, !keeps) << verb.name;
         EXPECT_EQ((verb.traits & kDrawsDiagram) != 0, !keeps && !region) << verb.name;
@@ -419,7 +420,8 @@ TEST(VerbTraits, DiagramNamesAndToolAmountsComeFromTheTable) {
         EXPECT_EQ(verb.names, expected) << verb.name;
         const bool tool = verb.name == "simplify" || verb.name == "remesh" ||
                           verb.name == "smooth" || verb.name == "smooth_cotan" ||
-                          verb.name == "taubin" || verb.name == "smooth_implicit";
+                          verb.name == "taubin" || verb.name == "smooth_implicit" ||
+                          verb.name == "crease_by_angle";
         EXPECT_EQ((verb.traits & kToolAmounts) != 0, tool) << verb.name;
         // Tool amounts are for whole-mesh verbs; element verbs with amounts are drags.
         if (tool) {

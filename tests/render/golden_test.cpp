@@ -196,6 +196,12 @@ const std::vector<GoldenCase>& golden_cases() {
          "demo:bunny00",
          {"--ops", "remesh:0.03", "--flat", "--wireframe"},
          kScanSize},
+        // CGAL's fandisk (an OFF file: no crease marks) remeshed with a feature angle of 40°:
+        // its 710 sharp edges are marked as creases first (drawn green) and stay sharp and
+        // straight; without it remeshing rounds and jags them (docs/remesh.md).
+        {"fandisk_remesh_feature40",
+         "demo:fandisk",
+         {"--ops", "remesh:0.04,3,40", "--flat", "--wireframe"}},
         // One selection of each element type. Vertex 0 = (−0.53, 0.85, 0) and 1 = (0.53, 0.85,
         // 0) share the faces (0,5,1) on +z and (0,1,7) on −z: each camera looks straight at
         // its element (az = atan2(x, z), el = asin(y)), so nothing sits on the silhouette.

@@ -5,6 +5,9 @@
 #include <tuple>
 #include <vector>
 
+#include "meshedit/core/attributes.h"
+#include "meshedit/core/local_ops.h"
+#include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/shapes.h"
 
 namespace meshedit::test {
@@ -56,6 +59,27 @@ Mesh two_copies(const Mesh& mesh, const Vec3& offset) {
         soup.add_face_range(copy);
     }
     return build_mesh(soup);
+}
+
+Mesh flat_sided_cube() {
+    Mesh mesh = shapes::quad_sphere(1);
+    QuadSubdivisionOptions linear;
+    linear.scheme = QuadScheme::Linear;
+    for (int i = 0; i < 3; ++i) {
+        quad_subdivide(mesh, linear);
+    }
+    triangulate(mesh);
+    mesh.garbage_collection();
+    return mesh;
+}
+
+std::size_t crease_count(const Mesh& mesh) {
+    const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
+    std::size_t n = 0;
+    for (Edge e : mesh.edges()) {
+        n += crease && crease[e] != 0;
+    }
+    return n;
 }
 
 Mesh quad_strip(int n) {

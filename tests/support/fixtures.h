@@ -35,6 +35,13 @@ Mesh two_triangles();
 /// (1,2,6,5), (2,3,7,6), (3,0,4,7).
 Mesh quad_cube();
 
+/// The quad cube, linear-subdivided three times (8 × 8 quads a side, all flat) and cut into
+/// triangles: 768 triangles on the six planes of [-1/√3, 1/√3]³.
+Mesh flat_sided_cube();
+
+/// How many edges carry the crease flag (kCreaseProperty).
+std::size_t crease_count(const Mesh& mesh);
+
 /// `n` unit quads in a row in the z = 0 plane: vertices 0..n at y = 0, n+1..2n+1 at y = 1,
 /// faces (i, i+1, n+2+i, n+1+i).
 Mesh quad_strip(int n);

@@ -41,6 +41,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('E'), 0, kMeshModes, {Command::ToEdge}},
             {key_of('G'), 0, kMeshModes, {Command::ToFace}},
             {key_of('K'), 0, kMeshModes, edit("crease")},
+            {key_of('K'), kShift, kMeshModes, edit("crease_by_angle")},
             {key_of('W'), kAlt, kMeshModes, {Command::CycleStencil}},
             {key_of('R'), kAlt, kMeshModes, {Command::ToggleDiagram}},
             {key_of('F'), kAlt, kMeshModes, {Command::CycleField}},

@@ -192,3 +192,32 @@ TEST(Editor, QuitAsksOnceWhenDirty) {
 
 }  // namespace
 }  // namespace meshedit::viewer
+
+namespace meshedit::viewer {
+namespace {
+
+// Shift+K marks the edges sharper than the info panel's feature angle; the count is in the
+// status line, the session records the step, and undo takes the marks away.
+TEST(Editor, ShiftKMarksSharpEdgesByTheToolAngle) {
+    Editor ed = editor_with(shapes::cube());
+    const Mesh before = ed.mesh();
+    ed.tools().amounts("crease_by_angle")[0] = 100.0;
+    EXPECT_EQ(ed.press(key_of('K'), kShift).message, "marked 0 edges sharper than 100° as creases");
+    ed.tools().amounts("crease_by_angle")[0] = 60.0;
+    const Outcome out = ed.press(key_of('K'), kShift);
+    EXPECT_EQ(out.message, "marked 12 edges sharper than 60° as creases");
+    const auto crease = ed.mesh().get_property<Edge, std::uint8_t>(kCreaseProperty);
+    ASSERT_TRUE(crease);
+    std::size_t n = 0;
+    for (Edge e : ed.mesh().edges()) {
+        n += crease[e] != 0;
+    }
+    EXPECT_EQ(n, 12u);
+    EXPECT_VALID(ed.mesh());
+    ed.press(key_of('Z'), kCtrl);
+    ed.press(key_of('Z'), kCtrl);
+    EXPECT_TRUE(test::identical(ed.mesh(), before));
+}
+
+}  // namespace
+}  // namespace meshedit::viewer

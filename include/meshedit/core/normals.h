@@ -3,11 +3,13 @@
 /// Face and vertex normals, and the signed volume they enclose.
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/op_status.h"
 
 namespace meshedit {
 
@@ -67,6 +69,25 @@ struct NormalSplit {
     bool creases = true;
     std::optional<double> auto_smooth_deg;
 };
+
+/// The dihedral angle of interior edge `e` in degrees: the angle between its two faces'
+/// normals, 0 where the surface is flat, near 180 where it folds back. NaN on the boundary
+/// or beside a degenerate face (no normal). What the `dihedral` field shows.
+double dihedral_angle_deg(const Mesh& mesh, Edge e);
+
+/// The feature angle of remesh() and simplify() that marks nothing (off).
+inline constexpr double kNoFeatureAngle = std::numeric_limits<double>::infinity();
+
+/// Why crease_by_angle() cannot run with `degrees`, or ok: NaN, below 0 or above 180. Pure.
+OpStatus check_crease_by_angle(double degrees);
+
+/// Marks as creases (kCreaseProperty, the flag K toggles) every interior edge whose dihedral
+/// angle exceeds `degrees` (Blender's Select Sharp Edges and Mark Sharp): the creases that are
+/// there stay, boundary edges and edges beside a degenerate face are left alone, and the crease
+/// property is added only when an edge is marked. Writes through the property's handle after
+/// mesh.touch(e), so a recorded edit undoes it. O(E). \pre check_crease_by_angle() returned
+/// ok. \return how many edges it marked (creases already are not counted).
+std::size_t crease_by_angle(Mesh& mesh, double degrees);
 
 /// Area-weighted normals per face corner, indexed by halfedge: `out[h]` is the normal of the
 /// corner at to_vertex(h) in face(h). Around a vertex the sharp edges cut its faces into

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/op_status.h"
 
 namespace meshedit {
@@ -18,6 +19,10 @@ struct RemeshOptions {
     double target_length = 0.0;
     /// Rounds of split, collapse, flip, smooth and project (1 to 100).
     int iterations = 3;
+    /// Before remeshing, mark every edge whose dihedral angle exceeds this many degrees as a
+    /// crease (crease_by_angle(), normals.h), so that sharp edges stay sharp and straight;
+    /// infinity: off (only the creases already marked are kept).
+    double feature_angle_deg = kNoFeatureAngle;
     /// Called with the fraction done (0…1), non-decreasing, last with 1; may be empty.
     std::function<void(double)> progress;
 };
@@ -25,12 +30,13 @@ struct RemeshOptions {
 struct RemeshReport {
     double target_length = 0.0;  ///< the length used (the mean when 0 was asked for)
     std::size_t splits = 0, collapses = 0, flips = 0;
+    std::size_t creases_marked = 0;  ///< by feature_angle_deg, before the first round
 };
 
 /// Why remesh() cannot run, or ok: polygons (triangulate first), no faces, a target
 /// length that is negative, not finite, or so small against the mesh that the result would
 /// not fit (more than about 100 million triangles or the memory budget), iterations out of
-/// 1 to 100. Pure.
+/// 1 to 100, a feature angle that is NaN or outside 0 to 180 (infinity: off). Pure.
 OpStatus check_remesh(const Mesh& mesh, const RemeshOptions& options);
 
 /// Remeshes in place. Boundary edges and crease edges are features: their vertices move only

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "meshedit/core/mesh.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/op_status.h"
 
 namespace meshedit {
@@ -23,6 +24,10 @@ struct SimplifyOptions {
     /// Refuse a collapse that turns the normal of a face that stays by more than this many
     /// degrees (or makes it degenerate).
     double max_normal_change_deg = 60.0;
+    /// Before simplifying, mark every edge whose dihedral angle exceeds this many degrees as a
+    /// crease (crease_by_angle(), normals.h); infinity: off (the creases already marked are
+    /// kept all the same).
+    double feature_angle_deg = kNoFeatureAngle;
     /// Called with the fraction done (0…1), non-decreasing, at coarse intervals, last with 1.
     std::function<void(double)> progress;
 };
@@ -33,6 +38,10 @@ struct SimplifyReport {
     /// Candidate collapses skipped: the link condition failed, or a face would flip.
     std::size_t refused_topology = 0;
     std::size_t refused_normal = 0;
+    /// Candidate collapses skipped because they would pull a crease vertex off its crease:
+    /// a non-crease edge between two crease vertices, or a crease edge between two corners.
+    std::size_t refused_crease = 0;
+    std::size_t creases_marked = 0;  ///< by feature_angle_deg, before the first collapse
     /// The largest error of an applied collapse (same unit as SimplifyOptions::max_error).
     double largest_error = 0.0;
     /// True when it stopped at max_error (or ran out of collapses) above target_faces.
@@ -41,7 +50,8 @@ struct SimplifyReport {
 
 /// Why simplify() cannot run with `options`, or ok: the mesh has polygons (QEM here works
 /// on triangles: triangulate first), no faces, a target of 0 or not below the face count, a
-/// negative or NaN error bound or angle. Pure.
+/// negative or NaN error bound or angle, a feature angle that is NaN or outside 0 to 180
+/// (infinity: off). Pure.
 OpStatus check_simplify(const Mesh& mesh, const SimplifyOptions& options);
 
 /// Collapses edges, cheapest quadric error first, until the mesh has at most
@@ -49,12 +59,17 @@ OpStatus check_simplify(const Mesh& mesh, const SimplifyOptions& options);
 ///
 /// Quadrics: each face contributes its plane's quadric weighted by its area to its three
 /// corners; boundary and crease edges add a plane through the edge perpendicular to its face,
-/// weighted by 1000 × the edge's squared length, so features hold. Each collapse goes through
+/// weighted by 100 × the edge's squared length, so features hold. Each collapse goes through
 /// collapse() (its link condition), moves the survivor to the point that minimises the summed
 /// quadric (a 3 × 3 solve; the best of the two ends and the midpoint when the system is
 /// ill-conditioned), and is refused when a face that stays would turn by more than
-/// max_normal_change_deg. Deleted elements stay tombstoned (garbage collection is the
-/// caller's). \pre check_simplify() returned ok. \post validate(mesh) passes.
+/// max_normal_change_deg. Crease vertices (on a kCreaseProperty edge) stay exactly on their
+/// creases, as remesh() keeps them: a collapse along a crease puts the survivor at one of the
+/// edge's ends (the corner's, if one is a corner: the end of a crease, three or more crease
+/// edges, or two that turn by more than 30 degrees; two corners never collapse), a collapse of
+/// another edge with one crease end puts it at that end, and one between two crease vertices
+/// is refused. Deleted elements stay tombstoned (garbage collection is the caller's). \pre
+/// check_simplify() returned ok. \post validate(mesh) passes.
 SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options);
 
 }  // namespace meshedit

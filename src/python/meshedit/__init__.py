@@ -49,8 +49,9 @@ AMOUNT_NAMES = {
     "inset": ("shrink",),
     "bevel": ("t",),
     "move": ("x", "y", "z"),
-    "simplify": ("ratio", "max_error"),  # ratio: a share below 1, or a whole face count
-    "remesh": ("length", "rounds"),
+    "simplify": ("ratio", "max_error", "feature_angle"),  # ratio: a share below 1, or faces
+    "remesh": ("length", "rounds", "feature_angle"),
+    "crease_by_angle": ("degrees",),
     "extrude_region": ("height",),
 }
 
