@@ -196,6 +196,15 @@ const std::vector<GoldenCase>& golden_cases() {
          "demo:bunny00",
          {"--ops", "remesh:0.03", "--flat", "--wireframe"},
          kScanSize},
+        // Smoothing (docs/smoothing.md): the scanned bunny as read, after 50 uniform Laplacian
+        // steps (λ 0.5: the ears thin and the whole shrinks) and after 50 Taubin λ|μ steps
+        // (the scanner's ridges go, the shape and its size stay).
+        {"bunny_input", "demo:bunny00", {"--flat"}, kScanSize},
+        {"bunny_smooth50", "demo:bunny00", {"--ops", "smooth:50,0.5", "--flat"}, kScanSize},
+        {"bunny_taubin50",
+         "demo:bunny00",
+         {"--ops", "taubin:50,0.5,-0.53", "--flat"},
+         kScanSize},
         // CGAL's fandisk (an OFF file: no crease marks) remeshed with a feature angle of 40°:
         // its 710 sharp edges are marked as creases first (drawn green) and stay sharp and
         // straight; without it remeshing rounds and jags them (docs/remesh.md).
