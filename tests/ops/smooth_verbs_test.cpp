@@ -23,7 +23,10 @@ std::string refusal(Mesh& mesh, const std::string& text) {
     } catch (const OpError& e) {
         const auto& a = mesh.position_vector();
         const auto& b = before.position_vector();
-        EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)), 0) << text;
+        // memcmp of an empty mesh's null data is undefined (UBSan says so): nothing to compare.
+        EXPECT_TRUE(a.size() == b.size() &&
+                    (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0))
+            << text;
         EXPECT_EQ(test::canonical_faces(mesh), test::canonical_faces(before)) << text;
         return e.what();
     }
