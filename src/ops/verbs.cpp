@@ -20,6 +20,7 @@
 #include "meshedit/core/subdivision.h"
 #include "meshedit/ops/ops.h"
 #include "region_verbs.h"
+#include "repair_verbs.h"
 #include "smooth_verbs.h"
 
 namespace meshedit::ops {
@@ -729,6 +730,28 @@ constexpr std::array kVerbs{
          "fixed: the patch joins the surface around it smoothly",
          "fair the selected faces (their border fixed)", check_fair_step, run_fair, nullptr,
          false, kChangesTopology},
+    Verb{"repair", kWholeMesh, 0, 0, kNoDefaults, "repair",
+         "`meshedit repair`'s safe sequence: merge vertices within 1e-6 of the bounding-box "
+         "diagonal, remove degenerate and duplicate faces, orient faces (closed parts outward)",
+         "repair the mesh (merge, clean, orient)", check_repair, run_repair},
+    Verb{"merge_by_distance", kWholeMesh, 2, 0, {1e-6, 0.0},
+         "merge_by_distance, merge_by_distance:T, merge_by_distance:T,A",
+         "merges vertices closer than T times the bounding-box diagonal (default 1e-6; with "
+         "A = 1, T is a distance), stitching coincident boundary edges",
+         "merge vertices by distance", check_merge_by_distance, run_merge_by_distance},
+    Verb{"remove_degenerate", kWholeMesh, 0, 0, kNoDefaults, "remove_degenerate",
+         "removes faces of zero area or a repeated corner, and duplicate faces",
+         "remove degenerate and duplicate faces", check_remove_degenerate, run_remove_degenerate},
+    Verb{"orient", kWholeMesh, 0, 0, kNoDefaults, "orient",
+         "merges vertices at equal positions, then turns faces over so neighbours agree and "
+         "closed parts face outward", "orient faces coherently", check_orient, run_orient},
+    Verb{"remove_small", kWholeMesh, 1, 0, {10.0}, "remove_small, remove_small:N",
+         "removes the components (faces joined through vertices) of fewer than N faces "
+         "(default 10); the largest stays even when smaller",
+         "remove small components", check_remove_small, run_remove_small},
+    Verb{"fill_holes", kWholeMesh, 1, 0, {8.0}, "fill_holes, fill_holes:K",
+         "fills every hole of at most K edges (default 8; with triangles on a triangle mesh)",
+         "fill small holes", check_fill_holes, run_fill_holes},
     Verb{"triangulate", kWholeMesh | kFaceArg, 0, 0, kNoDefaults, "triangulate, triangulate:fI",
          "cuts every polygon (or face I) into triangles by diagonals inside it",
          "triangulate every polygon", check_triangulate, run_triangulate},

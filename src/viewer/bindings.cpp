@@ -52,6 +52,7 @@ constexpr std::array kTable{
     Binding{key_of('D'), kNoMods, kMeshModes, edit("simplify"), "D", {}},
     Binding{key_of('R'), kShift, kMeshModes, edit("remesh"), "Shift+R", {}},
     Binding{key_of('M'), kShift, kMeshModes, edit("smooth"), "Shift+M", {}},
+    Binding{key_of('R'), kAlt | kShift, kMeshModes, edit("repair"), "Alt+Shift+R", {}},
     Binding{key_of('M'), kAlt, kMeshModes, edit("fair"), "Alt+M", {}},
     // Selecting.
     Binding{key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}, "Ctrl+A", "select every element of the selected kind (faces if none)"},

@@ -76,14 +76,16 @@ TEST(OpsLanguage, ParsesElementsAndAmounts) {
 }
 
 TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
-    EXPECT_EQ(syntax_error("twist:0-1"),
-              "unknown op 'twist:0-1' (the verbs are flip, split, bisect, collapse, dissolve, "
-              "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, "
-              "dissolve_region, subdivide_region, select, select_loop, select_ring, "
-              "select_linked, select_more, select_less, select_invert, select_boundary, "
-              "select_creases, select_valence, select_degree, crease, crease_by_angle, move, "
-              "loop, loop_step, catmull_clark, linear, simplify, remesh, smooth, smooth_cotan, "
-              "taubin, smooth_implicit, fair, triangulate, flip_orientation or compact)");
+    EXPECT_EQ(
+        syntax_error("twist:0-1"),
+        "unknown op 'twist:0-1' (the verbs are flip, split, bisect, collapse, dissolve, "
+        "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, "
+        "dissolve_region, subdivide_region, select, select_loop, select_ring, "
+        "select_linked, select_more, select_less, select_invert, select_boundary, "
+        "select_creases, select_valence, select_degree, crease, crease_by_angle, move, "
+        "loop, loop_step, catmull_clark, linear, simplify, remesh, smooth, smooth_cotan, "
+        "taubin, smooth_implicit, fair, repair, merge_by_distance, remove_degenerate, orient, "
+        "remove_small, fill_holes, triangulate, flip_orientation or compact)");
     EXPECT_EQ(syntax_error("flip:0"),
               "bad op 'flip:0': expected flip:A-B with A-B (an edge by its two vertex indices)");
     EXPECT_EQ(syntax_error("flip:3-3"), "bad op 'flip:3-3': an edge needs two different vertices");

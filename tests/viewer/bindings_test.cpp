@@ -75,6 +75,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('D'), 0, kMeshModes, edit("simplify")},
             {key_of('R'), kShift, kMeshModes, edit("remesh")},
             {key_of('M'), kShift, kMeshModes, edit("smooth")},
+            {key_of('R'), kAlt | kShift, kMeshModes, edit("repair")},
             {key_of('M'), kAlt, kMeshModes, edit("fair")},
             {key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}},
             {key_of('A'), kAlt, kMeshModes, {Command::SelectNone}},

@@ -124,6 +124,14 @@ LoadedMesh read_mesh(const std::filesystem::path& path);
 /// and the reader's notices. \throws IoError naming `name` when the soup cannot be built.
 LoadedMesh build_loaded_mesh(MeshSoup soup, const std::string& name);
 
+/// The soup a file would hold of `mesh` (a compacted copy when it has deleted elements), so
+/// that build_loaded_mesh() of it gives the mesh back: positions, each face's corners from
+/// where halfedge(f) leaves, and what build_loaded_mesh() keeps of a soup (texture coordinates
+/// and normals per corner, materials, the PLY properties `v:ply:*` and `f:ply:*`, crease
+/// marks). The edits that work on soups (the repair verbs, repair.h) go through it. Every other
+/// property is named in `unkept` ("the property v:weight"), when given.
+MeshSoup soup_from_mesh(const Mesh& mesh, std::vector<std::string>* unkept = nullptr);
+
 /// What a file of that extension (".obj") cannot keep of `mesh`, one phrase each ("12 crease
 /// marks (OBJ has no crease edges)", "30 polygons (glTF stores triangles: each is fanned)",
 /// "coordinates beyond 32-bit float precision (glTF stores floats)"); empty if nothing.

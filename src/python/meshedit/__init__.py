@@ -53,6 +53,9 @@ AMOUNT_NAMES = {
     "remesh": ("length", "rounds", "feature_angle"),
     "crease_by_angle": ("degrees",),
     "extrude_region": ("height",),
+    "merge_by_distance": ("tolerance", "absolute"),  # absolute=1: a distance, not a share
+    "remove_small": ("faces",),
+    "fill_holes": ("max_edges",),
 }
 
 _VERBS = {verb["name"]: verb for verb in verbs()}
