@@ -63,6 +63,23 @@ TEST(DisplayData, TheFieldIsRecomputedOnlyWhenItsInputsChange) {
     EXPECT_EQ(display.field(mesh, request).info, nullptr);
 }
 
+// `tree` and `fresh` meet the same first triangle at the same t along `rays` rays from the
+// centre of `mesh`, spread over the sphere.
+void expect_same_hits(const FaceBvh& tree, const FaceBvh& fresh, const Mesh& mesh, int rays) {
+    for (int i = 0; i < rays; ++i) {
+        const double a = 0.1 * i, b = 0.37 * i;
+        const FaceBvh::Ray ray{{0, 0, 0},
+                               {std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)}};
+        const auto x = tree.intersect(mesh, ray);
+        const auto y = fresh.intersect(mesh, ray);
+        ASSERT_EQ(x.has_value(), y.has_value());
+        if (x) {
+            EXPECT_EQ(x->face, y->face);
+            EXPECT_EQ(x->t, y->t);
+        }
+    }
+}
+
 // The tree follows a recorded flip and answers as a tree built afresh.
 TEST(DisplayData, ThePickingTreeFollowsARecordedChange) {
     Mesh mesh = shapes::icosphere(2);
@@ -81,20 +98,8 @@ TEST(DisplayData, ThePickingTreeFollowsARecordedChange) {
     FaceBvh fresh;
     fresh.build(mesh);
     const FaceBvh& tree = display.picking_tree(mesh, 2);
-    for (int i = 0; i < 200; ++i) {
-        const double a = 0.1 * i, b = 0.37 * i;
-        const FaceBvh::Ray ray{{0, 0, 0},
-                               {std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)}};
-        const auto x = tree.intersect(mesh, ray);
-        const auto y = fresh.intersect(mesh, ray);
-        ASSERT_EQ(x.has_value(), y.has_value());
-        if (x) {
-            EXPECT_EQ(x->face, y->face);
-            EXPECT_EQ(x->t, y->t);
-        }
-    }
+    expect_same_hits(tree, fresh, mesh, 200);
 }
-
 
 // A tree built ahead on the worker answers as one built when first asked, and is taken, not
 // built again, by the pick at its revision; one for another revision is built afresh.
@@ -107,18 +112,7 @@ TEST(DisplayData, ThePrebuiltTreeIsTheTreeOfItsRevision) {
     const FaceBvh& tree = display.picking_tree(mesh, 5);
     EXPECT_EQ(tree.tree_size(), fresh.tree_size());
     EXPECT_EQ(tree.rebuilds(), 0u);
-    for (int i = 0; i < 100; ++i) {
-        const double a = 0.1 * i, b = 0.37 * i;
-        const FaceBvh::Ray ray{{0, 0, 0},
-                               {std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)}};
-        const auto x = tree.intersect(mesh, ray);
-        const auto y = fresh.intersect(mesh, ray);
-        ASSERT_EQ(x.has_value(), y.has_value());
-        if (x) {
-            EXPECT_EQ(x->face, y->face);
-            EXPECT_EQ(x->t, y->t);
-        }
-    }
+    expect_same_hits(tree, fresh, mesh, 100);
     // picking_tree() waits for a build under way itself.
     const Mesh small = shapes::icosphere(1);
     display.prebuild(small, 6);
