@@ -16,6 +16,7 @@
 #include "mesh/unit_scale.h"
 #include "meshedit/core/display_fan.h"
 #include "meshedit/core/normals.h"
+#include "stored_fields.h"
 
 namespace meshedit {
 namespace {
@@ -230,6 +231,9 @@ const FieldInfo* find_field(std::string_view name) {
 
 std::vector<double> compute_field(const Mesh& mesh, const FieldInfo& info,
                                   const FieldOptions& options) {
+    if (!info.property.empty()) {
+        return stored_field_values(mesh, info);
+    }
     const std::string_view n = info.name;
     if (n == "gauss" || n == "mean") {
         return vertex_curvature(mesh, n == "gauss");

@@ -169,7 +169,8 @@ Json stats_json(const Mesh& mesh, bool closed) {
     }
     j["total_angle_defect"] = total_angle_defect(mesh);
     Json fields = Json::object();
-    for (const FieldInfo& info : field_infos()) {
+    for (const FieldInfo* info_ptr : mesh_fields(mesh)) {
+        const FieldInfo& info = *info_ptr;
         const FieldStats s = field_stats(compute_field(mesh, info));
         fields[std::string(info.name)] = {
             {"count", s.count}, {"min", s.min}, {"mean", s.mean}, {"max", s.max}};
@@ -184,7 +185,8 @@ void print_stats(const Mesh& mesh, bool closed, long euler_characteristic) {
     print_row("angle defect", readable_number(total_angle_defect(mesh) / std::numbers::pi) +
                                   " pi (Gauss-Bonnet: 2 pi chi = " +
                                   std::to_string(2 * euler_characteristic) + " pi)");
-    for (const FieldInfo& info : field_infos()) {
+    for (const FieldInfo* info_ptr : mesh_fields(mesh)) {
+        const FieldInfo& info = *info_ptr;
         const FieldStats s = field_stats(compute_field(mesh, info));
         const std::string unit = info.unit.empty() ? "" : " " + std::string(info.unit);
         print_row(std::string(info.name),

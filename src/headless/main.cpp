@@ -182,7 +182,11 @@ int run(const Options& options) {
     // What is drawn besides the mesh, derived as the window derives it: the features (for a
     // mesh, not a surface's tessellation unless --features), the scene's marks, the field.
     DisplayData display;
-    const FieldInfo* field = options.field.empty() ? nullptr : find_field(options.field);
+    const FieldInfo* field = options.field.empty() ? nullptr : find_field(mesh, options.field);
+    if (!options.field.empty() && field == nullptr) {
+        throw UsageError("no field called '" + options.field +
+                         "' (the fields: " + field_names(mesh) + ")");
+    }
     if (field != nullptr) {
         if (is_curve || diagram) {
             throw UsageError("--field colours a mesh: not a curve or an --op-diagram");

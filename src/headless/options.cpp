@@ -208,15 +208,11 @@ int parse_options(int argc, char** argv, Options& o) {
     for (const FieldInfo& info : field_infos()) {
         field_names += (field_names.empty() ? "" : "|") + std::string(info.name);
     }
+    // Checked once the mesh is read: its own scalar properties are fields too (fields.h).
     app.add_option("--field", o.field,
-                   "colour the surface by a scalar field, with its legend (docs/fields.md)")
-        ->type_name(field_names)
-        ->check([field_names](const std::string& name) {
-            std::string known = field_names;
-            std::replace(known.begin(), known.end(), '|', ' ');
-            return find_field(name) ? std::string()
-                                    : "no field called '" + name + "' (the fields: " + known + ")";
-        });
+                   "colour the surface by a scalar field, with its legend (docs/fields.md); "
+                   "the mesh's own vertex or face numbers (a PLY column) are fields too")
+        ->type_name(field_names + "|NAME");
     app.add_option_function<std::string>(
            "--colormap", [&o](const std::string& name) { o.colormap = find_colormap(name); },
            "the field's colour map (default: diverging for signed curvature, else viridis)")

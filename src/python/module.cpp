@@ -183,7 +183,8 @@ py::dict info(const PyMesh& self, bool stats) {
         }
         st["total_angle_defect"] = total_angle_defect(mesh);
         py::dict fields;
-        for (const FieldInfo& field : field_infos()) {
+        for (const FieldInfo* field_ptr : mesh_fields(mesh)) {
+            const FieldInfo& field = *field_ptr;
             const FieldStats fs = field_stats(compute_field(mesh, field));
             py::dict one;
             one["count"] = fs.count;
@@ -199,13 +200,10 @@ py::dict info(const PyMesh& self, bool stats) {
 }
 
 py::array field(const PyMesh& self, const std::string& name, std::uint32_t source) {
-    const FieldInfo* info = find_field(name);
+    const FieldInfo* info = find_field(self.mesh, name);
     if (info == nullptr) {
-        std::string names;
-        for (const FieldInfo& f : field_infos()) {
-            names += (names.empty() ? "" : ", ") + std::string(f.name);
-        }
-        throw py::value_error("unknown field '" + name + "' (fields: " + names + ")");
+        throw py::value_error("unknown field '" + name +
+                              "' (fields: " + field_names(self.mesh, ", ") + ")");
     }
     if (info->name == "distance" &&
         (source >= self.mesh.vertices_size() || self.mesh.is_deleted(Vertex(source)))) {

@@ -370,14 +370,17 @@ Outcome Editor::cycle_stencil() {
 }
 
 Outcome Editor::cycle_field() {
-    const std::span<const FieldInfo> all = field_infos();
-    if (view_.field == nullptr) {
-        view_.field = &all.front();
-    } else if (view_.field == &all.back()) {
+    // The computed fields, then the mesh's own numbers (a PLY column such as compare's
+    // deviation), then off.
+    const std::vector<const FieldInfo*> all = mesh_fields(mesh());
+    const auto at = std::find(all.begin(), all.end(), view_.field);
+    if (view_.field == nullptr || at == all.end()) {
+        view_.field = all.front();
+    } else if (at + 1 == all.end()) {
         view_.field = nullptr;
         return {kDisplay, "field off"};
     } else {
-        view_.field = view_.field + 1;
+        view_.field = *(at + 1);
     }
     std::string message = "field: " + std::string(view_.field->title);
     if (view_.field->name == "distance") {

@@ -108,6 +108,23 @@ TEST(CliCompare, ALiftedVertexIsMeasured) {
     for (const Vertex v : m.vertices()) {
         EXPECT_EQ(deviation[v], m.position(v) == kMiddle ? 0.25 : 0.0) << v.idx();
     }
+    // The field file is a field: info --stats sums it up, render draws it with its legend,
+    // and a wrong name lists it among the fields.
+    r = run_meshedit({"info", field, "--stats", "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Json stats = Json::parse(r.out)["stats"]["fields"]["deviation"];
+    EXPECT_EQ(stats["count"].get<int>(), 25);
+    EXPECT_EQ(stats["max"].get<double>(), 0.25);
+    EXPECT_DOUBLE_EQ(stats["mean"].get<double>(), 0.01);
+    const std::string png = (files.dir / "deviation.png").string();
+    r = run_meshedit({"render", field, "-o", png, "--field", "deviation", "--size", "160x100"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(png));
+    r = run_meshedit({"render", field, "-o", png, "--field", "deviance"});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("no field called 'deviance' (the fields: gauss mean"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find(" distance deviation)"), std::string::npos) << r.err;
 }
 
 TEST(CliCompare, AFlippedEdgeIsNamed) {

@@ -221,5 +221,56 @@ TEST(Fields, HugeAndTinyCoordinatesGiveTheUnitMeshsValues) {
                 field_stats(field(unit, "gauss")).mean, 1e-9);
 }
 
+TEST(StoredFields, AMeshsScalarPropertiesAreFieldsNamedWithoutTheirPrefix) {
+    Mesh mesh = shapes::cube();
+    auto deviation = mesh.add_property<Vertex, double>("v:ply:deviation", 0.0);
+    auto label = mesh.add_property<Face, std::int32_t>("f:label", 0);
+    mesh.add_property<Vertex, double>("v:ply:valence", 0.0);    // a computed field's name
+    mesh.add_property<Vertex, float>("v:mean", 0.0f);           // likewise, without ply:
+    mesh.add_property<Vertex, std::uint8_t>("v:loop_has", 0);   // MeshEdit's own: not a field
+    mesh.add_property<Vertex, Vec3>("v:ply:velocity", Vec3{});  // not a scalar
+    for (const Vertex v : mesh.vertices()) {
+        deviation[v] = 0.5 * v.idx();
+    }
+    for (const Face f : mesh.faces()) {
+        label[f] = -static_cast<std::int32_t>(f.idx());
+    }
+    const std::vector<const FieldInfo*> stored = stored_fields(mesh);
+    std::vector<std::string> names;
+    for (const FieldInfo* info : stored) {
+        names.emplace_back(info->name);
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"deviation", "ply:valence", "user:mean", "label"}));
+    EXPECT_EQ(mesh_fields(mesh).size(), field_infos().size() + 4);
+    EXPECT_EQ(find_field(mesh, "valence"), find_field("valence"));  // the computed one wins
+
+    const FieldInfo* d = find_field(mesh, "deviation");
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d, stored.front());  // one FieldInfo per property, however often asked
+    EXPECT_EQ(d->site, FieldSite::Vertex);
+    EXPECT_EQ(d->property, "v:ply:deviation");
+    const std::vector<double> dv = compute_field(mesh, *d);
+    ASSERT_EQ(dv.size(), mesh.vertices_size());
+    for (const Vertex v : mesh.vertices()) {
+        EXPECT_EQ(dv[v.idx()], 0.5 * v.idx());
+    }
+    const FieldInfo* l = find_field(mesh, "label");
+    ASSERT_NE(l, nullptr);
+    EXPECT_EQ(l->site, FieldSite::Face);
+    const std::vector<double> lv = compute_field(mesh, *l);
+    for (const Face f : mesh.faces()) {
+        EXPECT_EQ(lv[f.idx()], -static_cast<double>(f.idx()));
+    }
+    EXPECT_EQ(field_names(mesh, ",").substr(0, 11), "gauss,mean,");
+    EXPECT_TRUE(field_names(mesh).ends_with("distance deviation ply:valence user:mean label"));
+
+    // A mesh without the property (another file) reads no values, never stale ones.
+    const Mesh plain = shapes::cube();
+    EXPECT_EQ(find_field(plain, "deviation"), nullptr);
+    for (const double x : compute_field(plain, *d)) {
+        EXPECT_TRUE(std::isnan(x));
+    }
+}
+
 }  // namespace
 }  // namespace meshedit

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "meshedit/core/fields.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
@@ -61,6 +62,24 @@ TEST(Editor, StencilViewCyclesItsSchemesAndFollowsHoverThenSelection) {
     // A display state: no edit, nothing to undo.
     EXPECT_FALSE(ed.dirty());
     EXPECT_EQ(ed.history().undo_steps(), 0u);
+}
+
+TEST(Editor, AltFStepsThroughTheComputedFieldsThenTheMeshsOwnNumbers) {
+    // A compare --field file's deviation (a PLY column) is a field like the curvatures.
+    Mesh cube = shapes::cube();
+    cube.add_property<Vertex, double>("v:ply:deviation", 0.25);
+    Editor ed = editor_with(std::move(cube));
+    for (const FieldInfo& info : field_infos()) {
+        ed.press(key_of('F'), kAlt);
+        ASSERT_EQ(ed.view().field, &info);
+    }
+    const Outcome out = ed.press(key_of('F'), kAlt);
+    ASSERT_NE(ed.view().field, nullptr);
+    EXPECT_EQ(ed.view().field->name, "deviation");
+    EXPECT_EQ(out.message, "field: deviation (Alt+F: next)");
+    EXPECT_EQ(ed.press(key_of('F'), kAlt).message, "field off");
+    EXPECT_EQ(ed.view().field, nullptr);
+    EXPECT_FALSE(ed.dirty());
 }
 
 TEST(Editor, DisplayTogglesAreNotEdits) {

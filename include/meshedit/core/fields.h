@@ -33,6 +33,8 @@ struct FieldInfo {
     FieldSite site;
     bool is_signed;                ///< values of both signs around 0 (a diverging colour map)
     std::string_view description;  ///< one line: how it is computed
+    /// A stored field's property ("v:ply:deviation"); empty for the computed ones.
+    std::string_view property = {};
 };
 
 /// Every field, in the order `--field` and the viewer list them.
@@ -40,13 +42,28 @@ std::span<const FieldInfo> field_infos();
 /// The field called `name`, or nullptr.
 const FieldInfo* find_field(std::string_view name);
 
+/// The scalar vertex and face properties `mesh` carries — a PLY file's columns such as
+/// `meshedit compare --field`'s deviation, a library user's numbers — as fields: each is named
+/// by its property without the "v:"/"f:" and "ply:" prefixes ("v:ply:deviation" → "deviation"),
+/// or with "ply:" kept where that would take a computed field's name. The MeshEdit's own
+/// attributes (materials, the Loop overlay) are not fields. The pointers stay valid for the
+/// program's life: one FieldInfo per property name and site, made on first sight.
+std::vector<const FieldInfo*> stored_fields(const Mesh& mesh);
+/// Every field of `mesh`: the computed ones (field_infos()), then its stored ones.
+std::vector<const FieldInfo*> mesh_fields(const Mesh& mesh);
+/// The field of `mesh` called `name`, computed or stored, or nullptr.
+const FieldInfo* find_field(const Mesh& mesh, std::string_view name);
+/// "gauss mean … deviation": the names of mesh_fields(mesh), for messages.
+std::string field_names(const Mesh& mesh, std::string_view separator = " ");
+
 struct FieldOptions {
     /// `distance`: the vertex distances are measured from (the selection in the viewer).
     Vertex source{0};
 };
 
 /// The values of field `info` by element index of its site. O(size of the mesh); distance
-/// is Dijkstra over the edges, O(E log V).
+/// is Dijkstra over the edges, O(E log V). A stored field reads its property (NaN for every
+/// element when the mesh no longer has it).
 std::vector<double> compute_field(const Mesh& mesh, const FieldInfo& info,
                                   const FieldOptions& options = {});
 
