@@ -43,6 +43,7 @@ Command add_repair(CLI::App& meshedit) {
         bool no_orient = false;
         std::int64_t min_faces = 0;
         std::int64_t fill_holes = 0;
+        bool fair = false;
         bool quiet = false;
         bool ascii = false;
     };
@@ -71,6 +72,11 @@ Command add_repair(CLI::App& meshedit) {
                                        "fill holes of at most K boundary edges, with triangles "
                                        "when the mesh is all triangles")
                            ->type_name("K");
+    app->add_flag("--fair", s->fair,
+                  "fill with triangles as long as the edges around each hole, faired so the "
+                  "patch continues the surface (Liepa 2003), rather than with the fewest "
+                  "triangles")
+        ->needs(fill_holes);
     app->add_flag("--quiet", s->quiet, "print no report of what was repaired");
     app->add_flag("--ascii", s->ascii, "write PLY and STL as text rather than binary");
     app->footer(
@@ -89,6 +95,7 @@ Command add_repair(CLI::App& meshedit) {
         "  meshedit repair scan.stl fixed.ply\n"
         "  meshedit repair parts.obj whole.obj --merge-distance 0.001 --min-component-faces 10\n"
         "  meshedit repair broken.off closed.off --fill-holes 8\n"
+        "  meshedit repair scan.ply whole.ply --fill-holes 2000 --fair\n"
         "\n"
         "Exit status: 0 ok, 1 a repair that would leave no face, 2 bad usage, bad input or an\n"
         "unwritable output.");
@@ -111,6 +118,7 @@ Command add_repair(CLI::App& meshedit) {
                 options.orient = !s->no_orient;
                 options.components.min_faces = static_cast<std::size_t>(s->min_faces);
                 options.fill_holes = static_cast<std::size_t>(s->fill_holes);
+                options.fair_holes = s->fair;
                 const std::size_t faces_before = soup.soup.n_faces();
                 RepairedMesh repaired;
                 try {

@@ -187,17 +187,10 @@ StepResult run_remove_small(Mesh& mesh, const Step& step, const RunOptions&) {
                    [&](MeshSoup& soup) { return one_step(remove_small_components(soup, bounds)); });
 }
 
-// On the mesh itself: filling adds faces through fill_hole(), which carries attributes.
-OpStatus check_fill_holes(const Mesh& mesh, const Step& step) {
-    if (const OpStatus why =
-            check_count(step.amounts[0], 3, "cannot fill holes: the largest hole's edge count");
-        !why) {
-        return why;
-    }
-    return check_mesh(mesh, "fill holes");
-}
-StepResult run_fill_holes(Mesh& mesh, const Step& step, const RunOptions&) {
-    const RepairResult filled = fill_holes(mesh, static_cast<std::size_t>(step.amounts[0]));
+namespace {
+
+// What a fill tells the user, "nothing to fill: …" when it filled nothing.
+StepResult filled_step(const RepairResult& filled) {
     StepResult result;
     result.topology = filled.changed();
     result.message = filled.changed()
@@ -205,6 +198,34 @@ StepResult run_fill_holes(Mesh& mesh, const Step& step, const RunOptions&) {
                          : "nothing to fill" + (filled.sentence.empty() ? std::string(": no hole")
                                                                         : ": " + filled.sentence);
     return result;
+}
+
+}  // namespace
+
+// On the mesh itself: filling adds faces through fill_hole(), which carries attributes.
+// fill_holes_fair's 0 (its default) fills every hole; other sizes are at least 3 edges.
+OpStatus check_fill_holes(const Mesh& mesh, const Step& step) {
+    if (const bool every =
+            step.verb->name == std::string_view("fill_holes_fair") && step.amounts[0] == 0.0;
+        !every) {
+        if (const OpStatus why =
+                check_count(step.amounts[0], 3, "cannot fill holes: the largest hole's edge count");
+            !why) {
+            return why;
+        }
+    }
+    return check_mesh(mesh, "fill holes");
+}
+StepResult run_fill_holes(Mesh& mesh, const Step& step, const RunOptions&) {
+    const RepairResult filled = fill_holes(mesh, static_cast<std::size_t>(step.amounts[0]));
+    return filled_step(filled);
+}
+
+StepResult run_fill_holes_fair(Mesh& mesh, const Step& step, const RunOptions&) {
+    FairFillOptions options;
+    options.max_edges = static_cast<std::size_t>(step.amounts[0]);
+    const RepairResult filled = fill_holes_fair(mesh, options);
+    return filled_step(filled);
 }
 
 }  // namespace meshedit::ops

@@ -1,6 +1,7 @@
 #pragma once
 // Private to meshedit_ops: the functions of the repair verbs (repair, merge_by_distance,
-// remove_degenerate, orient, remove_small, fill_holes), whose rows are in verbs.cpp's table.
+// remove_degenerate, orient, remove_small, fill_holes, fill_holes_fair), whose rows are in
+// verbs.cpp's table.
 
 #include "meshedit/ops/ops.h"
 
@@ -18,5 +19,6 @@ OpStatus check_remove_small(const Mesh& mesh, const Step& step);
 StepResult run_remove_small(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_fill_holes(const Mesh& mesh, const Step& step);
 StepResult run_fill_holes(Mesh& mesh, const Step& step, const RunOptions& options);
+StepResult run_fill_holes_fair(Mesh& mesh, const Step& step, const RunOptions& options);
 
 }  // namespace meshedit::ops

@@ -752,6 +752,10 @@ constexpr std::array kVerbs{
     Verb{"fill_holes", kWholeMesh, 1, 0, {8.0}, "fill_holes, fill_holes:K",
          "fills every hole of at most K edges (default 8; with triangles on a triangle mesh)",
          "fill small holes", check_fill_holes, run_fill_holes},
+    Verb{"fill_holes_fair", kWholeMesh, 1, 0, {0.0}, "fill_holes_fair, fill_holes_fair:K",
+         "fills every hole (or those of at most K edges) with triangles as long as the edges "
+         "around it, faired so the patch continues the surface (Liepa 2003)",
+         "fill holes, refined and faired", check_fill_holes, run_fill_holes_fair},
     Verb{"triangulate", kWholeMesh | kFaceArg, 0, 0, kNoDefaults, "triangulate, triangulate:fI",
          "cuts every polygon (or face I) into triangles by diagonals inside it",
          "triangulate every polygon", check_triangulate, run_triangulate},

@@ -60,7 +60,10 @@ RepairedMesh repair_and_build(MeshSoup soup, const RepairOptions& options,
         }
     }
     if (options.fill_holes > 0) {
-        RepairResult filled = fill_holes(out.loaded.mesh, options.fill_holes);
+        FairFillOptions fair;
+        fair.max_edges = options.fill_holes;
+        RepairResult filled = options.fair_holes ? fill_holes_fair(out.loaded.mesh, fair)
+                                                 : fill_holes(out.loaded.mesh, options.fill_holes);
         if (!filled.sentence.empty()) {
             out.report.lines.push_back(filled.sentence);
         }

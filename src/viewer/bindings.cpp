@@ -53,6 +53,7 @@ constexpr std::array kTable{
     Binding{key_of('R'), kShift, kMeshModes, edit("remesh"), "Shift+R", {}},
     Binding{key_of('M'), kShift, kMeshModes, edit("smooth"), "Shift+M", {}},
     Binding{key_of('R'), kAlt | kShift, kMeshModes, edit("repair"), "Alt+Shift+R", {}},
+    Binding{key_of('F'), kCtrl, kMeshModes, edit("fill_holes_fair"), "Ctrl+F", {}},
     Binding{key_of('M'), kAlt, kMeshModes, edit("fair"), "Alt+M", {}},
     // Selecting.
     Binding{key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}, "Ctrl+A", "select every element of the selected kind (faces if none)"},
@@ -83,7 +84,7 @@ constexpr std::array kTable{
     Binding{key_of('K'), kShift, kMeshModes, edit("crease_by_angle"), "Shift+K", {}},
     Binding{key_of('W'), kAlt, kMeshModes, {Command::CycleStencil}, "Alt+W", "stencil view: hover a vertex, edge or face to see the old vertices and weights that make its new point (cycles Loop with Warren's weights, Loop's own, Catmull-Clark, off)"},
     Binding{key_of('R'), kAlt, kMeshModes, {Command::ToggleDiagram}, "Alt+R", "rewiring panel: after F, S, C or another local operation, its neighbourhood before and after, halfedges named as in its code"},
-    Binding{key_of('F'), kAlt, kMeshModes, {Command::CycleField}, "Alt+F", "scalar field: colour the mesh by Gaussian or mean curvature, valence, triangle quality, dihedral angle, edge length, face area or distance from the selected vertex, with a legend (cycles them, then off)"},
+    Binding{key_of('F'), kAlt, kMeshModes, {Command::CycleField}, "Alt+F", "scalar field: colour the mesh by Gaussian or mean curvature, valence, triangle quality, dihedral angle, edge length, face area, distance from the selected vertex or the mesh's own numbers (a PLY column such as compare's deviation), with a legend (cycles them, then off)"},
     Binding{key_of('F'), kAlt | kShift, kMeshModes, {Command::CycleColormap}, "Alt+Shift+F", "the field's colour map: the field's default, viridis, magma, diverging"},
     Binding{key_of('R'), kCtrl, kMeshModes, {Command::ReloadShaders}, "Ctrl+R", "recompile every shader from disk (modes 8 and 9 are yours: mesh8.frag, mesh9.frag in the user shader folder); on an error the old picture stays and the error names the file and line"},
     Binding{key_of('V'), kShift, kMeshModes, {Command::Validate}, "Shift+V", "check every invariant of the halfedge mesh (validate()); a broken one is selected, framed and named"},

@@ -14,6 +14,7 @@
 #include "meshedit/core/smoothing.h"
 #include "meshedit/io/io.h"
 #include "meshedit/ops/ops.h"
+#include "meshedit/repair/repair.h"
 #include "support/fixtures.h"
 #include "support/mesh_compare.h"
 
@@ -164,6 +165,21 @@ TEST(RepairVerbs, FillHolesFillsThoseUpToItsSize) {
     EXPECT_EQ(cube.n_faces(), 6u);
     EXPECT_TRUE(closed(cube));
     EXPECT_VALID(cube);
+}
+
+TEST(RepairVerbs, FillHolesFairIsTheLibrarysFill) {
+    Mesh mesh = shapes::icosphere(3);
+    run_steps(mesh, parse("make_boundary:f0,make_boundary:f100,make_boundary:f700"),
+              OnRefusal::Stop);
+    Mesh by_library = mesh;
+    const RepairResult expected = fill_holes_fair(by_library, {});
+    ASSERT_GT(expected.count, 0u);
+    const StepResult filled = run_step(mesh, parse_step("fill_holes_fair"));
+    EXPECT_EQ(filled.message, expected.sentence);
+    EXPECT_TRUE(test::identical(mesh, by_library));
+    EXPECT_TRUE(closed(mesh));
+    EXPECT_EQ(run_step(mesh, parse_step("fill_holes_fair")).message, "nothing to fill: no hole");
+    EXPECT_NE(refusal(mesh, "fill_holes_fair:2").find("whole number from 3"), std::string::npos);
 }
 
 TEST(RepairVerbs, RepairTwiceIsRepairOnce) {

@@ -201,16 +201,20 @@ const std::vector<GoldenCase>& golden_cases() {
         // (the scanner's ridges go, the shape and its size stay).
         {"bunny_input", "demo:bunny00", {"--flat"}, kScanSize},
         {"bunny_smooth50", "demo:bunny00", {"--ops", "smooth:50,0.5", "--flat"}, kScanSize},
-        {"bunny_taubin50",
-         "demo:bunny00",
-         {"--ops", "taubin:50,0.5,-0.53", "--flat"},
-         kScanSize},
+        {"bunny_taubin50", "demo:bunny00", {"--ops", "taubin:50,0.5,-0.53", "--flat"}, kScanSize},
         // CGAL's fandisk (an OFF file: no crease marks) remeshed with a feature angle of 40°:
         // its 710 sharp edges are marked as creases first (drawn green) and stay sharp and
         // straight; without it remeshing rounds and jags them (docs/remesh.md).
         {"fandisk_remesh_feature40",
          "demo:fandisk",
          {"--ops", "remesh:0.04,3,40", "--flat", "--wireframe"}},
+        // CGAL's mech-holes-shark with its 4 holes (red borders), and filled as Liepa fills
+        // them: minimum-weight triangles refined to the surrounding edge length and faired, so
+        // each patch continues the surface (docs/cli.md, repair --fair).
+        {"shark_holes", "demo:mech-holes-shark", {"--flat", "--wireframe"}},
+        {"shark_fill_fair",
+         "demo:mech-holes-shark",
+         {"--ops", "fill_holes_fair", "--flat", "--wireframe"}},
         // One selection of each element type. Vertex 0 = (−0.53, 0.85, 0) and 1 = (0.53, 0.85,
         // 0) share the faces (0,5,1) on +z and (0,1,7) on −z: each camera looks straight at
         // its element (az = atan2(x, z), el = asin(y)), so nothing sits on the silhouette.

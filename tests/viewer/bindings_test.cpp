@@ -76,6 +76,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('R'), kShift, kMeshModes, edit("remesh")},
             {key_of('M'), kShift, kMeshModes, edit("smooth")},
             {key_of('R'), kAlt | kShift, kMeshModes, edit("repair")},
+            {key_of('F'), kCtrl, kMeshModes, edit("fill_holes_fair")},
             {key_of('M'), kAlt, kMeshModes, edit("fair")},
             {key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}},
             {key_of('A'), kAlt, kMeshModes, {Command::SelectNone}},
@@ -205,7 +206,7 @@ TEST(Bindings, SameKeyDiffersByMode) {
 TEST(Bindings, ModifiersAreExactAndLockBitsIgnored) {
     EXPECT_EQ(lookup(Key::Slash, kShift, Mode::Mesh), Action{Command::ToggleHelp});
     EXPECT_FALSE(lookup(Key::Slash, 0, Mode::Mesh));
-    EXPECT_FALSE(lookup(key_of('F'), kCtrl, Mode::Mesh));
+    EXPECT_EQ(lookup(key_of('F'), kCtrl, Mode::Mesh), edit("fill_holes_fair"));
     EXPECT_FALSE(lookup(key_of('F'), kAlt | kCtrl, Mode::Mesh));
     EXPECT_EQ(lookup(key_of('Q'), 0, Mode::Mesh), Action{Command::ToggleSmooth});
     EXPECT_EQ(lookup(key_of('Q'), kCtrl, Mode::Mesh), Action{Command::Quit});

@@ -118,6 +118,30 @@ RepairResult remove_small_components(MeshSoup& soup, const ComponentBounds& boun
 /// are left and counted in `left`. `first` lists a vertex of each filled hole.
 RepairResult fill_holes(Mesh& mesh, std::size_t max_edges);
 
+/// How fill_holes_fair() fills.
+struct FairFillOptions {
+    /// Holes of at most this many edges (0: every hole).
+    std::size_t max_edges = 0;
+    /// Add vertices until the patch's edges are as long as those around the hole.
+    bool refine = true;
+    /// Then move the new vertices so that the patch continues the surface (bi-Laplacian).
+    bool fair = true;
+    /// Liepa's density α: a triangle is split when its centroid is farther than 1/α times
+    /// the wanted edge length from each corner; larger gives more, smaller triangles.
+    double density = 1.4142135623730951;
+};
+
+/// Fills holes as Liepa (2003) does and CGAL's triangulate_refine_and_fair_hole: the
+/// triangulation whose largest dihedral angle is smallest (O(n³); holes of more than 300
+/// edges are covered by ear clipping, smallest inside angle first), refined until its edges
+/// match the lengths around the hole with Delaunay flips between rounds, then faired
+/// (fair(), smoothing.h) with every old vertex fixed. Made with the local operations
+/// (fill_hole, triangulate, flip, poke), so attributes are carried. A hole it cannot cover
+/// (every triangulation repeats an edge the mesh has, or is flat) is left, named in the
+/// sentence with its reason; nothing loops without a bound. `first` lists a vertex of each
+/// filled hole. \post validate(mesh) passes.
+RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options);
+
 /// Which steps repair() runs; the defaults are the safe sequence.
 struct RepairOptions {
     bool merge = true;
@@ -129,6 +153,8 @@ struct RepairOptions {
     ComponentBounds components;
     /// fill_holes() up to this many edges (0: no filling); only repair_and_build() fills.
     std::size_t fill_holes = 0;
+    /// Fill them with fill_holes_fair() (refined and faired) instead.
+    bool fair_holes = false;
 };
 
 /// What repair() did: the result of every step it ran, in order, and one line per step

@@ -1,0 +1,333 @@
+// fill_holes_fair() (repair.h): Liepa's hole filling (2003), as CGAL's
+// triangulate_refine_and_fair_hole and pmp's fill_hole + fair do it —
+//
+//   1. cover the hole with triangles (hole_triangles.h: minimum weight, or ears when large),
+//   2. refine: poke each triangle whose centroid lies farther than its corners' edge lengths
+//      allow (σ: a corner's mean edge length, a new vertex's the mean of its triangle's), and
+//      flip the patch's edges toward Delaunay after each round, until no triangle is poked,
+//   3. fair: the new vertices solve the bi-Laplacian with everything else fixed (fair(),
+//      smoothing.h), so the patch continues the surface around it.
+//
+// Every change goes through the local operations (fill_hole, triangulate, flip, poke), so
+// attributes are carried by each operation's rule and the result is valid after each step.
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hole_triangles.h"
+#include "meshedit/core/local_ops.h"
+#include "meshedit/core/normals.h"
+#include "meshedit/core/smoothing.h"
+#include "meshedit/repair/repair.h"
+#include "soup_edit.h"
+
+namespace meshedit {
+namespace {
+
+using namespace repair_detail;
+
+// A hole refined past this many new vertices stops refining (and says so): a hole as large
+// as a scan's outer border would otherwise take the memory of the machine.
+constexpr std::size_t kMaxNewVertices = 4'000'000;
+
+std::vector<std::vector<Halfedge>> boundary_loops(const Mesh& mesh) {
+    std::vector<std::vector<Halfedge>> loops;
+    std::vector<bool> seen(mesh.halfedges_size(), false);
+    for (const Halfedge h : mesh.halfedges()) {
+        if (seen[h.idx()] || !mesh.is_boundary(h)) {
+            continue;
+        }
+        std::vector<Halfedge>& sides = loops.emplace_back();
+        for (const Halfedge x : mesh.loop(h)) {
+            seen[x.idx()] = true;
+            sides.push_back(x);
+        }
+    }
+    return loops;
+}
+
+double mean_edge_length(const Mesh& mesh, Vertex v) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (const Vertex w : mesh.vertices(v)) {
+        sum += norm(mesh.position(w) - mesh.position(v));
+        ++n;
+    }
+    return n > 0 ? sum / static_cast<double>(n) : 0.0;
+}
+
+// The angle at c of triangle a, b, c.
+double angle_at(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 u = a - c, v = b - c;
+    return std::atan2(norm(cross(u, v)), dot(u, v));
+}
+
+struct Filler {
+    Mesh& mesh;
+    const FairFillOptions& options;
+    std::vector<double> sigma;  // by vertex index: the edge length wanted there
+    double touching = 0.0;      // corners closer than this are one point to repair()
+
+    bool in_patch(Face f, std::size_t first) const { return f.is_valid() && f.idx() >= first; }
+
+    // Flips the patch's inner edges whose opposite angles sum past π (Delaunay's test) until
+    // none does, or a bound of passes.
+    void relax(std::size_t first) {
+        for (int pass = 0; pass < 64; ++pass) {
+            std::size_t flipped = 0;
+            for (std::size_t fi = first; fi < mesh.faces_size(); ++fi) {
+                const Face f(static_cast<std::uint32_t>(fi));
+                if (mesh.is_deleted(f)) {
+                    continue;
+                }
+                for (const Halfedge h : mesh.halfedges(f)) {
+                    const Halfedge t = Mesh::twin(h);
+                    if (t.idx() < h.idx() && in_patch(mesh.face(t), first)) {
+                        continue;  // seen from the other side
+                    }
+                    if (!in_patch(mesh.face(t), first)) {
+                        continue;  // the hole's border stays
+                    }
+                    const Vec3 a = mesh.position(mesh.from_vertex(h));
+                    const Vec3 b = mesh.position(mesh.to_vertex(h));
+                    const Vec3 c = mesh.position(mesh.to_vertex(mesh.next(h)));
+                    const Vec3 d = mesh.position(mesh.to_vertex(mesh.next(t)));
+                    if (angle_at(a, b, c) + angle_at(a, b, d) <= std::numbers::pi + 1e-9 ||
+                        norm(c - d) <= touching) {
+                        continue;  // Delaunay already, or c and d touch (a pinched border)
+                    }
+                    if (flip(mesh, Mesh::edge(h))) {
+                        ++flipped;
+                        break;  // f changed: its halfedges are another loop now
+                    }
+                }
+            }
+            if (flipped == 0) {
+                return;
+            }
+        }
+    }
+
+    // Liepa's refinement. \return false when it stopped at kMaxNewVertices.
+    bool refine(std::size_t first, std::size_t& added) {
+        for (int round = 0; round < 256; ++round) {
+            std::size_t poked = 0;
+            const std::size_t faces = mesh.faces_size();
+            for (std::size_t fi = first; fi < faces; ++fi) {
+                const Face f(static_cast<std::uint32_t>(fi));
+                if (mesh.is_deleted(f) || !mesh.is_triangle(f)) {
+                    continue;
+                }
+                const Vec3 c = face_centroid(mesh, f);
+                double sc = 0.0;
+                for (const Vertex v : mesh.vertices(f)) {
+                    sc += sigma[v.idx()] / 3.0;
+                }
+                bool split = true;
+                for (const Vertex v : mesh.vertices(f)) {
+                    const double d = options.density * norm(c - mesh.position(v));
+                    split = split && d > sc && d > sigma[v.idx()];
+                }
+                if (!split) {
+                    continue;
+                }
+                const OpResult<Vertex> v = poke(mesh, f);
+                if (!v) {
+                    continue;
+                }
+                sigma.resize(mesh.vertices_size(), 0.0);
+                sigma[(*v).idx()] = sc;
+                ++poked;
+                if (++added >= kMaxNewVertices) {
+                    relax(first);
+                    return false;
+                }
+            }
+            if (poked == 0) {
+                return true;
+            }
+            relax(first);
+        }
+        return true;
+    }
+};
+
+// The mesh's bounding-box diagonal times the merge tolerance's default (MergeTolerance):
+// closer corners are one point to repair().
+double touching_distance(const Mesh& mesh) {
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (const Vertex v : mesh.vertices()) {
+        const Vec3 p = mesh.position(v);
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    return MergeTolerance{}.value * (mesh.n_vertices() > 0 ? norm(hi - lo) : 0.0);
+}
+
+// Whether a face of the mesh already has the corners of the 3-sided hole `corner` (two
+// triangles back to back, which the builder cut apart): a fill would repeat it.
+bool repeats_a_face(const Mesh& mesh, const std::vector<Vertex>& corner) {
+    if (corner.size() != 3) {
+        return false;
+    }
+    for (const Face f : mesh.faces(corner[0])) {
+        std::size_t shared = 0;
+        for (const Vertex v : mesh.vertices(f)) {
+            shared += std::count(corner.begin(), corner.end(), v);
+        }
+        if (shared == 3 && mesh.valence(f) == 3) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// The first corner whose fan needs no edge the mesh has.
+std::optional<std::uint32_t> free_apex(const HoleLoop& hole) {
+    const std::size_t n = hole.points.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        bool free = true;
+        for (std::size_t k = 2; free && k + 1 < n; ++k) {
+            free = !hole.forbidden(i, (i + k) % n);
+        }
+        if (free) {
+            return static_cast<std::uint32_t>(i);
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options) {
+    RepairResult result;
+    Filler filler{mesh, options, {}, touching_distance(mesh)};
+    filler.sigma.assign(mesh.vertices_size(), 0.0);
+    const std::size_t first_face = mesh.faces_size();
+    std::size_t large = 0, triangles = 0, added = 0, filled_edges = 0;
+    bool capped = false;
+    const double touching = filler.touching;
+    std::vector<std::string> why;  // of the holes left, in order
+    for (const std::vector<Halfedge>& sides : boundary_loops(mesh)) {
+        const std::size_t n = sides.size();
+        if (options.max_edges > 0 && n > options.max_edges) {
+            ++large;
+            continue;
+        }
+        std::vector<Vertex> corner(n);
+        HoleLoop hole;
+        for (std::size_t i = 0; i < n; ++i) {
+            corner[i] = mesh.from_vertex(sides[i]);
+            hole.points.push_back(mesh.position(corner[i]));
+            hole.outside_normals.push_back(face_normal(mesh, mesh.face(Mesh::twin(sides[i]))));
+            filler.sigma[corner[i].idx()] = mean_edge_length(mesh, corner[i]);
+        }
+        if (repeats_a_face(mesh, corner)) {
+            why.push_back("a hole of 3 edges at vertex " + std::to_string(corner[0].idx()) +
+                          " whose fill would repeat a face the mesh has");
+            continue;
+        }
+        // Corners that touch (a vertex the loader split where the border pinches, two
+        // holes meeting) are never joined: the edge would have no length, and repair()
+        // would merge them into faces that repeat a corner.
+        hole.forbidden = [&](std::size_t i, std::size_t k) {
+            return corner[i] == corner[k] || norm(hole.points[i] - hole.points[k]) <= touching ||
+                   mesh.find_edge(corner[i], corner[k]).is_valid();
+        };
+        const HoleTriangles cover = hole_triangles(hole);
+        const std::optional<std::uint32_t> apex = free_apex(hole);
+        if (cover.triangles.empty() || !apex || !is_fill_hole_ok(mesh, sides[*apex])) {
+            why.push_back("a hole of " + count_of(n, "edge", "edges") + " at vertex " +
+                          std::to_string(corner[0].idx()) + ": " +
+                          (!cover.triangles.empty() ? "no corner fans it without an edge the "
+                                                      "mesh already has"
+                                                    : cover.why));
+            continue;
+        }
+        const std::size_t patch = mesh.faces_size();
+        const OpResult<Face> face = fill_hole(mesh, sides[*apex]);
+        if (!face) {
+            why.push_back("a hole at vertex " + std::to_string(corner[0].idx()) + ": " +
+                          std::string(face.reason()));
+            continue;
+        }
+        if (n > 3 && triangulate(mesh, *face)) {  // the fan from corner[apex]
+            for (const FanFlip& f : flips_from_fan(cover.triangles, n, *apex)) {
+                // Each flip's new edge is a diagonal of the planned cover, which the mesh
+                // does not have; were one refused, the patch would stay a valid fan.
+                const Edge e = mesh.find_edge(corner[*apex], corner[f.z]);
+                if (!e.is_valid() || !flip(mesh, e)) {
+                    break;
+                }
+            }
+        }
+        if (options.refine) {
+            capped = !filler.refine(patch, added) || capped;
+        }
+        ++result.count;
+        filled_edges += n;
+        note_first(result, corner[0].idx());
+    }
+    std::size_t faired = 0;
+    std::string fair_note;
+    if (options.fair && added > 0) {
+        std::vector<Face> region;
+        for (std::size_t fi = first_face; fi < mesh.faces_size(); ++fi) {
+            if (!mesh.is_deleted(Face(static_cast<std::uint32_t>(fi)))) {
+                region.push_back(Face(static_cast<std::uint32_t>(fi)));
+            }
+        }
+        FairOptions fo;
+        fo.weights = mesh.is_triangle_mesh() ? SmoothWeights::Cotangent : SmoothWeights::Uniform;
+        if (!check_fair(mesh, region, fo)) {
+            fo.weights = SmoothWeights::Uniform;  // polygons beside the holes
+        }
+        if (const OpStatus ok = check_fair(mesh, region, fo); ok) {
+            faired = fair(mesh, region, fo).moved;
+        } else {
+            fair_note = "not faired: " + ok.text();
+        }
+    }
+    for (std::size_t fi = first_face; fi < mesh.faces_size(); ++fi) {
+        triangles += mesh.is_deleted(Face(static_cast<std::uint32_t>(fi))) ? 0 : 1;
+    }
+    result.left = large + why.size();
+    std::vector<std::string> parts;
+    if (result.count > 0) {
+        RepairResult at = result;
+        std::string text = "filled " + count_of(result.count, "hole", "holes") + " (" +
+                           count_of(filled_edges, "edge", "edges") + " in all) with " +
+                           count_of(triangles, "triangle", "triangles");
+        if (added > 0) {
+            text += " around " + count_of(added, "new vertex", "new vertices");
+        }
+        if (faired > 0) {
+            text += ", faired";
+        }
+        parts.push_back(text + "; a vertex of each" + listed(at));
+    }
+    if (capped) {
+        parts.push_back("stopped refining at " + std::to_string(kMaxNewVertices) +
+                        " new vertices (a hole far larger than its edges)");
+    }
+    if (!fair_note.empty()) {
+        parts.push_back(fair_note);
+    }
+    if (large > 0) {
+        parts.push_back("left " + count_of(large, "hole", "holes") + " of more than " +
+                        count_of(options.max_edges, "edge", "edges"));
+    }
+    for (const std::string& w : why) {
+        parts.push_back("left " + w);
+    }
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        result.sentence += (i == 0 ? "" : "; ") + parts[i];
+    }
+    return result;
+}
+
+}  // namespace meshedit

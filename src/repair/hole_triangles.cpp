@@ -1,0 +1,257 @@
+// The triangles that cover a hole (hole_triangles.h): Liepa's minimum-weight triangulation
+// for holes of up to kMaxDynamicSides sides, ear clipping for larger ones, and the edge
+// flips that turn a fan into either.
+
+#include "hole_triangles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <queue>
+#include <set>
+#include <tuple>
+#include <unordered_map>
+
+namespace meshedit::repair_detail {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double angle_between_unit(const Vec3& a, const Vec3& b) {
+    return std::acos(std::clamp(dot(a, b), -1.0, 1.0));
+}
+
+Vec3 unit_or_zero(const Vec3& v) {
+    const double l = norm(v);
+    return l > 0.0 ? v / l : Vec3{};
+}
+
+// Liepa's weight of a set of triangles: the largest dihedral angle first, then the area.
+struct Weight {
+    double angle = kInf;
+    double area = kInf;
+    bool operator<(const Weight& o) const {
+        return angle < o.angle || (angle == o.angle && area < o.area);
+    }
+};
+
+}  // namespace
+
+HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
+    const std::size_t n = hole.points.size();
+    HoleTriangles out;
+    if (n < 3) {
+        out.why = "it has fewer than 3 sides";
+        return out;
+    }
+    const auto& p = hole.points;
+    double longest = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        longest = std::max(longest, sqrnorm(p[(i + 1) % n] - p[i]));
+    }
+    // W[i * n + k]: the best triangulation of corners i..k (i < k) closed by the side or
+    // diagonal i–k; L the middle corner of its triangle on i–k.
+    std::vector<Weight> w(n * n);
+    std::vector<std::uint32_t> lambda(n * n, 0);
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        w[i * n + i + 1] = {0.0, 0.0};
+    }
+    const auto normal_of = [&](std::size_t i, std::size_t m, std::size_t k) {
+        return unit_or_zero(cross(p[m] - p[i], p[k] - p[i]));
+    };
+    // The normal across i–m (i < m) inside the patch: the outside face for a side, else the
+    // triangle the sub-solution put there.
+    const auto across = [&](std::size_t i, std::size_t m) {
+        return m == i + 1 ? hole.outside_normals[i] : normal_of(i, lambda[i * n + m], m);
+    };
+    for (std::size_t len = 2; len < n; ++len) {
+        for (std::size_t i = 0; i + len < n; ++i) {
+            const std::size_t k = i + len;
+            const bool side = (i == 0 && k == n - 1);
+            if (!side && hole.forbidden(i, k)) {
+                continue;  // i–k is an edge the mesh has already
+            }
+            Weight best;
+            std::uint32_t best_m = 0;
+            for (std::size_t m = i + 1; m < k; ++m) {
+                const Weight& a = w[i * n + m];
+                const Weight& b = w[m * n + k];
+                if (a.angle == kInf || b.angle == kInf) {
+                    continue;
+                }
+                const Vec3 c = cross(p[m] - p[i], p[k] - p[i]);
+                const double area = 0.5 * norm(c);
+                if (area <= 1e-12 * longest) {
+                    continue;  // a flat triangle
+                }
+                const Vec3 nt = c / (2.0 * area);
+                double angle = std::max({a.angle, b.angle, angle_between_unit(nt, across(i, m)),
+                                         angle_between_unit(nt, across(m, k))});
+                if (side) {
+                    angle = std::max(angle, angle_between_unit(nt, hole.outside_normals[n - 1]));
+                }
+                const Weight total{angle, a.area + b.area + area};
+                if (total < best) {
+                    best = total;
+                    best_m = static_cast<std::uint32_t>(m);
+                }
+            }
+            w[i * n + k] = best;
+            lambda[i * n + k] = best_m;
+        }
+    }
+    if (w[n - 1].angle == kInf) {
+        out.why = "every triangulation has a flat triangle or an edge the mesh already has";
+        return out;
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> todo{{0, n - 1}};
+    while (!todo.empty()) {
+        const auto [i, k] = todo.back();
+        todo.pop_back();
+        if (k <= i + 1) {
+            continue;
+        }
+        const std::size_t m = lambda[i * n + k];
+        out.triangles.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(m),
+                                 static_cast<std::uint32_t>(k)});
+        todo.emplace_back(i, m);
+        todo.emplace_back(m, k);
+    }
+    return out;
+}
+
+HoleTriangles clipped_ears(const HoleLoop& hole) {
+    const std::size_t n = hole.points.size();
+    HoleTriangles out;
+    const auto& p = hole.points;
+    // The hole's mean plane (Newell): corners turn about it; an ear's angle is measured in it.
+    Vec3 normal;
+    for (std::size_t i = 0; i < n; ++i) {
+        normal += cross(p[i], p[(i + 1) % n]);
+    }
+    normal = unit_or_zero(normal);
+    std::vector<std::uint32_t> prev(n), next(n), version(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        prev[i] = static_cast<std::uint32_t>((i + n - 1) % n);
+        next[i] = static_cast<std::uint32_t>((i + 1) % n);
+    }
+    std::set<std::pair<std::uint32_t, std::uint32_t>> made;  // diagonals so far
+    const auto ordered = [](std::uint32_t a, std::uint32_t b) {
+        return std::make_pair(std::min(a, b), std::max(a, b));
+    };
+    // The inside angle at c (smaller first: the sharpest convex corner is clipped first).
+    const auto inside_angle = [&](std::uint32_t c) {
+        const Vec3 u = p[c] - p[prev[c]];
+        const Vec3 v = p[next[c]] - p[c];
+        return std::numbers::pi - std::atan2(dot(normal, cross(u, v)), dot(u, v));
+    };
+    using Entry = std::tuple<double, std::uint32_t, std::uint32_t>;  // angle, corner, version
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+    for (std::uint32_t c = 0; c < n; ++c) {
+        queue.emplace(inside_angle(c), c, 0);
+    }
+    std::size_t left = n;
+    std::vector<Entry> blocked;
+    while (left > 3 && !queue.empty()) {
+        const auto [angle, c, ver] = queue.top();
+        queue.pop();
+        if (ver != version[c]) {
+            continue;
+        }
+        const std::uint32_t a = prev[c], b = next[c];
+        const bool flat = norm(cross(p[c] - p[a], p[b] - p[a])) <=
+                          1e-12 * std::max(sqrnorm(p[c] - p[a]), sqrnorm(p[b] - p[a]));
+        if (hole.forbidden(a, b) || made.count(ordered(a, b)) > 0 || flat) {
+            blocked.emplace_back(angle, c, ver);  // may become an ear when a neighbour goes
+            continue;
+        }
+        out.triangles.push_back({a, c, b});
+        made.insert(ordered(a, b));
+        next[a] = b;
+        prev[b] = a;
+        version[c] = UINT32_MAX;
+        --left;
+        for (const std::uint32_t x : {a, b}) {
+            ++version[x];
+            queue.emplace(inside_angle(x), x, version[x]);
+        }
+        for (const Entry& e : blocked) {
+            queue.push(e);  // their neighbours may have changed: try again
+        }
+        blocked.clear();
+    }
+    if (left > 3) {
+        out.triangles.clear();
+        out.why = "every ear left has a flat triangle or an edge the mesh already has";
+        return out;
+    }
+    std::uint32_t a = 0;
+    while (version[a] == UINT32_MAX) {
+        ++a;
+    }
+    const std::uint32_t c = next[a], b = next[c];
+    out.triangles.push_back({a, c, b});  // its sides are the loop's: sides or diagonals made
+    return out;
+}
+
+HoleTriangles hole_triangles(const HoleLoop& hole) {
+    return hole.points.size() <= kMaxDynamicSides ? minimum_weight_triangles(hole)
+                                                  : clipped_ears(hole);
+}
+
+std::vector<FanFlip> flips_from_fan(const std::vector<HoleTriangle>& triangles, std::size_t n,
+                                    std::uint32_t apex) {
+    // Walks the triangulation to the fan around `apex`, one flip at a time (each gives the
+    // apex one more diagonal, so at most n − 3 of them); the way back from the fan is the
+    // same flips undone in reverse order.
+    std::vector<HoleTriangle> t = triangles;
+    std::unordered_map<std::uint64_t, std::uint32_t> holder;  // directed edge → triangle
+    const auto key = [n](std::uint32_t x, std::uint32_t y) {
+        return static_cast<std::uint64_t>(x) * n + y;
+    };
+    const auto hold = [&](std::uint32_t i, bool on) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint64_t e = key(t[i][k], t[i][(k + 1) % 3]);
+            if (on) {
+                holder[e] = i;
+            } else {
+                holder.erase(e);
+            }
+        }
+    };
+    std::vector<std::uint32_t> todo;
+    for (std::uint32_t i = 0; i < t.size(); ++i) {
+        hold(i, true);
+        if (std::find(t[i].begin(), t[i].end(), apex) != t[i].end()) {
+            todo.push_back(i);
+        }
+    }
+    std::vector<FanFlip> walk;
+    while (!todo.empty()) {
+        const std::uint32_t i = todo.back();
+        todo.pop_back();
+        const auto at = std::find(t[i].begin(), t[i].end(), apex) - t[i].begin();
+        const std::uint32_t x = t[i][(at + 1) % 3], y = t[i][(at + 2) % 3];
+        const auto other = holder.find(key(y, x));
+        if (y == (x + 1) % n || other == holder.end()) {
+            continue;  // x–y is a side of the hole
+        }
+        const std::uint32_t j = other->second;
+        const auto kx = std::find(t[j].begin(), t[j].end(), x) - t[j].begin();
+        const std::uint32_t z = t[j][(kx + 1) % 3];
+        hold(i, false);
+        hold(j, false);
+        t[i] = {apex, x, z};
+        t[j] = {apex, z, y};
+        hold(i, true);
+        hold(j, true);
+        walk.push_back({x, y, z});
+        todo.push_back(i);
+        todo.push_back(j);
+    }
+    std::reverse(walk.begin(), walk.end());
+    return walk;
+}
+
+}  // namespace meshedit::repair_detail

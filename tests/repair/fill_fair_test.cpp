@@ -1,0 +1,208 @@
+// Hole filling that refines and fairs (repair.h, fill_holes_fair()): a sphere's cap comes
+// back round, a 1000-edge hole in a plane stays in the plane, the patch's edges match the
+// surface's, and holes it leaves are named with their reason.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <utility>
+
+#include "meshedit/core/attributes.h"
+#include "meshedit/core/build.h"
+#include "meshedit/core/normals.h"
+#include "meshedit/core/shapes.h"
+#include "meshedit/core/topology.h"
+#include "meshedit/repair/repair.h"
+#include "support/fixtures.h"
+#include "support/mesh_compare.h"
+
+namespace meshedit::test {
+namespace {
+
+// `mesh` without the faces whose centroid `cut` holds.
+Mesh without(const Mesh& mesh, const std::function<bool(const Vec3&)>& cut) {
+    const PolygonSoup all = to_polygon_soup(mesh);
+    PolygonSoup kept;
+    kept.positions = all.positions;
+    for (std::size_t f = 0; f < all.n_faces(); ++f) {
+        Vec3 c;
+        const std::uint32_t b = all.face_offsets[f], e = all.face_offsets[f + 1];
+        for (std::uint32_t i = b; i < e; ++i) {
+            c += all.positions[all.indices[i]] / static_cast<double>(e - b);
+        }
+        if (!cut(c)) {
+            std::vector<std::uint32_t> corners(all.indices.begin() + b, all.indices.begin() + e);
+            kept.add_face_range(corners);
+        }
+    }
+    return build_mesh(kept);
+}
+
+double mean_edge_length(const Mesh& mesh, std::size_t first_vertex) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (const Edge e : mesh.edges()) {
+        const Vertex a = mesh.vertex(e, 0), b = mesh.vertex(e, 1);
+        if (a.idx() >= first_vertex || b.idx() >= first_vertex) {
+            sum += norm(mesh.position(a) - mesh.position(b));
+            ++n;
+        }
+    }
+    return n > 0 ? sum / static_cast<double>(n) : 0.0;
+}
+
+// The highest new vertex and the largest distance of a new vertex from the unit sphere.
+std::pair<double, double> top_and_error(const Mesh& mesh, std::size_t first_vertex) {
+    double top = 0.0, worst = 0.0;
+    for (std::size_t v = first_vertex; v < mesh.vertices_size(); ++v) {
+        const Vec3 p = mesh.position(Vertex(static_cast<std::uint32_t>(v)));
+        top = std::max(top, p.z);
+        worst = std::max(worst, std::abs(norm(p) - 1.0));
+    }
+    return {top, worst};
+}
+
+TEST(FillFair, ASpheresCapComesBackRound) {
+    const Mesh sphere = shapes::icosphere(4);
+    Mesh mesh = without(sphere, [](const Vec3& c) { return c.z > 0.7; });
+    ASSERT_EQ(count_boundary_loops(mesh), 1u);
+    const std::size_t old_vertices = mesh.vertices_size();
+    std::size_t cap = 0;  // the vertices the cut left without a face
+    for (const Vertex v : mesh.vertices()) {
+        cap += mesh.is_isolated(v) ? 1 : 0;
+    }
+    ASSERT_GT(cap, 100u);
+    const double surface_edge = mean_edge_length(sphere, 0);
+    Mesh flat = mesh;
+
+    const RepairResult r = fill_holes_fair(mesh, {});
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(r.count, 1u);
+    EXPECT_EQ(r.left, 0u);
+    EXPECT_EQ(count_boundary_loops(mesh), 0u);
+    EXPECT_TRUE(mesh.is_triangle_mesh());
+    EXPECT_NE(r.sentence.find("filled 1 hole ("), std::string::npos) << r.sentence;
+    EXPECT_NE(r.sentence.find(", faired"), std::string::npos) << r.sentence;
+    // The refined patch has about as many vertices as the cap had, with edges as long as
+    // the sphere's.
+    const std::size_t added = mesh.vertices_size() - old_vertices;
+    EXPECT_GT(added, cap / 2) << r.sentence;
+    EXPECT_LT(added, cap * 2) << r.sentence;
+    const double patch_edge = mean_edge_length(mesh, old_vertices);
+    EXPECT_GT(patch_edge, 0.7 * surface_edge);
+    EXPECT_LT(patch_edge, 1.4 * surface_edge);
+    // Faired, the patch bulges as the sphere does: the cut took 0.3 off the pole, and the
+    // bi-Laplacian patch (a thin plate, not a sphere) gives back more than 80% of it, where
+    // the same patch unfaired stays flat at 0.7.
+    const auto [top, error] = top_and_error(mesh, old_vertices);
+    EXPECT_GT(top, 0.94);
+    EXPECT_LT(error, 0.06);
+    FairFillOptions unfaired;
+    unfaired.fair = false;
+    EXPECT_EQ(fill_holes_fair(flat, unfaired).count, 1u);
+    ASSERT_VALID(flat);
+    const auto [flat_top, flat_error] = top_and_error(flat, old_vertices);
+    EXPECT_LT(flat_top, 0.75);  // the hole's own corners reach 0.73
+    EXPECT_GT(flat_error, 0.2);
+
+    // Again: nothing to fill, nothing changed.
+    const Mesh before = mesh;
+    const RepairResult again = fill_holes_fair(mesh, {});
+    EXPECT_EQ(again.count, 0u);
+    EXPECT_TRUE(again.sentence.empty()) << again.sentence;
+    EXPECT_TRUE(identical(before, mesh));
+}
+
+TEST(FillFair, WithoutRefiningOrFairingItIsTheTriangulationAlone) {
+    Mesh mesh = without(shapes::icosphere(3), [](const Vec3& c) { return c.z > 0.7; });
+    const std::size_t vertices = mesh.vertices_size();
+    FairFillOptions options;
+    options.refine = false;
+    const RepairResult r = fill_holes_fair(mesh, options);
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(r.count, 1u);
+    EXPECT_EQ(mesh.vertices_size(), vertices);
+    EXPECT_EQ(count_boundary_loops(mesh), 0u);
+    EXPECT_EQ(r.sentence.find("faired"), std::string::npos) << r.sentence;
+}
+
+TEST(FillFair, AThousandEdgeHoleInAPlaneIsFilledInThePlane) {
+    // 500 × 40 unit squares without the middle 480 × 20: a hole of 1000 edges (ear clipping),
+    // inside a border of 1080 that max_edges leaves. Squares beside it: uniform fairing.
+    Mesh mesh = without(shapes::quad_grid(500, 40), [](const Vec3& c) {
+        return c.x > 10 && c.x < 490 && c.y > 10 && c.y < 30;
+    });
+    ASSERT_EQ(count_boundary_loops(mesh), 2u);
+    const std::size_t old_vertices = mesh.vertices_size();
+    FairFillOptions options;
+    options.max_edges = 1000;
+    const RepairResult r = fill_holes_fair(mesh, options);
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(r.count, 1u);
+    EXPECT_EQ(r.left, 1u);
+    EXPECT_NE(r.sentence.find("(1000 edges in all)"), std::string::npos) << r.sentence;
+    EXPECT_NE(r.sentence.find(", faired"), std::string::npos) << r.sentence;
+    EXPECT_NE(r.sentence.find("left 1 hole of more than 1000 edges"), std::string::npos)
+        << r.sentence;
+    EXPECT_EQ(count_boundary_loops(mesh), 1u);
+    // The 479 × 19 vertices the squares had inside, give or take a third (triangles of unit
+    // sides hold about 1.15 vertices a unit square).
+    const double added = static_cast<double>(mesh.vertices_size() - old_vertices);
+    EXPECT_GT(added, 0.66 * 479 * 19) << r.sentence;
+    EXPECT_LT(added, 1.5 * 479 * 19) << r.sentence;
+    double off_plane = 0.0;
+    for (std::size_t v = old_vertices; v < mesh.vertices_size(); ++v) {
+        const Vec3 p = mesh.position(Vertex(static_cast<std::uint32_t>(v)));
+        off_plane = std::max(off_plane, std::abs(p.z));
+        EXPECT_TRUE(p.x > 10 - 1e-9 && p.x < 490 + 1e-9 && p.y > 10 - 1e-9 && p.y < 30 + 1e-9) << v;
+    }
+    EXPECT_LT(off_plane, 1e-9);
+    // Every new face turns the way the grid does.
+    for (const Face f : mesh.faces()) {
+        ASSERT_GT(face_normal(mesh, f).z, 0.0) << f.idx();
+    }
+}
+
+TEST(FillFair, CornersGetTextureCoordinatesThroughTheOperations) {
+    // Squares 4..7 across and up (both triangles of each): a hole of 16 edges.
+    Mesh mesh = without(shapes::grid(12, 12), [](const Vec3& c) {
+        const auto in = [](double t) { return t * 12 > 4 && t * 12 < 8; };
+        return in(c.x) && in(c.y);
+    });
+    auto uv = mesh.add_property<Halfedge, Vec2>(kTexCoordProperty, Vec2{});
+    for (const Halfedge h : mesh.halfedges()) {
+        const Vec3 p = mesh.position(mesh.to_vertex(h));
+        uv[h] = {p.x, p.y};
+    }
+    FairFillOptions options;
+    options.max_edges = 40;  // not the grid's border of 48
+    const RepairResult r = fill_holes_fair(mesh, options);
+    ASSERT_VALID(mesh);
+    ASSERT_EQ(r.count, 1u) << r.sentence;
+    // Each new corner's UV blends the hole's corners: inside the hole's UV square.
+    for (const Face f : mesh.faces()) {
+        for (const Halfedge h : mesh.halfedges(f)) {
+            EXPECT_GE(uv[h].x, 0.0);
+            EXPECT_LE(uv[h].x, 1.0);
+            EXPECT_TRUE(std::isfinite(uv[h].y));
+        }
+    }
+}
+
+TEST(FillFair, HolesOverTheLimitAreLeftAndNamed) {
+    Mesh mesh = without(shapes::icosphere(3), [](const Vec3& c) { return c.z > 0.7; });
+    const Mesh before = mesh;
+    FairFillOptions options;
+    options.max_edges = 5;
+    const RepairResult r = fill_holes_fair(mesh, options);
+    EXPECT_EQ(r.count, 0u);
+    EXPECT_EQ(r.left, 1u);
+    EXPECT_NE(r.sentence.find("left 1 hole of more than 5 edges"), std::string::npos) << r.sentence;
+    EXPECT_TRUE(identical(before, mesh));
+}
+
+}  // namespace
+}  // namespace meshedit::test
