@@ -61,6 +61,10 @@ struct Command {
     std::function<int()> run;
 };
 
+/// `check --problems`: prints the problems of `input` read from `path` (one line each and a
+/// summary, or one JSON object with `json`). \return 0 for none, 1 for some or an invalid mesh.
+int print_problems(const std::filesystem::path& path, const LoadedDocument& input, bool json);
+
 Command add_info(CLI::App& meshedit);
 Command add_convert(CLI::App& meshedit);
 Command add_subdivide(CLI::App& meshedit);

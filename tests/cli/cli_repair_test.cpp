@@ -12,6 +12,8 @@
 #include <tuple>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "meshedit/core/attributes.h"
 #include "meshedit/io/io.h"
 #include "run.h"
@@ -198,6 +200,47 @@ TEST(CliRepair, TheRepairVerbMakesWhatTheCommandMakes) {
         EXPECT_EQ(same.exit_code, 0) << in << "\n" << same.out << same.err;
         ASSERT_VALID(read_mesh(by_verb).mesh);
     }
+}
+
+}  // namespace
+}  // namespace meshedit::test
+
+namespace meshedit::test {
+namespace {
+
+// `check --problems`: the broken OBJ's problems one line each and as JSON, exit 1; after
+// `repair` only the floating triangle's hole and part are left (exit 1), and a closed cube
+// has none (exit 0).
+TEST(CliCheckProblems, NamesEachProblemAndItsPlace) {
+    TempDir tmp;
+    const std::string in = write_broken(tmp).string();
+    RunResult r = run_meshedit({"check", in, "--problems"});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    const std::vector<std::string> lines = split_lines(r.out);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_NE(r.out.find(in + ": hole: hole of "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(in + ": small part: part of 1 face at face "), std::string::npos) << r.out;
+    EXPECT_EQ(lines.back().rfind(in + ": ", 0), 0u);
+
+    r = run_meshedit({"check", in, "--problems", "--json"});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(j["valid"].get<bool>());
+    EXPECT_GT(j["counts"]["hole"].get<int>(), 0);
+    EXPECT_EQ(j["counts"]["self-intersection"].get<int>(), 0);
+    ASSERT_FALSE(j["problems"].empty());
+    EXPECT_FALSE(j["problems"][0]["element"].get<std::string>().empty());
+
+    const std::string cube = (tmp / "cube.obj").string();
+    std::ofstream(cube) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\n"
+                           "v 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\n"
+                           "f 4 1 5 8\n";
+    r = run_meshedit({"check", cube, "--problems"});
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(r.out, cube + ": no problems\n");
+
+    r = run_meshedit({"check", cube, "--json"});
+    EXPECT_EQ(r.exit_code, 2) << "--json needs --problems";
 }
 
 }  // namespace
