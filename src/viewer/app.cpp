@@ -720,6 +720,9 @@ void App::draw_frame() {
     }
     if (requests.select) {
         apply(editor_.select(*requests.select));
+        if (requests.frame) {
+            apply(editor_.run(Action{Command::FrameSelection}));
+        }
     }
     if (requests.hover && (requests.hover->kind != editor_.hover().kind ||
                            requests.hover->index != editor_.hover().index)) {

@@ -124,6 +124,8 @@ Outcome Editor::run(Action action) {
         case Command::FrameSelection:
         case Command::Validate:
             return run_selection(c);
+        case Command::FindProblems:
+            return find_problems();
         case Command::Next:
         case Command::Twin:
         case Command::ToHalfedge:

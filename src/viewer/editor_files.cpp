@@ -132,6 +132,12 @@ Outcome Editor::take_loaded(const std::filesystem::path& path, LoadedDocument lo
     const Mode mode = doc.mode;
     set_document(std::move(doc), path);
     session_source_hash_ = std::move(hash);
+    load_repairs_ = std::move(loaded.repairs);
+    load_revision_ = doc_.revision;
+    problems_.reset();
+    if (load_repaired()) {
+        find_problems();  // the Problems panel lists the repairs where they are
+    }
     if (mode == Mode::Surface) {
         pristine_revisions_.insert(doc_.revision);
     }

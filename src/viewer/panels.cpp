@@ -249,6 +249,9 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDispl
         }
     }
 
+    if (doc.mode != Mode::Curve) {
+        draw_problems(editor, requests, problems_opened_at_);
+    }
     if (editor.view().stencil && doc.mode != Mode::Curve) {
         draw_stencil(editor);
     }

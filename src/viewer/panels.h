@@ -4,6 +4,7 @@
 // open, save as and export session. Reads the Editor, changes only its ViewState.
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -38,7 +39,12 @@ struct PanelRequests {
     std::optional<Action> action;      ///< a control that stands for a key (up axis, orbit)
     std::optional<ElementRef> select;  ///< an index clicked in the inspector
     std::optional<ElementRef> hover;   ///< an index under the mouse in the inspector
+    bool frame = false;                ///< frame `select` once it is selected
 };
+
+/// The info panel's Problems section (panel_problems.cpp); `opened_at` remembers which list
+/// it last opened for (0: none).
+void draw_problems(Editor& editor, PanelRequests& requests, std::uint64_t& opened_at);
 
 /// `text` wrapped at spaces only, to the width left in the window (ImGui's own wrapping also
 /// breaks after a '.', splitting 0.075 into "0." and "075"); greyed with `disabled`.
@@ -105,8 +111,9 @@ private:
     float info_left_ = 0.0f, info_right_ = 0.0f;          ///< last drawn edges; right 0 until drawn
     std::vector<std::pair<glm::vec2, glm::vec2>> rects_;  ///< min, max of last frame's panels
     bool prompting_ = false;
-    bool prompt_fresh_ = false;   ///< open the popup next frame
-    bool scroll_to_row_ = false;  ///< Up/Down moved the highlighted row
+    std::uint64_t problems_opened_at_ = 0;  ///< draw_problems(): the list it last opened for
+    bool prompt_fresh_ = false;             ///< open the popup next frame
+    bool scroll_to_row_ = false;            ///< Up/Down moved the highlighted row
     FileChooser chooser_;
     std::string shader_errors_;
 };

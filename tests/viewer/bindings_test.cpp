@@ -48,6 +48,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('R'), kCtrl, kMeshModes, {Command::ReloadShaders}},
             {key_of('F'), kAlt | kShift, kMeshModes, {Command::CycleColormap}},
             {key_of('V'), kShift, kMeshModes, {Command::Validate}},
+            {key_of('V'), kAlt, kMeshModes, {Command::FindProblems}},
             {key_of('L'), kAlt, kMeshModes, edit("loop_step")},
             // The local operations of polygon meshes (docs/spec.md §4).
             {key_of('S'), kShift, kMeshModes, edit("bisect")},

@@ -87,6 +87,7 @@ enum class Command {
     SaveAs,
     ExportSession,  ///< write the session's steps for `meshedit convert --ops @FILE`
     Validate,       ///< run validate(); on failure select and frame the culprit
+    FindProblems,   ///< list what is wrong (repair/problems.h) in the Problems panel
     Open,
     Escape,  ///< clears the selection; with nothing selected, quits
     Quit,

@@ -27,6 +27,7 @@
 #include "meshedit/overlay/colormap.h"
 #include "meshedit/overlay/op_diagram.h"
 #include "meshedit/overlay/shading.h"
+#include "meshedit/repair/problems.h"
 #include "meshedit/selection/region_ops.h"
 #include "meshedit/selection/selection.h"
 #include "meshedit/viewer/bindings.h"
@@ -319,6 +320,11 @@ public:
     using ProgressHook = std::function<void(std::string_view verb, double fraction)>;
     void set_progress_hook(ProgressHook hook) { progress_hook_ = std::move(hook); }
     const History& history() const { return ledger_.history(); }
+    /// The Problems panel's list (Alt+V, editor_problems.cpp): null until found for this
+    /// revision of the document.
+    const ProblemReport* problems() const;
+    /// Whether the loader repaired the document as it is now (its cuts are listed first).
+    bool load_repaired() const;
     const std::filesystem::path& path() const { return path_; }
     /// Unsaved changes: the content differs from what was last opened or saved (undoing
     /// back to the saved state makes it clean again).
@@ -467,6 +473,13 @@ private:
                       std::function<void(Job&)> work, std::function<Outcome()> finish);
     /// Why a command cannot run now, when an operation is running: nullopt if none is.
     std::optional<Outcome> refuse_if_busy() const;
+    /// Alt+V: finds the document's problems (with the loader's repairs while the document
+    /// is as loaded) and says how many.
+    Outcome find_problems();
+    BuildReport load_repairs_;
+    std::uint64_t load_revision_ = UINT64_MAX;
+    std::optional<ProblemReport> problems_;
+    std::uint64_t problems_revision_ = UINT64_MAX;
     /// Remaps the selection through a garbage collection's map (compact(), finish_job()).
     void remap_selection(const GarbageCollectionMap& map);
     ElementRef hover_;
