@@ -99,7 +99,7 @@ void expect_fvar_equal(Mesh mesh, Scheme scheme, UvInterpolation uv, int levels)
     auto colour = mesh.property<Vertex, Vec3>("v:colour", Vec3{});
     for (Vertex v : mesh.vertices()) {
         const Vec3& p = mesh.position(v);
-        colour[v] = {std::sin(p.x) + 0.5 * p.y, p.z * p.z, 0.25 * v.idx()};
+        colour[v] = {std::sin(p.x) + 0.5 * std::cos(p.y), std::sin(p.z), 0.25 * (v.idx() % 7)};
     }
 
     // Topology, creases and the face-varying channel (distinct values per vertex).
