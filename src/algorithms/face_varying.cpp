@@ -153,8 +153,14 @@ private:
         if (n == 0) {
             return;
         }
-        const bool mismatch =
-            on_seam || (boundary && (s_.linear_boundaries || (n == 1 && s_.corners_sharp)));
+        // Where the faces do not close into one fan, values can differ without a seam.
+        bool split_fans = false;
+        for (std::size_t k = 1; gaps > 1 && k < n; ++k) {
+            split_fans =
+                split_fans || !(uv_[m_.prev(ring_[k]).idx()] == uv_[m_.prev(ring_[0]).idx()]);
+        }
+        const bool mismatch = on_seam || split_fans ||
+                              (boundary && (s_.linear_boundaries || (n == 1 && s_.corners_sharp)));
         if (!mismatch) {
             const T p = uv_[m_.prev(ring_[0]).idx()];
             const T q = s_.linear ? p : smooth(v, p, valence);
