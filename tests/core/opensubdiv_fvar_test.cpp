@@ -28,6 +28,7 @@
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/io/io.h"
+#include "opensubdiv_test_util.h"
 #include "subdivision_test_util.h"
 #include "support/fixtures.h"
 
@@ -39,27 +40,9 @@ namespace Sdc = OpenSubdiv::Sdc;
 
 enum class Scheme { Loop, CatmullClark, Linear };
 
-// Far's primvar: up to three numbers.
-struct Value {
-    double x = 0, y = 0, z = 0;
-    void Clear(void* = nullptr) { x = y = z = 0; }
-    void AddWithWeight(const Value& p, double w) {
-        x += w * p.x;
-        y += w * p.y;
-        z += w * p.z;
-    }
-};
-
-using Cycle = std::vector<int>;
-
-// A face's vertices from its smallest index on, and where that index was.
-std::size_t smallest_at(const Cycle& c) {
-    return static_cast<std::size_t>(std::min_element(c.begin(), c.end()) - c.begin());
-}
-Cycle canonical(Cycle c) {
-    std::rotate(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(smallest_at(c)), c.end());
-    return c;
-}
+using test::canonical;
+using test::Cycle;
+using Value = test::Point;
 
 constexpr UvInterpolation kOptions[] = {
     UvInterpolation::None,         UvInterpolation::CornersOnly, UvInterpolation::CornersPlus1,
@@ -198,29 +181,11 @@ void expect_fvar_equal(Mesh mesh, Scheme scheme, UvInterpolation uv, int levels)
         ASSERT_EQ(mesh.n_faces(), static_cast<std::size_t>(child.GetNumFaces()));
 
         // The layout: old v, then V + e, then (quads) V + E + f.
-        const std::size_t nv = before.vertices_size(), ne = before.edges_size();
-        std::vector<int> next_vmap(mesh.vertices_size(), -1);
-        for (Vertex v : before.vertices()) {
-            next_vmap[v.idx()] = parent.GetVertexChildVertex(vmap[v.idx()]);
-        }
-        for (Edge e : before.edges()) {
-            const int osd_edge =
-                parent.FindEdge(vmap[before.vertex(e, 0).idx()], vmap[before.vertex(e, 1).idx()]);
-            ASSERT_GE(osd_edge, 0);
-            next_vmap[nv + e.idx()] = parent.GetEdgeChildVertex(osd_edge);
-        }
-        if (scheme != Scheme::Loop) {
-            for (Face f : before.faces()) {
-                next_vmap[nv + ne + f.idx()] = parent.GetFaceChildVertex(fmap[f.idx()]);
-            }
-        }
-        vmap = next_vmap;
+        test::next_vertex_map(before, parent, scheme != Scheme::Loop, vmap, fmap,
+                              mesh.vertices_size());
+        ASSERT_FALSE(::testing::Test::HasFatalFailure());
 
-        std::map<Cycle, int> osd_faces;
-        for (int f = 0; f < child.GetNumFaces(); ++f) {
-            const auto fv = child.GetFaceVertices(f);
-            osd_faces[canonical(Cycle(fv.begin(), fv.end()))] = f;
-        }
+        const std::map<Cycle, int> osd_faces = test::faces_by_cycle(child);
         tex = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
         colour = mesh.get_property<Vertex, Vec3>("v:colour");
         ASSERT_TRUE(tex && colour);
@@ -489,10 +454,10 @@ TEST(OpenSubdivFaceVarying, ZzEverySchemeAndOption) {
     EXPECT_EQ(largest().size(), 3u * std::size(kOptions));
     for (const auto& [key, d] : largest()) {
         EXPECT_LE(d, test::kTol);
-        std::printf("%-14s %-11s max |MeshEdit - Far| = %.3g\n", names[key.first],
-                    std::string(uv_interpolation_name(static_cast<UvInterpolation>(key.second)))
-                        .c_str(),
-                    d);
+        std::printf(
+            "%-14s %-11s max |MeshEdit - Far| = %.3g\n", names[key.first],
+            std::string(uv_interpolation_name(static_cast<UvInterpolation>(key.second))).c_str(),
+            d);
     }
 }
 
