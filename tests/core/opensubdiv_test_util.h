@@ -36,8 +36,9 @@ inline Cycle canonical(Cycle c) {
 
 // MeshEdit's vertex indices after one level of `before` → Far's at level + 1, from the
 // layout (old v, then V + e, then with face points V + E + f) and Far's parent-to-child
-// queries; `vmap` and `fmap` map `before`'s vertices and faces to `parent`'s.
-inline void next_vertex_map(const Mesh& before, const OpenSubdiv::Far::TopologyLevel& parent,
+// queries; `vmap` and `fmap` map `before`'s vertices and faces to `parent`'s. False (with a
+// failure) when an edge of `before` is not one of Far's.
+inline bool next_vertex_map(const Mesh& before, const OpenSubdiv::Far::TopologyLevel& parent,
                             bool face_points, std::vector<int>& vmap, const std::vector<int>& fmap,
                             std::size_t new_vertices) {
     const std::size_t nv = before.vertices_size(), ne = before.edges_size();
@@ -48,7 +49,10 @@ inline void next_vertex_map(const Mesh& before, const OpenSubdiv::Far::TopologyL
     for (Edge e : before.edges()) {
         const int osd_edge =
             parent.FindEdge(vmap[before.vertex(e, 0).idx()], vmap[before.vertex(e, 1).idx()]);
-        ASSERT_GE(osd_edge, 0);
+        EXPECT_GE(osd_edge, 0) << "edge " << e.idx() << " is not a Far edge";
+        if (osd_edge < 0) {
+            return false;
+        }
         next[nv + e.idx()] = parent.GetEdgeChildVertex(osd_edge);
     }
     if (face_points) {
@@ -57,6 +61,7 @@ inline void next_vertex_map(const Mesh& before, const OpenSubdiv::Far::TopologyL
         }
     }
     vmap = next;
+    return true;
 }
 
 // Far's faces of `child` by their canonical cycles.
