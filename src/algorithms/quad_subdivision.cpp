@@ -338,9 +338,12 @@ void quad_subdivide(Mesh& mesh, const QuadSubdivisionOptions& options) {
     }
     QuadSubdivisionOptions quiet = options;
     quiet.progress = nullptr;
-    refine::refine_carrying(mesh, refine::Layout::Quad, [&](Mesh& m) {
-        quad_subdivide_arrays(m, &m == &mesh ? options : quiet);
-    });
+    const refine::FaceVaryingRules rules{options.scheme == QuadScheme::Linear
+                                             ? refine::Scheme::Linear
+                                             : refine::Scheme::CatmullClark,
+                                         LoopWeights::Warren, options.uv};
+    refine::refine_carrying(
+        mesh, rules, [&](Mesh& m) { quad_subdivide_arrays(m, &m == &mesh ? options : quiet); });
 }
 
 namespace {

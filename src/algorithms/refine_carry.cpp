@@ -5,11 +5,13 @@
 #include <array>
 #include <memory>
 #include <string_view>
+#include <typeinfo>
 #include <utility>
 #include <vector>
 
 #include "mesh/mesh_arrays.h"
 #include "meshedit/core/attributes.h"
+#include "meshedit/core/properties.h"
 
 namespace meshedit::refine {
 namespace {
@@ -81,6 +83,27 @@ Halfedge corner_at(const std::vector<Halfedge>& corners, const Mesh& base, Verte
     return Halfedge();
 }
 
+// A texture coordinate or corner normal array, refined as face-varying values: true if done.
+bool refine_corner_values(const Mesh& base, const Mesh& refined, FaceVaryingRules rules,
+                          const BasePropertyArray& old, BasePropertyArray& out) {
+    if (old.name() == kTexCoordProperty && old.type() == typeid(Vec2)) {
+        refine_face_varying<Vec2>(base, refined, rules,
+                                  static_cast<const PropertyArray<Vec2>&>(old).vector(),
+                                  static_cast<PropertyArray<Vec2>&>(out).vector());
+        return true;
+    }
+    if (old.name() == kCornerNormalProperty && old.type() == typeid(Vec3)) {
+        // A corner normal's seams are hard edges: they stay where they are, and smoothing
+        // a normal field by a parametrization's rules means nothing; linear keeps both.
+        rules.uv = UvInterpolation::All;
+        refine_face_varying<Vec3>(base, refined, rules,
+                                  static_cast<const PropertyArray<Vec3>&>(old).vector(),
+                                  static_cast<PropertyArray<Vec3>&>(out).vector());
+        return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 bool has_attributes(const Mesh& mesh) {
@@ -96,7 +119,9 @@ bool has_attributes(const Mesh& mesh) {
     return false;
 }
 
-void refine_carrying(Mesh& mesh, Layout layout, const std::function<void(Mesh&)>& refine) {
+void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
+                     const std::function<void(Mesh&)>& refine) {
+    const Layout layout = rules.scheme == Scheme::Loop ? Layout::Loop : Layout::Quad;
     // The arrays stay the same objects (a user's Property handles stay valid): the old
     // values are copied aside, the refinement sizes the arrays, then they are derived.
     const std::array<std::vector<BasePropertyArray*>, 4> now = attributes(mesh);
@@ -182,6 +207,9 @@ void refine_carrying(Mesh& mesh, Layout layout, const std::function<void(Mesh&)>
     for (std::size_t i = 0; i < old[1].size(); ++i) {
         const BasePropertyArray* a = old[1][i].get();
         BasePropertyArray* out = now[1][i];
+        if (refine_corner_values(base, mesh, rules, *a, *out)) {
+            continue;
+        }
         reset(*out, mesh.halfedges_size());
         for (const Face c : mesh.faces()) {
             const std::uint32_t p = parent[c.idx()];

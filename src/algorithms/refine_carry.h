@@ -5,6 +5,7 @@
 
 #include <functional>
 
+#include "algorithms/face_varying.h"
 #include "meshedit/core/mesh.h"
 
 namespace meshedit::refine {
@@ -24,10 +25,12 @@ bool has_attributes(const Mesh& mesh);
 /// in place of the positions (three numbers per run), so it gets exactly the positions'
 /// weights; other vertex attributes keep their values on old vertices and derive new points
 /// from the edge's ends or the face's corners; edges halves copy their edge and the edges
-/// inside faces are new; each face copies the face it is a part of; each corner copies the
-/// old face's corner at the same vertex, or blends the old corners at an edge's ends (an
-/// edge point) or at all the face's corners (a face point) — linear face-varying
-/// interpolation.
-void refine_carrying(Mesh& mesh, Layout layout, const std::function<void(Mesh&)>& refine);
+/// inside faces are new; each face copies the face it is a part of. Texture coordinates
+/// (`h:texcoord`, Vec2) are face-varying values refined by `rules` (face_varying.h); corner
+/// normals (`h:normal`, Vec3) the same way but always linearly; any other corner attribute
+/// copies the old face's corner at the same vertex, or blends the old corners at an edge's
+/// ends (an edge point) or at all the face's corners (a face point).
+void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
+                     const std::function<void(Mesh&)>& refine);
 
 }  // namespace meshedit::refine

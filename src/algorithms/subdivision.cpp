@@ -48,6 +48,9 @@
 #include <cstdint>
 #include <iterator>
 #include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "algorithms/loop_rules.h"
@@ -357,7 +360,42 @@ SubdivisionPlan plan_loop(const Mesh& mesh, int levels) {
 
 namespace {
 void loop_subdivide_arrays(Mesh& mesh, const LoopOptions& options);
+
+constexpr std::pair<UvInterpolation, std::string_view> kUvNames[] = {
+    {UvInterpolation::None, "none"},
+    {UvInterpolation::CornersOnly, "corners"},
+    {UvInterpolation::CornersPlus1, "corners+1"},
+    {UvInterpolation::CornersPlus2, "corners+2"},
+    {UvInterpolation::Boundaries, "boundaries"},
+    {UvInterpolation::All, "all"},
+};
 }  // namespace
+
+std::string_view uv_interpolation_name(UvInterpolation uv) {
+    for (const auto& [value, name] : kUvNames) {
+        if (value == uv) {
+            return name;
+        }
+    }
+    return "corners";
+}
+
+std::optional<UvInterpolation> parse_uv_interpolation(std::string_view name) {
+    for (const auto& [value, spelled] : kUvNames) {
+        if (spelled == name) {
+            return value;
+        }
+    }
+    return std::nullopt;
+}
+
+std::string uv_interpolation_names() {
+    std::string out;
+    for (const auto& [value, name] : kUvNames) {
+        out += (out.empty() ? "" : ", ") + std::string(name);
+    }
+    return out;
+}
 
 LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
     LoopReport report = loop_rules::prepare(mesh);
@@ -367,9 +405,9 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
     }
     LoopOptions quiet = options;
     quiet.progress = nullptr;
-    refine::refine_carrying(mesh, refine::Layout::Loop, [&](Mesh& m) {
-        loop_subdivide_arrays(m, &m == &mesh ? options : quiet);
-    });
+    const refine::FaceVaryingRules rules{refine::Scheme::Loop, options.weights, options.uv};
+    refine::refine_carrying(
+        mesh, rules, [&](Mesh& m) { loop_subdivide_arrays(m, &m == &mesh ? options : quiet); });
     return report;
 }
 

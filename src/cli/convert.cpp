@@ -15,6 +15,7 @@
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/normals.h"
+#include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/files/files.h"
 #include "meshedit/io/io.h"
@@ -193,6 +194,7 @@ Command add_subdivide(CLI::App& meshedit) {
         int levels = 0;
         std::string weights = "warren";
         std::string scheme = "loop";
+        std::string uv;  // empty: the core's default (corners)
         int density = 8;
     };
     auto s = std::make_shared<Settings>();
@@ -215,6 +217,19 @@ Command add_subdivide(CLI::App& meshedit) {
                     "smoothing)")
         ->type_name("S")
         ->check(CLI::IsMember({"loop", "catmull-clark", "linear"}));
+    app->add_option("--uv-interpolation", s->uv,
+                    "how texture coordinates are refined, OpenSubdiv's face-varying options: "
+                    "none (smooth everywhere), corners (the default: chart corners stay), "
+                    "corners+1, corners+2, boundaries (linear along seams and boundaries) "
+                    "or all (linear)")
+        ->type_name("U")
+        ->check([](const std::string& name) -> std::string {
+            if (parse_uv_interpolation(name)) {
+                return {};
+            }
+            return "unknown texture-coordinate interpolation '" + name + "' (one of " +
+                   uv_interpolation_names() + ")";
+        });
     add_density_option(*app, s->density);
     app->footer(
         "Subdivides IN K times and writes OUT. Loop turns every triangle into four each\n"
@@ -226,6 +241,8 @@ Command add_subdivide(CLI::App& meshedit) {
         "Examples:\n"
         "  meshedit subdivide dae/cube.dae cube2.dae -n 2\n"
         "  meshedit subdivide dae/quadball.dae smooth.dae -n 2 --scheme catmull-clark\n"
+        "  meshedit subdivide textured.obj smooth.obj -n 2 --scheme catmull-clark \\\n"
+        "      --uv-interpolation boundaries\n"
         "\n"
         "Exit status: 0 ok, 1 a level that does not fit, 2 bad usage, bad input or an\n"
         "unwritable output.");
@@ -241,7 +258,8 @@ Command add_subdivide(CLI::App& meshedit) {
                         // --scheme's spelling (a hyphen, as the other options) → the verb's.
                         std::string verb = s->scheme;
                         std::replace(verb.begin(), verb.end(), '-', '_');
-                        return ops::parse_step(verb + ":" + std::to_string(s->levels));
+                        return ops::parse_step(verb + ":" + std::to_string(s->levels) +
+                                               (s->uv.empty() ? "" : ":uv=" + s->uv));
                     });
             }};
 }

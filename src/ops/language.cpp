@@ -107,6 +107,9 @@ std::string argument_words(const Verb& verb) {
         out += i == 0 ? "" : (i + 1 == parts.size() ? " or " : ", ");
         out += parts[i];
     }
+    if ((verb.takes & kUvArg) != 0) {
+        out += "; U one of " + uv_interpolation_names();
+    }
     return out;
 }
 
@@ -287,6 +290,21 @@ Step parse_step(std::string_view item) {
         parse_amounts(item.substr(colon + 1), step);  // a whole-mesh verb's amounts: simplify:0.25
     } else {
         std::string_view arg = item.substr(colon + 1);
+        // A subdivision's last part may be uv=U: `loop:uv=none`, `loop:2:uv=none`.
+        if (const auto last = arg.rfind(':');
+            (verb->takes & kUvArg) != 0 &&
+            arg.substr(last == std::string_view::npos ? 0 : last + 1).starts_with("uv=")) {
+            const std::string_view uv = arg.substr(last == std::string_view::npos ? 3 : last + 4);
+            step.uv = parse_uv_interpolation(uv);
+            if (!step.uv) {
+                bad(text, "unknown texture-coordinate interpolation '" + std::string(uv) +
+                              "' (one of " + uv_interpolation_names() + ")");
+            }
+            if (last == std::string_view::npos) {
+                return step;
+            }
+            arg = arg.substr(0, last);
+        }
         const auto second = arg.find(':');
         if (second != std::string_view::npos) {
             if (verb->max_amounts == 0) {

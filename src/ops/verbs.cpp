@@ -304,6 +304,7 @@ StepResult run_loop(Mesh& mesh, const Step& step, const RunOptions& options) {
     for (int level = 0; level < step.levels; ++level) {
         LoopOptions loop;
         loop.weights = options.weights;
+        loop.uv = step.uv.value_or(loop.uv);
         if (options.progress) {
             loop.progress = [&](double f) { options.progress((level + f) / step.levels); };
         }
@@ -361,6 +362,7 @@ StepResult run_quads(Mesh& mesh, const Step& step, const RunOptions& options, Qu
     for (int level = 0; level < step.levels; ++level) {
         QuadSubdivisionOptions quads;
         quads.scheme = scheme;
+        quads.uv = step.uv.value_or(quads.uv);
         if (options.progress) {
             quads.progress = [&](double f) { options.progress((level + f) / step.levels); };
         }
@@ -658,9 +660,11 @@ constexpr std::array kVerbs{
          "this way)",
          "drag the selected vertex (M moves a selection)", check_move, run_move, nullptr, false,
          0},
-    Verb{"loop", kWholeMesh | kLevels, 0, 0, kNoDefaults, "loop, loop:K",
+    Verb{"loop", kWholeMesh | kLevels | kUvArg, 0, 0, kNoDefaults,
+         "loop, loop:K, loop:K:uv=U",
          "K levels (default 1) of Loop subdivision (Warren weights) of a triangle mesh; old "
-         "vertices keep their indices, the vertex on old edge `e` gets index `V + e`",
+         "vertices keep their indices, the vertex on old edge `e` gets index `V + e`; texture "
+         "coordinates follow OpenSubdiv's face-varying option U (default `corners`)",
          "Loop-subdivide the mesh", check_loop, run_loop, plan_loop},
     Verb{"loop_step", kWholeMesh | kLevels, 0, 0, kNoDefaults, "loop_step, loop_step:N",
          "the next N phases (default 1) of Loop as it is taught: 1 compute the new positions, "
@@ -668,17 +672,20 @@ constexpr std::array kVerbs{
          "every vertex; four phases make one `loop`",
          "Loop one phase at a time (positions, split, flip, move)", check_loop_step_verb,
          run_loop_step, plan_loop_step, true},
-    Verb{"catmull_clark", kWholeMesh | kLevels, 0, 0, kNoDefaults,
-         "catmull_clark, catmull_clark:K",
+    Verb{"catmull_clark", kWholeMesh | kLevels | kUvArg, 0, 0, kNoDefaults,
+         "catmull_clark, catmull_clark:K, catmull_clark:K:uv=U",
          "K levels (default 1) of Catmull-Clark subdivision (OpenSubdiv's Catmark rules, "
          "creases and boundaries sharp) of any polygon mesh: every face of k corners becomes k "
          "quads; old vertices keep their indices, edge `e`'s point is `V + e`, face `f`'s "
-         "`V + E + f`",
+         "`V + E + f`; texture coordinates follow OpenSubdiv's face-varying option U (default "
+         "`corners`)",
          "Catmull-Clark-subdivide the mesh (any polygons; quads come out)", check_quads,
          run_catmull_clark, plan_quad_subdivision},
-    Verb{"linear", kWholeMesh | kLevels, 0, 0, kNoDefaults, "linear, linear:K",
+    Verb{"linear", kWholeMesh | kLevels | kUvArg, 0, 0, kNoDefaults,
+         "linear, linear:K, linear:K:uv=U",
          "K levels (default 1) of linear subdivision: the faces of Catmull-Clark, the points "
-         "at centroids and midpoints, the surface unchanged",
+         "at centroids and midpoints, the surface unchanged; texture coordinates linear too "
+         "(U is accepted and changes nothing, as in OpenSubdiv's bilinear scheme)",
          "subdivide into quads without smoothing (linear)", check_quads, run_linear,
          plan_quad_subdivision},
     Verb{"simplify", kWholeMesh, 3, 0, {0.5, kUnbounded, kNoFeatureAngle},

@@ -499,6 +499,7 @@ TEST(CliSubdivide, BadArgumentsAreBadUsage) {
           {"subdivide", in, out, "-n", "-1"},
           {"subdivide", in, out, "-n", "99"},
           {"subdivide", in, out, "-n", "1", "--weights", "catmull"},
+          {"subdivide", in, out, "-n", "1", "--uv-interpolation", "smooth"},
           {"subdivide", in, "-n", "1"},
           {"subdivide", in, out, "-n", "1", "--frobnicate"}}) {
         const RunResult r = run_meshedit(args);
@@ -506,6 +507,58 @@ TEST(CliSubdivide, BadArgumentsAreBadUsage) {
         EXPECT_EQ(split_lines(r.err).size(), 1u) << r.err;
     }
     EXPECT_TRUE(tmp.entries().empty());
+}
+
+// --uv-interpolation names OpenSubdiv's face-varying option; a wrong name is told with the
+// valid ones, and each name reaches the core: on a quad cube with a chart per face, `all`
+// writes other texture coordinates than `none`, and `corners` (the default) what no flag
+// writes.
+TEST(CliSubdivide, UvInterpolationReachesTheCore) {
+    TempDir tmp;
+    const auto in = (tmp / "charts.obj").string();
+    {
+        std::ofstream obj(in);
+        obj << "v -1 -1 -1\nv 1 -1 -1\nv -1 1 -1\nv 1 1 -1\n"
+               "v -1 -1 1\nv 1 -1 1\nv -1 1 1\nv 1 1 1\n";
+        for (int f = 0; f < 6; ++f) {
+            obj << "vt " << f << " 0\nvt " << f + 0.5 << " 0\nvt " << f + 0.5 << " 0.5\nvt " << f
+                << " 0.75\n";
+        }
+        const int faces[6][4] = {{1, 3, 4, 2}, {5, 6, 8, 7}, {1, 2, 6, 5},
+                                 {3, 7, 8, 4}, {1, 5, 7, 3}, {2, 4, 8, 6}};
+        for (int f = 0; f < 6; ++f) {
+            obj << "f";
+            for (int i = 0; i < 4; ++i) {
+                obj << " " << faces[f][i] << "/" << 4 * f + i + 1;
+            }
+            obj << "\n";
+        }
+    }
+    const RunResult bad = run_meshedit(
+        {"subdivide", in, (tmp / "x.obj").string(), "-n", "1", "--uv-interpolation", "corners+3"});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("unknown texture-coordinate interpolation 'corners+3' (one of none, "
+                           "corners, corners+1, corners+2, boundaries, all)"),
+              std::string::npos)
+        << bad.err;
+    const auto texcoords = [&](const std::vector<std::string>& flag) {
+        const auto out = (tmp / "out.obj").string();
+        std::vector<std::string> args{"subdivide", in, out, "-n", "2", "--scheme", "catmull-clark"};
+        args.insert(args.end(), flag.begin(), flag.end());
+        const RunResult r = run_meshedit(args);
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        std::ifstream file(out);
+        std::string line, vt;
+        while (std::getline(file, line)) {
+            vt += line.rfind("vt ", 0) == 0 ? line + "\n" : "";
+        }
+        return vt;
+    };
+    const std::string none = texcoords({"--uv-interpolation", "none"});
+    const std::string all = texcoords({"--uv-interpolation=all"});
+    EXPECT_FALSE(none.empty());
+    EXPECT_NE(none, all);
+    EXPECT_EQ(texcoords({"--uv-interpolation", "corners"}), texcoords({}));
 }
 
 // --------------------------------------------------------------------------- check

@@ -22,6 +22,7 @@
 #include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
+#include "opensubdiv_test_util.h"
 #include "subdivision_test_util.h"
 #include "support/fixtures.h"
 
@@ -33,22 +34,9 @@ namespace Sdc = OpenSubdiv::Sdc;
 
 constexpr int kLevels = 3;
 
-struct Point {
-    double x = 0, y = 0, z = 0;
-    void Clear(void* = nullptr) { x = y = z = 0; }
-    void AddWithWeight(const Point& p, double w) {
-        x += w * p.x;
-        y += w * p.y;
-        z += w * p.z;
-    }
-};
-
-using Cycle = std::vector<int>;
-
-Cycle canonical(Cycle c) {
-    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
-    return c;
-}
+using test::canonical;
+using test::Cycle;
+using test::Point;
 
 enum class Scheme { CatmullClark, Loop };
 
@@ -133,23 +121,8 @@ void expect_equal_to_opensubdiv(Mesh mesh, Scheme scheme) {
         ASSERT_EQ(mesh.n_faces(), static_cast<std::size_t>(child.GetNumFaces()));
 
         // The layout: old v, then V + e, then (Catmull-Clark) V + E + f.
-        const std::size_t nv = before.vertices_size(), ne = before.edges_size();
-        std::vector<int> next_vmap(mesh.vertices_size(), -1);
-        for (Vertex v : before.vertices()) {
-            next_vmap[v.idx()] = parent.GetVertexChildVertex(vmap[v.idx()]);
-        }
-        for (Edge e : before.edges()) {
-            const int osd_edge =
-                parent.FindEdge(vmap[before.vertex(e, 0).idx()], vmap[before.vertex(e, 1).idx()]);
-            ASSERT_GE(osd_edge, 0);
-            next_vmap[nv + e.idx()] = parent.GetEdgeChildVertex(osd_edge);
-        }
-        if (scheme == Scheme::CatmullClark) {
-            for (Face f : before.faces()) {
-                next_vmap[nv + ne + f.idx()] = parent.GetFaceChildVertex(fmap[f.idx()]);
-            }
-        }
-        vmap = next_vmap;
+        ASSERT_TRUE(test::next_vertex_map(before, parent, scheme == Scheme::CatmullClark, vmap,
+                                          fmap, mesh.vertices_size()));
 
         // Positions, to 1e-12.
         for (Vertex v : mesh.vertices()) {
@@ -158,11 +131,7 @@ void expect_equal_to_opensubdiv(Mesh mesh, Scheme scheme) {
                 << "vertex " << v.idx() << " (OpenSubdiv " << vmap[v.idx()] << ")";
         }
         // Faces as oriented cycles; remember which OpenSubdiv face each of ours is.
-        std::map<Cycle, int> osd_faces;
-        for (int f = 0; f < child.GetNumFaces(); ++f) {
-            const auto corners = child.GetFaceVertices(f);
-            osd_faces[canonical(Cycle(corners.begin(), corners.end()))] = f;
-        }
+        const std::map<Cycle, int> osd_faces = test::faces_by_cycle(child);
         fmap.assign(mesh.faces_size(), -1);
         for (Face f : mesh.faces()) {
             Cycle c;

@@ -10,8 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/loop_steps.h"
+#include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/ops/ops.h"
@@ -108,13 +110,63 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
               "bad op 'flip:1-2:0.5': flip takes no amounts (flip:A-B)");
     EXPECT_EQ(syntax_error("weld:1-2+3-3"),
               "bad op 'weld:1-2+3-3': an edge needs two different vertices");
-    EXPECT_EQ(syntax_error("loop:0"), "bad op 'loop:0': expected loop, loop:K with K from 1 to 12");
+    EXPECT_EQ(syntax_error("loop:0"),
+              "bad op 'loop:0': expected loop, loop:K, loop:K:uv=U with K from 1 to 12; U one of "
+              "none, corners, corners+1, corners+2, boundaries, all");
     EXPECT_EQ(syntax_error("loop:13"),
-              "bad op 'loop:13': expected loop, loop:K with K from 1 to 12");
+              "bad op 'loop:13': expected loop, loop:K, loop:K:uv=U with K from 1 to 12; U one "
+              "of none, corners, corners+1, corners+2, boundaries, all");
     EXPECT_EQ(syntax_error("flip_orientation:2"),
               "bad op 'flip_orientation:2': flip_orientation takes no argument");
     EXPECT_EQ(syntax_error("flip:0-6,,loop"), "empty op in --ops list 'flip:0-6,,loop'");
     EXPECT_EQ(syntax_error(""), "empty op in --ops list ''");
+}
+
+// The subdivisions take the texture coordinates' interpolation last, by name; a wrong name is
+// refused with the names, and a verb that is no subdivision takes none.
+TEST(OpsLanguage, SubdivisionsTakeTheUvInterpolation) {
+    const auto steps = parse("loop:uv=none, catmull_clark:2:uv=corners+1, linear:uv=all, loop:2");
+    ASSERT_EQ(steps.size(), 4u);
+    EXPECT_EQ(steps[0].levels, 1);
+    EXPECT_EQ(steps[0].uv, UvInterpolation::None);
+    EXPECT_EQ(steps[1].levels, 2);
+    EXPECT_EQ(steps[1].uv, UvInterpolation::CornersPlus1);
+    EXPECT_EQ(steps[2].uv, UvInterpolation::All);
+    EXPECT_EQ(steps[3].uv, std::nullopt);
+    EXPECT_EQ(syntax_error("loop:uv=smooth"),
+              "bad op 'loop:uv=smooth': unknown texture-coordinate interpolation 'smooth' (one of "
+              "none, corners, corners+1, corners+2, boundaries, all)");
+    EXPECT_EQ(syntax_error("flip:1-2:uv=none"),
+              "bad op 'flip:1-2:uv=none': flip takes no amounts (flip:A-B)");
+    EXPECT_EQ(syntax_error("loop_step:uv=none").rfind("bad op 'loop_step:uv=none': expected", 0),
+              0u);
+
+    // The step runs the core with that option: on a quad cube with a chart per face, `uv=all`
+    // keeps the texture coordinates linear, `uv=none` smooths each chart's corners.
+    Mesh cube = test::quad_cube();
+    auto tex = cube.property<Halfedge, Vec2>(kTexCoordProperty, Vec2{});
+    for (Face f : cube.faces()) {
+        double k = 0;
+        for (Halfedge h : cube.halfedges(f)) {
+            tex[h] = {f.idx() + 0.25 * k, 0.5 * k * k};
+            k += 1;
+        }
+    }
+    Mesh linear = cube, by_step = cube, smooth = cube;
+    QuadSubdivisionOptions all;
+    all.uv = UvInterpolation::All;
+    quad_subdivide(linear, all);
+    apply_steps(by_step, parse("catmull_clark:uv=all"));
+    apply_steps(smooth, parse("catmull_clark:uv=none"));
+    const auto a = linear.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const auto b = by_step.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const auto c = smooth.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    bool differs = false;
+    for (Halfedge h : linear.halfedges()) {
+        EXPECT_EQ(a[h], b[h]) << "halfedge " << h.idx();
+        differs = differs || !(a[h] == c[h]);
+    }
+    EXPECT_TRUE(differs);
 }
 
 // The viewer names the selected edge as the language does, and the text parses back.

@@ -32,6 +32,8 @@ def test_every_verb_is_a_method():
     (("move", (3, 1, 2, 3), {}), "move:v3:1,2,3"),
     (("loop", (), {}), "loop"),
     (("loop", (2,), {}), "loop:2"),
+    (("loop", (2,), {"uv": "none"}), "loop:2:uv=none"),
+    (("catmull_clark", (), {"uv": "corners+1"}), "catmull_clark:uv=corners+1"),
     (("simplify", (0.25,), {}), "simplify:0.25"),
     (("remesh", (), {"rounds": 5}), "remesh:0,5"),
     (("triangulate", (), {}), "triangulate"),
@@ -139,6 +141,12 @@ def test_subdivide_simplify_remesh(sample):
     assert quads.info()["face_degrees"] == {4: 24}
     with pytest.raises(ValueError, match="scheme"):
         quads.subdivide(1, scheme="butterfly")
+    quads.subdivide(1, scheme="linear", uv="all")
+    assert quads.info()["faces"] == 96
+    with pytest.raises(meshedit.SyntaxError, match="one of none, corners, corners"):
+        quads.subdivide(1, scheme="catmull_clark", uv="smooth")
+    with pytest.raises(TypeError, match="uv"):
+        meshedit.step_text("flip", 0, 6, uv="none")
 
 
 def test_notices_are_warnings(sample):

@@ -25,6 +25,9 @@ enum class QuadScheme {
 
 struct QuadSubdivisionOptions {
     QuadScheme scheme = QuadScheme::CatmullClark;
+    /// How texture coordinates are refined (subdivision.h); linear subdivision refines them
+    /// linearly whatever this says, as OpenSubdiv's bilinear scheme does.
+    UvInterpolation uv = UvInterpolation::CornersOnly;
     /// Called with the fraction done (0…1), non-decreasing, at coarse intervals, last with
     /// exactly 1; may be empty. Always from the calling thread.
     std::function<void(double)> progress;
@@ -51,7 +54,8 @@ SubdivisionPlan plan_quad_subdivision(const Mesh& mesh, int levels = 1);
 ///             from the one halfedge(f) points to
 ///
 /// Both halves of a crease edge stay creases; the new edges inside the faces are not. Other
-/// properties follow the attribute carry (docs/halfedge.md, "What every operation carries").
+/// properties follow the attribute carry (docs/halfedge.md, "What every operation carries"),
+/// texture coordinates as face-varying values by `options.uv`.
 /// \throws std::length_error if the result would not fit 32-bit handles (nothing changed).
 ///         If building the result throws (std::bad_alloc), the mesh is left empty but valid.
 /// \post validate(mesh) passes; every face is a quad.

@@ -4,8 +4,11 @@
 /// rules").
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
@@ -20,8 +23,32 @@ enum class LoopWeights {
              ///< Warren's at n = 3 (3/16) and n = 6 (1/16), different at every other n
 };
 
+/// How the subdivisions (Loop, Catmull-Clark) refine texture coordinates, the corners'
+/// `h:texcoord`: as face-varying values, OpenSubdiv's `Sdc::Options::FVarLinearInterpolation`
+/// (docs/subdivision.md, "Face-varying interpolation"). A seam (an edge whose two faces give a
+/// vertex different coordinates) is a boundary of the UV charts; each option says which
+/// values stay where they are instead of being smoothed. Linear subdivision refines every
+/// option linearly, as OpenSubdiv's bilinear scheme does.
+enum class UvInterpolation : std::uint8_t {
+    None,          ///< "none": smooth everywhere, seams and boundaries as creases
+    CornersOnly,   ///< "corners": a chart corner (one face of its chart) stays (the default)
+    CornersPlus1,  ///< "corners+1": also where three or more charts meet
+    CornersPlus2,  ///< "corners+2": also darts and a corner's partner across a seam
+    Boundaries,    ///< "boundaries": linear along seams and the mesh boundary
+    All,           ///< "all": linear everywhere (edge midpoints, face centroids)
+};
+/// "none", "corners", "corners+1", "corners+2", "boundaries" or "all".
+std::string_view uv_interpolation_name(UvInterpolation uv);
+/// The option named `name` (as uv_interpolation_name() spells it), or nothing.
+std::optional<UvInterpolation> parse_uv_interpolation(std::string_view name);
+/// "none, corners, corners+1, corners+2, boundaries, all", for messages.
+std::string uv_interpolation_names();
+
 struct LoopOptions {
     LoopWeights weights = LoopWeights::Warren;
+    /// How texture coordinates are refined (Blender's subdivision modifier's default, "Keep
+    /// Corners", is CornersOnly).
+    UvInterpolation uv = UvInterpolation::CornersOnly;
     /// Called with the fraction done (0…1), non-decreasing, at coarse intervals (about a
     /// hundred calls per million faces), last with exactly 1; may be empty.
     std::function<void(double)> progress;
@@ -73,7 +100,8 @@ SubdivisionPlan plan_loop(const Mesh& mesh, int levels = 1);
 ///
 /// Properties follow the attribute carry (docs/halfedge.md, "What every operation carries";
 /// src/algorithms/refine_carry.h): a blending vertex property gets the positions' own
-/// weights, edge halves and face parts copy their parent, corners interpolate linearly.
+/// weights, edge halves and face parts copy their parent, texture coordinates are refined as
+/// face-varying values by `options.uv`, other corner attributes interpolate linearly.
 /// The edge and face layout of the result is documented in src/algorithms/subdivision.cpp.
 /// \throws std::invalid_argument with the reason if is_loop_ok() refuses (nothing changed).
 /// \throws std::length_error if the result would not fit 32-bit indices (checked before

@@ -38,6 +38,9 @@ enum Arg : unsigned {
     kEdgePair = 1u << 5,   ///< `weld:A-B+C-D`: two edges
     /// `extrude_region:f1..3+f7`: a region of faces, as indices and ranges joined by '+'
     kRegion = 1u << 6,
+    /// `loop:uv=corners`, `loop:2:uv=none`: how texture coordinates are refined (the names of
+    /// uv_interpolation_name(), subdivision.h), after the levels
+    kUvArg = 1u << 7,
 };
 
 /// The element kind a step names.
@@ -82,6 +85,8 @@ struct Step {
     bool from_selection = false;
     /// The amounts (height, shrink, t): as written, the verb's defaults after them.
     std::array<double, kMaxAmounts> amounts{};
+    /// kUvArg: the texture coordinates' interpolation as written, else the core's default.
+    std::optional<UvInterpolation> uv;
     std::string text;  ///< the step as written ("flip:3-4"), for messages
 };
 

@@ -90,13 +90,15 @@ def _region_text(faces, verb, info):
     return "+".join(f"f{x}" for x in indices)
 
 
-def step_text(verb, *args, v=None, f=None, e=None, levels=None, **amounts):
+def step_text(verb, *args, v=None, f=None, e=None, levels=None, uv=None, **amounts):
     """The edit-language step that mesh.<verb>(*args, **kwargs) runs.
 
     Elements: an edge as two vertex indices (`flip(0, 6)`, or `e=(0, 6)`), a weld's two edges
     as two pairs (`weld((0, 1), (5, 6))`), a vertex as `v=12`, a face as `f=7` (or positionally
     when the verb takes only faces or only vertices: `poke(7)`). Amounts follow, positionally or
-    by name (AMOUNT_NAMES); subdivision verbs take `levels` (`loop(2)`); region verbs take the
+    by name (AMOUNT_NAMES); subdivision verbs take `levels` (`loop(2)`) and `uv`, how texture
+    coordinates are refined (`loop(2, uv="none")`: none, corners, corners+1, corners+2,
+    boundaries or all); region verbs take the
     faces as a list or array of face indices (`extrude_region([6, 7, 8], 0.5)`, or `f=[...]`).
     """
     info = _VERBS.get(verb)
@@ -132,15 +134,20 @@ def step_text(verb, *args, v=None, f=None, e=None, levels=None, **amounts):
         kind = "v" if info["vertex"] else "f"
         target = f"{kind}{int(args.pop(0))}"
 
+    if uv is not None and not info.get("uv"):
+        raise TypeError(f"{verb}() got an unexpected keyword argument 'uv'")
+    if uv is not None and not isinstance(uv, str):
+        raise TypeError(f"{verb}(): uv must be a name such as 'corners', got {uv!r}")
     if info["levels"]:
         if args and levels is None:
             levels = args.pop(0)
-        if levels is not None:
-            if not _is_index(levels):
+        if levels is not None or uv is not None:
+            if levels is not None and not _is_index(levels):
                 raise TypeError(f"{verb}(): levels must be an integer, got {levels!r}")
             if args:
                 raise TypeError(f"{verb}() takes one count ({info['syntax']}), got more")
-            return f"{verb}:{int(levels)}"
+            text = verb if levels is None else f"{verb}:{int(levels)}"
+            return text if uv is None else f"{text}:uv={uv}"
 
     names = AMOUNT_NAMES.get(verb, ())
     values = []
@@ -200,11 +207,13 @@ for _name in _VERBS:
     setattr(Document, _name, _verb_method(_name, _run_step))
 
 
-def _subdivide(self, levels=1, scheme="loop"):
-    """`levels` levels of subdivision: scheme "loop", "catmull_clark" or "linear"."""
+def _subdivide(self, levels=1, scheme="loop", uv=None):
+    """`levels` levels of subdivision: scheme "loop", "catmull_clark" or "linear"; `uv` how
+    texture coordinates are refined (OpenSubdiv's face-varying options: "none", "corners" (the
+    default), "corners+1", "corners+2", "boundaries", "all")."""
     if scheme not in ("loop", "catmull_clark", "linear"):
         raise ValueError(f"scheme: expected 'loop', 'catmull_clark' or 'linear', got {scheme!r}")
-    return getattr(self, scheme)(levels)
+    return getattr(self, scheme)(levels, uv=uv)
 
 
 Mesh.subdivide = _subdivide
