@@ -172,24 +172,30 @@ Command add_grade(CLI::App& meshedit) {
         ->required();
     app->add_option("--gradescope", s->gradescope,
                     "also write Gradescope's results.json (score, tests with name, score, "
-                    "max_score, output, visibility)");
+                    "max_score, output, visibility)")
+        ->type_name("OUT.json");
     app->add_option("--cases", s->cases,
                     "a folder of the teacher's cases: meshes and .ops sessions (flip:A-B, "
                     "split:A-B); names with .hidden. or listed as 'hidden FILE' in manifest.txt "
                     "are shown after publishing")
+        ->type_name("DIR")
         ->check(CLI::ExistingDirectory);
     app->add_option("--samples", s->samples,
                     "the folder holding dae/ and bez/ (default: found above the current folder "
                     "or meshedit's)")
+        ->type_name("DIR")
         ->check(CLI::ExistingDirectory);
     app->add_option("--timeout", s->timeout, "seconds each case may run (default 10)")
+        ->type_name("S")
         ->check(CLI::PositiveNumber);
     app->add_option("--task", s->tasks,
                     "grade only this task (repeatable): evaluate_step, evaluate_patch, "
-                    "vertex_normal, flip_edge, split_edge, upsample");
+                    "vertex_normal, flip_edge, split_edge, upsample")
+        ->type_name("NAME");
     app->footer(
         "Every case runs in its own process: a crash, an exception or an endless loop is\n"
-        "reported with its case. Exit status 0 when every case passes, 1 otherwise.\n"
+        "reported with its case. Exit status 0 when every case passes, 1 when one fails, 2 for\n"
+        "a library that cannot be loaded or bad usage.\n"
         "Example:\n"
         "  meshedit grade build-student/libstudent.so --gradescope results.json");
     return {app, [s] { return run(*s); }};

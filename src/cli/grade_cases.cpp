@@ -371,12 +371,18 @@ std::vector<Case> folder_cases(const std::filesystem::path& dir) {
                   });
         } else if (is_mesh_extension(file_extension(path))) {
             const NamedMesh m{file, share(read_mesh(path).mesh)};
+            if (!m.mesh->is_triangle_mesh()) {
+                throw UsageError(path.string() +
+                                 ": not a triangle mesh (the course's tasks are "
+                                 "on triangles; Ctrl+T in the viewer or "
+                                 "--ops triangulate makes one)");
+            }
             b.normals_case(m);
             if (m.mesh->n_edges() > 0) {
                 b.flip_case(m, Edge(std::uint32_t(m.mesh->edges_size() / 2)));
                 b.split_case(m, Edge(std::uint32_t(m.mesh->edges_size() / 3)));
             }
-            if (m.mesh->is_triangle_mesh() && plan_loop(*m.mesh).ok()) {
+            if (plan_loop(*m.mesh).ok()) {
                 b.loop_case(m);
             }
         }

@@ -31,8 +31,8 @@ struct Case {
 std::vector<Case> standard_cases(const std::filesystem::path& samples,
                                  std::vector<std::string>& notes);
 
-/// A teacher's cases from `dir`: every mesh file gives a normals, a flip, a split and (for
-/// triangle meshes) a Loop case; every `.ops` file a session of flip:A-B and split:A-B steps on
+/// A teacher's cases from `dir`: every mesh file (triangles only) gives a normals, a flip, a
+/// split and a Loop case; every `.ops` file a session of flip:A-B and split:A-B steps on
 /// the mesh its `# input:` line names (relative to `dir`) or the mesh of the same stem. A
 /// case is hidden when its file's name contains ".hidden." or starts with "hidden", or when
 /// `dir/manifest.txt` has a line `hidden FILE`. \throws UsageError for a bad session line.

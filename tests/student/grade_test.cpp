@@ -196,6 +196,22 @@ TEST(Grade, AddsTheTeachersCasesAndHidesSome) {
         << refused.err;
 }
 
+TEST(Grade, HasHelp) {
+    const RunResult r = run_meshedit({"grade", "--help"});
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.out.find("usage: meshedit grade"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--gradescope OUT.json"), std::string::npos) << r.out;
+}
+
+TEST(Grade, RefusesAPolygonMeshAmongTheCases) {
+    TempDir cases;
+    std::filesystem::copy_file(repo_root() / "dae" / "quadcube.dae", cases / "quads.dae");
+    const RunResult r =
+        run_meshedit({"grade", library("student_solution"), "--cases", cases.path().string()});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("quads.dae: not a triangle mesh"), std::string::npos) << r.err;
+}
+
 TEST(Grade, RefusesWhatIsNotAStudentLibrary) {
     TempDir dir;
     std::ofstream(dir / "junk.so") << "not a library";
