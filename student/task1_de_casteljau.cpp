@@ -7,7 +7,8 @@
 //
 // Hints: the result has exactly one point fewer than the input. t = 0 gives back the first
 // n - 1 points, t = 1 the last n - 1: check that your weights are not the wrong way round.
-// The grader calls it on curves of 2 to 7 points at several t, t = 0 and t = 1 included.
+// The grader calls it on curves of 2 to 7 points at several t, t = 0 and t = 1 included, and
+// on a single point (no points come out).
 
 #include "meshedit/student/student.h"
 

@@ -13,6 +13,9 @@
 // m. Make new elements with mesh.newVertex(), newEdge(), newFace(), newHalfedge(); give every
 // new halfedge its twin, and every new edge a halfedge (edge->halfedge() = ...).
 //
+// Refuse (return VertexIter() and change nothing) when both faces of e have the same third
+// corner (two triangles back to back): the two new edges would join the same two vertices.
+//
 // Rules the grader checks: twins are mutual, a halfedge and its twin share their edge, the
 // two halfedges of an old edge stay that edge's (make new halfedges for new edges), every
 // vertex, edge and face has a halfedge of its own, m is at the midpoint.

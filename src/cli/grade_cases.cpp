@@ -14,6 +14,7 @@
 
 #include "cli.h"
 #include "grade_checks.h"
+#include "meshedit/core/build.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
@@ -39,6 +40,16 @@ MeshPtr share(Mesh mesh) {
 std::string edge_name(const Mesh& mesh, Edge e) {
     return "edge " + std::to_string(e.idx()) + " (" + std::to_string(mesh.vertex(e, 1).idx()) +
            "-" + std::to_string(mesh.vertex(e, 0).idx()) + ")";
+}
+
+// Two triangles on the same three corners, back to back: splitting an edge would make the two
+// new edges across them join the same vertices, so MeshEdit refuses.
+Mesh pillow() {
+    PolygonSoup soup;
+    soup.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    soup.indices = {0, 1, 2, 0, 2, 1};
+    soup.face_offsets = {0, 3, 6};
+    return build_mesh(soup);
 }
 
 // A grid with bumps and a few random flips: valences from 3 to 8 and a boundary, the same
@@ -143,8 +154,9 @@ public:
             [mesh = m.mesh](const st::StudentTasks& t) { return check_loop(t, *mesh); });
     }
     void step_case(const std::string& name, std::vector<Vec3> points, double t) {
-        std::string title =
-            name + " (" + std::to_string(points.size()) + " points) at t=" + readable_number(t);
+        std::string title = name + " (" + std::to_string(points.size()) +
+                            (points.size() == 1 ? " point" : " points") +
+                            ") at t=" + readable_number(t);
         add("evaluate_step", std::move(title),
             [points = std::move(points), t](const st::StudentTasks& tasks) {
                 return check_step(tasks, points, t);
@@ -227,6 +239,7 @@ std::vector<Case> standard_cases(const std::filesystem::path& samples,
     b.step_case("random curve", random_curve(3, 7), 0.35);
     b.step_case("random curve", random_curve(4, 4), 0.0);
     b.step_case("random curve", random_curve(5, 4), 1.0);
+    b.step_case("a single point, nothing to interpolate", random_curve(6, 1), 0.5);
 
     // Task 2: patches.
     if (!samples.empty()) {
@@ -274,6 +287,8 @@ std::vector<Case> standard_cases(const std::filesystem::path& samples,
     b.split_case(disk, disk.mesh->find_edge(Vertex(0), Vertex(3)), ", a valence-12 vertex");
     b.split_case(disk, boundary_edge(*disk.mesh), ", boundary");
     b.split_case(random1, interior_edge(*random1.mesh, 14));
+    b.split_case(NamedMesh{"pillow (two triangles on the same corners)", share(pillow())}, Edge(0),
+                 ", the new edges would coincide: must be refused");
     if (bowl.mesh) {
         b.split_case(bowl, boundary_edge(*bowl.mesh, 0), ", boundary");
         b.split_case(bowl, edge_touching_boundary(*bowl.mesh), ", an end on the boundary");

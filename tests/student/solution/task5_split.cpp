@@ -23,6 +23,10 @@ VertexIter split_edge(HalfedgeMesh& mesh, EdgeIter e) {
     VertexIter b = h0->vertex(), c = t0->vertex(), a = h2->vertex();
     FaceIter f0 = h0->face();
 
+    if (!t0->isBoundary() && t0->next()->next()->vertex() == a) {
+        return VertexIter();  // both faces are b, c, a: the new edges m-a would coincide
+    }
+
     VertexIter m = mesh.newVertex();
 #if defined(BUG_SPLIT_MIDPOINT)
     m->position = b->position + c->position / 2;
