@@ -34,8 +34,10 @@ void copy_in(const Mesh& mesh, st::HalfedgeMesh& out);
 BridgeError copy_out(st::HalfedgeMesh& in, Mesh& mesh);
 
 /// Binds `student`'s flipEdge()/splitEdge() to MeshEdit's flip() and split() on `mesh`, which
-/// is kept in step with it: each call writes the student mesh back, runs the operation and
-/// copies the result in again. `ops` must outlive the calls.
+/// copy_in() copied into `student`: each call runs the operation on `mesh` (a split at the
+/// midpoint of the positions the student sees) and copies what it touched into `student`, so
+/// the two stay in step through upsample(), at O(1) a call. Other connectivity the student
+/// changes reaches `mesh` only through the final copy_out(). `ops` must outlive the calls.
 void bind_operations(st::HalfedgeMesh& student, Mesh& mesh, st::HalfedgeMesh::Operations& ops);
 
 }  // namespace meshedit::cli::grade

@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include "grade_bridge.h"
+#include "meshedit/core/compare.h"
 #include "meshedit/core/mesh_change.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
 
 namespace meshedit::cli::grade {
@@ -58,6 +60,33 @@ TEST(GradeBridge, AStudentsFlipAndSplitAreRecordedAndUndone) {
         EXPECT_TRUE(bitwise_equal(mesh, before, &why)) << why;
         change.redo(mesh);
         EXPECT_TRUE(bitwise_equal(mesh, after, &why)) << why;
+    }
+}
+
+// upsample() through the bound flipEdge() and splitEdge(), which update the student's mesh
+// piece by piece (boundary loops moved out of the way of new faces): the same mesh as
+// loop_subdivide() makes.
+TEST(GradeBridge, BoundOperationsKeepTheStudentsMeshInStep) {
+    for (const Mesh& input : {shapes::cube(), shapes::disk(12), shapes::grid(4, 3),
+                              shapes::torus(6, 5), shapes::cylinder(6, 2)}) {
+        Mesh mesh = input;
+        st::HalfedgeMesh student;
+        copy_in(mesh, student);
+        st::HalfedgeMesh::Operations ops;
+        bind_operations(student, mesh, ops);
+        st::upsample(student);
+        const BridgeError error = copy_out(student, mesh);
+        ASSERT_EQ(error.invariant, "") << error.message;
+        const auto invalid = validate(mesh);
+        ASSERT_FALSE(invalid) << invalid->message;
+        Mesh expected = input;
+        loop_subdivide(expected);
+        const TopologyMatch match = match_topology(mesh, expected);
+        ASSERT_TRUE(match.isomorphic) << match.difference;
+        for (const Vertex v : mesh.vertices()) {
+            EXPECT_LT(distance(mesh.position(v), expected.position(Vertex(match.vertex[v.idx()]))),
+                      1e-12);
+        }
     }
 }
 
