@@ -220,6 +220,10 @@ TEST(Grade, RefusesWhatIsNotAStudentLibrary) {
     const RunResult junk = run_meshedit({"grade", (dir / "junk.so").string()});
     EXPECT_EQ(junk.exit_code, 2);
     EXPECT_NE(junk.err.find("cannot load"), std::string::npos) << junk.err;
+    const RunResult crash = run_meshedit({"grade", library("crash_on_load")});
+    EXPECT_EQ(crash.exit_code, 2);
+    EXPECT_NE(crash.err.find("crash_on_load.so: loading it crashed (SIGSEGV)"), std::string::npos)
+        << crash.err;
     const RunResult task = run_meshedit({"grade", library("student_solution"), "--task", "flip"});
     EXPECT_EQ(task.exit_code, 2);
     EXPECT_NE(task.err.find("--task flip: not a task"), std::string::npos) << task.err;
