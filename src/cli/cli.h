@@ -74,5 +74,6 @@ Command add_repair(CLI::App& meshedit);
 Command add_check(CLI::App& meshedit);
 Command add_eval(CLI::App& meshedit);
 Command add_compare(CLI::App& meshedit);
+Command add_grade(CLI::App& meshedit);
 
 }  // namespace meshedit::cli

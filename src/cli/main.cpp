@@ -24,8 +24,9 @@ namespace {
 
 // The commands run_builtin() runs (it registers one of each); any other name is a
 // meshedit-COMMAND beside this executable, or a file to view.
-constexpr std::array<std::string_view, 9> kBuiltins{
-    "info", "convert", "subdivide", "simplify", "remesh", "repair", "check", "eval", "compare"};
+constexpr std::array<std::string_view, 10> kBuiltins{"info",    "convert", "subdivide", "simplify",
+                                                     "remesh",  "repair",  "check",     "eval",
+                                                     "compare", "grade"};
 
 using namespace meshedit::cli;
 
@@ -86,7 +87,7 @@ bool looks_like_file(const std::string& word) {
 int run_builtin(int argc, char** argv) {
     CLI::App app(
         "MeshEdit's command line: describe, convert, edit, subdivide, repair, check and compare "
-        "meshes, and evaluate Bezier curves and patches.",
+        "meshes, evaluate Bezier curves and patches, and grade student libraries.",
         "meshedit");
     meshedit::command_line::style(app);
     app.set_version_flag("--version", std::string("meshedit ") + MESHEDIT_VERSION);
@@ -94,9 +95,9 @@ int run_builtin(int argc, char** argv) {
     meshedit::command_line::add_memory_budget_option(app);
     const CLI::Option* threads = meshedit::command_line::add_threads_option(app);
     app.footer(kMoreCommands);
-    const Command commands[] = {add_info(app),     add_convert(app), add_subdivide(app),
-                                add_simplify(app), add_remesh(app),  add_repair(app),
-                                add_check(app),    add_eval(app),    add_compare(app)};
+    const Command commands[] = {
+        add_info(app),   add_convert(app), add_subdivide(app), add_simplify(app), add_remesh(app),
+        add_repair(app), add_check(app),   add_eval(app),      add_compare(app),  add_grade(app)};
     static_assert(std::size(commands) == kBuiltins.size(), "kBuiltins lists every command");
     for (const Command& c : commands) {
         c.app->group("Commands");
