@@ -21,6 +21,7 @@
 #include "meshedit/files/files.h"
 #include "meshedit/io/document.h"
 #include "meshedit/io/io.h"
+#include "meshedit/ops/ops.h"
 
 namespace meshedit::cli::grade {
 namespace {
@@ -331,12 +332,16 @@ std::vector<SessionStep> parse_session(const std::filesystem::path& path, std::s
             char colon = 0, dash = 0;
             std::string verb = word.substr(0, word.find(':'));
             std::istringstream spec(word.substr(verb.size()));
-            if ((verb != "flip" && verb != "split") || !(spec >> colon >> s.a >> dash >> s.b) ||
-                colon != ':' || dash != '-') {
+            // Flip and split are the verbs whose diagrams use their code's names (the verb
+            // table says so; no verb name is compared outside src/ops).
+            const ops::Verb* v = ops::find_verb(verb);
+            const bool graded =
+                v != nullptr && (v->names == CodeNames::Flip || v->names == CodeNames::Split);
+            if (!graded || !(spec >> colon >> s.a >> dash >> s.b) || colon != ':' || dash != '-') {
                 throw UsageError(path.string() + ":" + std::to_string(number) + ": '" + word +
                                  "' is not flip:A-B or split:A-B");
             }
-            s.split = verb == "split";
+            s.split = v->names == CodeNames::Split;
             steps.push_back(s);
         }
     }
