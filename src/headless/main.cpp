@@ -97,14 +97,16 @@ std::optional<OpDiagram> run_ops(Mesh& mesh, const Options& options, ElementRef&
     diagram.picture.labels.push_back({{0.5 * OpDiagram::kAfterX, diagram.max.y + 0.15, 0.0},
                                       diagram.title,
                                       ink,
-                                      OverlayBatch::Label::Side::Centre});
+                                      OverlayBatch::Label::Side::Centre,
+                                      true});
     // The changes listed under the pictures, a line of text apart (the picture's width is
     // what fits it into the image).
     const double pixels_per_unit = options.width / (diagram.max.x - diagram.min.x);
     const double line = 1.5 * diagram_font_px(options.width) / pixels_per_unit;
     double y = diagram.min.y - 0.5 * line;
     for (const std::string& text : diagram.changes) {
-        diagram.picture.labels.push_back({{diagram.min.x, y, 0.0}, text, ink});
+        diagram.picture.labels.push_back(
+            {{diagram.min.x, y, 0.0}, text, ink, OverlayBatch::Label::Side::Right, true});
         y -= line;
     }
     diagram.min.y = y;

@@ -621,11 +621,12 @@ OpDiagram draw(const Mesh& before, const Mesh& after, std::string title, CodeNam
     Painter{before, old, first, diff, labels, style, 0.0, diagram.picture}.draw();
     Painter{after, now, second, diff, labels, style, OpDiagram::kAfterX, diagram.picture}.draw();
     diagram.picture.labels.push_back(
-        {{0.0, 1.3, 0.0}, "before", style.unchanged, OverlayBatch::Label::Side::Centre});
+        {{0.0, 1.3, 0.0}, "before", style.unchanged, OverlayBatch::Label::Side::Centre, true});
     diagram.picture.labels.push_back({{OpDiagram::kAfterX, 1.3, 0.0},
                                       "after",
                                       style.unchanged,
-                                      OverlayBatch::Label::Side::Centre});
+                                      OverlayBatch::Label::Side::Centre,
+                                      true});
     diagram.min = {-1.35, -1.3, 0.0};
     diagram.max = {OpDiagram::kAfterX + 1.35, 1.45, 0.0};
     diagram.changes = change_lines(diff, old, now, labels);

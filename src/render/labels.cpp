@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "meshedit/files/files.h"
+#include "meshedit/overlay/label_layout.h"
 
 namespace meshedit {
 namespace {
@@ -87,18 +88,28 @@ void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, cons
     if (font_px <= 0) {
         font_px = std::max(12, image.height / 32);
     }
+    // First where each would go alone (its text box about the baseline origin x, y), then
+    // where it goes among the others (label_layout.h), then drawn there.
+    struct Measured {
+        const OverlayBatch::Label* label;
+        std::string text;
+        OIIO::ROI box;
+        int x, y;  // the baseline origin, alone
+    };
+    std::vector<Measured> measured;
+    std::vector<LabelSpot> spots;
+    const int gap = font_px / 2;
+    const int pad = std::max(2, font_px / 6);
     for (const OverlayBatch::Label& label : labels) {
         const auto at = project_to_pixels(camera, label.at, image.width, image.height);
         if (!at) {
             continue;
         }
-        // Light text on a translucent dark box: readable on any shading.
         const std::string text = oiio_safe(label.text);
         const OIIO::ROI box = OIIO::ImageBufAlgo::text_size(text, font_px, font);
         if (!box.defined()) {
             throw IoError(font, "", "cannot measure text: " + OIIO::geterror());
         }
-        const int gap = font_px / 2;
         const int ax = static_cast<int>(std::lround(at->x));
         const int ay = static_cast<int>(std::lround(at->y));
         int x = ax + gap;
@@ -109,13 +120,33 @@ void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, cons
             x = ax - (box.xbegin + box.xend) / 2;
             y = ay - (box.ybegin + box.yend) / 2;
         }
-        const int pad = std::max(2, font_px / 6);
+        measured.push_back({&label, text, box, x, y});
+        spots.push_back(
+            {{static_cast<float>(x + box.xbegin - pad), static_cast<float>(y + box.ybegin - pad),
+              static_cast<float>(box.xend - box.xbegin + 2 * pad),
+              static_cast<float>(box.yend - box.ybegin + 2 * pad)},
+             label.side,
+             label.fixed});
+    }
+    const std::vector<std::optional<LabelRect>> placed =
+        place_labels(spots, static_cast<float>(gap), -2.0f, static_cast<float>(image.width),
+                     static_cast<float>(image.height));
+    for (std::size_t i = 0; i < measured.size(); ++i) {
+        if (!placed[i]) {
+            continue;  // no free place near its point
+        }
+        const Measured& m = measured[i];
+        const int x = m.x + static_cast<int>(std::lround(placed[i]->x - spots[i].box.x));
+        const int y = m.y + static_cast<int>(std::lround(placed[i]->y - spots[i].box.y));
+        // Light text on a translucent dark box: readable on any shading.
         const std::array<float, 4> shade{0.05f, 0.05f, 0.08f, 0.7f};
-        const std::array<float, 4> color{0.5f + 0.5f * label.color[0], 0.5f + 0.5f * label.color[1],
-                                         0.5f + 0.5f * label.color[2], 1.0f};
-        if (!OIIO::ImageBufAlgo::render_box(buffer, x + box.xbegin - pad, y + box.ybegin - pad,
-                                            x + box.xend + pad, y + box.yend + pad, shade, true) ||
-            !OIIO::ImageBufAlgo::render_text(buffer, x, y, text, font_px, font, color)) {
+        const Color& c = m.label->color;
+        const std::array<float, 4> color{0.5f + 0.5f * c[0], 0.5f + 0.5f * c[1], 0.5f + 0.5f * c[2],
+                                         1.0f};
+        if (!OIIO::ImageBufAlgo::render_box(buffer, x + m.box.xbegin - pad, y + m.box.ybegin - pad,
+                                            x + m.box.xend + pad, y + m.box.yend + pad, shade,
+                                            true) ||
+            !OIIO::ImageBufAlgo::render_text(buffer, x, y, m.text, font_px, font, color)) {
             throw IoError(font, "", "cannot draw text: " + buffer.geterror());
         }
     }

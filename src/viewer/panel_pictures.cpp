@@ -9,7 +9,9 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
+#include "meshedit/overlay/label_layout.h"
 #include "panels.h"
 
 namespace meshedit::viewer {
@@ -23,7 +25,8 @@ ImU32 rgba(const Color& c, float alpha_scale = 1.0f) {
 }
 
 // A label: light text on a dark box beside, left of or centred on `at` (window pixels).
-void draw_label(ImDrawList* draw, ImVec2 at, const OverlayBatch::Label& label) {
+// Where `label` would go alone beside its point `at`, as a box about its text.
+LabelRect label_box(ImVec2 at, const OverlayBatch::Label& label) {
     const float gap = ImGui::GetFontSize() * 0.5f;
     const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
     ImVec2 corner(at.x + gap, at.y - size.y - 2.0f);
@@ -32,12 +35,33 @@ void draw_label(ImDrawList* draw, ImVec2 at, const OverlayBatch::Label& label) {
     } else if (label.side == OverlayBatch::Label::Side::Centre) {
         corner = ImVec2(at.x - 0.5f * size.x, at.y - 0.5f * size.y);
     }
-    draw->AddRectFilled(ImVec2(corner.x - 2.0f, corner.y - 1.0f),
-                        ImVec2(corner.x + size.x + 2.0f, corner.y + size.y + 1.0f),
-                        IM_COL32(13, 13, 20, 180), 2.0f);
-    const Color light{0.5f + 0.5f * label.color[0], 0.5f + 0.5f * label.color[1],
-                      0.5f + 0.5f * label.color[2], 1.0f};
-    draw->AddText(corner, rgba(light), label.text.c_str());
+    return {corner.x - 2.0f, corner.y - 1.0f, size.x + 4.0f, size.y + 2.0f};
+}
+
+// `labels` at their points `at`, none covering another (label_layout.h): a label with no
+// free place near its point is left out. `width` × `height`: the area they must stay in,
+// from `origin`.
+void draw_placed_labels(ImDrawList* draw, const std::vector<const OverlayBatch::Label*>& labels,
+                        const std::vector<ImVec2>& at, ImVec2 origin, ImVec2 area) {
+    std::vector<LabelSpot> spots;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        LabelRect r = label_box(at[i], *labels[i]);
+        r.x -= origin.x;
+        r.y -= origin.y;
+        spots.push_back({r, labels[i]->side, labels[i]->fixed});
+    }
+    const auto placed = place_labels(spots, ImGui::GetFontSize() * 0.5f, -2.0f, area.x, area.y);
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        if (!placed[i]) {
+            continue;
+        }
+        const ImVec2 lo(origin.x + placed[i]->x, origin.y + placed[i]->y);
+        const ImVec2 hi(lo.x + placed[i]->w, lo.y + placed[i]->h);
+        draw->AddRectFilled(lo, hi, IM_COL32(13, 13, 20, 180), 2.0f);
+        const Color& c = labels[i]->color;
+        const Color light{0.5f + 0.5f * c[0], 0.5f + 0.5f * c[1], 0.5f + 0.5f * c[2], 1.0f};
+        draw->AddText(ImVec2(lo.x + 2.0f, lo.y + 1.0f), rgba(light), labels[i]->text.c_str());
+    }
 }
 
 // `batch` (z = 0) with [min, max] fitted into the rectangle at `corner` of `size`.
@@ -73,21 +97,29 @@ void draw_batch_2d(ImDrawList* draw, const OverlayBatch& batch, const Vec3& min,
     for (const auto& p : batch.points) {
         draw->AddCircleFilled(to_screen(p.p), 0.5f * p.size_px, rgba(p.color));
     }
+    std::vector<const OverlayBatch::Label*> labels;
+    std::vector<ImVec2> at;
     for (const auto& label : batch.labels) {
-        draw_label(draw, to_screen(label.at), label);
+        labels.push_back(&label);
+        at.push_back(to_screen(label.at));
     }
+    draw_placed_labels(draw, labels, at, corner, size);
 }
 
 }  // namespace
 
 void draw_labels(const std::vector<OverlayBatch::Label>& labels, const Camera& camera, int width,
                  int height) {
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    std::vector<const OverlayBatch::Label*> shown;
+    std::vector<ImVec2> points;
     for (const OverlayBatch::Label& label : labels) {
         if (const auto at = project_to_pixels(camera, label.at, width, height)) {
-            draw_label(draw, ImVec2(at->x, at->y), label);
+            shown.push_back(&label);
+            points.emplace_back(at->x, at->y);
         }
     }
+    draw_placed_labels(ImGui::GetBackgroundDrawList(), shown, points, ImVec2(0, 0),
+                       ImVec2(static_cast<float>(width), static_cast<float>(height)));
 }
 
 void Panels::draw_field(Editor& editor, const FieldDisplay& field, PanelRequests& requests) {

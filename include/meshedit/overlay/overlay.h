@@ -71,6 +71,9 @@ struct OverlayBatch {
         /// on it.
         enum class Side { Right, Left, Centre };
         Side side = Side::Right;
+        /// A title or a row of a list rather than a name beside a point: drawn where it is,
+        /// never moved or left out; the other labels make room (label_layout.h).
+        bool fixed = false;
     };
     std::vector<Label> labels;
 
