@@ -161,6 +161,8 @@ private:
     /// Framebuffer pixels the info panel covers on the left (0 when hidden), and the lens
     /// shift that centres the view in the rest.
     int covered_pixels() const;
+    /// Framebuffer pixels the Rewiring panel covers at the window's right edge (0: none).
+    int covered_right_pixels() const;
     void keep_room_for_panels();
 
     GLFWwindow* window_ = nullptr;

@@ -56,9 +56,25 @@ int App::covered_pixels() const {
     return std::clamp(static_cast<int>(std::lround(px)), 0, fb / 2);
 }
 
+int App::covered_right_pixels() const {
+    const float left = panels_.diagram_left_edge();
+    if (left <= 0.0f) {
+        return 0;
+    }
+    int w = 1, h = 1;
+    glfwGetWindowSize(window_, &w, &h);
+    const int fb = framebuffer_size().x;
+    const float px =
+        (static_cast<float>(w) - left) * static_cast<float>(fb) / static_cast<float>(w);
+    // At most what leaves half the view beside the info panel's room.
+    return std::clamp(static_cast<int>(std::lround(px)), 0, fb / 2 - covered_pixels() / 2);
+}
+
 void App::keep_room_for_panels() {
-    camera_.lens_shift_x =
-        static_cast<float>(covered_pixels()) / static_cast<float>(framebuffer_size().x);
+    // The free part's centre, in NDC: shifted right by the info panel, left by the Rewiring
+    // panel.
+    camera_.lens_shift_x = static_cast<float>(covered_pixels() - covered_right_pixels()) /
+                           static_cast<float>(framebuffer_size().x);
 }
 
 void App::reset_camera() {

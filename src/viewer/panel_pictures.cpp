@@ -272,6 +272,12 @@ void Panels::draw_diagram(const OpDiagram& diagram) {
         ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Rewiring (Alt+R)")) {
+        // Against the window's right edge (where it opens): the view keeps room for it.
+        const float right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
+        const float window_right = viewport->WorkPos.x + viewport->WorkSize.x;
+        if (right >= window_right - 40.0f * scale_) {
+            diagram_left_ = ImGui::GetWindowPos().x;
+        }
         ImGui::TextUnformatted(diagram.title.c_str());
         const ImVec2 corner = ImGui::GetCursorScreenPos();
         const ImVec2 room = ImGui::GetContentRegionAvail();

@@ -154,6 +154,7 @@ PanelRequests Panels::draw(Editor& editor, const FrameStats& stats, const std::s
     if (editor.view().show_info) {
         draw_info(editor, stats, field, requests);
     }
+    diagram_left_ = 0.0f;
     if (editor.view().show_diagram && editor.last_diagram() && editor.mode() != Mode::Curve) {
         draw_diagram(*editor.last_diagram());
     }

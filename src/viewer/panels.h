@@ -81,6 +81,10 @@ public:
     /// The info panel's right edge in window coordinates: where the free view begins (the
     /// expected edge until the panel is first drawn; 0 once it is dragged off the left edge).
     float info_right_edge() const;
+    /// The Rewiring panel's left edge in window coordinates when it was drawn last frame
+    /// against the window's right edge (where it opens), so the view keeps room for it; 0
+    /// when it is hidden or dragged away.
+    float diagram_left_edge() const { return diagram_left_; }
 
     /// The errors of the last shader reload (or of a user shader that does not compile), shown
     /// in their own panel until a reload succeeds; empty: no panel.
@@ -108,6 +112,7 @@ private:
     static constexpr float kInfoWidth = 300.0f;  ///< before scaling
     static constexpr float kInfoMargin = 10.0f;
     float scale_ = 1.0f;
+    float diagram_left_ = 0.0f;                           ///< diagram_left_edge()
     float info_left_ = 0.0f, info_right_ = 0.0f;          ///< last drawn edges; right 0 until drawn
     std::vector<std::pair<glm::vec2, glm::vec2>> rects_;  ///< min, max of last frame's panels
     bool prompting_ = false;
