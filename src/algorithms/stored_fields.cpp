@@ -42,7 +42,7 @@ bool is_scalar(const Mesh& mesh, const std::string& name) {
 // The mesh's own arrays and MeshEdit's attributes are drawn their own way, never as a field.
 bool is_own_attribute(std::string_view name) {
     return name == "v:deleted" || name == "f:deleted" || name == kMaterialProperty ||
-           name.starts_with("v:loop_");
+           name.starts_with("v:loop_") || name.starts_with("v:cc_");
 }
 
 std::string field_name_of(std::string_view property) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "meshedit/core/attributes.h"
+#include "meshedit/core/cc_steps.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/loop_steps.h"
 #include "meshedit/core/normals.h"
@@ -314,13 +315,22 @@ StepResult run_loop(Mesh& mesh, const Step& step, const RunOptions& options) {
     return result;
 }
 
+// Four phases make a level: asking for more than remain is refused, naming `scheme`.
+OpStatus check_phases_left(const char* scheme, int asked, int next) {
+    if (asked > 5 - next) {
+        return OpStatus::composed("cannot step " + std::string(scheme) + ": " +
+                                  std::to_string(asked) + " phases asked, but phase " +
+                                  std::to_string(next) + " of 4 is next (" +
+                                  std::to_string(5 - next) + " remain)");
+    }
+    return OpStatus::ok();
+}
+
 // loop_step, loop_step:N: the next N phases of a phased Loop (core/loop_steps.h).
 OpStatus check_loop_step_verb(const Mesh& mesh, const Step& step) {
     const int next = next_loop_phase(mesh);
-    if (step.levels > 5 - next) {
-        return OpStatus::composed("cannot step Loop: " + std::to_string(step.levels) +
-                                  " phases asked, but phase " + std::to_string(next) +
-                                  " of 4 is next (" + std::to_string(5 - next) + " remain)");
+    if (const OpStatus why = check_phases_left("Loop", step.levels, next); !why) {
+        return why;
     }
     if (next == 1) {
         Step one = step;
@@ -339,6 +349,23 @@ StepResult run_loop_step(Mesh& mesh, const Step& step, const RunOptions& options
     for (int phase = 0; phase < step.levels; ++phase) {
         const LoopStepReport report = loop_step(mesh, loop);
         result.message = report.message;
+    }
+    return result;
+}
+// cc_step, cc_step:N: the next N phases of a phased Catmull-Clark (core/cc_steps.h).
+OpStatus check_cc_step_verb(const Mesh& mesh, const Step& step) {
+    if (const OpStatus why = check_phases_left("Catmull-Clark", step.levels, next_cc_phase(mesh));
+        !why) {
+        return why;
+    }
+    return check_cc_step(mesh);
+}
+StepResult run_cc_step(Mesh& mesh, const Step& step, const RunOptions&) {
+    StepResult result;
+    for (int phase = 0; phase < step.levels; ++phase) {
+        const CcStepReport report = cc_step(mesh);
+        result.message = report.message;
+        result.renumbers = result.renumbers || report.phase == 4;  // compacted
     }
     return result;
 }
@@ -672,6 +699,13 @@ constexpr std::array kVerbs{
          "every vertex; four phases make one `loop`",
          "Loop one phase at a time (positions, split, flip, move)", check_loop_step_verb,
          run_loop_step, plan_loop_step, true},
+    Verb{"cc_step", kWholeMesh | kLevels, 0, 0, kNoDefaults, "cc_step, cc_step:N",
+         "the next N phases (default 1) of Catmull-Clark as it is taught: 1 a face point in "
+         "each face (poke), 2 split every old edge at its edge point, 3 move every old vertex "
+         "to its vertex point, 4 dissolve the edges from face points to old vertices (quads); "
+         "four phases make one `catmull_clark`, up to numbering",
+         "Catmull-Clark one phase at a time (face, edge, vertex points, reconnect)",
+         check_cc_step_verb, run_cc_step},
     Verb{"catmull_clark", kWholeMesh | kLevels | kUvArg, 0, 0, kNoDefaults,
          "catmull_clark, catmull_clark:K, catmull_clark:K:uv=U",
          "K levels (default 1) of Catmull-Clark subdivision (OpenSubdiv's Catmark rules, "

@@ -47,6 +47,7 @@ constexpr std::array kTable{
     Binding{key_of('L'), kNoMods, kMeshModes, edit("loop"), "L / U", {}},
     Binding{key_of('U'), kNoMods, kMeshModes, edit("loop"), "L / U", {}},
     Binding{key_of('C'), kShift, kMeshModes, edit("catmull_clark"), "Shift+C", {}},
+    Binding{key_of('C'), kAlt | kShift, kMeshModes, edit("cc_step"), "Alt+Shift+C", {}},
     Binding{key_of('L'), kCtrl, kMeshModes, edit("linear"), "Ctrl+L", {}},
     Binding{key_of('L'), kAlt, kMeshModes, edit("loop_step"), "Alt+L", {}},
     Binding{key_of('D'), kNoMods, kMeshModes, edit("simplify"), "D", {}},

@@ -208,6 +208,14 @@ const std::vector<GoldenCase>& golden_cases() {
         {"fandisk_remesh_feature40",
          "demo:fandisk",
          {"--ops", "remesh:0.04,3,40", "--flat", "--wireframe"}},
+        // Catmull-Clark as it is taught (cc_steps.h, Alt+Shift+C), phase by phase on the
+        // quad cube: face points (each face poked), edge points (old edges split, the new
+        // vertices moved to their edge points), vertex points (the corners pulled in), and
+        // the reconnect that leaves 24 quads, the same as one `catmull_clark`.
+        {"cc_phase1", "dae/quadcube.dae", {"--ops", "cc_step", "--flat", "--wireframe"}},
+        {"cc_phase2", "dae/quadcube.dae", {"--ops", "cc_step:2", "--flat", "--wireframe"}},
+        {"cc_phase3", "dae/quadcube.dae", {"--ops", "cc_step:3", "--flat", "--wireframe"}},
+        {"cc_phase4", "dae/quadcube.dae", {"--ops", "cc_step:4", "--flat", "--wireframe"}},
         // CGAL's mech-holes-shark with its 4 holes (red borders), and filled as Liepa fills
         // them: minimum-weight triangles refined to the surrounding edge length and faired, so
         // each patch continues the surface (docs/cli.md, repair --fair).

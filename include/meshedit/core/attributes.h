@@ -36,13 +36,20 @@ inline constexpr const char* kLoopNewVertex = "v:loop_new";        ///< uint8: m
 inline constexpr const char* kLoopNewEdge = "e:loop_new";          ///< uint8: crosses an old face
 inline constexpr const char* kLoopFlippedEdge = "e:loop_flipped";  ///< uint8: flipped in 3
 
+/// What a phased Catmull-Clark (cc_steps.h) leaves on the mesh between phases: which vertices
+/// are face points (phase 1) and edge points (phase 2), and that the old ones moved (3).
+inline constexpr const char* kCcFacePoint = "v:cc_face_point";  ///< uint8
+inline constexpr const char* kCcEdgePoint = "v:cc_edge_point";  ///< uint8
+inline constexpr const char* kCcMoved = "v:cc_moved";           ///< uint8 (all 1)
+
 /// The well-known attributes whose Carry rule is not their type's default (Mesh::carry()):
 /// a crease survives any merge or split that touches it; the Loop overlay is written by its
 /// phases, never derived.
 inline constexpr std::pair<std::string_view, Carry> kCarryRules[] = {
     {kCreaseProperty, Carry::Any},   {kLoopTarget, Carry::None},    {kLoopHasTarget, Carry::None},
     {kLoopEdgePoint, Carry::None},   {kLoopNewVertex, Carry::None}, {kLoopNewEdge, Carry::None},
-    {kLoopFlippedEdge, Carry::None},
+    {kLoopFlippedEdge, Carry::None}, {kCcFacePoint, Carry::None},   {kCcEdgePoint, Carry::None},
+    {kCcMoved, Carry::None},
 };
 
 }  // namespace meshedit
