@@ -170,6 +170,10 @@ int run(const Options& options) {
         } else if (!options.select.empty()) {
             scene.selected = parse_selection(mesh, options.select);
         }
+        if (options.marks_near && scene.selected.is_none()) {
+            throw UsageError("--marks-near draws the marks near the --select element: select one");
+        }
+        scene.marks_near_selection = options.marks_near;
         if (options.stencil) {
             if (scene.selected.is_none()) {
                 throw UsageError("--stencil draws the stencil of the --select element: select one");

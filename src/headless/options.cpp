@@ -185,6 +185,9 @@ int parse_options(int argc, char** argv, Options& o) {
            "(loop: Warren's weights, as L; loop-original: Loop's; catmull-clark: as Shift+C)")
         ->type_name("loop|loop-original|catmull-clark")
         ->check(CLI::IsMember({"loop", "loop-original", "catmull-clark"}));
+    app.add_flag("--marks-near", o.marks_near,
+                 "a phased Loop's marks (--ops loop_step) only within two rings of the --select "
+                 "element, as the viewer's Alt+N");
     app.add_option_function<double>(
            "--auto-smooth", [&o](double deg) { o.normals.auto_smooth_deg = deg; },
            "smooth shading also splits at edges whose faces turn by more than DEG degrees "

@@ -35,6 +35,7 @@ struct Options {
     UpAxis up = UpAxis::Y;
     std::string select;
     std::optional<StencilScheme> stencil;
+    bool marks_near = false;  ///< --marks-near: a phased Loop's marks near --select only
     bool op_diagram = false;
     NormalSplit normals;               ///< --auto-smooth, --no-crease-split
     std::filesystem::path envmap;      ///< --envmap FILE: mode 7's environment

@@ -40,7 +40,13 @@ const OverlayBatch& DisplayData::features(const Mesh& mesh, bool edges, bool mar
 
 OverlayBatch DisplayData::overlay(const SceneContent& scene, bool edges, bool marks) {
     OverlayBatch batch;
-    if (scene.mesh != nullptr && (edges || marks)) {
+    if (scene.mesh != nullptr && marks && scene.marks_near_selection &&
+        is_live(*scene.mesh, scene.selected)) {
+        // Filtered by the selection, which changes with every click: not cached.
+        batch = features(*scene.mesh, edges, false);
+        add_loop_phase_marks(*scene.mesh, OverlayStyle(), batch,
+                             vertices_near(*scene.mesh, scene.selected, 2));
+    } else if (scene.mesh != nullptr && (edges || marks)) {
         batch = features(*scene.mesh, edges, marks);
     }
     add_scene_marks(scene, OverlayStyle(), batch);

@@ -128,7 +128,55 @@ void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch
     }
 }
 
-void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out) {
+std::vector<std::uint8_t> vertices_near(const Mesh& mesh, ElementRef element, int rings) {
+    std::vector<std::uint8_t> near(mesh.vertices_size(), 0);
+    if (!is_live(mesh, element)) {
+        return near;
+    }
+    std::vector<Vertex> front;
+    const auto take = [&](Vertex v) {
+        if (near[v.idx()] == 0) {
+            near[v.idx()] = 1;
+            front.push_back(v);
+        }
+    };
+    switch (element.kind) {
+        case ElementRef::Kind::Vertex:
+            take(Vertex(element.index));
+            break;
+        case ElementRef::Kind::Edge:
+            take(mesh.vertex(Edge(element.index), 0));
+            take(mesh.vertex(Edge(element.index), 1));
+            break;
+        case ElementRef::Kind::Halfedge:
+            take(mesh.from_vertex(Halfedge(element.index)));
+            take(mesh.to_vertex(Halfedge(element.index)));
+            break;
+        case ElementRef::Kind::Face:
+            for (const Vertex v : mesh.vertices(Face(element.index))) {
+                take(v);
+            }
+            break;
+        case ElementRef::Kind::None:
+            break;
+    }
+    for (int ring = 0; ring < rings; ++ring) {
+        std::vector<Vertex> here;
+        here.swap(front);
+        for (const Vertex v : here) {
+            if (!mesh.is_isolated(v)) {
+                for (const Vertex w : mesh.vertices(v)) {
+                    take(w);
+                }
+            }
+        }
+    }
+    return near;
+}
+
+void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out,
+                          std::span<const std::uint8_t> near) {
+    const auto shown = [&](Vertex v) { return near.empty() || near[v.idx()] != 0; };
     const auto target = mesh.get_property<Vertex, Vec3>(kLoopTarget);
     const auto has_target = mesh.get_property<Vertex, std::uint8_t>(kLoopHasTarget);
     if (!target || !has_target) {
@@ -140,6 +188,9 @@ void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBa
     const float thin = style.feature_width_px;
     for (Edge e : mesh.edges()) {
         const bool turned = flipped && flipped[e] != 0;
+        if (!shown(mesh.vertex(e, 0)) || !shown(mesh.vertex(e, 1))) {
+            continue;
+        }
         if (turned || (new_edge && new_edge[e] != 0)) {
             out.lines.push_back({mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)),
                                  turned ? style.loop_flipped : style.loop_new, thin});
@@ -147,11 +198,13 @@ void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBa
     }
     if (const auto edge_point = mesh.get_property<Edge, Vec3>(kLoopEdgePoint)) {
         for (Edge e : mesh.edges()) {
-            out.points.push_back({edge_point[e], style.loop_new, style.loop_point_px, true});
+            if (shown(mesh.vertex(e, 0)) && shown(mesh.vertex(e, 1))) {
+                out.points.push_back({edge_point[e], style.loop_new, style.loop_point_px, true});
+            }
         }
     }
     for (Vertex v : mesh.vertices()) {
-        if (has_target[v] == 0) {
+        if (has_target[v] == 0 || !shown(v)) {
             continue;
         }
         if (is_new && is_new[v] != 0) {

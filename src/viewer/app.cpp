@@ -606,6 +606,7 @@ void App::rebuild_overlay() {
     scene.hovered = editor_.hover();
     if (mesh_mode()) {
         scene.stencil = view.stencil;
+        scene.marks_near_selection = view.marks_near_selection;
     }
     // Surfaces (tessellated patches) show their nets, not the tessellation's features.
     const bool features = editor_.mode() == Mode::Mesh;

@@ -84,6 +84,7 @@ constexpr std::array kTable{
     Binding{key_of('K'), kNoMods, kMeshModes, edit("crease"), "K", {}},
     Binding{key_of('K'), kShift, kMeshModes, edit("crease_by_angle"), "Shift+K", {}},
     Binding{key_of('W'), kAlt, kMeshModes, {Command::CycleStencil}, "Alt+W", "stencil view: hover a vertex, edge or face to see the old vertices and weights that make its new point (cycles Loop with Warren's weights, Loop's own, Catmull-Clark, off)"},
+    Binding{key_of('N'), kAlt, kMeshModes, {Command::ToggleMarksNear}, "Alt+N", "a phased Loop's marks (Alt+L: targets, edge points, new and flipped edges) only within two rings of the selection, or everywhere again: for dense meshes"},
     Binding{key_of('R'), kAlt, kMeshModes, {Command::ToggleDiagram}, "Alt+R", "rewiring panel: after F, S, C or another local operation, its neighbourhood before and after, halfedges named as in its code"},
     Binding{key_of('F'), kAlt, kMeshModes, {Command::CycleField}, "Alt+F", "scalar field: colour the mesh by Gaussian or mean curvature, valence, triangle quality, dihedral angle, edge length, face area, distance from the selected vertex or the mesh's own numbers (a PLY column such as compare's deviation), with a legend (cycles them, then off)"},
     Binding{key_of('F'), kAlt | kShift, kMeshModes, {Command::CycleColormap}, "Alt+Shift+F", "the field's colour map: the field's default, viridis, magma, diverging"},

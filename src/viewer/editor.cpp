@@ -38,6 +38,7 @@ bool display_command(Command c) {
         case Command::ToggleTrackball:
         case Command::CycleStencil:
         case Command::ToggleDiagram:
+        case Command::ToggleMarksNear:
         case Command::CycleField:
         case Command::ReloadShaders:
         case Command::CycleColormap:
@@ -231,6 +232,12 @@ Outcome Editor::run_display(Action action) {
                                   ? "rewiring panel on (shows after F, S, C and the other local "
                                     "operations)"
                                   : "rewiring panel off"};
+        case Command::ToggleMarksNear:
+            view_.marks_near_selection = !view_.marks_near_selection;
+            return {kDisplay, view_.marks_near_selection
+                                  ? "Loop's marks near the selection only (two rings; all of "
+                                    "them when nothing is selected)"
+                                  : "Loop's marks everywhere"};
         case Command::Screenshot:
             return {kScreenshot, ""};
         default:

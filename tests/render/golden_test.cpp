@@ -208,6 +208,11 @@ const std::vector<GoldenCase>& golden_cases() {
         {"fandisk_remesh_feature40",
          "demo:fandisk",
          {"--ops", "remesh:0.04,3,40", "--flat", "--wireframe"}},
+        // Loop's first phase on the teapot with its marks only within two rings of vertex
+        // 600 (Alt+N, --marks-near): everywhere they blur the whole teapot.
+        {"teapot_loop1_near",
+         "dae/teapot.dae",
+         {"--ops", "loop_step", "--select", "v:600", "--marks-near"}},
         // Catmull-Clark as it is taught (cc_steps.h, Alt+Shift+C), phase by phase on the
         // quad cube: face points (each face poked), edge points (old edges split, the new
         // vertices moved to their edge points), vertex points (the corners pulled in), and

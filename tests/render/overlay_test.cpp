@@ -15,6 +15,7 @@
 #include "meshedit/bezier/bezier_curve.h"
 #include "meshedit/bezier/bezier_patch.h"
 #include "meshedit/core/attributes.h"
+#include "meshedit/core/loop_steps.h"
 #include "meshedit/core/shapes.h"
 #include "support/fixtures.h"
 
@@ -565,6 +566,32 @@ TEST(ControlNets, NoPatchesNothing) {
     OverlayBatch out;
     add_control_nets({}, OverlayStyle{}, out);
     EXPECT_TRUE(out.empty());
+}
+
+TEST(Overlay, LoopMarksNearTheSelectionOnly) {
+    // Phase 1 of a phased Loop on a sphere: a target per vertex, an edge point per edge.
+    Mesh mesh = shapes::icosphere(3);
+    ASSERT_TRUE(check_loop_step(mesh));
+    loop_step(mesh);
+    OverlayBatch all, near_batch;
+    const OverlayStyle style;
+    add_loop_phase_marks(mesh, style, all);
+    const std::vector<std::uint8_t> near = vertices_near(mesh, ElementRef::vertex(Vertex(0)), 2);
+    add_loop_phase_marks(mesh, style, near_batch, near);
+    // Vertex 0 (valence 5) and two rings: 1 + 5 + 10 vertices; their targets and the edge
+    // points of the edges among them.
+    std::size_t chosen = 0;
+    for (const std::uint8_t n : near) {
+        chosen += n;
+    }
+    EXPECT_EQ(chosen, 16u);
+    EXPECT_EQ(all.points.size(), mesh.n_vertices() + mesh.n_edges());
+    EXPECT_LT(near_batch.points.size(), all.points.size() / 10);
+    EXPECT_GE(near_batch.points.size(), chosen);
+    // None is far from vertex 0: two rings of edges on a unit sphere of 642 vertices.
+    for (const auto& p : near_batch.points) {
+        EXPECT_LT(norm(p.p - mesh.position(Vertex(0))), 0.35);
+    }
 }
 
 }  // namespace

@@ -49,6 +49,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('F'), kAlt | kShift, kMeshModes, {Command::CycleColormap}},
             {key_of('V'), kShift, kMeshModes, {Command::Validate}},
             {key_of('V'), kAlt, kMeshModes, {Command::FindProblems}},
+            {key_of('N'), kAlt, kMeshModes, {Command::ToggleMarksNear}},
             {key_of('L'), kAlt, kMeshModes, edit("loop_step")},
             {key_of('C'), kAlt | kShift, kMeshModes, edit("cc_step")},
             // The local operations of polygon meshes (docs/spec.md §4).

@@ -133,7 +133,12 @@ void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch
 /// (purple), x-ray (they lie inside a convex mesh); after phase 2 the new vertices and the new
 /// edges across the old faces (purple); after phase 3 the flipped edges (yellow). Nothing when no
 /// phased Loop is under way.
-void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out);
+/// `near`: by vertex index, which vertices' marks to draw (an edge's when both ends are);
+/// empty: all of them.
+void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out,
+                          std::span<const std::uint8_t> near = {});
+/// By vertex index, 1 for the vertices of `element` and those within `rings` edges of them.
+std::vector<std::uint8_t> vertices_near(const Mesh& mesh, ElementRef element, int rings);
 
 /// A subdivision stencil: a disc on every contributing vertex labelled with its weight
 /// (weight_label()), a thin line from each to the new point, and the new point (teal) with
@@ -189,6 +194,9 @@ struct SceneContent {
     /// Meshes: the stencil view's scheme; the hovered element's stencil is drawn (the
     /// selected one's when nothing is hovered).
     std::optional<StencilScheme> stencil;
+    /// Meshes: a phased Loop's marks only within two rings of `selected` (dense meshes, where
+    /// every vertex's target at once is a blur); all of them when nothing is selected.
+    bool marks_near_selection = false;
 };
 
 /// Everything the overlay shows besides feature edges: control nets, the hovered and the

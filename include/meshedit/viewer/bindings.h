@@ -76,6 +76,7 @@ enum class Command {
     ToggleTrackball,  ///< turntable or trackball orbit
     CycleStencil,     ///< stencil view: off, Loop (Warren), Loop (Loop's), Catmull-Clark
     ToggleDiagram,    ///< the rewiring panel
+    ToggleMarksNear,  ///< a phased Loop's marks near the selection only, or everywhere
     CycleField,       ///< the scalar field shown: off, then each of core/fields.h
     ReloadShaders,    ///< recompile every shader from disk (user shaders: modes 8, 9)
     CycleColormap,    ///< the field's colour map: default, viridis, magma, diverging

@@ -78,6 +78,8 @@ struct ViewState {
     std::optional<StencilScheme> stencil;
     /// The rewiring panel (Alt+R): the last local operation's before/after diagram.
     bool show_diagram = true;
+    /// A phased Loop's marks only near the selection (Alt+N; SceneContent).
+    bool marks_near_selection = false;
     /// Which edges split smooth shading (the Shading panel): creases, and with Auto Smooth
     /// every edge sharper than its angle.
     NormalSplit normals;
