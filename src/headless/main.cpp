@@ -162,6 +162,21 @@ int run(const Options& options) {
         scene.mesh = &mesh;
         scene.patches = patches;
         scene.show_nets = options.net && is_surface;
+        if (options.patch_steps) {
+            const auto& [index, u, v, step] = *options.patch_steps;
+            if (!is_surface) {
+                throw UsageError("--patch-steps steps a Bezier patch: give a .bez file");
+            }
+            if (index >= static_cast<double>(patches.size())) {
+                throw UsageError("--patch-steps: no patch " +
+                                 std::to_string(static_cast<long>(index)) + " (the file has " +
+                                 std::to_string(patches.size()) + " patches)");
+            }
+            scene.steps_patch = static_cast<std::size_t>(index);
+            scene.steps_u = u;
+            scene.steps_v = v;
+            scene.steps = static_cast<int>(step);
+        }
         if (options.select == "result") {
             if (result.is_none()) {
                 throw UsageError("--select result: the last op of --ops selects nothing");

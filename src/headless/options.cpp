@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -185,6 +186,27 @@ int parse_options(int argc, char** argv, Options& o) {
            "(loop: Warren's weights, as L; loop-original: Loop's; catmull-clark: as Shift+C)")
         ->type_name("loop|loop-original|catmull-clark")
         ->check(CLI::IsMember({"loop", "loop-original", "catmull-clark"}));
+    app.add_option_function<std::string>(
+           "--patch-steps",
+           [&o](const std::string& text) {
+               std::array<double, 4> a{};
+               char c1 = 0, c2 = 0, c3 = 0;
+               std::istringstream in(text);
+               if (!(in >> a[0] >> c1 >> a[1] >> c2 >> a[2] >> c3 >> a[3]) || c1 != ',' ||
+                   c2 != ',' || c3 != ',' || !(in >> std::ws).eof() || a[0] < 0 ||
+                   a[0] != std::floor(a[0]) || a[3] < 0 || a[3] != std::floor(a[3]) ||
+                   !(a[1] >= 0 && a[1] <= 1 && a[2] >= 0 && a[2] <= 1)) {
+                   throw CLI::ValidationError(
+                       "--patch-steps",
+                       "wants I,U,V,S: a patch index, u and v in [0, 1] and a "
+                       "step (whole numbers from 0), got '" +
+                           text + "'");
+               }
+               o.patch_steps = a;
+           },
+           ".bez: patch I evaluated at (U, V) by de Casteljau up to step S: along u on every "
+           "row, then along v (docs/teaching.md)")
+        ->type_name("I,U,V,S");
     app.add_flag("--marks-near", o.marks_near,
                  "a phased Loop's marks (--ops loop_step) only within two rings of the --select "
                  "element, as the viewer's Alt+N");

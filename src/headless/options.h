@@ -2,6 +2,7 @@
 // Private to meshedit-render: its command line (CLI11, in MeshEdit's command-line style) and
 // the --select syntax.
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -35,7 +36,10 @@ struct Options {
     UpAxis up = UpAxis::Y;
     std::string select;
     std::optional<StencilScheme> stencil;
-    bool marks_near = false;  ///< --marks-near: a phased Loop's marks near --select only
+    bool marks_near = false;
+    /// --patch-steps I,U,V,S: patch I at (U, V) by de Casteljau up to step S.
+    std::optional<std::array<double, 4>>
+        patch_steps;  ///< --marks-near: a phased Loop's marks near --select only
     bool op_diagram = false;
     NormalSplit normals;               ///< --auto-smooth, --no-crease-split
     std::filesystem::path envmap;      ///< --envmap FILE: mode 7's environment

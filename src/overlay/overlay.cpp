@@ -312,6 +312,57 @@ void add_control_nets(std::span<const BezierPatch> patches, const OverlayStyle& 
     }
 }
 
+int add_patch_steps(const BezierPatch& patch, double u, double v, int step,
+                    const OverlayStyle& style, OverlayBatch& out) {
+    if (patch.rows < 1 || patch.cols < 1 ||
+        patch.control_points.size() !=
+            static_cast<std::size_t>(patch.rows) * static_cast<std::size_t>(patch.cols)) {
+        return 0;
+    }
+    const int u_steps = patch.cols - 1, v_steps = patch.rows - 1;
+    const auto color = [&](int level) {
+        return style.levels.empty()
+                   ? style.curve
+                   : style.levels[static_cast<std::size_t>(level) % style.levels.size()];
+    };
+    // A level's points joined in order, in its colour.
+    const auto draw_level = [&](const std::vector<Vec3>& points, int level) {
+        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+            out.lines.push_back(
+                {points[i], points[i + 1], color(level), level_line_width(style), true});
+        }
+        for (const Vec3& p : points) {
+            out.points.push_back({p, color(level), level_point_size(style), true});
+        }
+    };
+    // Along u: every row at once, up to step min(step, u_steps); the rows' last points are
+    // the curve in v.
+    std::vector<Vec3> column;
+    for (int r = 0; r < patch.rows; ++r) {
+        const std::span<const Vec3> row(&patch.control_points[static_cast<std::size_t>(r) *
+                                                              static_cast<std::size_t>(patch.cols)],
+                                        static_cast<std::size_t>(patch.cols));
+        const auto levels = de_casteljau_levels(row, u, u_steps);
+        for (int k = 1; k <= std::min(step, u_steps); ++k) {
+            draw_level(levels[static_cast<std::size_t>(k)], k);
+        }
+        column.push_back(levels.back()[0]);
+    }
+    if (step >= u_steps && v_steps > 0) {
+        const auto levels = de_casteljau_levels(column, v, v_steps);
+        for (int k = 0; k <= std::min(step - u_steps, v_steps); ++k) {
+            const auto& level = levels[static_cast<std::size_t>(k)];
+            if (k == v_steps) {
+                out.points.push_back(
+                    {level[0], style.evaluated_point, evaluated_point_size(style), true});
+            } else {
+                draw_level(level, u_steps + k);
+            }
+        }
+    }
+    return u_steps + v_steps;
+}
+
 void add_unit_square(const OverlayStyle& style, OverlayBatch& out) {
     const Vec3 c[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
     for (int i = 0; i < 4; ++i) {

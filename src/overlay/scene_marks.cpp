@@ -10,6 +10,10 @@ void add_scene_marks(const SceneContent& scene, const OverlayStyle& style, Overl
         if (scene.show_nets) {
             add_control_nets(scene.patches, style, out);
         }
+        if (scene.steps >= 0 && scene.steps_patch < scene.patches.size()) {
+            add_patch_steps(scene.patches[scene.steps_patch], scene.steps_u, scene.steps_v,
+                            scene.steps, style, out);
+        }
         if (scene.hovered != scene.selected) {
             add_element_highlight(mesh, scene.hovered, style.hovered, style, out);
         }

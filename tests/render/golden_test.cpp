@@ -213,6 +213,11 @@ const std::vector<GoldenCase>& golden_cases() {
         {"teapot_loop1_near",
          "dae/teapot.dae",
          {"--ops", "loop_step", "--select", "v:600", "--marks-near"}},
+        // A teapot body patch evaluated at (0.4, 0.6) by de Casteljau (--patch-steps): the
+        // three levels along u on every row, then the curve in v and its levels down to the
+        // point S(u, v) (red).
+        {"patch_steps_u", "bez/teapot.bez", {"--patch-steps", "4,0.4,0.6,3"}},
+        {"patch_steps_uv", "bez/teapot.bez", {"--patch-steps", "4,0.4,0.6,6"}},
         // Catmull-Clark as it is taught (cc_steps.h, Alt+Shift+C), phase by phase on the
         // quad cube: face points (each face poked), edge points (old edges split, the new
         // vertices moved to their edge points), vertex points (the corners pulled in), and

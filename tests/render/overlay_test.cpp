@@ -594,5 +594,28 @@ TEST(Overlay, LoopMarksNearTheSelectionOnly) {
     }
 }
 
+TEST(Overlay, PatchStepsAlongUThenVEndAtTheEvaluatedPoint) {
+    // A 4 × 4 patch with every control point different: three steps along u, three along v.
+    BezierPatch patch;
+    patch.rows = patch.cols = 4;
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) {
+            patch.control_points.push_back({c * 1.0, r * 1.0, 0.1 * (r * c % 3)});
+        }
+    }
+    const OverlayStyle style;
+    OverlayBatch none, rows_done, all;
+    EXPECT_EQ(add_patch_steps(patch, 0.3, 0.7, 0, style, none), 6);
+    EXPECT_TRUE(none.points.empty());
+    add_patch_steps(patch, 0.3, 0.7, 3, style, rows_done);
+    // Each row: levels of 3, 2 and 1 points; then the curve in v's control points (level 0).
+    EXPECT_EQ(rows_done.points.size(), 4u * (3 + 2 + 1) + 4u);
+    add_patch_steps(patch, 0.3, 0.7, 6, style, all);
+    EXPECT_EQ(all.points.size(), 4u * 6 + 4 + 3 + 2 + 1);
+    // The last point is S(u, v), exactly as BezierPatch evaluates it.
+    EXPECT_EQ(all.points.back().p, patch.evaluate(0.3, 0.7));
+    EXPECT_EQ(all.points.back().color, style.evaluated_point);
+}
+
 }  // namespace
 }  // namespace meshedit

@@ -197,7 +197,20 @@ struct SceneContent {
     /// Meshes: a phased Loop's marks only within two rings of `selected` (dense meshes, where
     /// every vertex's target at once is a blur); all of them when nothing is selected.
     bool marks_near_selection = false;
+    /// Surfaces: patch `steps_patch` evaluated at (steps_u, steps_v) by de Casteljau up to
+    /// step `steps` (add_patch_steps()); no steps when negative.
+    int steps = -1;
+    std::size_t steps_patch = 0;
+    double steps_u = 0.5, steps_v = 0.5;
 };
+
+/// A Bezier patch evaluated at (u, v) by de Casteljau, as BezierPatch::evaluate() does it,
+/// one step at a time (docs/teaching.md): step 0 is the control net; steps 1 … cols − 1 are
+/// the levels along u on every row at once, until each row is one point (the control points
+/// of the curve in v); the next rows − 1 steps are the levels along v on that curve, the last
+/// one's point S(u, v). A larger step shows everything. \return how many steps there are.
+int add_patch_steps(const BezierPatch& patch, double u, double v, int step,
+                    const OverlayStyle& style, OverlayBatch& out);
 
 /// Everything the overlay shows besides feature edges: control nets, the hovered and the
 /// selected element (a hovered element that is also selected shows as selected), the stencil
