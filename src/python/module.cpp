@@ -25,6 +25,7 @@
 #include "meshedit/io/document.h"
 #include "meshedit/io/io.h"
 #include "meshedit/ops/ops.h"
+#include "meshedit/repair/problems.h"
 #include "py_arrays.h"
 #include "py_mesh.h"
 
@@ -382,6 +383,24 @@ PYBIND11_MODULE(_meshedit, m) {
                  }
                  return py::none();
              })
+        .def(
+            "problems",
+            [](const PyMesh& self) {
+                // As `meshedit check --problems` and the viewer's Problems panel list them.
+                py::list out;
+                for (const Problem& p : find_problems(self.mesh, nullptr).problems) {
+                    py::dict d;
+                    d["kind"] = problem_kind_name(p.kind);
+                    d["element"] = p.where.is_none() ? std::string() : to_string(p.where);
+                    d["size"] = p.size;
+                    d["text"] = p.text;
+                    out.append(d);
+                }
+                return out;
+            },
+            "What is wrong beyond the invariants (holes, degenerate faces, parts inside out, "
+            "small parts, faces that pass through each other), one dict each: kind, element, "
+            "size, text.")
         .def("field", &field, py::arg("name"), py::arg("source") = 0)
         .def(
             "write",

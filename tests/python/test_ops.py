@@ -156,3 +156,17 @@ def test_notices_are_warnings(sample):
     again = meshedit.read(sample("cube.dae"))
     assert again.apply("simplify:0.01") == [
         "simplify:0.01: stopped at 4 faces: no further collapse keeps the mesh valid and unfolded"]
+
+
+def test_problems_are_the_clis_and_a_fair_fill_closes_the_hole(sample, cli):
+    # The bowl is open: one hole, as `meshedit check --problems` says; filled and faired by
+    # the verb method, nothing is left.
+    mesh = meshedit.read(sample("bowl.dae"))
+    problems = mesh.problems()
+    assert [p["kind"] for p in problems] == ["hole"]
+    assert problems[0]["element"].startswith("edge ")
+    status, out, _ = cli("check", sample("bowl.dae"), "--problems")
+    assert status == 1 and problems[0]["text"] in out
+    mesh.fill_holes_fair()
+    assert mesh.problems() == []
+    assert mesh.validate() is None
