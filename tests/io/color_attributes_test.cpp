@@ -1,5 +1,6 @@
 // Vertex colours (kColorProperty, attributes.h): kept through edits by the attribute carry
-// like positions.
+// like positions, and through every format that has them with an exact round trip; the
+// formats that cannot hold them say so.
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,8 @@
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
+#include "meshedit/io/io.h"
+#include "support/demo_meshes.h"
 
 namespace meshedit {
 namespace {
@@ -63,6 +66,275 @@ TEST(ColorAttributes, LoopKeepsColoursOnThePositionsWeights) {
         EXPECT_EQ(got.w, 1.0) << v.idx();
         for (const double c : {got.x, got.y, got.z}) {
             EXPECT_TRUE(c >= 0.0 && c <= 1.0) << v.idx();
+        }
+    }
+}
+
+// Everything a format may keep of a mesh's attributes, in element order: each vertex's
+// colour, each face's colour and its corners' UVs and normals from halfedge(f).
+struct Attributes {
+    std::vector<Vec4> colors, face_colors;
+    std::vector<Vec2> uvs;
+    std::vector<Vec3> normals;
+    bool operator==(const Attributes&) const = default;
+};
+
+Attributes attributes_of(const Mesh& mesh) {
+    Attributes a;
+    if (const auto c = mesh.get_property<Vertex, Vec4>(kColorProperty)) {
+        a.colors.assign(c.vector().begin(), c.vector().end());
+    }
+    const auto fc = mesh.get_property<Face, Vec4>(kFaceColorProperty);
+    const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const auto n = mesh.get_property<Halfedge, Vec3>(kCornerNormalProperty);
+    for (const Face f : mesh.faces()) {
+        if (fc) {
+            a.face_colors.push_back(fc[f]);
+        }
+        for (const Halfedge h : mesh.halfedges(f)) {
+            if (uv) {
+                a.uvs.push_back(uv[h]);
+            }
+            if (n) {
+                a.normals.push_back(n[h]);
+            }
+        }
+    }
+    return a;
+}
+
+// Reads `path`, writes it as `ext` (binary and, for PLY, ASCII too), reads that back: the
+// attributes come back bit for bit, and a second write gives the same bytes. Returns the
+// attributes of the first read.
+Attributes expect_round_trip(const fs::path& path, const std::string& ext,
+                             const test::ScratchDir& dir) {
+    const LoadedMesh first = read_mesh(path);
+    const Attributes a = attributes_of(first.mesh);
+    for (const bool ascii : {false, true}) {
+        SCOPED_TRACE(path.string() + " as " + ext + (ascii ? " ascii" : ""));
+        const fs::path out = dir / ("out" + ext);
+        const std::vector<std::string> unkept = write_mesh(first.mesh, out, {true, ascii});
+        EXPECT_TRUE(unkept.empty()) << unkept.front();
+        const LoadedMesh back = read_mesh(out);
+        EXPECT_EQ(back.mesh.n_faces(), first.mesh.n_faces());
+        EXPECT_TRUE(attributes_of(back.mesh) == a);
+        write_mesh(back.mesh, dir / ("again" + ext), {true, ascii});
+        EXPECT_EQ(test::slurp(out), test::slurp(dir / ("again" + ext)));
+    }
+    return a;
+}
+
+// ------------------------------------------------------------------------- PLY
+
+TEST(ColorAttributes, PlyUcharColoursUvsAndNormalsRoundTripExactly) {
+    test::ScratchDir dir;
+    test::spit(dir / "c.ply",
+               "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+               "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+               "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+               "property uchar alpha\nproperty float s\nproperty float t\nelement face 2\n"
+               "property list uchar int vertex_indices\nend_header\n"
+               "0 0 0 0 0 1 255 0 0 255 0 0\n1 0 0 0 0.6 0.8 0 0 255 128 1 0\n"
+               "1 1 0 0 0 1 10 20 30 40 1 1\n0 1 0 1 0 0 0 0 0 0 0 1\n3 0 1 2\n3 0 2 3\n");
+    const Attributes a = expect_round_trip(dir / "c.ply", ".ply", dir);
+    EXPECT_EQ(a.colors, (std::vector<Vec4>{{1, 0, 0, 1},
+                                           {0, 0, 1, 128 / 255.0},
+                                           {10 / 255.0, 20 / 255.0, 30 / 255.0, 40 / 255.0},
+                                           {0, 0, 0, 0}}));
+    EXPECT_EQ(a.uvs.size(), 6u);
+    EXPECT_EQ(a.normals.size(), 6u);
+    // Written back as uchar, because every value is k/255; the file's normals as they were
+    // (an ASCII "0.6" is kept as the double it spells, so written as double).
+    const std::string text = test::slurp(dir / "out.ply");
+    EXPECT_CONTAINS(text,
+                    "property double nx\nproperty double ny\nproperty double nz\n"
+                    "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+                    "property uchar alpha\nproperty float s\nproperty float t\n");
+    EXPECT_CONTAINS(text, "\n1 0 0 0 0.6 0.8 0 0 255 128 1 0\n");
+}
+
+// Float colours stay floats; 0 and 1 (assimp's float-color.ply) are k/255 and go as uchar; a
+// blended colour that no float holds goes as double, so the round trip stays exact after an
+// edit too.
+TEST(ColorAttributes, PlyFloatColoursStayExactThroughEdits) {
+    test::ScratchDir dir;
+    const fs::path file = "/usr/share/assimp/models/PLY/float-color.ply";
+    if (fs::exists(file)) {
+        const Attributes a = expect_round_trip(file, ".ply", dir);
+        EXPECT_EQ(a.colors, std::vector<Vec4>(3, Vec4{0, 0, 1, 1}));
+        EXPECT_CONTAINS(test::slurp(dir / "out.ply"), "property uchar red\n");
+    }
+    test::spit(dir / "f.ply",
+               "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+               "property float y\nproperty float z\nproperty float red\nproperty float green\n"
+               "property float blue\nelement face 1\nproperty list uchar int vertex_indices\n"
+               "end_header\n");
+    std::string body;
+    const float values[3][6] = {
+        {0, 0, 0, 0.1f, 0.5f, 1}, {1, 0, 0, 0.2f, 0.5f, 0}, {0, 1, 0, 0.3f, 0, 0}};
+    body.append(reinterpret_cast<const char*>(values), sizeof values);
+    const char face[13] = {3, 0, 0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0};
+    body.append(face, sizeof face);
+    test::spit(dir / "f.ply", test::slurp(dir / "f.ply") + body);
+    const Attributes a = expect_round_trip(dir / "f.ply", ".ply", dir);
+    EXPECT_EQ(a.colors[1], (Vec4{double{0.2f}, 0.5, 0, 1}));
+    EXPECT_CONTAINS(test::slurp(dir / "out.ply"), "property float red\n");
+
+    LoadedMesh loaded = read_mesh(dir / "f.ply");
+    const Vertex m = *split(loaded.mesh, loaded.mesh.find_edge(Vertex(0), Vertex(1)));
+    const auto color = loaded.mesh.get_property<Vertex, Vec4>(kColorProperty);
+    EXPECT_EQ(color[m], (Vec4{0.5 * double{0.1f} + 0.5 * double{0.2f}, 0.5, 0.5, 1}));
+    write_mesh(loaded.mesh, dir / "split.ply");
+    EXPECT_CONTAINS(test::slurp(dir / "split.ply"), "property double red\n");
+    EXPECT_TRUE(attributes_of(read_mesh(dir / "split.ply").mesh) == attributes_of(loaded.mesh));
+}
+
+// MeshLab's per-corner UVs (a face texcoord list) keep their seams, in both encodings.
+TEST(ColorAttributes, PlyFaceTexcoordListsKeepSeams) {
+    test::ScratchDir dir;
+    test::spit(dir / "t.ply",
+               "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+               "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+               "property list uchar float texcoord\nend_header\n"
+               "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2 6 0 0 1 0 1 1\n3 0 2 3 6 0.5 0.5 1 1 0 1\n");
+    const Attributes a = expect_round_trip(dir / "t.ply", ".ply", dir);
+    EXPECT_EQ(a.uvs.size(), 6u);
+    EXPECT_CONTAINS(test::slurp(dir / "out.ply"), "property list uchar float texcoord\n");
+    // A seam: vertex 0 has (0, 0) in one face and (0.5, 0.5) in the other.
+    const LoadedMesh loaded = read_mesh(dir / "t.ply");
+    const auto uv = loaded.mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    std::vector<Vec2> at_zero;
+    for (const Halfedge h : loaded.mesh.halfedges()) {
+        if (!loaded.mesh.is_boundary(h) && loaded.mesh.to_vertex(h) == Vertex(0)) {
+            at_zero.push_back(uv[h]);
+        }
+    }
+    ASSERT_EQ(at_zero.size(), 2u);
+    EXPECT_NE(at_zero[0], at_zero[1]);
+}
+
+// Bad values drop only that attribute, with one line naming where; the mesh loads.
+TEST(ColorAttributes, PlyBadColoursAndUvsAreNamedAndDropped) {
+    test::ScratchDir dir;
+    test::spit(dir / "n.ply",
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+               "property float z\nproperty float red\nproperty float green\nproperty float "
+               "blue\nelement face 1\nproperty list uchar int vertex_indices\n"
+               "property list uchar float texcoord\nend_header\n"
+               "0 0 0 1 0 0\n1 0 0 nan 0 0\n0 1 0 0 0 1\n3 0 1 2 4 0 0 1 0\n");
+    const LoadedMesh loaded = read_mesh(dir / "n.ply");
+    EXPECT_EQ(loaded.mesh.n_faces(), 1u);
+    EXPECT_FALSE(loaded.mesh.has_property<Vertex>(kColorProperty));
+    EXPECT_FALSE(loaded.mesh.has_property<Halfedge>(kTexCoordProperty));
+    EXPECT_EQ(loaded.notices,
+              (std::vector<std::string>{
+                  "vertex colours not kept: vertex 1's red is not a number; the mesh loads "
+                  "without colours",
+                  "per-corner texture coordinates (face.texcoord) not kept: face 0 (line 17) has "
+                  "4 texcoord values for 3 corners; the mesh loads without them"}));
+}
+
+// assimp's PLY files with colours, UVs and normals keep them through PLY.
+TEST(ColorAttributes, AssimpPlyFilesRoundTripExactly) {
+    const fs::path models = "/usr/share/assimp/models/PLY";
+    if (!fs::is_directory(models)) {
+        GTEST_SKIP() << "install assimp-testmodels (scripts/install-deps.sh does)";
+    }
+    test::ScratchDir dir;
+    const Attributes uv = expect_round_trip(models / "cube_uv.ply", ".ply", dir);
+    EXPECT_EQ(uv.uvs.size(), 24u);
+    const Attributes wuson = expect_round_trip(models / "Wuson.ply", ".ply", dir);
+    EXPECT_EQ(wuson.uvs.size(), 3u * 3732u);
+}
+
+// ------------------------------------------------------------------------- OFF
+
+// COFF as CGAL writes it (integers 0–255 with alpha) comes back as the same integers.
+TEST(ColorAttributes, OffIntegerColoursRoundTripExactly) {
+    test::ScratchDir dir;
+    test::spit(dir / "c.off",
+               "COFF\n4 2 0\n0 0 0 192 192 192 255\n1 0 0 255 0 0 128\n1 1 0 0 0 0 0\n"
+               "0 1 0 1 2 3 4\n3 0 1 2\n3 0 2 3\n");
+    const Attributes a = expect_round_trip(dir / "c.off", ".off", dir);
+    EXPECT_EQ(a.colors, (std::vector<Vec4>{{192 / 255.0, 192 / 255.0, 192 / 255.0, 1},
+                                           {1, 0, 0, 128 / 255.0},
+                                           {0, 0, 0, 0},
+                                           {1 / 255.0, 2 / 255.0, 3 / 255.0, 4 / 255.0}}));
+    EXPECT_EQ(test::slurp(dir / "out.off"),
+              "COFF\n4 2 5\n0 0 0 192 192 192 255\n1 0 0 255 0 0 128\n1 1 0 0 0 0 0\n"
+              "0 1 0 1 2 3 4\n3 0 1 2\n3 0 2 3\n");
+}
+
+// Decimal colours of three values (alpha 1), normals, texture coordinates and face colours
+// together: STCNOFF, each in Geomview's order on the vertex line.
+TEST(ColorAttributes, OffDecimalColoursNormalsUvsAndFaceColours) {
+    test::ScratchDir dir;
+    test::spit(dir / "a.off",
+               "STCNOFF\n3 1 0\n0 0 0 0 0 1 0.9 0 0 0.25 0.5\n1 0 0 0 0.6 0.8 0 0 0.9 1 0\n"
+               "0 1 0 1 0 0 0.5 0.5 0.5 0 1\n3 0 1 2 0.1 0.2 0.3 0.4\n");
+    const Attributes a = expect_round_trip(dir / "a.off", ".off", dir);
+    EXPECT_EQ(a.colors, (std::vector<Vec4>{{0.9, 0, 0, 1}, {0, 0, 0.9, 1}, {0.5, 0.5, 0.5, 1}}));
+    EXPECT_EQ(a.face_colors, (std::vector<Vec4>{{0.1, 0.2, 0.3, 0.4}}));
+    EXPECT_EQ(a.normals.size(), 3u);
+    EXPECT_EQ(a.uvs.size(), 3u);
+    EXPECT_EQ(test::slurp(dir / "out.off"),
+              "STCNOFF\n3 1 3\n0 0 0 0 0 1 0.9 0 0 1 0.25 0.5\n1 0 0 0 0.6 0.8 0 0 0.9 1 1 0\n"
+              "0 1 0 1 0 0 0.5 0.5 0.5 1 0 1\n3 0 1 2 0.1 0.2 0.3 0.4\n");
+}
+
+// Bad colours or texture coordinates drop that attribute with one line naming the line; the
+// mesh still loads. Formats without colours say they drop them.
+TEST(ColorAttributes, OffBadValuesAreNamedAndDropped) {
+    test::ScratchDir dir;
+    test::spit(dir / "n.off",
+               "STCOFF\n3 1 0\n0 0 0 1 0 0 1 0 0\n1 0 0 nan 0 0 1 1 0\n"
+               "0 1 0 0 0 1 1 0 x\n3 0 1 2\n");
+    const LoadedMesh n = read_mesh(dir / "n.off");
+    EXPECT_EQ(n.mesh.n_faces(), 1u);
+    EXPECT_FALSE(n.mesh.has_property<Vertex>(kColorProperty));
+    EXPECT_FALSE(n.mesh.has_property<Halfedge>(kTexCoordProperty));
+    EXPECT_EQ(n.notices, (std::vector<std::string>{
+                             "vertex colours not kept: vertex 1 (line 4) has a colour value that "
+                             "is not a number ('nan'); the mesh loads without them",
+                             "texture coordinates not kept: vertex 2 (line 5) has no two numbers "
+                             "for its texture coordinates; the mesh loads without them"}));
+    test::spit(dir / "w.off", "COFF\n3 1 0\n0 0 0 1 0\n1 0 0 0 0 1\n0 1 0 0 1 0\n3 0 1 2\n");
+    EXPECT_EQ(read_mesh(dir / "w.off").notices,
+              (std::vector<std::string>{"vertex colours not kept: vertex 0 (line 3) has 2 colour "
+                                        "values (3 or 4 expected); the mesh loads without them"}));
+
+    test::spit(dir / "c.off",
+               "COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0 1 0\n0 1 0 0 0 1\n3 0 1 2 0 0 1\n");
+    const std::vector<std::string> unkept =
+        write_mesh(read_mesh(dir / "c.off").mesh, dir / "c.stl");
+    ASSERT_EQ(unkept.size(), 2u);
+    EXPECT_CONTAINS(unkept[0], "vertex colours (STL has no colours; ");
+    EXPECT_EQ(unkept[1], "face colours (only OFF keeps them)");
+}
+
+// Real files: CGAL's coloured OFFs (integers with alpha; decimals without, face colours)
+// and assimp's OFFs keep everything through OFF, and their vertex colours through PLY.
+TEST(ColorAttributes, RealOffFilesRoundTripExactly) {
+    test::ScratchDir dir;
+    if (fs::exists(test::kDemoDataTarball)) {
+        const fs::path data = fs::path(MESHEDIT_BUILD_DIR) / "demo_data";
+        const Attributes cactus = expect_round_trip(test::demo_mesh("cactus", data), ".off", dir);
+        EXPECT_EQ(cactus.colors.size(), 620u);
+        EXPECT_EQ(cactus.colors[0], (Vec4{192 / 255.0, 192 / 255.0, 192 / 255.0, 1}));
+        const fs::path mixed = test::demo_mesh("mesh_with_colors", data);
+        const Attributes m = expect_round_trip(mixed, ".off", dir);
+        EXPECT_EQ(m.colors[0], (Vec4{0.9, 0, 0, 1}));
+        EXPECT_EQ(m.face_colors.size(), 4u);
+        EXPECT_EQ(m.face_colors[3], (Vec4{0, 0, 0.9, 1}));
+        const LoadedMesh off = read_mesh(test::demo_mesh("cactus", data));
+        write_mesh(off.mesh, dir / "cactus.ply");
+        EXPECT_EQ(attributes_of(read_mesh(dir / "cactus.ply").mesh).colors, cactus.colors);
+    }
+    const fs::path models = "/usr/share/assimp/models/OFF";
+    if (fs::is_directory(models)) {
+        for (const char* name : {"Wuson.off", "Cube.off"}) {
+            const Attributes a = expect_round_trip(models / name, ".off", dir);
+            EXPECT_TRUE(a.colors.empty());
         }
     }
 }
