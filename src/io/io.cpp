@@ -36,8 +36,8 @@ void write_off_ignoring_flags(const Mesh& mesh, const fs::path& path, const IoFl
 // vertex colours, per-vertex UVs and normals.
 constexpr MeshFormat kFormats[] = {
     {".dae", "COLLADA", read_collada, write_collada, true, true, true, false, false, false, false},
-    {".gltf", "glTF", read_gltf, write_gltf, false, false, false, true, false, false, true},
-    {".glb", "glTF", read_gltf, write_gltf, false, false, false, true, false, false, true},
+    {".gltf", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
+    {".glb", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
     {".obj", "OBJ", read_obj, write_obj, true, true, false, true, false, false, true},
     {".off", "OFF", read_off, write_off_ignoring_flags, true, true, false, false, false, true,
      true},

@@ -339,5 +339,37 @@ TEST(ColorAttributes, RealOffFilesRoundTripExactly) {
     }
 }
 
+// ------------------------------------------------------------------------- glTF
+
+// COLOR_0 as normalized bytes when every colour is k/255 (an OFF of CGAL's integers), shorts
+// when k/65535, else floats: each reads back bit for bit, through the seams that split glTF
+// vertices.
+TEST(ColorAttributes, GltfColoursRoundTripExactly) {
+    test::ScratchDir dir;
+    test::spit(dir / "c.off",
+               "COFF\n4 2 0\n0 0 0 192 192 192 255\n1 0 0 255 0 0 128\n1 1 0 0 0 0 0\n"
+               "0 1 0 1 2 3 4\n3 0 1 2\n3 0 2 3\n");
+    Mesh mesh = read_mesh(dir / "c.off").mesh;
+    const Attributes bytes = attributes_of(mesh);
+    auto uv = mesh.property<Halfedge, Vec2>(kTexCoordProperty);
+    for (const Halfedge h : mesh.halfedges()) {
+        uv[h] = Vec2{h.idx() / 8.0, 0.5};  // a seam at every vertex
+    }
+    for (const char* name : {"c.gltf", "c.glb"}) {
+        SCOPED_TRACE(name);
+        EXPECT_TRUE(write_mesh(mesh, dir / name).empty());
+        EXPECT_EQ(attributes_of(read_mesh(dir / name).mesh).colors, bytes.colors);
+    }
+    auto color = mesh.get_property<Vertex, Vec4>(kColorProperty);
+    color[Vertex(1)] = Vec4{1000 / 65535.0, 0, 1, 1};
+    write_mesh(mesh, dir / "s.glb");
+    EXPECT_EQ(attributes_of(read_mesh(dir / "s.glb").mesh).colors, attributes_of(mesh).colors);
+    for (const Vertex v : mesh.vertices()) {
+        color[v] = Vec4{double{0.1f * static_cast<float>(v.idx())}, 0.25, 1, 1};
+    }
+    write_mesh(mesh, dir / "f.gltf");
+    EXPECT_EQ(attributes_of(read_mesh(dir / "f.gltf").mesh).colors, attributes_of(mesh).colors);
+}
+
 }  // namespace
 }  // namespace meshedit
