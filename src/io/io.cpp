@@ -38,7 +38,7 @@ constexpr MeshFormat kFormats[] = {
     {".dae", "COLLADA", read_collada, write_collada, true, true, true, false, false, false, false},
     {".gltf", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
     {".glb", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
-    {".obj", "OBJ", read_obj, write_obj, true, true, false, true, false, false, true},
+    {".obj", "OBJ", read_obj, write_obj, true, true, false, true, false, true, true},
     {".off", "OFF", read_off, write_off_ignoring_flags, true, true, false, false, false, true,
      true},
     {".ply", "PLY", read_ply, write_ply, true, true, false, false, true, true, true},

@@ -371,5 +371,42 @@ TEST(ColorAttributes, GltfColoursRoundTripExactly) {
     EXPECT_EQ(attributes_of(read_mesh(dir / "f.gltf").mesh).colors, attributes_of(mesh).colors);
 }
 
+// ------------------------------------------------------------------------- OBJ
+
+// The common extension `v x y z r g b` (assimp's cube_with_vertexcolors.obj), alpha only when
+// one is not 1; a colour on some vertices only, or one not a number, drops them with a line.
+TEST(ColorAttributes, ObjVertexColoursRoundTripExactly) {
+    test::ScratchDir dir;
+    test::spit(dir / "c.obj",
+               "v 0 0 0 1 0 0\nv 1 0 0 0 0.5 1 0.25\nv 0 1 0 0.1 0.2 0.3\nf 1 2 3\n");
+    const Attributes a = expect_round_trip(dir / "c.obj", ".obj", dir);
+    EXPECT_EQ(a.colors, (std::vector<Vec4>{{1, 0, 0, 1}, {0, 0.5, 1, 0.25}, {0.1, 0.2, 0.3, 1}}));
+    EXPECT_CONTAINS(test::slurp(dir / "out.obj"), "v 1 0 0 0 0.5 1 0.25\n");
+
+    const fs::path cube = "/usr/share/assimp/models/OBJ/cube_with_vertexcolors.obj";
+    if (fs::exists(cube)) {
+        const Attributes c = expect_round_trip(cube, ".obj", dir);
+        ASSERT_EQ(c.colors.size(), 8u);
+        EXPECT_EQ(c.colors[7], (Vec4{0.09020, 0, 0.78431, 1}));
+        // And through every other format that keeps colours.
+        const Mesh mesh = read_mesh(cube).mesh;
+        for (const char* name : {"c.ply", "c.off"}) {
+            write_mesh(mesh, dir / name);
+            EXPECT_EQ(attributes_of(read_mesh(dir / name).mesh).colors, c.colors) << name;
+        }
+    }
+
+    test::spit(dir / "m.obj", "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n");
+    const LoadedMesh m = read_mesh(dir / "m.obj");
+    EXPECT_FALSE(m.mesh.has_property<Vertex>(kColorProperty));
+    EXPECT_EQ(m.notices, (std::vector<std::string>{"vertex colours not kept: vertex 2 (line 2) "
+                                                   "has none; the mesh loads without them"}));
+    test::spit(dir / "n.obj", "v 0 0 0 1 0 0\nv 1 0 0 nan 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n");
+    EXPECT_EQ(read_mesh(dir / "n.obj").notices,
+              (std::vector<std::string>{"vertex colours not kept: vertex 2 (line 2) has a colour "
+                                        "value that is not a number; the mesh loads without "
+                                        "them"}));
+}
+
 }  // namespace
 }  // namespace meshedit
