@@ -35,7 +35,7 @@ void write_off_ignoring_flags(const Mesh& mesh, const fs::path& path, const IoFl
 // double, creases, corner attributes (UVs, the file's normals, materials), PLY properties,
 // vertex colours, per-vertex UVs and normals.
 constexpr MeshFormat kFormats[] = {
-    {".dae", "COLLADA", read_collada, write_collada, true, true, true, false, false, false, false},
+    {".dae", "COLLADA", read_collada, write_collada, true, true, true, true, false, true, true},
     {".gltf", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
     {".glb", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
     {".obj", "OBJ", read_obj, write_obj, true, true, false, true, false, true, true},
