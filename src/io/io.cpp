@@ -66,10 +66,11 @@ bool seamless(const Mesh& mesh, const HalfedgeProperty<T>& corner) {
 }
 
 // "OBJ and glTF": the names of the formats that keep what `keeps` asks, each once.
-std::string names_of_formats(bool MeshFormat::*keeps) {
+template <class Keeps>
+std::string names_of_formats(Keeps keeps) {
     std::vector<std::string> names;
     for (const MeshFormat& format : kFormats) {
-        if (format.*keeps && std::find(names.begin(), names.end(), format.name) == names.end()) {
+        if (keeps(format) && std::find(names.begin(), names.end(), format.name) == names.end()) {
             names.emplace_back(format.name);
         }
     }
@@ -215,18 +216,21 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
         }
         if (!names.empty()) {
             unkept.push_back("the PLY properties " + names + " (only " +
-                             names_of_formats(&MeshFormat::ply_properties) + " keeps them)");
+                             names_of_formats(std::mem_fn(&MeshFormat::ply_properties)) +
+                             " keeps them)");
         }
     }
     if (!format->corner_attributes) {
-        const std::string writers = names_of_formats(&MeshFormat::corner_attributes);
+        const std::string writers = names_of_formats(std::mem_fn(&MeshFormat::corner_attributes));
         // PLY keeps seams of texture coordinates too (MeshLab's face texcoord lists).
         const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
         if (uv && !(format->vertex_attributes && (format->ply_properties || seamless(mesh, uv)))) {
+            const std::string keepers = names_of_formats(
+                [](const MeshFormat& f) { return f.corner_attributes || f.vertex_attributes; });
             unkept.push_back(std::string("texture coordinates") +
                              (format->vertex_attributes
                                   ? " with seams (" + name + " holds one per vertex)"
-                                  : " (MeshEdit writes them to " + writers + " only so far)"));
+                                  : " (" + name + " has none; " + keepers + " keep them)"));
         }
         const auto normal = mesh.get_property<Halfedge, Vec3>(kCornerNormalProperty);
         if (normal && !(format->vertex_attributes && seamless(mesh, normal))) {
@@ -236,13 +240,13 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
         const auto material = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
         if (material && !mesh.materials().empty()) {
             unkept.push_back(std::to_string(mesh.materials().size()) +
-                             " material(s) and which faces use them (MeshEdit writes them to " +
-                             writers + " only so far)");
+                             " material(s) and which faces use them (" + name +
+                             " has no materials; " + writers + " keep them)");
         }
     }
     if (!format->colors && mesh.has_property<Vertex>(kColorProperty)) {
         unkept.push_back("vertex colours (" + name + " has no colours; " +
-                         names_of_formats(&MeshFormat::colors) + " keep them)");
+                         names_of_formats(std::mem_fn(&MeshFormat::colors)) + " keep them)");
     }
     // Only OFF has face colours of its own (PLY's face red green blue are PLY properties).
     if (ext != ".off" && mesh.has_property<Face>(kFaceColorProperty)) {

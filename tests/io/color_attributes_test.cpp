@@ -134,6 +134,26 @@ Attributes expect_round_trip(const fs::path& path, const std::string& ext,
     return a;
 }
 
+// The soup a file would hold of a mesh (what the repair verbs edit) keeps its vertex and
+// face colours, and building it gives them back.
+TEST(ColorAttributes, SoupFromMeshKeepsColours) {
+    test::ScratchDir dir;
+    test::spit(dir / "c.off",
+               "COFF\n4 2 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n"
+               "1 1 0 0 0 255 255\n0 1 0 1 2 3 4\n3 0 1 2 9 8 7 6\n"
+               "3 0 2 3 5 4 3 2\n");
+    const LoadedMesh loaded = read_mesh(dir / "c.off");
+    std::vector<std::string> unkept;
+    const MeshSoup soup = soup_from_mesh(loaded.mesh, &unkept);
+    EXPECT_TRUE(unkept.empty());
+    EXPECT_EQ(soup.colors.size(), 4u);
+    EXPECT_EQ(soup.face_colors.size(), 2u);
+    const LoadedMesh back = build_loaded_mesh(soup, "soup");
+    EXPECT_TRUE(attributes_of(back.mesh) == attributes_of(loaded.mesh));
+    EXPECT_EQ(attributes_of(back.mesh).face_colors[1],
+              (Vec4{5 / 255.0, 4 / 255.0, 3 / 255.0, 2 / 255.0}));
+}
+
 // ------------------------------------------------------------------------- PLY
 
 TEST(ColorAttributes, PlyUcharColoursUvsAndNormalsRoundTripExactly) {
