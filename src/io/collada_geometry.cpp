@@ -218,6 +218,7 @@ private:
     std::vector<std::uint8_t> colour_seen_;
     std::size_t colour_seams_ = 0;  // positions whose corners' colours differ
     std::string attribute_problem_;
+    bool any_uv_ = false, any_colour_ = false;  // some primitive had the input
     // Per-position normal agreement across corners: 0 unseen, 1 set.
     std::vector<std::uint8_t> normal_seen_;
     std::vector<Vec3> corner_normals_;
@@ -580,6 +581,8 @@ void GeometryReader::add_corner_attributes(pugi::xml_node p, const Inputs& input
         g_.corner_texcoords.push_back({t[0], t[1]});
     }
     texcoords_ok_ = texcoords_ok_ && uv;
+    any_uv_ = any_uv_ || uv;
+    any_colour_ = any_colour_ || colour;
     if (corner_normals_ok_ && normal && !vertex_normals_) {
         g_.corner_normals.push_back((*normal->vec)[corner[normal->offset]]);
     }
@@ -637,6 +640,15 @@ void GeometryReader::finish_attributes() {
         g_.notices.push_back("kept one colour per vertex in " + doc_.where(geometry_) + ": " +
                              str(colour_seams_) + " corner(s) had another colour than their " +
                              "vertex's first corner");
+    }
+    // Some primitives with the input and some without: said, never dropped without a word.
+    if (any_uv_ && !texcoords_ok_ && attribute_problem_.find("texture") == std::string::npos) {
+        attribute_problem_ += "; texture coordinates not kept: some primitives of " +
+                              doc_.where(geometry_) + " have no TEXCOORD input";
+    }
+    if (any_colour_ && !colors_ok_ && attribute_problem_.find("colours") == std::string::npos) {
+        attribute_problem_ += "; vertex colours not kept: some primitives of " +
+                              doc_.where(geometry_) + " have no COLOR input";
     }
     if (!attribute_problem_.empty()) {
         g_.notices.push_back(attribute_problem_.substr(2) + "; the mesh loads without them");

@@ -148,6 +148,7 @@ private:
     std::size_t skipped_transforms_ = 0;
     bool normals_ok_ = true;
     bool texcoords_ok_ = true, corner_normals_ok_ = true, colors_ok_ = true;
+    bool any_uv_ = false, any_colour_ = false;                       // some geometry had them
     std::unordered_map<const void*, std::uint32_t> material_index_;  // by <material>
     std::uint32_t no_material_ = std::numeric_limits<std::uint32_t>::max();
     bool any_material_ = false;
@@ -380,6 +381,8 @@ void SceneReader::append(const Instance& instance, collada::GeometryData& g, boo
 void SceneReader::append_attributes(const Instance& instance, const collada::GeometryData& g,
                                     bool mirror) {
     const Mat4& t = instance.transform;
+    any_uv_ = any_uv_ || !g.corner_texcoords.empty();
+    any_colour_ = any_colour_ || !g.colors.empty();
     texcoords_ok_ = texcoords_ok_ && !g.corner_texcoords.empty();
     corner_normals_ok_ = corner_normals_ok_ && !g.corner_normals.empty();
     colors_ok_ = colors_ok_ && !g.colors.empty();
@@ -497,6 +500,17 @@ MeshSoup SceneReader::read() {
     // Normals one per position stay that (the seamless case); else the corners' own.
     if (normals_ok_ || !corner_normals_ok_) {
         out_.corner_normals.clear();
+    }
+    // Geometries with texture coordinates or colours beside some without: said in a line.
+    if (!texcoords_ok_ && any_uv_) {
+        out_.notices.push_back(
+            "texture coordinates not kept: some instanced geometries have "
+            "none; the mesh loads without them");
+    }
+    if (!colors_ok_ && any_colour_) {
+        out_.notices.push_back(
+            "vertex colours not kept: some instanced geometries have none; "
+            "the mesh loads without them");
     }
     if (!texcoords_ok_) {
         out_.corner_texcoords.clear();
