@@ -70,6 +70,16 @@ struct GeometryData {
     std::vector<Vec3> normals;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> creases;
     std::vector<std::string> notices;
+    /// Per corner (as `indices`), when every primitive has the input (else empty): the first
+    /// TEXCOORD set's (S, T), the NORMAL input's normal.
+    std::vector<Vec2> corner_texcoords;
+    std::vector<Vec3> corner_normals;
+    /// Per position, when every primitive has a COLOR input (else empty): a position's first
+    /// corner's colour (RGB, alpha 1; or RGBA).
+    std::vector<Vec4> colors;
+    /// Per face, its primitive's material symbol (an index into `symbols`; "" for none).
+    std::vector<std::uint32_t> face_symbols;
+    std::vector<std::string> symbols;
 };
 
 /// Reads `<geometry>` `geometry`. \throws IoError naming the element.

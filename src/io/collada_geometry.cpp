@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <unordered_map>
 
@@ -70,12 +71,20 @@ Accessor read_accessor(const Document& doc, pugi::xml_node source) {
     return a;
 }
 
-// The tuples of a 3-component source (positions, normals), checked against its array.
-std::vector<Vec3> read_vec3_source(const Document& doc, pugi::xml_node source, const char* what) {
-    const Accessor a = read_accessor(doc, source);
-    if (a.components.size() < 3) {
-        doc.fail(a.node, std::string(what) + " need 3 components (X, Y, Z); the accessor has " +
-                             str(a.components.size()));
+// A source's accessor and its <float_array>'s numbers, checked to hold `count` tuples of at
+// least `need` named components.
+struct Checked {
+    Accessor a;
+    std::vector<double> values;
+};
+
+Checked checked_source(const Document& doc, pugi::xml_node source, const char* what,
+                       std::size_t need, const char* names) {
+    Checked c{read_accessor(doc, source), {}};
+    const Accessor& a = c.a;
+    if (a.components.size() < need) {
+        doc.fail(a.node, std::string(what) + " need " + str(need) + " components (" + names +
+                             "); the accessor has " + str(a.components.size()));
     }
     const pugi::xml_attribute url = a.node.attribute("source");
     const pugi::xml_node array =
@@ -83,14 +92,14 @@ std::vector<Vec3> read_vec3_source(const Document& doc, pugi::xml_node source, c
     if (!array || std::strcmp(array.name(), "float_array") != 0) {
         doc.fail(a.node, std::string("the accessor's source is not a <float_array>"));
     }
-    const std::vector<double> values = parse_doubles(doc, array);
-    const std::uint64_t size = values.size();
+    c.values = parse_doubles(doc, array);
+    const std::uint64_t size = c.values.size();
     if (array.attribute("count") && count_attribute(doc, array, "count", 0) != size) {
         doc.fail(array, "count=\"" + std::string(array.attribute("count").value()) +
                             "\" but it holds " + str(size) + " numbers");
     }
     // Checked before allocating, so a huge count attribute cannot cost memory.
-    const std::uint64_t last_component = a.components[2];
+    const std::uint64_t last_component = a.components.back();
     const bool fits =
         a.count == 0 || (a.offset + last_component < size &&
                          (a.count - 1) <= (size - 1 - a.offset - last_component) / a.stride);
@@ -99,6 +108,14 @@ std::vector<Vec3> read_vec3_source(const Document& doc, pugi::xml_node source, c
                              " from offset " + str(a.offset) + ", past the end of its " +
                              "<float_array> (" + str(size) + " numbers)");
     }
+    return c;
+}
+
+// The tuples of a 3-component source (positions, normals), checked against its array.
+std::vector<Vec3> read_vec3_source(const Document& doc, pugi::xml_node source, const char* what) {
+    const Checked c = checked_source(doc, source, what, 3, "X, Y, Z");
+    const Accessor& a = c.a;
+    const std::vector<double>& values = c.values;
     std::vector<Vec3> tuples;
     tuples.reserve(a.count);
     memory::advise_huge_pages(tuples.data(), a.count * sizeof(Vec3));
@@ -109,6 +126,21 @@ std::vector<Vec3> read_vec3_source(const Document& doc, pugi::xml_node source, c
                      values[base + a.components[2]]};
     }
     return tuples;
+}
+
+// The first `width` components of each tuple of a source (texture coordinates: 2, colours:
+// 4), NaN where the accessor names fewer (an RGB colour's alpha).
+std::vector<double> read_tuples(const Document& doc, pugi::xml_node source, const char* what,
+                                std::size_t need, std::size_t width, const char* names) {
+    const Checked c = checked_source(doc, source, what, need, names);
+    std::vector<double> out(c.a.count * width, std::numeric_limits<double>::quiet_NaN());
+    const std::size_t k = std::min(width, c.a.components.size());
+    for (std::uint64_t i = 0; i < c.a.count; ++i) {
+        for (std::size_t j = 0; j < k; ++j) {
+            out[i * width + j] = c.values[c.a.offset + i * c.a.stride + c.a.components[j]];
+        }
+    }
+    return out;
 }
 
 void check_finite_positions(const Document& doc, pugi::xml_node source,
@@ -136,20 +168,25 @@ private:
         pugi::xml_node node;
         std::string_view semantic;
         std::uint64_t offset = 0;
-        std::uint64_t limit = 0;                 // number of tuples an index may address
-        const std::vector<Vec3>* vec = nullptr;  // normals, for NORMAL
+        std::uint64_t limit = 0;                      // number of tuples an index may address
+        const std::vector<Vec3>* vec = nullptr;       // normals, for NORMAL
+        const std::vector<double>* tuples = nullptr;  // TEXCOORD: 2 a tuple, COLOR: 4
+        std::uint64_t set = 0;
     };
     struct Inputs {
         std::uint64_t stride = 0;  // max offset + 1
         std::uint64_t vertex_offset = 0;
         std::vector<Input> all;
-        const Input* normal() const {
+        const Input* normal() const { return first("NORMAL"); }
+        // The first of the lowest set: a file's main texture coordinates or colours.
+        const Input* first(std::string_view semantic) const {
+            const Input* found = nullptr;
             for (const Input& input : all) {
-                if (input.semantic == "NORMAL") {
-                    return &input;
+                if (input.semantic == semantic && (!found || input.set < found->set)) {
+                    found = &input;
                 }
             }
-            return nullptr;
+            return found;
         }
     };
 
@@ -165,6 +202,10 @@ private:
                       std::size_t n_polygons, const std::uint32_t* sizes);
     void track_normals();
     void read_creases(pugi::xml_node mesh);
+    void add_corner_attributes(pugi::xml_node p, const Inputs& inputs, const std::uint32_t* corner);
+    void finish_attributes();
+    void drop_out_of_range(pugi::xml_node p, const Inputs& inputs, const Input& input,
+                           std::uint32_t index);
     const std::vector<Vec3>& vec3_source(pugi::xml_node source, const char* what);
 
     const Document& doc_;
@@ -172,6 +213,12 @@ private:
     pugi::xml_node vertices_;
     GeometryData g_;
     std::unordered_map<const void*, std::vector<Vec3>> cache_;
+    std::unordered_map<const void*, std::vector<double>> tuple_cache_;
+    bool texcoords_ok_ = true, corner_normals_ok_ = true, colors_ok_ = true;
+    std::vector<std::uint8_t> colour_seen_;
+    std::size_t colour_seams_ = 0;  // positions whose corners' colours differ
+    std::string attribute_problem_;
+    bool any_uv_ = false, any_colour_ = false;  // some primitive had the input
     // Per-position normal agreement across corners: 0 unseen, 1 set.
     std::vector<std::uint8_t> normal_seen_;
     std::vector<Vec3> corner_normals_;
@@ -248,6 +295,7 @@ GeometryData GeometryReader::read() {
                              " (unsupported primitive)");
     }
     read_creases(mesh);
+    finish_attributes();
 
     if (!any_primitive) {
         normals_ok_ = vertex_normals_;
@@ -289,11 +337,23 @@ GeometryReader::Inputs GeometryReader::read_inputs(pugi::xml_node primitive) {
         } else if (input.semantic == "NORMAL" || input.semantic == "TEXCOORD" ||
                    input.semantic == "COLOR") {
             const pugi::xml_node source = doc_.resolve(node.attribute("source").value(), node);
+            input.set = count_attribute(doc_, node, "set", 0);
             if (input.semantic == "NORMAL") {
                 input.vec = &vec3_source(source, "normals");
                 input.limit = input.vec->size();
             } else {
-                input.limit = read_accessor(doc_, source).count;
+                const bool uv = input.semantic == "TEXCOORD";
+                auto it = tuple_cache_.find(source.internal_object());
+                if (it == tuple_cache_.end()) {
+                    it = tuple_cache_
+                             .emplace(
+                                 source.internal_object(),
+                                 uv ? read_tuples(doc_, source, "texture coordinates", 2, 2, "S, T")
+                                    : read_tuples(doc_, source, "colours", 3, 4, "R, G, B"))
+                             .first;
+                }
+                input.tuples = &it->second;
+                input.limit = it->second.size() / (uv ? 2 : 4);
             }
         } else {
             continue;  // other semantics only take part in the stride
@@ -460,7 +520,10 @@ void GeometryReader::add_polygons(pugi::xml_node p, std::vector<std::uint32_t>&&
             const std::uint32_t* corner = indices.data() + tuple * stride;
             for (const Input& input : inputs.all) {
                 const std::uint32_t index = corner[input.offset];
-                if (index >= input.limit) {
+                if (index >= input.limit &&
+                    (input.semantic == "TEXCOORD" || input.semantic == "COLOR")) {
+                    drop_out_of_range(p, inputs, input, index);
+                } else if (index >= input.limit) {
                     doc_.fail(p, std::string(input.semantic) + " index " + str(index) +
                                      " out of range (" + str(input.limit) +
                                      (input.semantic == "VERTEX" ? " positions)" : " entries)"));
@@ -468,6 +531,7 @@ void GeometryReader::add_polygons(pugi::xml_node p, std::vector<std::uint32_t>&&
             }
             const std::uint32_t position = corner[inputs.vertex_offset];
             const std::uint32_t normal_index = normal_input ? corner[normal_input->offset] : 0;
+            add_corner_attributes(p, inputs, corner);
             out[tuple] = position;
             if (!normal_input) {
                 continue;
@@ -483,9 +547,111 @@ void GeometryReader::add_polygons(pugi::xml_node p, std::vector<std::uint32_t>&&
         }
         g_.face_offsets.push_back(static_cast<std::uint32_t>(base + tuple));
     }
+    // The primitive's material symbol, per face.
+    const pugi::xml_node primitive = std::strcmp(p.name(), "p") == 0 ? p.parent() : p;
+    const std::string symbol = primitive.attribute("material").value();
+    auto s = std::find(g_.symbols.begin(), g_.symbols.end(), symbol);
+    if (s == g_.symbols.end()) {
+        s = g_.symbols.insert(s, symbol);
+    }
+    g_.face_symbols.resize(g_.face_offsets.size() - 1,
+                           static_cast<std::uint32_t>(s - g_.symbols.begin()));
     if (in_place) {
         indices.resize(n_tuples);
         g_.indices = std::move(indices);
+    }
+}
+
+// A corner's texture coordinate and normal (kept per corner) and colour (per position: a
+// vertex has one colour, its first corner's). A primitive without one of the inputs drops
+// that attribute for the whole geometry; a value that is not a number drops it with a notice.
+void GeometryReader::add_corner_attributes(pugi::xml_node p, const Inputs& inputs,
+                                           const std::uint32_t* corner) {
+    const Input* uv = inputs.first("TEXCOORD");
+    const Input* normal = inputs.normal();
+    const Input* colour = inputs.first("COLOR");
+    const std::string where = doc_.where(p);
+    if (texcoords_ok_ && uv) {
+        const double* t = uv->tuples->data() + 2 * std::size_t{corner[uv->offset]};
+        if (!std::isfinite(t[0]) || !std::isfinite(t[1])) {
+            texcoords_ok_ = false;
+            attribute_problem_ +=
+                "; texture coordinates not kept: " + where + " names one " + "that is not a number";
+        }
+        g_.corner_texcoords.push_back({t[0], t[1]});
+    }
+    texcoords_ok_ = texcoords_ok_ && uv;
+    any_uv_ = any_uv_ || uv;
+    any_colour_ = any_colour_ || colour;
+    if (corner_normals_ok_ && normal && !vertex_normals_) {
+        g_.corner_normals.push_back((*normal->vec)[corner[normal->offset]]);
+    }
+    corner_normals_ok_ = corner_normals_ok_ && normal && !vertex_normals_;
+    if (colors_ok_ && colour) {
+        const double* c = colour->tuples->data() + 4 * std::size_t{corner[colour->offset]};
+        const Vec4 rgba{c[0], c[1], c[2], std::isnan(c[3]) ? 1.0 : c[3]};
+        if (!std::isfinite(rgba.x) || !std::isfinite(rgba.y) || !std::isfinite(rgba.z) ||
+            !std::isfinite(rgba.w)) {
+            colors_ok_ = false;
+            attribute_problem_ +=
+                "; vertex colours not kept: " + where + " names one " + "that is not a number";
+        }
+        if (colour_seen_.empty()) {
+            colour_seen_.assign(g_.positions.size(), 0);
+            g_.colors.assign(g_.positions.size(), Vec4{1, 1, 1, 1});
+        }
+        const std::uint32_t position = corner[inputs.vertex_offset];
+        if (colour_seen_[position] == 0) {
+            colour_seen_[position] = 1;
+            g_.colors[position] = rgba;
+        } else if (!(g_.colors[position] == rgba)) {
+            ++colour_seams_;
+        }
+    }
+    colors_ok_ = colors_ok_ && colour;
+}
+
+// A texture coordinate or colour index past its source drops that attribute (the one in
+// use; an unused set's is never read), with a notice: the mesh still loads.
+void GeometryReader::drop_out_of_range(pugi::xml_node p, const Inputs& inputs, const Input& input,
+                                       std::uint32_t index) {
+    const bool uv = input.semantic == "TEXCOORD";
+    bool& ok = uv ? texcoords_ok_ : colors_ok_;
+    if (!ok || inputs.first(input.semantic) != &input) {
+        return;
+    }
+    ok = false;
+    attribute_problem_ += std::string("; ") + (uv ? "texture coordinates" : "vertex colours") +
+                          " not kept: " + doc_.where(p) + " names " + std::string(input.semantic) +
+                          " index " + str(index) + " of " + str(input.limit) + " entries";
+}
+
+void GeometryReader::finish_attributes() {
+    const bool any_face = g_.face_offsets.size() > 1;
+    if (!texcoords_ok_ || !any_face) {
+        g_.corner_texcoords.clear();
+    }
+    if (!corner_normals_ok_ || !any_face) {
+        g_.corner_normals.clear();
+    }
+    if (!colors_ok_ || !any_face) {
+        g_.colors.clear();
+    } else if (colour_seams_ > 0) {
+        g_.notices.push_back("kept one colour per vertex in " + doc_.where(geometry_) + ": " +
+                             str(colour_seams_) + " corner(s) had another colour than their " +
+                             "vertex's first corner");
+    }
+    // Some primitives with the input and some without: said, never dropped without a word.
+    if (any_uv_ && !texcoords_ok_ && attribute_problem_.find("texture") == std::string::npos) {
+        attribute_problem_ += "; texture coordinates not kept: some primitives of " +
+                              doc_.where(geometry_) + " have no TEXCOORD input";
+    }
+    if (any_colour_ && !colors_ok_ && attribute_problem_.find("colours") == std::string::npos) {
+        attribute_problem_ += "; vertex colours not kept: some primitives of " +
+                              doc_.where(geometry_) + " have no COLOR input";
+    }
+    if (!attribute_problem_.empty()) {
+        g_.notices.push_back(attribute_problem_.substr(2) + "; the mesh loads without them");
     }
 }
 

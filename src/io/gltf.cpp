@@ -3,8 +3,8 @@
 // Reading walks the default scene's node tree, applies each node's transform, and turns every
 // triangle primitive (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN) into soup faces. Every accessor
 // read is bounds-checked here rather than trusted to the loader, since a hostile file may
-// point anywhere. TEXCOORD_0 and NORMAL are kept per corner, materials per face (their name,
-// base colour and base-colour texture path). Writing is in gltf_write.cpp.
+// point anywhere. COLOR_0 is kept per vertex, TEXCOORD_0 and NORMAL per corner, materials
+// per face (their name, base colour and base-colour texture path). Writing: gltf_write.cpp.
 
 #include "meshedit/io/gltf.h"
 
@@ -153,6 +153,9 @@ public:
                 out_.corner_texcoords.push_back(texcoords_[v]);
             }
         }
+        if (all_have_colours_ && colours_.size() == out_.soup.positions.size()) {
+            out_.colors = std::move(colours_);
+        }
         weld_seams(texcoords);
         keep_materials();
         return std::move(out_);
@@ -239,6 +242,7 @@ private:
                 }
                 add_normals(prim, world, where, n_vertices);
                 add_texcoords(prim, where, n_vertices);
+                add_colours(prim, where, n_vertices);
                 add_origins(prim, where, base, n_vertices);
                 base_of_accessor.emplace(pos_accessor, base);
             }
@@ -303,6 +307,28 @@ private:
         }
     }
 
+    // COLOR_0: RGB or RGBA, float or normalized unsigned byte or short (alpha 1 for RGB).
+    void add_colours(const tinygltf::Primitive& prim, const std::string& where, std::size_t n) {
+        const auto it = prim.attributes.find("COLOR_0");
+        const int a = it == prim.attributes.end() ? -1 : it->second;
+        if (!all_have_colours_ || a < 0 || static_cast<std::size_t>(a) >= model_.accessors.size()) {
+            all_have_colours_ = false;
+            return;
+        }
+        const bool rgba = model_.accessors[static_cast<std::size_t>(a)].type == TINYGLTF_TYPE_VEC4;
+        const std::size_t k = rgba ? 4 : 3;
+        const std::vector<double> c =
+            read_components(a, where, "COLOR_0", rgba ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, k);
+        if (c.size() != k * n) {
+            throw IoError(file_, where,
+                          "COLOR_0 has " + std::to_string(c.size() / k) + " elements, POSITION " +
+                              std::to_string(n));
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            colours_.push_back({c[k * i], c[k * i + 1], c[k * i + 2], rgba ? c[k * i + 3] : 1.0});
+        }
+    }
+
     // Which mesh vertex each glTF vertex copies, from the primitive's extras when MeshEdit
     // wrote the file ("meshedit_vertex": an accessor of one index per vertex); -1 if unknown.
     void add_origins(const tinygltf::Primitive& prim, const std::string& where, std::uint32_t base,
@@ -334,6 +360,7 @@ private:
         std::map<std::int64_t, std::uint32_t> first_origin;
         std::vector<std::uint32_t> to(out_.soup.positions.size());
         std::vector<Vec3> kept;
+        std::vector<std::uint32_t> kept_from;  // the glTF vertex each kept vertex is
         for (std::size_t v = 0; v < to.size(); ++v) {
             const Vec3& p = out_.soup.positions[v];
             const auto next = static_cast<std::uint32_t>(kept.size());
@@ -342,6 +369,7 @@ private:
                       : first.emplace(std::tuple{p.x, p.y, p.z}, next).first->second;
             if (at == next) {
                 kept.push_back(p);
+                kept_from.push_back(static_cast<std::uint32_t>(v));
             }
             to[v] = at;
         }
@@ -376,12 +404,20 @@ private:
                     own.emplace(idx[c], static_cast<std::uint32_t>(kept.size()));
                 if (fresh) {
                     kept.push_back(original[idx[c]]);
+                    kept_from.push_back(idx[c]);
                 }
                 idx[c] = it->second;
             }
         }
         const std::size_t welded = original.size() - kept.size();
         out_.soup.positions = std::move(kept);
+        if (!out_.colors.empty()) {  // a vertex has one colour: the first copy's
+            std::vector<Vec4> colours(kept_from.size());
+            for (std::size_t v = 0; v < kept_from.size(); ++v) {
+                colours[v] = out_.colors[kept_from[v]];
+            }
+            out_.colors = std::move(colours);
+        }
         if (welded == 0) {
             return;
         }
@@ -649,6 +685,8 @@ private:
     std::vector<std::int64_t> origin_;  // per soup vertex: the mesh vertex it copies, or -1
     std::vector<int> face_material_;    // per soup face: the file's material index, or -1
     bool all_have_texcoords_ = true;
+    std::vector<Vec4> colours_;  // COLOR_0 per soup vertex, while every primitive has it
+    bool all_have_colours_ = true;
     bool all_have_normals_ = true;
     double planned_bytes_ = 0.0;
     std::size_t skipped_primitives_ = 0;

@@ -1,11 +1,13 @@
 // Writing glTF 2.0 (gltf.h) through tinygltf: one mesh, one indexed TRIANGLES primitive per
 // material. A vertex is written once per distinct combination of its corners' texture
-// coordinate and normal (glTF's attributes are per vertex), so seams stay seams; polygons
+// coordinate and normal (glTF's attributes are per vertex), so seams stay seams; its colour
+// is COLOR_0; polygons
 // are fanned from their first corner. A .glb embeds the materials' texture images; a .gltf
 // names them by a path relative to itself.
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -186,6 +188,9 @@ private:
                 add_accessor(add_view(uv, TINYGLTF_TARGET_ARRAY_BUFFER),
                              TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, vertices_.size());
         }
+        if (const auto colour = mesh_.get_property<Vertex, Vec4>(kColorProperty)) {
+            attributes["COLOR_0"] = add_colours(colour);
+        }
         if (normal_ || flags_.write_normals) {
             std::vector<Vec3> computed;
             if (!normal_) {
@@ -285,6 +290,55 @@ private:
         view.target = target;
         model_.bufferViews.push_back(view);
         return static_cast<int>(model_.bufferViews.size() - 1);
+    }
+
+    // COLOR_0 in the narrowest form that gives every value back exactly when read: normalized
+    // unsigned bytes when each is k/255, shorts when k/65535, else floats (glTF has no
+    // doubles, as for positions). Integers are RGBA (their elements must be 4-byte aligned);
+    // floats are RGB when every alpha is 1.
+    int add_colours(const VertexProperty<Vec4>& colour) {
+        std::vector<double> values;
+        bool alpha = false;
+        for (const Corner& c : vertices_) {
+            const Vec4& x = colour[c.vertex];
+            values.insert(values.end(), {x.x, x.y, x.z, x.w});
+            alpha = alpha || x.w != 1.0;
+        }
+        const auto fits = [&](double scale) {
+            return std::all_of(values.begin(), values.end(), [&](double v) {
+                const double k = std::nearbyint(v * scale);
+                return k >= 0 && k <= scale && k / scale == v;
+            });
+        };
+        const std::size_t n = vertices_.size();
+        int accessor = -1;
+        if (fits(255.0)) {
+            std::vector<std::uint8_t> bytes;
+            for (const double v : values) {
+                bytes.push_back(static_cast<std::uint8_t>(std::nearbyint(v * 255.0)));
+            }
+            accessor = add_accessor(add_view(bytes, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC4, n);
+        } else if (fits(65535.0)) {
+            std::vector<std::uint16_t> shorts;
+            for (const double v : values) {
+                shorts.push_back(static_cast<std::uint16_t>(std::nearbyint(v * 65535.0)));
+            }
+            accessor = add_accessor(add_view(shorts, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4, n);
+        } else {
+            std::vector<float> floats;
+            for (std::size_t i = 0; i < values.size(); ++i) {
+                if (alpha || i % 4 != 3) {
+                    floats.push_back(static_cast<float>(values[i]));
+                }
+            }
+            return add_accessor(add_view(floats, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                alpha ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, n);
+        }
+        model_.accessors.back().normalized = true;
+        return accessor;
     }
 
     int add_accessor(int view, int component, int type, std::size_t count) {

@@ -32,22 +32,45 @@ void write_off_ignoring_flags(const Mesh& mesh, const fs::path& path, const IoFl
 }
 
 // Each row: extension, name, reader, writer, then what the format keeps: polygons, every
-// double, creases, corner attributes (UVs, the file's normals, materials), PLY properties.
+// double, creases, corner attributes (UVs, the file's normals, materials), PLY properties,
+// vertex colours, per-vertex UVs and normals.
 constexpr MeshFormat kFormats[] = {
-    {".dae", "COLLADA", read_collada, write_collada, true, true, true, false, false},
-    {".gltf", "glTF", read_gltf, write_gltf, false, false, false, true, false},
-    {".glb", "glTF", read_gltf, write_gltf, false, false, false, true, false},
-    {".obj", "OBJ", read_obj, write_obj, true, true, false, true, false},
-    {".off", "OFF", read_off, write_off_ignoring_flags, true, true, false, false, false},
-    {".ply", "PLY", read_ply, write_ply, true, true, false, false, true},
-    {".stl", "STL", read_stl, write_stl, false, false, false, false, false},
+    {".dae", "COLLADA", read_collada, write_collada, true, true, true, true, false, true, true},
+    {".gltf", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
+    {".glb", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
+    {".obj", "OBJ", read_obj, write_obj, true, true, false, true, false, true, true},
+    {".off", "OFF", read_off, write_off_ignoring_flags, true, true, false, false, false, true,
+     true},
+    {".ply", "PLY", read_ply, write_ply, true, true, false, false, true, true, true},
+    {".stl", "STL", read_stl, write_stl, false, false, false, false, false, false, false},
 };
 
+// True when every corner of each vertex holds the same value of the halfedge property (one
+// value per vertex is enough: a format's per-vertex UVs or normals keep it).
+template <class T>
+bool seamless(const Mesh& mesh, const HalfedgeProperty<T>& corner) {
+    std::vector<std::uint8_t> seen(mesh.vertices_size(), 0);
+    std::vector<T> value(mesh.vertices_size());
+    for (const Halfedge h : mesh.halfedges()) {
+        if (mesh.is_boundary(h)) {
+            continue;
+        }
+        const std::uint32_t v = mesh.to_vertex(h).idx();
+        if (seen[v] != 0 && !(value[v] == corner[h])) {
+            return false;
+        }
+        seen[v] = 1;
+        value[v] = corner[h];
+    }
+    return true;
+}
+
 // "OBJ and glTF": the names of the formats that keep what `keeps` asks, each once.
-std::string names_of_formats(bool MeshFormat::*keeps) {
+template <class Keeps>
+std::string names_of_formats(Keeps keeps) {
     std::vector<std::string> names;
     for (const MeshFormat& format : kFormats) {
-        if (format.*keeps && std::find(names.begin(), names.end(), format.name) == names.end()) {
+        if (keeps(format) && std::find(names.begin(), names.end(), format.name) == names.end()) {
             names.emplace_back(format.name);
         }
     }
@@ -193,25 +216,41 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
         }
         if (!names.empty()) {
             unkept.push_back("the PLY properties " + names + " (only " +
-                             names_of_formats(&MeshFormat::ply_properties) + " keeps them)");
+                             names_of_formats(std::mem_fn(&MeshFormat::ply_properties)) +
+                             " keeps them)");
         }
     }
     if (!format->corner_attributes) {
-        const std::string writers = names_of_formats(&MeshFormat::corner_attributes);
-        if (mesh.has_property<Halfedge>(kTexCoordProperty)) {
-            unkept.push_back("texture coordinates (MeshEdit writes them to " + writers +
-                             " only so far)");
+        const std::string writers = names_of_formats(std::mem_fn(&MeshFormat::corner_attributes));
+        // PLY keeps seams of texture coordinates too (MeshLab's face texcoord lists).
+        const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+        if (uv && !(format->vertex_attributes && (format->ply_properties || seamless(mesh, uv)))) {
+            const std::string keepers = names_of_formats(
+                [](const MeshFormat& f) { return f.corner_attributes || f.vertex_attributes; });
+            unkept.push_back(std::string("texture coordinates") +
+                             (format->vertex_attributes
+                                  ? " with seams (" + name + " holds one per vertex)"
+                                  : " (" + name + " has none; " + keepers + " keep them)"));
         }
-        if (mesh.has_property<Halfedge>(kCornerNormalProperty)) {
+        const auto normal = mesh.get_property<Halfedge, Vec3>(kCornerNormalProperty);
+        if (normal && !(format->vertex_attributes && seamless(mesh, normal))) {
             unkept.push_back("the file's normals (the " + name +
                              " file gets normals computed from the faces, if any)");
         }
         const auto material = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
         if (material && !mesh.materials().empty()) {
             unkept.push_back(std::to_string(mesh.materials().size()) +
-                             " material(s) and which faces use them (MeshEdit writes them to " +
-                             writers + " only so far)");
+                             " material(s) and which faces use them (" + name +
+                             " has no materials; " + writers + " keep them)");
         }
+    }
+    if (!format->colors && mesh.has_property<Vertex>(kColorProperty)) {
+        unkept.push_back("vertex colours (" + name + " has no colours; " +
+                         names_of_formats(std::mem_fn(&MeshFormat::colors)) + " keep them)");
+    }
+    // Only OFF has face colours of its own (PLY's face red green blue are PLY properties).
+    if (ext != ".off" && mesh.has_property<Face>(kFaceColorProperty)) {
+        unkept.push_back("face colours (only OFF keeps them)");
     }
     if (!format->creases) {
         std::size_t creases = 0;

@@ -53,6 +53,10 @@ MeshSoup soup_from_mesh(const Mesh& mesh, std::vector<std::string>* unkept) {
     const auto uv = dense.get_property<Halfedge, Vec2>(kTexCoordProperty);
     const auto normal = dense.get_property<Halfedge, Vec3>(kCornerNormalProperty);
     const auto material = dense.get_property<Face, std::uint32_t>(kMaterialProperty);
+    const auto face_color = dense.get_property<Face, Vec4>(kFaceColorProperty);
+    if (const auto color = dense.get_property<Vertex, Vec4>(kColorProperty)) {
+        out.colors.assign(color.vector().begin(), color.vector().end());
+    }
     soup.face_offsets.reserve(dense.n_faces() + 1);
     soup.face_offsets.assign(1, 0);
     for (const Face f : dense.faces()) {
@@ -75,6 +79,9 @@ MeshSoup soup_from_mesh(const Mesh& mesh, std::vector<std::string>* unkept) {
         if (material) {
             out.face_materials.push_back(material[f]);
         }
+        if (face_color) {
+            out.face_colors.push_back(face_color[f]);
+        }
     }
     if (material) {
         out.materials = dense.materials();
@@ -90,7 +97,8 @@ MeshSoup soup_from_mesh(const Mesh& mesh, std::vector<std::string>* unkept) {
     out.vertex_properties = with_prefix(user_properties::vertex_columns(dense, "v:ply:"), "v:ply:");
     out.face_properties = with_prefix(user_properties::face_columns(dense, "f:ply:"), "f:ply:");
     if (unkept != nullptr) {
-        std::set<std::string> vertex_kept, face_kept = {kMaterialProperty};
+        std::set<std::string> vertex_kept = {kColorProperty},
+                              face_kept = {kMaterialProperty, kFaceColorProperty};
         for (const UserProperty& p : out.vertex_properties) {
             vertex_kept.insert(p.name);
         }

@@ -2,11 +2,11 @@
 // reads back to the same doubles; every index checked, with the line it is on) and the
 // writer. Polygons stay polygons.
 //
-// Read: `v x y z [w | r g b]`, `vn x y z`, `vt u [v [w]]`, faces `f` with corners `v`, `v/vt`,
-// `v//vn`, `v/vt/vn` and negative (relative) indices, kept per corner; `usemtl` (a face's
-// material) and `mtllib` (read_obj() reads the .mtl, mtl.h); `l` and `p` are counted and
-// ignored, as are `o g s` and comments. Faces with fewer than three corners are passed on,
-// and build_mesh() drops and reports them as it does for every format.
+// Read: `v x y z [w | r g b [a]]` (colours kept), `vn x y z`, `vt u [v [w]]`, faces `f` with
+// corners `v`, `v/vt`, `v//vn`, `v/vt/vn` and negative (relative) indices, kept per corner;
+// `usemtl` (a face's material) and `mtllib` (read_obj() reads the .mtl, mtl.h); `l` and `p` are
+// counted and ignored, as are `o g s` and comments. Faces with fewer than three corners are passed
+// on, and build_mesh() drops and reports them as it does for every format.
 
 #include "meshedit/io/obj.h"
 
@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -49,6 +50,12 @@ public:
             pos = end + 1;
         }
         finish();
+        if (!colour_problem_.empty()) {
+            out_.notices.push_back("vertex colours not kept: " + colour_problem_ +
+                                   "; the mesh loads without them");
+        } else if (!colours_.empty()) {
+            out_.colors = std::move(colours_);
+        }
         return std::move(out_);
     }
 
@@ -77,6 +84,42 @@ private:
         return p;
     }
 
+    // The common extension `v x y z r g b [a]` (0–1): every vertex has a colour or none does.
+    // A bad one drops them all, with one notice; `v x y z w` is a weight MeshEdit ignores.
+    void read_colour(std::string_view rest) {
+        const std::size_t v = out_.soup.positions.size();  // 1-based: this vertex's number
+        Vec4 c{0, 0, 0, 1};
+        double* channel[4] = {&c.x, &c.y, &c.z, &c.w};
+        std::size_t n = 0;
+        bool finite = true;
+        for (std::string_view t = io_util::next_token(rest); !t.empty() && t[0] != '#';
+             t = io_util::next_token(rest), ++n) {
+            const std::optional<double> x = io_util::parse_double(t);
+            finite = finite && x && std::isfinite(*x);
+            if (n < 4) {
+                *channel[n] = x ? *x : 0.0;
+            }
+        }
+        if (!colour_problem_.empty() || n <= 1) {
+            if (n <= 1 && colour_problem_.empty() && !colours_.empty()) {
+                colour_problem_ = "vertex " + std::to_string(v) + " (line " +
+                                  std::to_string(line_) + ") has none";
+            }
+            return;
+        }
+        const std::string where =
+            "vertex " + std::to_string(v) + " (line " + std::to_string(line_) + ")";
+        if (n > 4) {
+            colour_problem_ = where + " has " + std::to_string(n) + " colour values";
+        } else if (!finite) {
+            colour_problem_ = where + " has a colour value that is not a number";
+        } else if (colours_.size() + 1 != v) {
+            colour_problem_ = "vertex " + std::to_string(colours_.size() + 1) + " has none";
+        } else {
+            colours_.push_back(c);
+        }
+    }
+
     void read_line(std::string_view l) {
         if (l.find('\0') != std::string_view::npos) {
             fail("binary data (a NUL byte): not an OBJ text file");
@@ -92,6 +135,7 @@ private:
                      " is not finite (NaN or infinity)");
             }
             out_.soup.positions.push_back(p);
+            read_colour(l);
         } else if (key == "vn") {
             const Vec3 n = triple(l, "normal");
             if (!is_finite(n)) {
@@ -301,6 +345,8 @@ private:
     MeshSoup out_;
     std::vector<Vec3> normals_;
     std::vector<Vec2> texcoords_;
+    std::vector<Vec4> colours_;                   // per vertex, while every vertex has one
+    std::string colour_problem_;                  // the first reason to drop them
     std::vector<std::int64_t> corner_normals_;    // per corner: its vn, or -1
     std::vector<std::int64_t> corner_texcoords_;  // per corner: its vt, or -1
     std::vector<std::uint32_t> face_materials_;
@@ -404,8 +450,19 @@ std::string obj_text(const Mesh& mesh, const IoFlags& flags, const std::string& 
         }
         text += '\n';
     };
-    for (const Vec3& p : soup.positions) {
-        put("v", &p.x, 3);
+    // Colours as the common `v x y z r g b` extension, alpha only when one is not 1.
+    const auto colour = dense.get_property<Vertex, Vec4>(kColorProperty);
+    const bool alpha = colour && std::any_of(colour.vector().begin(), colour.vector().end(),
+                                             [](const Vec4& c) { return c.w != 1.0; });
+    for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+        if (!colour) {
+            put("v", &soup.positions[v].x, 3);
+            continue;
+        }
+        const Vec3& p = soup.positions[v];
+        const Vec4& c = colour[Vertex(static_cast<std::uint32_t>(v))];
+        const double x[7] = {p.x, p.y, p.z, c.x, c.y, c.z, c.w};
+        put("v", x, alpha ? 7 : 6);
     }
     for (const Vec2& t : texcoords.values) {
         put("vt", &t.x, 2);

@@ -3,9 +3,9 @@
 // Read: an optional header keyword OFF, with Geomview's prefixes for what each vertex line
 // also carries (ST texture coordinates, C colour, N normal: STCNOFF, COFF, NOFF …; the header
 // may share its line with the counts), then `nv nf ne`, nv vertex lines `x y z [nx ny nz] …`
-// and nf face lines `n i0 … i(n−1) [colour]`. '#' starts a comment anywhere. Only what
-// MeshEdit keeps is read: positions, NOFF normals, polygons; colours and texture coordinates
-// are skipped. Binary OFF and the 4D/nD variants are refused by name.
+// and nf face lines `n i0 … i(n−1) [colour]`. '#' starts a comment anywhere. Kept: positions,
+// NOFF normals, COFF vertex colours and STOFF texture coordinates (off_attributes.cpp), face
+// colours, polygons. Binary OFF and the 4D/nD variants are refused by name.
 //
 // Counts come from the file, so they may lie: nothing is reserved beyond what the file's bytes
 // can hold, and a file that ends early says after how many vertices or faces.
@@ -22,6 +22,7 @@
 
 #include "io_util.h"
 #include "meshedit/core/mesh.h"
+#include "off_attributes.h"
 
 namespace meshedit {
 namespace {
@@ -60,6 +61,7 @@ public:
         for (std::string_view rest = next_line(); !rest.empty(); rest = next_line()) {
             ++extra_lines_;
         }
+        colours_.finish(out_);
         if (extra_lines_ > 0) {
             out_.notices.push_back("ignored " + std::to_string(extra_lines_) +
                                    " line(s) after the last of the " + std::to_string(nf_) +
@@ -114,6 +116,8 @@ private:
             if (prefix.substr(0, p.size()) == p) {
                 normals_ = normals_ || p == "N";
                 extras_ = extras_ || p != "N";
+                colours_.vertex_colours = colours_.vertex_colours || p == "C";
+                colours_.texcoords = colours_.texcoords || p == "ST";
                 prefix.remove_prefix(p.size());
             }
         }
@@ -217,7 +221,8 @@ private:
             }
             out_.normals.push_back(is_finite(n) ? n : Vec3());
         }
-        // Colour and texture coordinates (C, ST) follow; MeshEdit keeps neither.
+        // Colour and texture coordinates (C, ST) follow, in that order.
+        colours_.read_vertex(l, v, line_);
     }
 
     void read_face(std::size_t f) {
@@ -247,6 +252,7 @@ private:
             }
             out_.soup.indices.push_back(static_cast<std::uint32_t>(*i));
         }
+        colours_.read_face(l, f, line_);
         // Faces with fewer than three corners go on: build_mesh() drops and reports them.
         out_.soup.face_offsets.push_back(static_cast<std::uint32_t>(out_.soup.indices.size()));
     }
@@ -260,6 +266,7 @@ private:
     std::size_t nv_ = 0;
     std::size_t nf_ = 0;
     std::size_t extra_lines_ = 0;
+    off_attributes::Reader colours_;
     MeshSoup out_;
 };
 
@@ -278,12 +285,16 @@ void write_off(const Mesh& mesh, const std::filesystem::path& path) {
     std::optional<Mesh> storage;
     const Mesh& dense = io_util::compacted(mesh, storage);
     const PolygonSoup soup = to_polygon_soup(dense);
-    std::string text = "OFF\n" + std::to_string(soup.positions.size()) + ' ' +
+    const off_attributes::Columns extra(dense);
+    std::string text = extra.keyword() + "\n" + std::to_string(soup.positions.size()) + ' ' +
                        std::to_string(soup.n_faces()) + ' ' + std::to_string(dense.n_edges()) +
                        '\n';
     text.reserve(soup.positions.size() * 70 + soup.indices.size() * 10);
-    for (const Vec3& p : soup.positions) {
-        text += number_text(p.x) + ' ' + number_text(p.y) + ' ' + number_text(p.z) + '\n';
+    for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+        const Vec3& p = soup.positions[v];
+        text += number_text(p.x) + ' ' + number_text(p.y) + ' ' + number_text(p.z);
+        extra.put_vertex(text, v);
+        text += '\n';
     }
     for (std::size_t f = 0; f < soup.n_faces(); ++f) {
         text += std::to_string(soup.face_offsets[f + 1] - soup.face_offsets[f]);
@@ -291,6 +302,7 @@ void write_off(const Mesh& mesh, const std::filesystem::path& path) {
             text += ' ';
             text += std::to_string(soup.indices[c]);
         }
+        extra.put_face(text, f);
         text += '\n';
     }
     write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp, text); });

@@ -4,8 +4,9 @@
 // `end_header`; elements in any order), then each element's records as ASCII lines or packed
 // binary. Stored: vertex x y z, nx ny nz, the face list `vertex_indices` (or `vertex_index`),
 // and every other scalar vertex or face property as a user property ("v:ply:quality",
-// "f:ply:label"; io.h, UserProperty) that the writer writes back. Colours, texture coordinates,
-// list properties and other elements are read past and named in one notice each, never
+// "f:ply:label"; io.h, UserProperty) that the writer writes back. Vertex colours, texture
+// coordinates and face `texcoord` lists become MeshEdit's own attributes (ply_attributes.cpp);
+// other list properties and other elements are read past and named in one notice each, never
 // dropped without a word.
 //
 // Binary bodies are decoded straight from the file's bytes with memcpy (no streams): a switch
@@ -28,6 +29,7 @@
 
 #include "io_util.h"
 #include "meshedit/core/mesh.h"
+#include "ply_attributes.h"
 
 namespace meshedit {
 namespace {
@@ -188,6 +190,7 @@ public:
         }
         check_indices();
         say_what_was_not_kept();
+        ply_attributes::take(out_, face_uvs_);
         return std::move(out_);
     }
 
@@ -382,8 +385,8 @@ private:
                                      " values; vertex indices must be integers");
                     }
                     indices_ = k;
-                } else if (p.list && p.name == "texcoord") {
-                    face_uvs_ = true;
+                } else if (p.list && p.name == "texcoord" && texcoord_ == kNone) {
+                    texcoord_ = k;
                 } else {
                     keep_or_ignore(p, "f", kept_face_, out_.face_properties);
                 }
@@ -431,11 +434,6 @@ private:
 
     void say_what_was_not_kept() {
         std::vector<std::string>& n = out_.notices;
-        if (face_uvs_) {
-            n.push_back(
-                "per-corner texture coordinates (face.texcoord) not kept (MeshEdit does "
-                "not store texture coordinates yet)");
-        }
         if (!ignored_.empty()) {
             n.push_back("ignored properties " + ignored_ + " (MeshEdit has no place for them)");
         }
@@ -578,15 +576,23 @@ private:
                         continue;
                     }
                     const std::int64_t n = ascii_whole(token(l, e, i, p), e, i, p);
+                    const bool uvs = ei == face_ && k == texcoord_;
                     if (n < 0 || static_cast<std::uint64_t>(n) > l.size()) {
                         fail(line_of(line_), e.name + " " + std::to_string(i) + ": list '" +
                                                  p.name + "' of " + std::to_string(n) +
                                                  " items does not fit on its line");
                     }
+                    if (uvs) {
+                        face_uvs_.face.push_back(static_cast<std::uint32_t>(i));
+                        face_uvs_.count.push_back(static_cast<std::uint32_t>(n));
+                        face_uvs_.line.push_back(line_);
+                    }
                     for (std::int64_t c = 0; c < n; ++c) {
                         const std::string_view t = token(l, e, i, p);
                         if (ei == face_ && k == indices_) {
                             store_index(e, i, ascii_whole(t, e, i, p));
+                        } else if (uvs) {
+                            face_uvs_.values.push_back(ascii_value(t, p.type, e, i, p));
                         } else {
                             ascii_value(t, p.type, e, i, p);
                         }
@@ -676,6 +682,12 @@ private:
                         for (std::int64_t c = 0; c < n; ++c, p += s) {
                             store_index(e, i, whole_at(p, q.type, swap_));
                         }
+                    } else if (ei == face_ && k == texcoord_) {
+                        face_uvs_.face.push_back(static_cast<std::uint32_t>(i));
+                        face_uvs_.count.push_back(static_cast<std::uint32_t>(n));
+                        for (std::int64_t c = 0; c < n; ++c, p += s) {
+                            face_uvs_.values.push_back(value_at(p, q.type, swap_));
+                        }
                     } else {
                         p += static_cast<std::size_t>(n) * s;
                     }
@@ -708,7 +720,8 @@ private:
     std::size_t position_[3] = {0, 0, 0};
     std::size_t normal_[3] = {0, 0, 0};
     bool has_normals_ = false;
-    bool face_uvs_ = false;
+    std::size_t texcoord_ = kNone;            // the face texcoord list property
+    ply_attributes::FaceTexcoords face_uvs_;  // its values
     std::string ignored_;
     std::string skipped_elements_;
     std::size_t unknown_lines_ = 0;

@@ -1,6 +1,7 @@
 // Stanford PLY: the writer (the reader is in ply.cpp). Binary little-endian with double
-// positions, or ASCII with shortest round-trip decimals; float normals; polygons kept; user
-// properties named "v:ply:NAME" / "f:ply:NAME" written back as NAME with their own types.
+// positions, or ASCII with shortest round-trip decimals; the file's normals, colours and UVs
+// (ply_attributes.cpp), else computed float normals; polygons kept; user properties named
+// "v:ply:NAME" / "f:ply:NAME" written back as NAME with their own types.
 
 #include <algorithm>
 #include <bit>
@@ -14,6 +15,7 @@
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/io/ply.h"
+#include "ply_attributes.h"
 #include "user_properties.h"
 
 namespace meshedit {
@@ -95,21 +97,29 @@ void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
     std::optional<Mesh> storage;
     const Mesh& dense = io_util::compacted(mesh, storage);
     const PolygonSoup soup = to_polygon_soup(dense);
+    bool file_normals = false;
+    std::vector<UserProperty> own = ply_attributes::vertex_columns(dense, file_normals);
+    const bool computed = flags.write_normals && !file_normals;
     std::vector<Vec3> normals;
-    if (flags.write_normals) {
+    if (computed) {
         compute_vertex_normals(dense, normals);
     }
+    bool uv_floats = true;
+    const std::vector<Vec2> corner_uvs = ply_attributes::face_texcoords(dense, uv_floats);
     std::vector<UserProperty> vcols = user_properties::vertex_columns(dense, "v:ply:");
     std::vector<UserProperty> fcols = user_properties::face_columns(dense, "f:ply:");
     // A name the writer uses itself (a lone "nx" kept from a file without ny nz) or one that
     // is not a PLY word is left out rather than written twice or broken.
     std::erase_if(vcols, [&](const UserProperty& c) {
         return c.name == "x" || c.name == "y" || c.name == "z" ||
-               (flags.write_normals && (c.name == "nx" || c.name == "ny" || c.name == "nz")) ||
+               (computed && (c.name == "nx" || c.name == "ny" || c.name == "nz")) ||
+               std::any_of(own.begin(), own.end(),
+                           [&](const UserProperty& o) { return o.name == c.name; }) ||
                c.name.find_first_of(" \t\r\n") != std::string::npos;
     });
     std::erase_if(fcols, [](const UserProperty& c) {
-        return c.name == "vertex_indices" || c.name.find_first_of(" \t\r\n") != std::string::npos;
+        return c.name == "vertex_indices" || c.name == "texcoord" ||
+               c.name.find_first_of(" \t\r\n") != std::string::npos;
     });
     std::uint32_t max_corners = 0;
     for (std::size_t f = 0; f < soup.n_faces(); ++f) {
@@ -117,17 +127,22 @@ void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
     }
     // uchar counts are what every reader takes; polygons of more than 255 corners need uint.
     const bool wide = max_corners > 255;
+    const bool uv_wide = max_corners > 127;  // two values a corner
+    vcols.insert(vcols.begin(), own.begin(), own.end());
     std::string out =
         std::string("ply\nformat ") + (flags.ascii ? "ascii" : "binary_little_endian") +
         " 1.0\ncomment MeshEdit\nelement vertex " + std::to_string(soup.positions.size()) +
         "\nproperty double x\nproperty double y\nproperty double z\n";
-    if (flags.write_normals) {
+    if (computed) {
         out += "property float nx\nproperty float ny\nproperty float nz\n";
     }
     out += header_lines(vcols);
     out += "element face " + std::to_string(soup.n_faces()) + "\nproperty list " +
-           (wide ? "uint" : "uchar") + " uint vertex_indices\n" + header_lines(fcols) +
-           "end_header\n";
+           (wide ? "uint" : "uchar") + " uint vertex_indices\n" +
+           (corner_uvs.empty() ? ""
+                               : std::string("property list ") + (uv_wide ? "uint" : "uchar") +
+                                     (uv_floats ? " float" : " double") + " texcoord\n") +
+           header_lines(fcols) + "end_header\n";
     const std::size_t per_vertex = (flags.ascii ? 80 : 36) + 8 * vcols.size();
     out.reserve(out.size() + soup.positions.size() * per_vertex + soup.indices.size() * 8 +
                 soup.n_faces() * (4 + 8 * fcols.size()));
@@ -135,7 +150,7 @@ void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
         const Vec3& p = soup.positions[v];
         if (flags.ascii) {
             out += number_text(p.x) + ' ' + number_text(p.y) + ' ' + number_text(p.z);
-            if (flags.write_normals) {
+            if (computed) {
                 for (int c = 0; c < 3; ++c) {
                     out += ' ' + number_text(static_cast<float>(normals[v][c]));
                 }
@@ -147,7 +162,7 @@ void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
         put(out, p.x);
         put(out, p.y);
         put(out, p.z);
-        if (flags.write_normals) {
+        if (computed) {
             for (int c = 0; c < 3; ++c) {
                 put(out, static_cast<float>(normals[v][c]));
             }
@@ -161,6 +176,15 @@ void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
             for (std::uint32_t c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) {
                 out += ' ' + std::to_string(soup.indices[c]);
             }
+            if (!corner_uvs.empty()) {
+                out += ' ' + std::to_string(2 * n);
+                for (std::uint32_t c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) {
+                    for (const double x : {corner_uvs[c].x, corner_uvs[c].y}) {
+                        out +=
+                            ' ' + (uv_floats ? number_text(static_cast<float>(x)) : number_text(x));
+                    }
+                }
+            }
             put_columns(out, fcols, f, true);
             out += '\n';
             continue;
@@ -172,6 +196,22 @@ void write_ply(const Mesh& mesh, const std::filesystem::path& path, const IoFlag
         }
         for (std::uint32_t c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) {
             put(out, soup.indices[c]);
+        }
+        if (!corner_uvs.empty()) {
+            if (uv_wide) {
+                put(out, 2 * n);
+            } else {
+                put(out, static_cast<std::uint8_t>(2 * n));
+            }
+            for (std::uint32_t c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) {
+                for (const double x : {corner_uvs[c].x, corner_uvs[c].y}) {
+                    if (uv_floats) {
+                        put(out, static_cast<float>(x));
+                    } else {
+                        put(out, x);
+                    }
+                }
+            }
         }
         put_columns(out, fcols, f, false);
     }

@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include "collada_detail.h"
+#include "collada_material.h"
 #include "meshedit/core/budget.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/io/collada.h"
@@ -134,6 +135,8 @@ private:
     void visit_children(pugi::xml_node node, const Mat4& transform, std::size_t depth);
     void instance_controller(pugi::xml_node at, const Mat4& transform);
     void append(const Instance& instance, collada::GeometryData& g, bool last_use);
+    void append_attributes(const Instance& instance, const collada::GeometryData& g, bool mirror);
+    std::uint32_t material_for(pugi::xml_node at, const std::string& symbol);
 
     const Document& doc_;
     MeshSoup out_;
@@ -144,6 +147,11 @@ private:
     double planned_bytes_ = 0.0;
     std::size_t skipped_transforms_ = 0;
     bool normals_ok_ = true;
+    bool texcoords_ok_ = true, corner_normals_ok_ = true, colors_ok_ = true;
+    bool any_uv_ = false, any_colour_ = false;                       // some geometry had them
+    std::unordered_map<const void*, std::uint32_t> material_index_;  // by <material>
+    std::uint32_t no_material_ = std::numeric_limits<std::uint32_t>::max();
+    bool any_material_ = false;
 };
 
 Mat4 SceneReader::read_asset() {
@@ -322,6 +330,9 @@ void SceneReader::append(const Instance& instance, collada::GeometryData& g, boo
     }
     const Mat4& t = instance.transform;
     const bool identity = t.is_identity();
+    // A mirroring transform turns faces inside out; reversing the corners keeps them outward.
+    const bool mirror = t.det3() < 0.0;
+    append_attributes(instance, g, mirror);
     normals_ok_ = normals_ok_ && !g.normals.empty();
     // The usual single untransformed instance takes the geometry's arrays instead of copying
     // them (its positions were checked finite when read).
@@ -348,8 +359,6 @@ void SceneReader::append(const Instance& instance, collada::GeometryData& g, boo
             out_.normals.push_back(identity ? n : t.normal(n));
         }
     }
-    // A mirroring transform turns faces inside out; reversing the corners keeps them outward.
-    const bool mirror = t.det3() < 0.0;
     const auto offset = static_cast<std::uint32_t>(base);
     memory::reserve_more(out_.soup.indices, g.indices.size());
     memory::reserve_more(out_.soup.face_offsets, g.face_offsets.size() - 1);
@@ -365,6 +374,75 @@ void SceneReader::append(const Instance& instance, collada::GeometryData& g, boo
     for (const auto& [a, b] : g.creases) {
         out_.creases.emplace_back(a + offset, b + offset);
     }
+}
+
+// Texture coordinates and normals per corner (in the order append() lays the corners),
+// colours per position, and each face's material through the instance's <bind_material>.
+void SceneReader::append_attributes(const Instance& instance, const collada::GeometryData& g,
+                                    bool mirror) {
+    const Mat4& t = instance.transform;
+    any_uv_ = any_uv_ || !g.corner_texcoords.empty();
+    any_colour_ = any_colour_ || !g.colors.empty();
+    texcoords_ok_ = texcoords_ok_ && !g.corner_texcoords.empty();
+    corner_normals_ok_ = corner_normals_ok_ && !g.corner_normals.empty();
+    colors_ok_ = colors_ok_ && !g.colors.empty();
+    if (colors_ok_) {
+        out_.colors.insert(out_.colors.end(), g.colors.begin(), g.colors.end());
+    }
+    std::vector<std::uint32_t> material(g.symbols.size());
+    for (std::size_t s = 0; s < g.symbols.size(); ++s) {
+        material[s] = material_for(instance.at, g.symbols[s]);
+    }
+    for (std::size_t f = 0; f + 1 < g.face_offsets.size(); ++f) {
+        const std::uint32_t begin = g.face_offsets[f];
+        const std::uint32_t end = g.face_offsets[f + 1];
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const std::uint32_t k = (!mirror || i == begin) ? i : begin + (end - i);
+            if (texcoords_ok_) {
+                out_.corner_texcoords.push_back(g.corner_texcoords[k]);
+            }
+            if (corner_normals_ok_) {
+                out_.corner_normals.push_back(t.is_identity() ? g.corner_normals[k]
+                                                              : t.normal(g.corner_normals[k]));
+            }
+        }
+        out_.face_materials.push_back(f < g.face_symbols.size() ? material[g.face_symbols[f]]
+                                                                : material_for({}, ""));
+    }
+}
+
+// The index in out_.materials of what `symbol` is bound to at the instancing element `at`
+// (or, unbound, of the <material> whose id it is); an unnamed material for none.
+std::uint32_t SceneReader::material_for(pugi::xml_node at, const std::string& symbol) {
+    pugi::xml_node target;
+    for (pugi::xml_node bound :
+         at.child("bind_material").child("technique_common").children("instance_material")) {
+        const std::string_view url = bound.attribute("target").value();
+        if (symbol == bound.attribute("symbol").value() && url.size() > 1 && url[0] == '#') {
+            target = doc_.find_id(url.substr(1));
+            break;
+        }
+    }
+    if (!target && !symbol.empty()) {
+        target = doc_.find_id(symbol);
+    }
+    if (!target || std::strcmp(target.name(), "material") != 0) {
+        if (no_material_ == std::numeric_limits<std::uint32_t>::max()) {
+            no_material_ = static_cast<std::uint32_t>(out_.materials.size());
+            Material none;
+            none.has_base_colour = false;
+            none.has_opacity = false;
+            out_.materials.push_back(none);
+        }
+        return no_material_;
+    }
+    any_material_ = true;
+    const auto [it, fresh] = material_index_.emplace(
+        target.internal_object(), static_cast<std::uint32_t>(out_.materials.size()));
+    if (fresh) {
+        out_.materials.push_back(collada::read_material(doc_, target));
+    }
+    return it->second;
 }
 
 MeshSoup SceneReader::read() {
@@ -418,6 +496,31 @@ MeshSoup SceneReader::read() {
     }
     if (!normals_ok_) {
         out_.normals.clear();
+    }
+    // Normals one per position stay that (the seamless case); else the corners' own.
+    if (normals_ok_ || !corner_normals_ok_) {
+        out_.corner_normals.clear();
+    }
+    // Geometries with texture coordinates or colours beside some without: said in a line.
+    if (!texcoords_ok_ && any_uv_) {
+        out_.notices.push_back(
+            "texture coordinates not kept: some instanced geometries have "
+            "none; the mesh loads without them");
+    }
+    if (!colors_ok_ && any_colour_) {
+        out_.notices.push_back(
+            "vertex colours not kept: some instanced geometries have none; "
+            "the mesh loads without them");
+    }
+    if (!texcoords_ok_) {
+        out_.corner_texcoords.clear();
+    }
+    if (!colors_ok_) {
+        out_.colors.clear();
+    }
+    if (!any_material_) {
+        out_.face_materials.clear();
+        out_.materials.clear();
     }
     return std::move(out_);
 }

@@ -33,17 +33,32 @@ bool computed_anyway(const Mesh& mesh, const HalfedgeProperty<Vec3>& normal) {
 
 void attach(const MeshSoup& soup, const BuildReport& report, Mesh& mesh) {
     const PolygonSoup& s = soup.soup;
+    // build_mesh() keeps vertex i as soup vertex i; the copies it makes of a split vertex
+    // take their colour through the corners below.
+    const bool colors = !soup.colors.empty() && soup.colors.size() == s.positions.size();
+    VertexProperty<Vec4> color;
+    if (colors) {
+        color = mesh.property<Vertex, Vec4>(kColorProperty);
+        for (std::size_t v = 0; v < soup.colors.size() && v < mesh.vertices_size(); ++v) {
+            color[Vertex(static_cast<std::uint32_t>(v))] = soup.colors[v];
+        }
+    }
+    const bool face_colors = soup.face_colors.size() == s.n_faces() && !soup.face_colors.empty();
     const bool texcoords = soup.corner_texcoords.size() == s.indices.size();
     const bool corner_normals = soup.corner_normals.size() == s.indices.size();
     const bool vertex_normals =
         !corner_normals && !soup.normals.empty() && soup.normals.size() == s.positions.size();
     const bool materials = soup.face_materials.size() == s.n_faces();
-    if (!texcoords && !corner_normals && !vertex_normals && !materials) {
+    if (!texcoords && !corner_normals && !vertex_normals && !materials && !face_colors && !colors) {
         return;
     }
     HalfedgeProperty<Vec2> uv;
     HalfedgeProperty<Vec3> normal;
     FaceProperty<std::uint32_t> material;
+    FaceProperty<Vec4> face_color;
+    if (face_colors) {
+        face_color = mesh.property<Face, Vec4>(kFaceColorProperty);
+    }
     if (texcoords) {
         uv = mesh.property<Halfedge, Vec2>(kTexCoordProperty);
     }
@@ -70,11 +85,17 @@ void attach(const MeshSoup& soup, const BuildReport& report, Mesh& mesh) {
         if (materials) {
             material[face] = soup.face_materials[f];
         }
+        if (face_colors) {
+            face_color[face] = soup.face_colors[f];
+        }
         const std::uint32_t first = s.face_offsets[f];
         const std::uint32_t n = s.face_offsets[f + 1] - first;
         Halfedge h = mesh.halfedge(face);
         for (std::uint32_t i = 0; i < n; ++i, h = mesh.next(h)) {
             const std::uint32_t c = first + (i + 1) % n;
+            if (colors) {
+                color[mesh.to_vertex(h)] = soup.colors[s.indices[c]];
+            }
             if (texcoords) {
                 uv[h] = soup.corner_texcoords[c];
             }

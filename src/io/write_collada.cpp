@@ -1,5 +1,7 @@
-// COLLADA 1.4.1 writer: one <geometry> with positions, optional normals, one <polylist>, and
-// MeshEdit's crease <extra>, written atomically.
+// COLLADA 1.4.1 writer: one <geometry> with positions, normals (the file's per corner, else
+// computed per vertex if asked), texture coordinates per corner, vertex colours, a <polylist>
+// per run of faces of one material (so faces keep their order), the materials' libraries
+// (collada_material.cpp) and MeshEdit's crease <extra>, written atomically.
 
 #include <charconv>
 #include <cstdint>
@@ -7,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "collada_material.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/normals.h"
@@ -26,29 +29,38 @@ void append_number(std::string& out, std::uint64_t value) {
     out.append(buffer, result.ptr);
 }
 
-void append_vec3_source(std::string& out, const std::string& id, const std::vector<Vec3>& values,
-                        const char* names) {
-    const std::uint64_t n = values.size();
+// A <source> of `values.size() / stride` tuples, one <param> per letter of `names`.
+void append_source(std::string& out, const std::string& id, const std::vector<double>& values,
+                   const std::string& names) {
+    const std::uint64_t stride = names.size();
     out += "        <source id=\"" + id + "\">\n          <float_array id=\"" + id +
            "-array\" count=\"";
-    append_number(out, 3 * n);
+    append_number(out, std::uint64_t{values.size()});
     out += "\">";
     for (std::size_t i = 0; i < values.size(); ++i) {
         out += i == 0 ? "" : " ";
-        append_number(out, values[i].x);
-        out += ' ';
-        append_number(out, values[i].y);
-        out += ' ';
-        append_number(out, values[i].z);
+        append_number(out, values[i]);
     }
     out += "</float_array>\n          <technique_common>\n            <accessor source=\"#" + id +
            "-array\" count=\"";
-    append_number(out, n);
-    out += "\" stride=\"3\">\n";
-    for (int k = 0; k < 3; ++k) {
-        out += std::string("              <param name=\"") + names[k] + "\" type=\"float\"/>\n";
+    append_number(out, values.size() / stride);
+    out += "\" stride=\"";
+    append_number(out, stride);
+    out += "\">\n";
+    for (const char name : names) {
+        out += std::string("              <param name=\"") + name + "\" type=\"float\"/>\n";
     }
     out += "            </accessor>\n          </technique_common>\n        </source>\n";
+}
+
+void append_vec3_source(std::string& out, const std::string& id, const std::vector<Vec3>& values,
+                        const char* names) {
+    std::vector<double> flat;
+    flat.reserve(3 * values.size());
+    for (const Vec3& v : values) {
+        flat.insert(flat.end(), {v.x, v.y, v.z});
+    }
+    append_source(out, id, flat, names);
 }
 
 std::string collada_text(const Mesh& mesh, const IoFlags& flags) {
@@ -73,7 +85,43 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags) {
         "    <geometry id=\"mesh\" name=\"mesh\">\n"
         "      <mesh>\n";
     append_vec3_source(out, "mesh-positions", soup.positions, "XYZ");
-    const bool normals = flags.write_normals && !soup.positions.empty();
+    // Per-corner values in to_polygon_soup()'s order: the corner at from_vertex(h) is held by
+    // the halfedge arriving there.
+    const auto corner_normal = mesh.get_property<Halfedge, Vec3>(kCornerNormalProperty);
+    const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const auto colour = mesh.get_property<Vertex, Vec4>(kColorProperty);
+    const auto material = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
+    const std::vector<Material>& materials = mesh.materials();
+    const bool use_materials = material && !materials.empty();
+    if (corner_normal || uv) {
+        std::vector<double> n, t;
+        for (const Face f : mesh.faces()) {
+            for (const Halfedge h : mesh.halfedges(f)) {
+                const Halfedge in = mesh.prev(h);
+                if (corner_normal) {
+                    const Vec3& x = corner_normal[in];
+                    n.insert(n.end(), {x.x, x.y, x.z});
+                }
+                if (uv) {
+                    t.insert(t.end(), {uv[in].x, uv[in].y});
+                }
+            }
+        }
+        if (corner_normal) {
+            append_source(out, "mesh-corner-normals", n, "XYZ");
+        }
+        if (uv) {
+            append_source(out, "mesh-map-0", t, "ST");
+        }
+    }
+    if (colour) {
+        std::vector<double> c;
+        for (const Vertex v : mesh.vertices()) {
+            c.insert(c.end(), {colour[v].x, colour[v].y, colour[v].z, colour[v].w});
+        }
+        append_source(out, "mesh-colors", c, "RGBA");
+    }
+    const bool normals = !corner_normal && flags.write_normals && !soup.positions.empty();
     if (normals) {
         std::vector<Vec3> vertex_normal;
         compute_vertex_normals(mesh, vertex_normal);
@@ -84,26 +132,56 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags) {
         "        <vertices id=\"mesh-vertices\">\n"
         "          <input semantic=\"POSITION\" source=\"#mesh-positions\"/>\n"
         "        </vertices>\n";
-    if (soup.n_faces() > 0) {
+    // One <polylist> per run of faces of one material; corner c's own index is c.
+    const std::uint64_t stride = 1 + (corner_normal || uv ? 1 : 0);
+    for (std::size_t first = 0; first < soup.n_faces();) {
+        const auto material_of = [&](std::size_t f) {
+            return use_materials ? material[Face(static_cast<std::uint32_t>(f))] : 0u;
+        };
+        std::size_t last = first + 1;
+        while (last < soup.n_faces() && material_of(last) == material_of(first)) {
+            ++last;
+        }
         out += "        <polylist count=\"";
-        append_number(out, static_cast<std::uint64_t>(soup.n_faces()));
-        out +=
-            "\">\n          <input semantic=\"VERTEX\" source=\"#mesh-vertices\" offset=\"0\"/>\n";
+        append_number(out, std::uint64_t{last - first});
+        out += "\"";
+        if (use_materials && material_of(first) < materials.size()) {
+            out += " material=\"material-" + std::to_string(material_of(first)) + "\"";
+        }
+        out += ">\n          <input semantic=\"VERTEX\" source=\"#mesh-vertices\" offset=\"0\"/>\n";
         if (normals) {
             // The normals are per vertex, so they share the vertex index (offset 0).
             out += "          <input semantic=\"NORMAL\" source=\"#mesh-normals\" offset=\"0\"/>\n";
         }
+        if (corner_normal) {
+            out +=
+                "          <input semantic=\"NORMAL\" source=\"#mesh-corner-normals\" "
+                "offset=\"1\"/>\n";
+        }
+        if (uv) {
+            out +=
+                "          <input semantic=\"TEXCOORD\" source=\"#mesh-map-0\" offset=\"1\" "
+                "set=\"0\"/>\n";
+        }
+        if (colour) {
+            out += "          <input semantic=\"COLOR\" source=\"#mesh-colors\" offset=\"0\"/>\n";
+        }
         out += "          <vcount>";
-        for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-            out += f == 0 ? "" : " ";
+        for (std::size_t f = first; f < last; ++f) {
+            out += f == first ? "" : " ";
             append_number(out, std::uint64_t{soup.face_offsets[f + 1] - soup.face_offsets[f]});
         }
         out += "</vcount>\n          <p>";
-        for (std::size_t i = 0; i < soup.indices.size(); ++i) {
-            out += i == 0 ? "" : " ";
+        for (std::size_t i = soup.face_offsets[first]; i < soup.face_offsets[last]; ++i) {
+            out += i == soup.face_offsets[first] ? "" : " ";
             append_number(out, std::uint64_t{soup.indices[i]});
+            if (stride == 2) {
+                out += ' ';
+                append_number(out, std::uint64_t{i});
+            }
         }
         out += "</p>\n        </polylist>\n";
+        first = last;
     }
     if (const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
         std::string pairs;
@@ -128,11 +206,32 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags) {
     out +=
         "      </mesh>\n"
         "    </geometry>\n"
-        "  </library_geometries>\n"
+        "  </library_geometries>\n";
+    if (use_materials) {
+        out += collada::materials_text(materials);
+    }
+    out +=
         "  <library_visual_scenes>\n"
         "    <visual_scene id=\"scene\" name=\"scene\">\n"
-        "      <node id=\"node\" name=\"mesh\">\n"
-        "        <instance_geometry url=\"#mesh\"/>\n"
+        "      <node id=\"node\" name=\"mesh\">\n";
+    if (use_materials) {
+        out +=
+            "        <instance_geometry url=\"#mesh\">\n          <bind_material>\n"
+            "            <technique_common>\n";
+        for (std::size_t i = 0; i < materials.size(); ++i) {
+            const std::string m = "material-" + std::to_string(i);
+            out += "              <instance_material symbol=\"" + m + "\" target=\"#" + m +
+                   "\">\n                <bind_vertex_input semantic=\"UVMap\" "
+                   "input_semantic=\"TEXCOORD\" input_set=\"0\"/>\n"
+                   "              </instance_material>\n";
+        }
+        out +=
+            "            </technique_common>\n          </bind_material>\n"
+            "        </instance_geometry>\n";
+    } else {
+        out += "        <instance_geometry url=\"#mesh\"/>\n";
+    }
+    out +=
         "      </node>\n"
         "    </visual_scene>\n"
         "  </library_visual_scenes>\n"

@@ -71,6 +71,7 @@ void keep_faces(MeshSoup& soup, const std::vector<bool>& keep) {
     keep_if(soup.corner_texcoords, keep_corner);
     keep_if(soup.corner_normals, keep_corner);
     keep_if(soup.face_materials, keep);
+    keep_if(soup.face_colors, keep);
     for (UserProperty& property : soup.face_properties) {
         keep_if(property.values, keep);
     }
@@ -113,6 +114,7 @@ std::size_t renumber_vertices(MeshSoup& soup, const std::vector<std::uint32_t>& 
                               std::size_t n_new) {
     renumber(soup.soup.positions, new_index, n_new);
     renumber(soup.normals, new_index, n_new);
+    renumber(soup.colors, new_index, n_new);
     for (UserProperty& property : soup.vertex_properties) {
         renumber(property.values, new_index, n_new);
     }

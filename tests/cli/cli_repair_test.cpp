@@ -110,8 +110,8 @@ TEST(CliRepair, QuietSaysNothingAndNotesWhatTheOutputCannotKeep) {
     const std::vector<std::string> lines = split_lines(r.err);
     ASSERT_FALSE(lines.empty());
     EXPECT_EQ(lines[0], "meshedit: note: " + stl +
-                            ": not kept: texture coordinates (MeshEdit writes them to glTF and "
-                            "OBJ only so far)");
+                            ": not kept: texture coordinates (STL has none; COLLADA, glTF, "
+                            "OBJ, OFF and PLY keep them)");
     for (const std::string& line : lines) {
         EXPECT_EQ(line.rfind("meshedit: note: " + stl + ": not kept: ", 0), 0u) << line;
     }

@@ -34,6 +34,10 @@ Mesh everything_a_format_may_drop() {
             uv[h] = Vec2{p.x / 2, p.y};
         }
     }
+    auto color = mesh.property<Vertex, Vec4>(kColorProperty);
+    for (const Vertex v : mesh.vertices()) {
+        color[v] = Vec4{v.idx() / 4.0, 0.5, 1, 1};
+    }
     return mesh;
 }
 
@@ -73,8 +77,13 @@ TEST(FormatTable, EachRowIsTrueOfItsWriterAndReader) {
         EXPECT_EQ(back.mesh.has_property<Edge>(kCreaseProperty), format.creases);
         EXPECT_EQ(mentions(notes, "1 crease mark"), !format.creases);
 
-        EXPECT_EQ(back.mesh.has_property<Halfedge>(kTexCoordProperty), format.corner_attributes);
-        EXPECT_EQ(mentions(notes, "texture coordinates"), !format.corner_attributes);
+        // The UVs have no seams: a format of per-vertex UVs keeps them too.
+        const bool uvs = format.corner_attributes || format.vertex_attributes;
+        EXPECT_EQ(back.mesh.has_property<Halfedge>(kTexCoordProperty), uvs);
+        EXPECT_EQ(mentions(notes, "texture coordinates"), !uvs);
+
+        EXPECT_EQ(back.mesh.has_property<Vertex>(kColorProperty), format.colors);
+        EXPECT_EQ(mentions(notes, "vertex colours"), !format.colors);
     }
 }
 
@@ -96,13 +105,15 @@ std::string yes_no(bool keeps) {
 TEST(FormatTable, DocsTableIsGenerated) {
     std::string table =
         "| extension | format | polygons | every double | creases | texture coordinates, the "
-        "file's normals, materials | PLY properties |\n|---|---|---|---|---|---|---|\n";
+        "file's normals, materials | PLY properties | vertex colours | UVs and normals one per "
+        "vertex |\n|---|---|---|---|---|---|---|---|---|\n";
     for (const MeshFormat& format : mesh_formats()) {
         table += std::string("| `") + format.extension + "` | " + format.name + " | " +
                  (format.polygons ? "yes" : "fanned into triangles") + " | " +
                  (format.doubles ? "yes" : "32-bit floats") + " | " + yes_no(format.creases) +
                  " | " + yes_no(format.corner_attributes) + " | " + yes_no(format.ply_properties) +
-                 " |\n";
+                 " | " + yes_no(format.colors) + " | " +
+                 yes_no(format.corner_attributes || format.vertex_attributes) + " |\n";
     }
     EXPECT_TRUE(test::block_is_generated(MESHEDIT_SOURCE_DIR "/docs/cli.md", "formats", table));
 }

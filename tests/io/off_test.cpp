@@ -59,8 +59,11 @@ TEST(Off, HeaderVariantsCommentsAndExtraColumns) {
         "a.off");
     EXPECT_EQ(a.soup.positions[2], Vec3(1, 1, 0));
     EXPECT_EQ(faces_of(a.soup), (Faces{{0, 1, 2}, {0, 2, 3}}));
-    EXPECT_TRUE(a.notices.empty());
-    // NOFF: a normal after each position; COFF colours and ST texture coordinates are skipped.
+    // A colour on one face but not the other: face colours are dropped, with a word.
+    EXPECT_TRUE(a.face_colors.empty());
+    EXPECT_EQ(a.notices, (std::vector<std::string>{"face colours not kept: face 1 (line 8) has "
+                                                   "none; the mesh loads without them"}));
+    // NOFF: a normal after each position; STCOFF colours and texture coordinates after it.
     const MeshSoup n =
         parse_off("NOFF\n3 1 3\n0 0 0 0 0 1\n1 0 0 0 0.6 0.8\n0 1 0 1 0 0\n3 0 1 2\n", "n.off");
     ASSERT_EQ(n.normals.size(), 3u);
@@ -70,6 +73,8 @@ TEST(Off, HeaderVariantsCommentsAndExtraColumns) {
         "c.off");
     EXPECT_EQ(c.soup.positions[1], Vec3(2, 0, 0));
     EXPECT_TRUE(c.normals.empty());
+    EXPECT_EQ(c.colors, std::vector<Vec4>(3, Vec4{1, 0, 0, 1}));
+    EXPECT_EQ(c.corner_texcoords, (std::vector<Vec2>{{0.5, 0.5}, {0, 0}, {1, 1}}));
     // No keyword at all (Geomview allows it), CRLF line ends, a polygon of five corners.
     const MeshSoup bare =
         parse_off("5 1 5\r\n0 0 0\r\n1 0 0\r\n2 1 0\r\n1 2 0\r\n0 1 0\r\n5 0 1 2 3 4\r\n", "b.off");

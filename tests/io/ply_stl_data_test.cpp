@@ -152,10 +152,16 @@ TEST(PlyStlData, AssimpFilesHoldWhatTheySay) {
     const MeshSoup uv = read_ply(kAssimpModels / "PLY/cube_uv.ply");
     EXPECT_EQ(uv.normals.size(), 24u);
     EXPECT_TRUE(uv.notices.empty());
-    ASSERT_EQ(uv.vertex_properties.size(), 2u);
-    EXPECT_EQ(uv.vertex_properties[0].name, "v:ply:s");
-    EXPECT_EQ(uv.vertex_properties[0].values[1], 1.0);  // the second line's s
-    EXPECT_EQ(uv.vertex_properties[1].values[2], 1.0);  // the third line's t
+    // s t become the texture coordinates of every corner at their vertex.
+    EXPECT_TRUE(uv.vertex_properties.empty());
+    ASSERT_EQ(uv.corner_texcoords.size(), uv.soup.indices.size());
+    for (std::size_t c = 0; c < uv.soup.indices.size(); ++c) {
+        if (uv.soup.indices[c] == 1) {
+            EXPECT_EQ(uv.corner_texcoords[c].x, 1.0);  // the second line's s
+        } else if (uv.soup.indices[c] == 2) {
+            EXPECT_EQ(uv.corner_texcoords[c].y, 1.0);  // the third line's t
+        }
+    }
     const MeshSoup two = read_stl(kAssimpModels / "STL/triangle_with_two_solids.stl");
     EXPECT_EQ(two.soup.n_faces(), 2u);
     const MeshSoup spider_text = read_stl(kAssimpModels / "STL/Spider_ascii.stl");

@@ -81,16 +81,10 @@ void expect_five(const std::string& c, const std::string& k, const std::string& 
         EXPECT_EQ(faces_of(s.soup), kTwoFaces);
         EXPECT_TRUE(s.normals.empty());
         EXPECT_TRUE(s.notices.empty());
-        // The colour is kept under its own names and type, to be written back.
-        ASSERT_EQ(s.vertex_properties.size(), 3u);
-        const char* names[] = {"v:ply:red", "v:ply:green", "v:ply:blue"};
-        for (int j = 0; j < 3; ++j) {
-            EXPECT_EQ(s.vertex_properties[j].name, names[j]);
-            EXPECT_EQ(s.vertex_properties[j].values, std::vector<double>(5, j == 1 ? 0 : 1));
-        }
-        EXPECT_EQ(s.vertex_properties[0].type, k == "float" || k == "float32"
-                                                   ? UserProperty::Type::F32
-                                                   : UserProperty::Type::U8);
+        // The colour becomes the vertex colour (0–1): a uchar 1 is 1/255, a float 1 is 1.
+        EXPECT_TRUE(s.vertex_properties.empty());
+        const double one = k == "float" || k == "float32" ? 1.0 : 1.0 / 255.0;
+        EXPECT_EQ(s.colors, std::vector<Vec4>(5, Vec4{one, 0, one, 1}));
     }
 }
 
@@ -148,19 +142,16 @@ TEST(Ply, AsciiWithNormalsColoursTextureCoordinatesAndOtherElements) {
     EXPECT_EQ(
         s.notices,
         (std::vector<std::string>{"skipped elements 'edge' (1) (MeshEdit reads vertex and face)"}));
-    // Colours, texture coordinates and a property MeshEdit has no meaning for are kept as user
-    // properties of their type, in the file's order.
-    std::vector<std::string> names;
-    for (const UserProperty& p : s.vertex_properties) {
-        names.push_back(p.name);
-        EXPECT_EQ(p.type, UserProperty::Type::F32);
-    }
-    EXPECT_EQ(names,
-              (std::vector<std::string>{"v:ply:red", "v:ply:green", "v:ply:blue", "v:ply:alpha",
-                                        "v:ply:texture_u", "v:ply:texture_v", "v:ply:confidence"}));
-    EXPECT_EQ(s.vertex_properties[0].values, (std::vector<double>{1, 0, 0, 0}));
-    EXPECT_EQ(s.vertex_properties[4].values, (std::vector<double>{0.25, 0, 0, 0}));
-    EXPECT_EQ(s.vertex_properties[6].values, (std::vector<double>{double{0.9f}, 1, 1, 1}));
+    // Colours and texture coordinates become MeshEdit's own (per vertex; UVs on every corner
+    // of the vertex); a property MeshEdit has no meaning for is kept as a user property.
+    EXPECT_EQ(s.colors,
+              (std::vector<Vec4>{{1, 0.5, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}}));
+    const Vec2 a{0.25, 0.75}, o{0, 0};
+    EXPECT_EQ(s.corner_texcoords, (std::vector<Vec2>{a, o, o, a, o, o}));
+    ASSERT_EQ(s.vertex_properties.size(), 1u);
+    EXPECT_EQ(s.vertex_properties[0].name, "v:ply:confidence");
+    EXPECT_EQ(s.vertex_properties[0].type, UserProperty::Type::F32);
+    EXPECT_EQ(s.vertex_properties[0].values, (std::vector<double>{double{0.9f}, 1, 1, 1}));
     ASSERT_EQ(s.face_properties.size(), 3u);
     EXPECT_EQ(s.face_properties[0].name, "f:ply:red");
     EXPECT_EQ(s.face_properties[0].type, UserProperty::Type::U8);
@@ -183,13 +174,11 @@ TEST(Ply, AnyElementOrderAndTextureCoordinateNames) {
     EXPECT_EQ(s.soup.positions, (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
     EXPECT_EQ(faces_of(s.soup), (Faces{{2, 1, 0}}));
     EXPECT_EQ(s.notices, (std::vector<std::string>{
-                             "per-corner texture coordinates (face.texcoord) not kept (MeshEdit "
-                             "does not store texture coordinates yet)",
                              "skipped elements 'material' (1) (MeshEdit reads vertex and face)"}));
-    ASSERT_EQ(s.vertex_properties.size(), 2u);
-    EXPECT_EQ(s.vertex_properties[0].name, "v:ply:s");
-    EXPECT_EQ(s.vertex_properties[1].name, "v:ply:t");
-    EXPECT_EQ(s.vertex_properties[1].values, std::vector<double>(3, 0.5));
+    // The vertex pair s t and the face's texcoord list both become corner UVs; the list,
+    // which can hold seams, wins.
+    EXPECT_TRUE(s.vertex_properties.empty());
+    EXPECT_EQ(s.corner_texcoords, (std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}}));
     EXPECT_CONTAINS(ply_error("ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int "
                               "vertex_indices\nelement vertex 3\nproperty float x\nproperty "
                               "float y\nproperty float z\nend_header\n3 0 1 3\n0 0 0\n1 0 0\n0 "

@@ -23,6 +23,12 @@ inline constexpr const char* kTexCoordProperty = "h:texcoord";
 /// Halfedge property (Vec3): the normal a file gave the corner of face(h) at to_vertex(h)
 /// (split normals; per-vertex normals are the seamless case). OBJ `vn`, glTF NORMAL.
 inline constexpr const char* kCornerNormalProperty = "h:normal";
+/// Vertex property (Vec4, RGBA, each 0–1): the vertex colour. Blends like positions through
+/// every operation (a split's midpoint gets the mean colour). PLY red green blue alpha, OFF
+/// COFF, OBJ `v x y z r g b`, glTF COLOR_0.
+inline constexpr const char* kColorProperty = "v:color";
+/// Face property (Vec4, RGBA, each 0–1): a face colour (OFF's colour after the index list).
+inline constexpr const char* kFaceColorProperty = "f:color";
 /// Face property (std::uint32_t): the face's index in Mesh::materials() (OBJ `usemtl`).
 inline constexpr const char* kMaterialProperty = "f:material";
 

@@ -20,6 +20,21 @@ constexpr Vec2 operator*(const Vec2& a, double s) {
     return {a.x * s, a.y * s};
 }
 
+/// An RGBA colour (each channel 0–1 as files give it): blends like Vec3 (the attribute carry).
+struct Vec4 {
+    double x = 0.0;
+    double y = 0.0;
+    double z = 0.0;
+    double w = 0.0;
+    constexpr bool operator==(const Vec4&) const = default;
+};
+constexpr Vec4 operator+(const Vec4& a, const Vec4& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w};
+}
+constexpr Vec4 operator*(const Vec4& a, double s) {
+    return {a.x * s, a.y * s, a.z * s, a.w * s};
+}
+
 /// A point or direction in 3D.
 struct Vec3 {
     double x = 0.0;

@@ -54,6 +54,10 @@ struct MeshSoup {
     /// kCornerNormalProperty, attributes.h).
     std::vector<Vec2> corner_texcoords;
     std::vector<Vec3> corner_normals;
+    /// Per vertex / per face RGBA colours (0–1) when the file has them, else empty
+    /// (read_mesh() keeps them as kColorProperty and kFaceColorProperty).
+    std::vector<Vec4> colors;
+    std::vector<Vec4> face_colors;
     /// Per face, an index into `materials`, when the file names materials (else empty).
     std::vector<std::uint32_t> face_materials;
     std::vector<Material> materials;
@@ -88,6 +92,9 @@ struct MeshFormat {
     bool creases;            ///< crease marks (kCreaseProperty)
     bool corner_attributes;  ///< texture coordinates, the file's normals, materials
     bool ply_properties;     ///< the PLY properties MeshEdit has no meaning for (v:ply:*, f:ply:*)
+    bool colors;             ///< vertex colours (kColorProperty)
+    /// Texture coordinates and normals one per vertex (the seamless case of corner attributes)
+    bool vertex_attributes;
 };
 
 /// Every mesh format, in the order messages list them (.dae, .gltf, .glb, .obj, .off, .ply,

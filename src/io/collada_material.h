@@ -1,0 +1,28 @@
+#pragma once
+/// \file
+/// COLLADA materials, both ways (private to meshedit_io): a `<material>` and its
+/// `<effect>`'s diffuse colour or texture image as a Material; a mesh's materials as
+/// `<library_images>`, `<library_effects>` and `<library_materials>`.
+
+#include <string>
+#include <vector>
+
+#include "collada_detail.h"
+#include "meshedit/core/material.h"
+
+namespace meshedit::collada {
+
+/// The Material of `<material>` `node`: its name (else its id), and from its effect's
+/// profile_COMMON technique the diffuse `<color>` (rgb) or `<texture>`'s image path, and
+/// `<transparency>` as the opacity. Whatever cannot be found is left unsaid (has_base_colour
+/// false, no texture).
+Material read_material(const Document& doc, pugi::xml_node node);
+
+/// The libraries for `materials`, material i as id "material-i" (effect "effect-i", image
+/// "image-i"), each escaped for XML.
+std::string materials_text(const std::vector<Material>& materials);
+
+/// `s` with & < > " escaped.
+std::string xml_escape(const std::string& s);
+
+}  // namespace meshedit::collada
