@@ -33,6 +33,13 @@ def run(cmd):
         return None, '', f'timed out after {LIMIT} s'
 
 
+def reason(err, path):
+    # The last line of stderr without the "meshedit: PATH: " prefix, safe in a table cell.
+    line = err.strip().splitlines()[-1] if err.strip() else '?'
+    line = line.replace('meshedit: ', '', 1).replace(path + ': ', '', 1)
+    return line[:110].replace('|', '\\|')
+
+
 def summary(out):
     lines = [l for l in out.strip().splitlines() if l]
     return lines[-1].split(': ', 1)[-1] if lines else ''
@@ -62,13 +69,13 @@ def row(me, path, extra, tmp):
     rc, before, err = run([me, 'check', path, '--problems'])
     faces, _, _ = info(me, path)
     if rc is None or faces == '?':
-        return f'| {name} | – | not loaded: {err.strip().splitlines()[-1][:80] if err.strip() else "?"} |||||||'
+        return f'| {name} | – | not loaded: {reason(err, path)} |||||||'
     out1, out2 = os.path.join(tmp, 'r1.ply'), os.path.join(tmp, 'r2.ply')
     t = time.time()
     rc, _, err = run([me, 'repair', path, out1] + extra)
     took = time.time() - t
     if rc != 0:
-        return f'| {name} | {faces} | failed ({rc}): {err.strip().splitlines()[-1][:80] if err.strip() else ""} |||||| {took:.2f} |'
+        return f'| {name} | {faces} | failed ({rc}): {reason(err, path)} |||||| {took:.2f} |'
     rc2, after, _ = run([me, 'check', out1, '--problems'])
     valid = 'yes' if 'INVALID' not in after and rc2 is not None else 'no'
     _, loops, comps = info(me, out1)
