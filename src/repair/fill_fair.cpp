@@ -32,7 +32,13 @@ using namespace repair_detail;
 
 // A hole refined past this many new vertices stops refining (and says so): a hole as large
 // as a scan's outer border would otherwise take the memory of the machine.
-constexpr std::size_t kMaxNewVertices = 4'000'000;
+constexpr std::size_t kMaxNewVertices = 1'000'000;
+// Holes of more sides are left with their reason: a border of 100,000 edges took 50 s and
+// 9.8 GB (measured); the fills here are for holes, not for closing a whole scan's border.
+constexpr std::size_t kMaxHoleEdges = 20'000;
+// Fairing more new vertices than this is skipped (and said): the sparse factorisation's
+// memory grows faster than the vertices (100,000 in a thin strip took 9.8 GB).
+constexpr std::size_t kMaxFaired = 60'000;
 
 std::vector<std::vector<Halfedge>> boundary_loops(const Mesh& mesh) {
     std::vector<std::vector<Halfedge>> loops;
@@ -218,6 +224,12 @@ RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options) {
             ++large;
             continue;
         }
+        if (n > kMaxHoleEdges) {
+            why.push_back("a hole of " + count_of(n, "edge", "edges") + " at vertex " +
+                          std::to_string(mesh.from_vertex(sides[0]).idx()) + ": more than " +
+                          std::to_string(kMaxHoleEdges) + ", the most this fill takes");
+            continue;
+        }
         std::vector<Vertex> corner(n);
         HoleLoop hole;
         for (std::size_t i = 0; i < n; ++i) {
@@ -274,7 +286,10 @@ RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options) {
     }
     std::size_t faired = 0;
     std::string fair_note;
-    if (options.fair && added > 0) {
+    if (options.fair && added > kMaxFaired) {
+        fair_note = "not faired: " + std::to_string(added) + " new vertices, more than the " +
+                    std::to_string(kMaxFaired) + " this fairing solves for";
+    } else if (options.fair && added > 0) {
         std::vector<Face> region;
         for (std::size_t fi = first_face; fi < mesh.faces_size(); ++fi) {
             if (!mesh.is_deleted(Face(static_cast<std::uint32_t>(fi)))) {

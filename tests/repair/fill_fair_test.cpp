@@ -166,6 +166,28 @@ TEST(FillFair, AThousandEdgeHoleInAPlaneIsFilledInThePlane) {
     }
 }
 
+TEST(FillFair, AHoleTooLargeForThePlainFillIsLeftToTheFairOne) {
+    // 2,600 × 3 unit squares without the middle row's 2,598 inner squares: a hole of 5,198
+    // edges. fill_holes() leaves it, naming the one that takes it; fill_holes_fair() fills it.
+    const auto cut = [](const Vec3& c) { return c.y > 1 && c.y < 2 && c.x > 1 && c.x < 2599; };
+    Mesh plain = without(shapes::quad_grid(2600, 3), cut);
+    Mesh fair = plain;
+    const Mesh before = plain;
+    const RepairResult p = fill_holes(plain, 5200);  // not the border of 5206
+    EXPECT_EQ(p.count, 0u);
+    EXPECT_NE(p.sentence.find("left 1 hole of more than 5000 edges, too large for this fill "
+                              "(fill_holes_fair, repair --fair, takes them)"),
+              std::string::npos)
+        << p.sentence;
+    EXPECT_TRUE(identical(before, plain));
+    FairFillOptions options;
+    options.max_edges = 5200;
+    const RepairResult f = fill_holes_fair(fair, options);
+    ASSERT_VALID(fair);
+    EXPECT_EQ(f.count, 1u) << f.sentence;
+    EXPECT_NE(f.sentence.find("(5198 edges in all)"), std::string::npos) << f.sentence;
+}
+
 TEST(FillFair, CornersGetTextureCoordinatesThroughTheOperations) {
     // Squares 4..7 across and up (both triangles of each): a hole of 16 edges.
     Mesh mesh = without(shapes::grid(12, 12), [](const Vec3& c) {
