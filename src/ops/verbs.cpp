@@ -11,7 +11,6 @@
 #include <string>
 
 #include "meshedit/core/attributes.h"
-#include "meshedit/core/cc_steps.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/loop_steps.h"
 #include "meshedit/core/normals.h"
@@ -20,6 +19,7 @@
 #include "meshedit/core/simplify.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/ops/ops.h"
+#include "phase_verbs.h"
 #include "region_verbs.h"
 #include "repair_verbs.h"
 #include "smooth_verbs.h"
@@ -315,17 +315,6 @@ StepResult run_loop(Mesh& mesh, const Step& step, const RunOptions& options) {
     return result;
 }
 
-// Four phases make a level: asking for more than remain is refused, naming `scheme`.
-OpStatus check_phases_left(const char* scheme, int asked, int next) {
-    if (asked > 5 - next) {
-        return OpStatus::composed("cannot step " + std::string(scheme) + ": " +
-                                  std::to_string(asked) + " phases asked, but phase " +
-                                  std::to_string(next) + " of 4 is next (" +
-                                  std::to_string(5 - next) + " remain)");
-    }
-    return OpStatus::ok();
-}
-
 // loop_step, loop_step:N: the next N phases of a phased Loop (core/loop_steps.h).
 OpStatus check_loop_step_verb(const Mesh& mesh, const Step& step) {
     const int next = next_loop_phase(mesh);
@@ -349,23 +338,6 @@ StepResult run_loop_step(Mesh& mesh, const Step& step, const RunOptions& options
     for (int phase = 0; phase < step.levels; ++phase) {
         const LoopStepReport report = loop_step(mesh, loop);
         result.message = report.message;
-    }
-    return result;
-}
-// cc_step, cc_step:N: the next N phases of a phased Catmull-Clark (core/cc_steps.h).
-OpStatus check_cc_step_verb(const Mesh& mesh, const Step& step) {
-    if (const OpStatus why = check_phases_left("Catmull-Clark", step.levels, next_cc_phase(mesh));
-        !why) {
-        return why;
-    }
-    return check_cc_step(mesh);
-}
-StepResult run_cc_step(Mesh& mesh, const Step& step, const RunOptions&) {
-    StepResult result;
-    for (int phase = 0; phase < step.levels; ++phase) {
-        const CcStepReport report = cc_step(mesh);
-        result.message = report.message;
-        result.renumbers = result.renumbers || report.phase == 4;  // compacted
     }
     return result;
 }
