@@ -39,10 +39,18 @@ bool is_scalar(const Mesh& mesh, const std::string& name) {
     return found;
 }
 
-// The mesh's own arrays and MeshEdit's attributes are drawn their own way, never as a field.
+// The mesh's own arrays, the material index and what the teaching phases leave between them
+// (the Carry::None rows of attributes.h) are drawn their own way, never as a field.
 bool is_own_attribute(std::string_view name) {
-    return name == "v:deleted" || name == "f:deleted" || name == kMaterialProperty ||
-           name.starts_with("v:loop_") || name.starts_with("v:cc_");
+    if (name == "v:deleted" || name == "f:deleted" || name == kMaterialProperty) {
+        return true;
+    }
+    for (const auto& [rule_name, rule] : kCarryRules) {
+        if (rule_name == name && rule == Carry::None) {
+            return true;
+        }
+    }
+    return false;
 }
 
 std::string field_name_of(std::string_view property) {

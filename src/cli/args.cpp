@@ -16,15 +16,6 @@ std::string format_number(double x) {
     return number_text(x);
 }
 
-std::string readable_number(double x) {
-    if (x == 0.0) {
-        return "0";
-    }
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", x);
-    return text;
-}
-
 void print_row(const std::string& key, const std::string& value) {
     std::printf("%-22s %s\n", (key + ":").c_str(), value.c_str());
 }

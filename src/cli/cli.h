@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "exit_status.h"
+#include "meshedit/core/number_text.h"
 #include "meshedit/io/document.h"
 
 namespace meshedit::cli {
@@ -26,10 +27,9 @@ namespace meshedit::cli {
 using command_line::Failure;
 using command_line::UsageError;
 
-/// Shortest round-trip text for a double ("0.1", "-1", "1e-300").
-/// A number as a person reads it in a text report: six significant digits (0.523599, not
-/// 0.5235987755982988); --json keeps every digit.
-std::string readable_number(double x);
+/// Shortest round-trip text for a double ("0.1", "-1", "1e-300"; "0" for -0 too). A number
+/// as a person reads it is the core's readable_number() (number_text.h); --json keeps every
+/// digit.
 std::string format_number(double x);
 
 /// One "key:  value" line of a text report, the values aligned in one column.

@@ -49,20 +49,8 @@ constexpr MeshFormat kFormats[] = {
 // value per vertex is enough: a format's per-vertex UVs or normals keep it).
 template <class T>
 bool seamless(const Mesh& mesh, const HalfedgeProperty<T>& corner) {
-    std::vector<std::uint8_t> seen(mesh.vertices_size(), 0);
-    std::vector<T> value(mesh.vertices_size());
-    for (const Halfedge h : mesh.halfedges()) {
-        if (mesh.is_boundary(h)) {
-            continue;
-        }
-        const std::uint32_t v = mesh.to_vertex(h).idx();
-        if (seen[v] != 0 && !(value[v] == corner[h])) {
-            return false;
-        }
-        seen[v] = 1;
-        value[v] = corner[h];
-    }
-    return true;
+    std::vector<T> value;
+    return io_util::per_vertex(mesh, corner, value);
 }
 
 // "OBJ and glTF": the names of the formats that keep what `keeps` asks, each once.

@@ -3,9 +3,11 @@
 /// Helpers the format writers share (private to meshedit_io). File access itself is in
 /// meshedit/files/files.h.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/number_text.h"  // every writer spells doubles this way
@@ -36,5 +38,25 @@ std::optional<double> parse_double(std::string_view token);
 /// `mesh` itself when it has dense indices, else a garbage-collected copy kept in `storage`.
 /// Writers need dense indices because files number vertices 0…n−1.
 const Mesh& compacted(const Mesh& mesh, std::optional<Mesh>& storage);
+
+/// Corner values (the halfedge arriving at each vertex) as one value per vertex, or false
+/// when two corners of a vertex differ. Vertices on no face keep `value`'s default.
+template <class T>
+bool per_vertex(const Mesh& mesh, const HalfedgeProperty<T>& corner, std::vector<T>& value) {
+    std::vector<std::uint8_t> seen(mesh.vertices_size(), 0);
+    value.assign(mesh.vertices_size(), T{});
+    for (const Halfedge h : mesh.halfedges()) {
+        if (mesh.is_boundary(h)) {
+            continue;
+        }
+        const std::uint32_t v = mesh.to_vertex(h).idx();
+        if (seen[v] != 0 && !(value[v] == corner[h])) {
+            return false;
+        }
+        seen[v] = 1;
+        value[v] = corner[h];
+    }
+    return true;
+}
 
 }  // namespace meshedit::io_util

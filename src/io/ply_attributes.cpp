@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "io_util.h"
 #include "meshedit/core/attributes.h"
 
 namespace meshedit::ply_attributes {
@@ -173,26 +174,6 @@ UserProperty column(const char* name, Type type, std::vector<double> values) {
     return {name, type, std::move(values)};
 }
 
-// Corner values (the halfedge arriving at each vertex) as one value per vertex, or false
-// when two corners of a vertex differ. Vertices on no face keep `value`'s default.
-template <class T>
-bool per_vertex(const Mesh& mesh, const HalfedgeProperty<T>& corner, std::vector<T>& value) {
-    std::vector<std::uint8_t> seen(mesh.vertices_size(), 0);
-    value.assign(mesh.vertices_size(), T{});
-    for (const Halfedge h : mesh.halfedges()) {
-        if (mesh.is_boundary(h)) {
-            continue;
-        }
-        const std::uint32_t v = mesh.to_vertex(h).idx();
-        if (seen[v] != 0 && !(value[v] == corner[h])) {
-            return false;
-        }
-        seen[v] = 1;
-        value[v] = corner[h];
-    }
-    return true;
-}
-
 }  // namespace
 
 void take(MeshSoup& soup, const FaceTexcoords& uvs) {
@@ -207,7 +188,7 @@ std::vector<UserProperty> vertex_columns(const Mesh& mesh, bool& file_normals) {
     file_normals = false;
     if (const auto normal = mesh.get_property<Halfedge, Vec3>(kCornerNormalProperty)) {
         std::vector<Vec3> value;
-        if (per_vertex(mesh, normal, value)) {
+        if (io_util::per_vertex(mesh, normal, value)) {
             std::vector<double> c[3];
             bool floats = true;
             for (const Vec3& x : value) {
@@ -253,7 +234,7 @@ std::vector<UserProperty> vertex_columns(const Mesh& mesh, bool& file_normals) {
     }
     if (const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty)) {
         std::vector<Vec2> value;
-        if (per_vertex(mesh, uv, value)) {
+        if (io_util::per_vertex(mesh, uv, value)) {
             std::vector<double> s, t;
             bool floats = true;
             for (const Vec2& x : value) {
@@ -273,7 +254,7 @@ std::vector<Vec2> face_texcoords(const Mesh& mesh, bool& exact_in_float) {
     exact_in_float = true;
     const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
     std::vector<Vec2> value;
-    if (!uv || per_vertex(mesh, uv, value)) {
+    if (!uv || io_util::per_vertex(mesh, uv, value)) {
         return out;
     }
     for (const Face f : mesh.faces()) {

@@ -2,6 +2,8 @@
 
 #include "meshedit/core/number_text.h"
 
+#include <cstdio>
+
 #include <charconv>
 #include <system_error>
 
@@ -17,6 +19,15 @@ std::string number_text(double x) {
     std::string out;
     append_number_text(out, x);
     return out;
+}
+
+std::string readable_number(double x) {
+    if (x == 0.0) {
+        return "0";
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", x);
+    return text;
 }
 
 }  // namespace meshedit

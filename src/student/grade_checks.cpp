@@ -13,21 +13,12 @@
 #include "meshedit/core/compare.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/normals.h"
+#include "meshedit/core/number_text.h"
 #include "meshedit/core/subdivision.h"
 #include "meshedit/core/validate.h"
 
 namespace meshedit::cli::grade {
 namespace {
-
-// Six significant digits, as the CLI prints numbers (src/cli/args.cpp), without linking the CLI.
-std::string readable_number(double x) {
-    if (x == 0.0) {
-        return "0";
-    }
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", x);
-    return text;
-}
 
 std::string text(const Vec3& p) {
     return "(" + readable_number(p.x) + ", " + readable_number(p.y) + ", " + readable_number(p.z) +

@@ -12,5 +12,8 @@ namespace meshedit {
 std::string number_text(double x);
 /// number_text() appended to `out` without a temporary (writers of big files).
 void append_number_text(std::string& out, double x);
+/// Six significant digits, what a person reads in a report ("0.0173205", "1.2e+06"); "0"
+/// for both zeros. Exact text is number_text()'s.
+std::string readable_number(double x);
 
 }  // namespace meshedit
