@@ -27,12 +27,21 @@ namespace OIIO = OIIO_NAMESPACE;
 // at most this, halved until all layers fit the memory cap (textures are resampled to it).
 constexpr int kMaxTextureSide = 2048;
 constexpr std::size_t kMaxTextureBytes = std::size_t{256} << 20;
-// Larger images are not read at all (a 100000 × 100000 texture would need 40 GB).
-constexpr long long kMaxTexturePixels = 16384LL * 16384LL;
+// Larger images are not read at all (a 100000 × 100000 texture would need 40 GB; this many
+// pixels take 256 MB as RGBA8, twice while they are converted).
+constexpr long long kMaxTexturePixels = 8192LL * 8192LL;
 
 std::uint8_t byte_of(double x) {
     return static_cast<std::uint8_t>(
         std::lround(255.0 * std::clamp(std::isnan(x) ? 0.0 : x, 0.0, 1.0)));
+}
+
+// OpenImageIO's message as one line.
+std::string one_line(std::string message) {
+    for (char& c : message) {
+        c = c == '\n' ? ';' : c;
+    }
+    return message;
 }
 
 // Reads `path` as RGBA8, rows top first; empty with `why` set when it cannot.
@@ -44,20 +53,21 @@ OIIO::ImageBuf read_rgba(const std::string& path, std::string& why) {
     }
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
-        why = "is not an image OpenImageIO reads (" + OIIO::geterror() + ")";
+        why = "is not an image OpenImageIO reads (" + one_line(OIIO::geterror()) + ")";
         return {};
     }
     const OIIO::ImageSpec spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 ||
         static_cast<long long>(spec.width) * spec.height > kMaxTexturePixels) {
         why = "is " + std::to_string(spec.width) + " × " + std::to_string(spec.height) +
-              " pixels, more than MeshEdit shows (16384 × 16384)";
+              " pixels, more than MeshEdit shows (8192 × 8192)";
         return {};
     }
     const int channels = std::clamp(spec.nchannels, 1, 4);
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(spec.width) * spec.height * channels);
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data())) {
-        why = "could not be read (" + in->geterror() + ")";
+        const std::string error = one_line(in->geterror());
+        why = "could not be read (" + (error.empty() ? "its pixels end early" : error) + ")";
         return {};
     }
     OIIO::ImageBuf rgba(OIIO::ImageSpec(spec.width, spec.height, 4, OIIO::TypeDesc::UINT8));
