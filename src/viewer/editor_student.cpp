@@ -26,14 +26,12 @@ struct Editor::StudentMode {
     std::filesystem::path library;
     const grade::st::StudentTasks* tasks = nullptr;
     std::optional<StudentComparison> shown;
+    // How long a call may take: on one edge (instant when right) and on the whole mesh (Loop
+    // on a big mesh is not; the viewer waits, so not much longer).
+    double local_seconds = 2.0, whole_mesh_seconds = 10.0;
 };
 
 namespace {
-
-// How long a student's function may take: a local operation is instant; Loop on a big mesh
-// is not (the viewer waits, so not much longer).
-constexpr double kLocalSeconds = 2.0;
-constexpr double kWholeMeshSeconds = 10.0;
 
 // The x range of `soup`'s positions.
 std::pair<double, double> x_range(const std::vector<Vec3>& positions) {
@@ -47,10 +45,11 @@ std::pair<double, double> x_range(const std::vector<Vec3>& positions) {
 
 }  // namespace
 
-Outcome Editor::load_student(const std::filesystem::path& library) {
+Outcome Editor::load_student(const std::filesystem::path& library,
+                             std::pair<double, double> seconds) {
     // Its initialisers are student code too: loaded in a child first.
     const grade::Outcome probe = grade::run_isolated(
-        [&] { return grade::load_student_library(library), std::string(); }, kWholeMeshSeconds);
+        [&] { return grade::load_student_library(library), std::string(); }, seconds.second);
     if (!probe.pass) {
         return refused("student code " + library.string() + " not loaded: loading it " +
                        probe.message + "; F, S and L run MeshEdit's own operations");
@@ -58,6 +57,8 @@ Outcome Editor::load_student(const std::filesystem::path& library) {
     auto mode = std::make_shared<StudentMode>();
     mode->library = library;
     mode->tasks = &grade::load_student_library(library);
+    mode->local_seconds = seconds.first;
+    mode->whole_mesh_seconds = seconds.second;
     student_ = std::move(mode);
     return {kDisplay, "student code " + library.filename().string() +
                           ": F, S, L, Q and E (curves) call your functions and compare with "
@@ -109,9 +110,9 @@ Outcome Editor::run_student(const ops::Verb& verb) {
         verb.run(reference, step, {});
     }
     const std::string what = name + " on " + (on.is_none() ? "the mesh" : describe(mesh(), on));
-    const grade::MeshAttempt a =
-        grade::attempt_mesh_task(*student_->tasks, *task, doc_.mesh, edge, reference,
-                                 on.is_none() ? kWholeMeshSeconds : kLocalSeconds);
+    const grade::MeshAttempt a = grade::attempt_mesh_task(
+        *student_->tasks, *task, doc_.mesh, edge, reference,
+        on.is_none() ? student_->whole_mesh_seconds : student_->local_seconds);
     switch (a.verdict) {
         case grade::MeshAttempt::Verdict::Failed:
             return refused(what + ": your code " + a.message + " — nothing changed");
@@ -202,8 +203,9 @@ Outcome Editor::show_comparison(const grade::MeshAttempt& a, const Mesh& referen
 }
 
 std::string Editor::check_student_normals() {
-    const grade::Outcome o = grade::run_isolated(
-        [&] { return grade::check_normals(*student_->tasks, doc_.mesh); }, kWholeMeshSeconds);
+    const grade::Outcome o =
+        grade::run_isolated([&] { return grade::check_normals(*student_->tasks, doc_.mesh); },
+                            student_->whole_mesh_seconds);
     if (o.pass) {
         return "; your vertex_normal matches the reference at every vertex";
     }
@@ -226,8 +228,9 @@ std::optional<Outcome> Editor::check_student_step(int level) {
         return std::nullopt;
     }
     const std::vector<Vec3>& points = levels[std::size_t(level)];
-    const grade::Outcome o = grade::run_isolated(
-        [&] { return grade::check_step(*student_->tasks, points, view_.t); }, kLocalSeconds);
+    const grade::Outcome o =
+        grade::run_isolated([&] { return grade::check_step(*student_->tasks, points, view_.t); },
+                            student_->local_seconds);
     if (o.pass) {
         return std::nullopt;
     }

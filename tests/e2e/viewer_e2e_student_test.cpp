@@ -103,6 +103,7 @@ TEST_F(StudentE2E, CrashingStudentCodeLeavesTheViewerRunning) {
     EXPECT_NE(err.find("flip_edge on edge"), std::string::npos) << err;
     EXPECT_NE(err.find("nothing changed"), std::string::npos) << err;
     EXPECT_TRUE(viewer_->running());
+    EXPECT_TRUE(window_->capture(out_dir() / "student_crash_window.png"));
     const fs::path shot = screenshot(*viewer_, *window_, 1);
     ASSERT_FALSE(shot.empty());
     EXPECT_TRUE(looks_rendered(shot, read_rgb(shot).width, read_rgb(shot).height));

@@ -151,6 +151,34 @@ TEST(EditorStudent, CrashingFlipLeavesTheDocumentAsItWas) {
     EXPECT_EQ(ed.student_comparison(), nullptr);
 }
 
+// An endless loop in upsample is stopped at the time limit and named; the mesh stays.
+TEST(EditorStudent, EndlessLoopTimesOutAndLeavesTheDocument) {
+    Editor ed = editor_with(cube());
+    ASSERT_FALSE(ed.load_student(library("bug_loop_endless"), {1.0, 1.0}).refused);
+    const Outcome out = ed.press(key_of('L'), kNoMods);
+    EXPECT_TRUE(out.refused);
+    EXPECT_TRUE(contains(out.message, "upsample on the mesh: your code timed out after 1 s"))
+        << out.message;
+    std::string why;
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), cube(), &why)) << why;
+    EXPECT_EQ(ed.history().undo_steps(), 0u);
+}
+
+// A split that forgets a twin cannot even be written back: the student's own structure is
+// drawn (its faces walked with bounds), the halfedge named and framed on both sides.
+TEST(EditorStudent, SplitWithAnUnsetTwinIsDrawnFromTheStudentsMesh) {
+    Editor ed = student_editor("bug_split_twin_not_set", Edge(0));
+    const Outcome out = ed.press(key_of('S'), kNoMods);
+    ASSERT_FALSE(out.refused) << out.message;
+    const StudentComparison* c = ed.student_comparison();
+    ASSERT_NE(c, nullptr) << out.message;
+    EXPECT_EQ(c->invariant, "twin");
+    EXPECT_TRUE(contains(out.message, "invariant twin: halfedge")) << out.message;
+    EXPECT_TRUE(is_live(ed.mesh(), c->yours)) << to_string(c->yours);
+    EXPECT_TRUE(is_live(ed.mesh(), c->reference)) << to_string(c->reference);
+    EXPECT_FALSE(validate(ed.mesh()).has_value());  // what the viewer holds is a valid mesh
+}
+
 // A library that crashes while it loads is refused; the keys then run the reference.
 TEST(EditorStudent, LibraryCrashingOnLoadIsRefused) {
     Editor ed = editor_with(cube());

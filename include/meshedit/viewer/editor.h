@@ -182,8 +182,10 @@ public:
     /// Ctrl+Z steps back from; a crash, an endless loop or an exception is refused, naming
     /// the function and the edge, the document untouched. Q turning smooth shading on checks
     /// vertex_normal, E in Curve mode evaluate_step. Refused (nothing loaded) when the library
-    /// cannot be loaded or crashes loading.
-    Outcome load_student(const std::filesystem::path& library);
+    /// cannot be loaded or crashes loading. `seconds`: how long a call on one edge, and one on
+    /// the whole mesh (upsample, normals), may take before it counts as an endless loop.
+    Outcome load_student(const std::filesystem::path& library,
+                         std::pair<double, double> seconds = {2.0, 10.0});
     bool student_mode() const;
     /// The side by side the last F, S or L made, while the document is it; null otherwise.
     const StudentComparison* student_comparison() const;
