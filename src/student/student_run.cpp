@@ -280,6 +280,50 @@ std::string run_task(const st::StudentTasks& tasks, MeshTask task, const Mesh& i
     return encode(a);
 }
 
+constexpr std::string_view kNormalsMarker = "MESHEDIT-NORMALS 1\n";
+
+// In the child: the grader's check, then every normal for the picture.
+std::string normals_in_child(const st::StudentTasks& tasks, const Mesh& mesh) {
+    const std::string why = check_normals(tasks, mesh);
+    if (why.empty() || tasks.vertex_normal == nullptr) {
+        return why;  // the same, or not handed in: nothing to draw
+    }
+    st::HalfedgeMesh student;
+    copy_in(mesh, student);
+    std::ostringstream out;
+    out << kNormalsMarker << why.size() << '\n' << why << '\n' << mesh.vertices_size() << '\n';
+    char number[96];
+    for (const Vertex v : mesh.vertices()) {
+        st::Vector3D n;
+        if (!mesh.is_isolated(v)) {
+            n = tasks.vertex_normal(st::VertexIter(&student, int(v.idx())));
+        }
+        std::snprintf(number, sizeof number, "%.17g %.17g %.17g\n", n.x, n.y, n.z);
+        out << number;
+    }
+    return out.str();
+}
+
+NormalsAttempt decode_normals(const std::string& text) {
+    std::istringstream in(text.substr(kNormalsMarker.size()));
+    NormalsAttempt a;
+    a.verdict = MeshAttempt::Verdict::Different;
+    std::size_t message = 0, n = 0;
+    in >> message;
+    in.get();
+    a.message.resize(message);
+    in.read(a.message.data(), std::streamsize(message));
+    in >> n;
+    for (std::size_t i = 0; i < n && in; ++i) {
+        const double x = read_number(in), y = read_number(in), z = read_number(in);
+        a.normals.emplace_back(x, y, z);
+    }
+    if (!in) {
+        throw std::runtime_error("the child's answer was cut short");
+    }
+    return a;
+}
+
 bool handed_in(const st::StudentTasks& tasks, MeshTask task) {
     switch (task) {
         case MeshTask::FlipEdge:
@@ -326,6 +370,25 @@ MeshAttempt attempt_mesh_task(const st::StudentTasks& tasks, MeshTask task, cons
     }
     try {
         return decode(o.message);
+    } catch (const std::exception& e) {
+        a.message = std::string("its result could not be read back: ") + e.what();
+        return a;
+    }
+}
+
+NormalsAttempt attempt_normals(const st::StudentTasks& tasks, const Mesh& mesh, double seconds) {
+    NormalsAttempt a;
+    const Outcome o = run_isolated([&] { return normals_in_child(tasks, mesh); }, seconds);
+    if (o.pass) {
+        a.verdict = MeshAttempt::Verdict::Same;
+        return a;
+    }
+    if (o.message.rfind(kNormalsMarker, 0) != 0) {
+        a.message = o.message;  // crashed, timed out, threw, not handed in
+        return a;
+    }
+    try {
+        return decode_normals(o.message);
     } catch (const std::exception& e) {
         a.message = std::string("its result could not be read back: ") + e.what();
         return a;

@@ -55,6 +55,21 @@ struct MeshAttempt {
 MeshAttempt attempt_mesh_task(const student::StudentTasks& tasks, MeshTask task, const Mesh& input,
                               Edge edge, const Mesh& reference, double seconds);
 
+/// How a student's vertex_normal() did at every vertex of a mesh.
+struct NormalsAttempt {
+    MeshAttempt::Verdict verdict = MeshAttempt::Verdict::Failed;
+    /// Different: the grader's message for the first wrong vertex; Failed: what happened.
+    std::string message;
+    /// Different: the student's normal of every vertex, by index (zero at isolated vertices;
+    /// a NaN comes back as 0).
+    std::vector<Vec3> normals;
+};
+
+/// Runs `tasks.vertex_normal` at every vertex of `mesh` in a child process that may take
+/// `seconds`, checked as `meshedit grade` checks it (check_normals()).
+NormalsAttempt attempt_normals(const student::StudentTasks& tasks, const Mesh& mesh,
+                               double seconds);
+
 /// The corners of `element` of `mesh` in loop order: a vertex's own, an edge's or halfedge's
 /// two ends, a face's corners; walks are bounded and indices checked, so a broken mesh gives
 /// what it can.

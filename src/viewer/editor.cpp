@@ -193,12 +193,8 @@ Outcome Editor::run_display(Action action) {
     switch (action.command) {
         case Command::ToggleSmooth: {
             r.smooth = !r.smooth;
-            if (r.smooth && student_ && doc_.mode != Mode::Curve) {
-                const ElementRef before = doc_.selection;
-                const std::string report = check_student_normals();
-                const bool framed = doc_.selection != before;  // the differing vertex
-                return {kDisplay | (framed ? kSelection | kFrameSelection : 0u),
-                        "smooth shading" + report};
+            if (r.smooth && student_ && doc_.mode != Mode::Curve && !student_comparison()) {
+                return check_student_normals();
             }
             return {kDisplay,
                     r.smooth ? "smooth shading (area-weighted vertex normals)" : "flat shading"};

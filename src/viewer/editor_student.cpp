@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 
 #include "grade_checks.h"
@@ -13,6 +12,7 @@
 #include "meshedit/bezier/bezier_curve.h"
 #include "meshedit/core/assert.h"
 #include "meshedit/core/build.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/viewer/editor.h"
 #include "student_library.h"
@@ -136,12 +136,13 @@ Outcome Editor::run_student(const ops::Verb& verb) {
     return out;
 }
 
-Outcome Editor::show_comparison(const grade::MeshAttempt& a, const Mesh& reference,
-                                const std::string& task, const std::string& what) {
-    PolygonSoup soup = a.yours;
+namespace {
+
+// The student's result and the reference's in one soup, the reference's to the right, a
+// quarter of their width apart; its vertices start at `offset`.
+PolygonSoup side_by_side(PolygonSoup soup, const Mesh& reference, std::uint32_t& offset) {
     const PolygonSoup theirs = to_polygon_soup(reference);
-    const auto offset = static_cast<std::uint32_t>(soup.positions.size());
-    // The reference's result to the right of the student's, a quarter of their width apart.
+    offset = static_cast<std::uint32_t>(soup.positions.size());
     const auto [lo, hi] = x_range(soup.positions);
     const auto [rlo, rhi] = x_range(theirs.positions);
     const double width = std::max(hi - lo, rhi - rlo);
@@ -157,6 +158,15 @@ Outcome Editor::show_comparison(const grade::MeshAttempt& a, const Mesh& referen
         }
         soup.add_face_range(corners);
     }
+    return soup;
+}
+
+}  // namespace
+
+Outcome Editor::show_comparison(const grade::MeshAttempt& a, const Mesh& reference,
+                                const std::string& task, const std::string& what) {
+    std::uint32_t offset = 0;
+    const PolygonSoup soup = side_by_side(a.yours, reference, offset);
     Mesh shown;
     try {
         shown = build_mesh(soup);
@@ -176,12 +186,16 @@ Outcome Editor::show_comparison(const grade::MeshAttempt& a, const Mesh& referen
     const bool same_corners =
         a.reference_at.empty() &&
         std::all_of(a.yours_at.begin(), a.yours_at.end(),
-                    [&](std::uint32_t v) { return v < theirs.positions.size(); });
+                    [&](std::uint32_t v) { return v < reference.vertices_size(); });
     c.reference =
         grade::element_at(shown, a.kind, same_corners ? a.yours_at : a.reference_at, offset);
     std::string message = what + ": yours (left) is not the reference's (right): " + a.message;
     message += c.yours.is_none() ? "" : "; framed: the first difference";
-    message += " — Esc steps back to your input";
+    return put_comparison(std::move(shown), std::move(c), message, kNothing);
+}
+
+Outcome Editor::put_comparison(Mesh shown, StudentComparison c, const std::string& message,
+                               unsigned changes) {
     Outcome out = edit([] { return OpStatus::ok(); },
                        [&](Document& doc) {
                            doc.mesh = std::move(shown);
@@ -191,8 +205,9 @@ Outcome Editor::show_comparison(const grade::MeshAttempt& a, const Mesh& referen
                                doc.also_selected.push_back(c.reference);
                            }
                            Edited edited;
-                           edited.changes = kTopology | kSelection | kResetCamera | kSceneBounds;
-                           edited.message = message;
+                           edited.changes =
+                               changes | kTopology | kSelection | kResetCamera | kSceneBounds;
+                           edited.message = message + " — Esc steps back to your input";
                            return edited;
                        });
     if (!out.refused) {
@@ -202,23 +217,43 @@ Outcome Editor::show_comparison(const grade::MeshAttempt& a, const Mesh& referen
     return out;
 }
 
-std::string Editor::check_student_normals() {
-    const grade::Outcome o =
-        grade::run_isolated([&] { return grade::check_normals(*student_->tasks, doc_.mesh); },
-                            student_->whole_mesh_seconds);
-    if (o.pass) {
-        return "; your vertex_normal matches the reference at every vertex";
+Outcome Editor::check_student_normals() {
+    const grade::NormalsAttempt a =
+        grade::attempt_normals(*student_->tasks, doc_.mesh, student_->whole_mesh_seconds);
+    switch (a.verdict) {
+        case grade::MeshAttempt::Verdict::Same:
+            return {kDisplay,
+                    "smooth shading; your vertex_normal matches the reference at every vertex"};
+        case grade::MeshAttempt::Verdict::Failed:
+            return {kDisplay,
+                    "smooth shading; vertex_normal on every vertex: your code " + a.message, true};
+        case grade::MeshAttempt::Verdict::Different:
+            break;
     }
-    // "vertex 3: normal …": that vertex is selected and framed.
-    unsigned long v = 0;
-    if (o.message.rfind("vertex ", 0) == 0) {
-        v = std::strtoul(o.message.c_str() + 7, nullptr, 10);
-        if (is_live(doc_.mesh, ElementRef::vertex(Vertex(std::uint32_t(v))))) {
-            doc_.selection = ElementRef::vertex(Vertex(std::uint32_t(v)));
-            doc_.also_selected.clear();
+    // The mesh twice, each vertex with its normal: the student's left, the reference's right.
+    const std::vector<Vec3> want = vertex_normals(doc_.mesh);
+    std::uint32_t offset = 0;
+    Mesh shown = build_mesh(side_by_side(to_polygon_soup(doc_.mesh), doc_.mesh, offset));
+    StudentComparison c;
+    c.task = "vertex_normal";
+    c.input = "every vertex";
+    c.difference = a.message;
+    c.reference_from = offset;
+    for (const Vertex v : doc_.mesh.vertices()) {
+        if (!doc_.mesh.is_isolated(v) && v.idx() < a.normals.size() &&
+            !(distance(a.normals[v.idx()], want[v.idx()]) <= 1e-7)) {
+            c.yours = ElementRef::vertex(v);
+            c.reference = ElementRef::vertex(Vertex(v.idx() + offset));
+            break;
         }
     }
-    return "; your vertex_normal: " + o.message;
+    c.yours_normals = a.normals;
+    c.reference_normals = want;
+    return put_comparison(std::move(shown), std::move(c),
+                          "smooth shading; vertex_normal: yours (left) is not the reference's "
+                          "(right): " +
+                              a.message,
+                          kDisplay);
 }
 
 std::optional<Outcome> Editor::check_student_step(int level) {

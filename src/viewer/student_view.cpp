@@ -70,6 +70,18 @@ void add_comparison_marks(const Mesh& mesh, const StudentComparison& comparison,
         halves[v.idx() >= comparison.reference_from ? 1 : 0].add(mesh.position(v));
     }
     const double diagonal = mesh.bounds().diagonal();
+    const std::vector<Vec3>* normals[2] = {&comparison.yours_normals,
+                                           &comparison.reference_normals};
+    for (const Vertex v : mesh.vertices()) {
+        const bool right = v.idx() >= comparison.reference_from;
+        const std::size_t i = right ? v.idx() - comparison.reference_from : v.idx();
+        if (i < normals[right]->size()) {
+            const Vec3& p = mesh.position(v);
+            // Through the surface: a reversed normal points inside.
+            out.lines.push_back(
+                {p, p + 0.08 * diagonal * (*normals[right])[i], kComparisonNormal, 2.0f, true});
+        }
+    }
     const ElementRef framed[2] = {comparison.yours, comparison.reference};
     const char* captions[2] = {"yours", "reference"};
     for (int side = 0; side < 2; ++side) {

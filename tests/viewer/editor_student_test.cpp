@@ -217,10 +217,26 @@ TEST(EditorStudent, LoopByTheSolutionMatchesAndByAWrongWeightDiffers) {
 TEST(EditorStudent, ReversedNormalsAreNamedAndTheVertexSelected) {
     Editor ed = student_editor("bug_normals_reversed", Edge(0));
     ed.select_none();
+    const Mesh input = ed.mesh();
     const Outcome out = ed.press(key_of('Q'), kNoMods);
     EXPECT_TRUE(contains(out.message, "is reversed")) << out.message;
+    const StudentComparison* c = ed.student_comparison();
+    ASSERT_NE(c, nullptr) << out.message;
     EXPECT_EQ(ed.selection().kind, ElementRef::Kind::Vertex);
-    EXPECT_NE(out.changes & kFrameSelection, 0u);
+    EXPECT_EQ(ed.selection(), c->yours);
+    EXPECT_EQ(c->reference.index, c->yours.index + c->reference_from);
+    // The mesh twice, each vertex with its normal: the student's reversed.
+    ASSERT_EQ(c->yours_normals.size(), input.vertices_size());
+    ASSERT_EQ(c->reference_normals.size(), input.vertices_size());
+    EXPECT_EQ(ed.mesh().n_vertices(), 2 * input.n_vertices());
+    const std::uint32_t v = c->yours.index;
+    EXPECT_NEAR(dot(c->yours_normals[v], c->reference_normals[v]), -1.0, 1e-9);
+    OverlayBatch marks;
+    add_comparison_marks(ed.mesh(), *c, marks);
+    EXPECT_EQ(marks.lines.size(), 2 * input.n_vertices() + 24);  // the normals, two boxes
+    ed.press(Key::Escape, kNoMods);
+    std::string why;
+    EXPECT_TRUE(bitwise_equal(ed.mesh(), input, &why)) << why;
 
     Editor good = student_editor("student_solution", Edge(0));
     const Outcome fine = good.press(key_of('Q'), kNoMods);

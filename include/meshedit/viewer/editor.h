@@ -446,8 +446,12 @@ private:
     /// Puts the side by side of a student's result that differs in as one undo step.
     Outcome show_comparison(const cli::grade::MeshAttempt& attempt, const Mesh& reference,
                             const std::string& task, const std::string& what);
-    /// Q under --student: "; your vertex_normal …" (a differing vertex gets selected).
-    std::string check_student_normals();
+    /// The side by side `shown` as one undo step, `comparison`'s elements selected.
+    Outcome put_comparison(Mesh shown, StudentComparison comparison, const std::string& message,
+                           unsigned changes);
+    /// Q under --student turning smooth shading on: vertex_normal checked at every vertex; a
+    /// difference shows the mesh twice with each one's normals.
+    Outcome check_student_normals();
     /// E under --student: why the next curve level is not shown, or nullopt.
     std::optional<Outcome> check_student_step(int level);
     struct StudentMode;

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
@@ -23,16 +24,21 @@ struct StudentComparison {
     /// The first differing element in the document's mesh (the side by side): the student's,
     /// and the reference's (none when the reference has no counterpart).
     ElementRef yours, reference;
+    /// vertex_normal's side by side: each half's normals by vertex (the student's of vertex
+    /// v, the reference's of vertex reference_from + v); empty for the mesh tasks.
+    std::vector<Vec3> yours_normals, reference_normals;
     /// Vertices from this index on are the reference's (the right half).
     std::uint32_t reference_from = 0;
     std::uint64_t at_revision = 0;  ///< the document's revision that shows it
 };
 
+/// The normals drawn at each vertex of vertex_normal's side by side.
+inline constexpr Color kComparisonNormal{0.0f, 0.75f, 0.45f, 1.0f};  ///< green
 /// Frames drawn around the two differing elements.
 inline constexpr Color kComparisonFrame{1.0f, 0.0f, 1.0f, 1.0f};  ///< magenta
 
-/// A box around each differing element, labelled, and a caption over each half ("yours",
-/// "reference").
+/// A box around each differing element, labelled, a caption over each half ("yours",
+/// "reference"), and each vertex's normal when the comparison has them.
 void add_comparison_marks(const Mesh& mesh, const StudentComparison& comparison, OverlayBatch& out);
 
 }  // namespace meshedit::viewer
