@@ -303,7 +303,9 @@ private:
                               " elements, POSITION " + std::to_string(n_vertices));
         }
         for (std::size_t i = 0; i < n_vertices; ++i) {
-            texcoords_.push_back(Vec2{uv[2 * i], uv[2 * i + 1]});
+            // glTF's v runs down the image, MeshEdit's (OBJ's, COLLADA's) up: exact in double
+            // for every float in [0, 1], so a round trip gives the file's bits back.
+            texcoords_.push_back(Vec2{uv[2 * i], 1.0 - uv[2 * i + 1]});
         }
     }
 
@@ -463,11 +465,7 @@ private:
             if (source >= 0 && static_cast<std::size_t>(source) < model_.images.size()) {
                 const tinygltf::Image& image = model_.images[static_cast<std::size_t>(source)];
                 if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0) {
-                    std::error_code ec;
-                    const std::filesystem::path resolved = (folder_ / image.uri).lexically_normal();
-                    m.base_colour_texture = std::filesystem::exists(resolved, ec)
-                                                ? std::filesystem::absolute(resolved, ec).string()
-                                                : image.uri;
+                    m.base_colour_texture = io_util::resolve_texture(image.uri, folder_, true);
                 } else {
                     out_.notices.push_back("the embedded base-colour texture of material '" +
                                            g.name + "' is not kept (MeshEdit keeps texture files)");
