@@ -106,8 +106,12 @@ Outcome Editor::run_student(const ops::Verb& verb) {
         return refused(status.text());  // nothing the student's upsample() is asked to do
     }
     Mesh reference = doc_.mesh;  // where the reference refuses, the input is its answer
-    if (status) {
-        verb.run(reference, step, {});
+    try {
+        if (status) {
+            verb.run(reference, step, {});
+        }
+    } catch (const std::exception& e) {  // out of memory, over the budget
+        return refused(e.what());
     }
     const std::string what = name + " on " + (on.is_none() ? "the mesh" : describe(mesh(), on));
     const grade::MeshAttempt a = grade::attempt_mesh_task(

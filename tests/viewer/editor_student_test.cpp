@@ -179,6 +179,17 @@ TEST(EditorStudent, SplitWithAnUnsetTwinIsDrawnFromTheStudentsMesh) {
     EXPECT_FALSE(validate(ed.mesh()).has_value());  // what the viewer holds is a valid mesh
 }
 
+// The template as handed out (its flip_edge refuses everything) loads, and F shows what is
+// left to do: the cube unflipped beside the reference's flip.
+TEST(EditorStudent, TemplateAsHandedOutShowsWhatIsLeftToDo) {
+    auto [input, e, ed, revision, out] = flip_under("student_template");
+    ASSERT_FALSE(out.refused) << out.message;
+    ASSERT_NE(ed.student_comparison(), nullptr) << out.message;
+    EXPECT_TRUE(contains(out.message, "yours (left) is not the reference's (right)"))
+        << out.message;
+    EXPECT_TRUE(ed.student_comparison()->invariant.empty());
+}
+
 // A library that crashes while it loads is refused; the keys then run the reference.
 TEST(EditorStudent, LibraryCrashingOnLoadIsRefused) {
     Editor ed = editor_with(cube());
