@@ -109,14 +109,21 @@ TEST(EditorStudent, SeededFlipBugShowsTheSideBySideNamingTheElement) {
     OverlayBatch marks;
     add_comparison_marks(ed.mesh(), *c, marks);
     EXPECT_EQ(marks.lines.size(), 24u);  // a box around each
-    // Another F is refused on the side by side; Esc steps back.
+    // Another F and saving are refused on the side by side; Esc steps back, redo shows it
+    // again.
     EXPECT_TRUE(ed.press(key_of('F'), kNoMods).refused);
+    TempDir dir;
+    EXPECT_TRUE(ed.save_as(dir / "side_by_side.obj").refused);
+    EXPECT_FALSE(fs::exists(dir / "side_by_side.obj"));
     const Outcome back = ed.press(Key::Escape, kNoMods);
     EXPECT_FALSE(back.refused) << back.message;
     EXPECT_EQ(ed.student_comparison(), nullptr);
     std::string why;
     EXPECT_TRUE(bitwise_equal(ed.mesh(), input, &why)) << why;
     EXPECT_FALSE(ed.dirty());
+    ed.run({Command::Redo});
+    ASSERT_NE(ed.student_comparison(), nullptr);
+    EXPECT_EQ(ed.mesh().n_vertices(), 2 * input.n_vertices());
 }
 
 // A valid result that differs (the split's new vertex off the midpoint): no invariant, the
