@@ -183,7 +183,13 @@ Outcome Editor::run(Action action) {
         case Command::RemovePoint:
             return run_curve(action);
         case Command::DensityUp:
-        case Command::DensityDown:
+        case Command::DensityDown: {
+            Outcome out = run_surface(c);
+            if (student_ && !out.refused) {
+                out.message += check_student_patches();
+            }
+            return out;
+        }
         case Command::ToggleNets:
             return run_surface(c);
         default:

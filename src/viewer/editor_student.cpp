@@ -1,7 +1,8 @@
 // `--student LIB`: the keys whose verb names a course function (the verb table's
 // course_task) run the student's function in a forked child (meshedit_student's
 // attempt_mesh_task()); a result that is not the reference's becomes a side by side the
-// student steps back from. Q checks vertex_normal, E (curves) evaluate_step.
+// student steps back from. Q checks vertex_normal, E (curves) evaluate_step, + and -
+// (surfaces) evaluate_patch.
 
 #include <algorithm>
 #include <cmath>
@@ -258,6 +259,28 @@ Outcome Editor::check_student_normals() {
                           "(right): " +
                               a.message,
                           kDisplay);
+}
+
+std::string Editor::check_student_patches() {
+    const int n = std::max(doc_.density, 1);
+    const grade::Outcome o = grade::run_isolated(
+        [&] {
+            for (std::size_t p = 0; p < doc_.patches.size(); ++p) {
+                for (int i = 0; i <= n; ++i) {
+                    for (int j = 0; j <= n; ++j) {
+                        const std::string why = grade::check_patch(
+                            *student_->tasks, doc_.patches[p], double(i) / n, double(j) / n);
+                        if (!why.empty()) {
+                            return "patch " + std::to_string(p) + ": " + why;
+                        }
+                    }
+                }
+            }
+            return std::string();
+        },
+        student_->whole_mesh_seconds);
+    return o.pass ? "; your evaluate_patch matches the reference at every point of the grid"
+                  : "; your evaluate_patch: " + o.message;
 }
 
 std::optional<Outcome> Editor::check_student_step(int level) {

@@ -261,6 +261,25 @@ TEST(EditorStudent, ReversedNormalsAreNamedAndTheVertexSelected) {
     EXPECT_TRUE(contains(fine.message, "matches the reference at every vertex")) << fine.message;
 }
 
+// + in Surface mode checks evaluate_patch at every point of the new grid, the density
+// changing either way.
+TEST(EditorStudent, PatchWithUAndVSwappedIsNamedAtTheNewDensity) {
+    for (const char* lib : {"bug_patch_uv_swapped", "student_solution"}) {
+        Editor ed;
+        ed.open(fs::path(MESHEDIT_SOURCE_DIR) / "bez" / "wavy_cube.bez");
+        ASSERT_EQ(ed.mode(), Mode::Surface);
+        ASSERT_FALSE(ed.load_student(library(lib)).refused);
+        const int before = ed.document().density;
+        const Outcome out = ed.run({Command::DensityUp});
+        EXPECT_FALSE(out.refused) << out.message;
+        EXPECT_GT(ed.document().density, before);
+        EXPECT_TRUE(contains(out.message, std::string(lib) == "student_solution"
+                                              ? "your evaluate_patch matches the reference"
+                                              : "your evaluate_patch: patch "))
+            << lib << ": " << out.message;
+    }
+}
+
 TEST(EditorStudent, WrongDeCasteljauStepKeepsTheLevel) {
     TempDir dir;
     const fs::path file = dir / "c.bzc";

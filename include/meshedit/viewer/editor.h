@@ -452,6 +452,9 @@ private:
     /// Q under --student turning smooth shading on: vertex_normal checked at every vertex; a
     /// difference shows the mesh twice with each one's normals.
     Outcome check_student_normals();
+    /// + and - (Surface mode) under --student: "; your evaluate_patch …" at every point of
+    /// the tessellation's grid on every patch.
+    std::string check_student_patches();
     /// E under --student: why the next curve level is not shown, or nullopt.
     std::optional<Outcome> check_student_step(int level);
     struct StudentMode;
