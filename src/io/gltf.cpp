@@ -445,7 +445,8 @@ private:
             return;
         }
         for (std::size_t m = 0; m < model_.materials.size(); ++m) {
-            out_.materials.push_back(material(model_.materials[m]));
+            out_.materials.push_back(
+                gltf_images::read_material(model_, model_.materials[m], embedded_, folder_));
         }
         const auto none = static_cast<std::uint32_t>(out_.materials.size());
         bool used_none = false;
@@ -457,35 +458,6 @@ private:
         if (used_none) {
             out_.materials.push_back(Material{});
         }
-    }
-
-    Material material(const tinygltf::Material& g) {
-        Material m;
-        m.name = g.name;
-        const std::vector<double>& f = g.pbrMetallicRoughness.baseColorFactor;
-        if (f.size() == 4) {
-            m.base_colour = Vec3(f[0], f[1], f[2]);
-            m.opacity = f[3];
-        }
-        const int t = g.pbrMetallicRoughness.baseColorTexture.index;
-        if (t >= 0 && static_cast<std::size_t>(t) < model_.textures.size()) {
-            const int source = model_.textures[static_cast<std::size_t>(t)].source;
-            if (source >= 0 && static_cast<std::size_t>(source) < model_.images.size()) {
-                const tinygltf::Image& image = model_.images[static_cast<std::size_t>(source)];
-                const auto embedded = embedded_.find(source);
-                if (embedded != embedded_.end()) {
-                    // A name for it (the image's, else the material's) and its bytes.
-                    const std::string stem = !image.name.empty() ? image.name
-                                             : !g.name.empty()   ? g.name
-                                                               : "texture" + std::to_string(source);
-                    m.base_colour_texture = gltf_images::file_name(stem, embedded->second);
-                    m.base_colour_texture_bytes = embedded->second;
-                } else if (!image.uri.empty()) {
-                    m.base_colour_texture = io_util::resolve_texture(image.uri, folder_, true);
-                }
-            }
-        }
-        return m;
     }
 
     void add_faces(const tinygltf::Primitive& prim, const std::string& where, std::uint32_t base,

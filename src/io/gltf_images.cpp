@@ -1,9 +1,11 @@
-// The images a glTF file embeds, kept as bytes (gltf_images.h).
+// glTF materials, and the images a glTF file embeds kept as bytes (gltf_images.h).
 
 #include "gltf_images.h"
 
 #include <cstddef>
 #include <cstdint>
+
+#include "io_util.h"
 
 namespace meshedit::gltf_images {
 
@@ -61,6 +63,38 @@ std::string base64(std::string_view bytes) {
         }
     }
     return out;
+}
+
+// The Material of glTF material `g`: its name, baseColorFactor and baseColorTexture (a path
+// resolved against `folder`, or an embedded image's bytes and a name for them).
+Material read_material(const tinygltf::Model& model, const tinygltf::Material& g,
+                       const Embedded& embedded, const std::filesystem::path& folder) {
+    Material m;
+    m.name = g.name;
+    const std::vector<double>& f = g.pbrMetallicRoughness.baseColorFactor;
+    if (f.size() == 4) {
+        m.base_colour = Vec3(f[0], f[1], f[2]);
+        m.opacity = f[3];
+    }
+    const int t = g.pbrMetallicRoughness.baseColorTexture.index;
+    if (t >= 0 && static_cast<std::size_t>(t) < model.textures.size()) {
+        const int source = model.textures[static_cast<std::size_t>(t)].source;
+        if (source >= 0 && static_cast<std::size_t>(source) < model.images.size()) {
+            const tinygltf::Image& image = model.images[static_cast<std::size_t>(source)];
+            const auto kept = embedded.find(source);
+            if (kept != embedded.end()) {
+                // A name for it (the image's, else the material's) and its bytes.
+                const std::string stem = !image.name.empty() ? image.name
+                                         : !g.name.empty()   ? g.name
+                                                             : "texture" + std::to_string(source);
+                m.base_colour_texture = file_name(stem, kept->second);
+                m.base_colour_texture_bytes = kept->second;
+            } else if (!image.uri.empty()) {
+                m.base_colour_texture = io_util::resolve_texture(image.uri, folder, true);
+            }
+        }
+    }
+    return m;
 }
 
 }  // namespace meshedit::gltf_images

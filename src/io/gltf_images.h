@@ -1,13 +1,16 @@
 #pragma once
-// Private to meshedit_io: the images a glTF file embeds (a .glb's buffer views, data: URIs),
-// kept as their bytes (never decoded) so that a material's texture survives a read and a
-// write (material.h's base_colour_texture_bytes).
+// Private to meshedit_io: glTF materials, and the images a glTF file embeds (a .glb's buffer views,
+// data: URIs), kept as their bytes (never decoded) so that a material's texture survives a read and
+// a write (material.h's base_colour_texture_bytes).
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <string_view>
 
 #include <tiny_gltf.h>
+
+#include "meshedit/core/material.h"
 
 namespace meshedit::gltf_images {
 
@@ -18,6 +21,11 @@ using Embedded = std::map<int, std::string>;
 /// points to and accepts every image unread (a file named by a uri stays a path).
 bool keep_embedded(tinygltf::Image* image, int index, std::string* err, std::string* warn,
                    int width, int height, const unsigned char* bytes, int size, void* user_data);
+
+/// The Material of glTF material `g` (material.h): name, baseColorFactor, and its
+/// baseColorTexture as a path resolved against `folder`, or as an embedded image's bytes.
+Material read_material(const tinygltf::Model& model, const tinygltf::Material& g,
+                       const Embedded& embedded, const std::filesystem::path& folder);
 
 /// "png", "jpg", "tga" … from the bytes' first ones; "bin" when unknown.
 std::string extension_of(std::string_view bytes);
