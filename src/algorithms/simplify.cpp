@@ -162,7 +162,7 @@ struct Candidate {
     double cost;
     Vec3 position;
     bool allowed = true;  ///< false: it would pull a crease vertex off its crease
-    Vertex at;            ///< the end it is pinned to (a crease or seam vertex), if any
+    Vertex at;            ///< the end it is pinned to (a crease vertex), if any
 };
 
 class Simplifier {
@@ -183,7 +183,7 @@ public:
     SimplifyReport run() {
         gather_quadrics();
         if (attributes_) {
-            attributes_->gather();
+            attributes_->gather(quadric_);
         }
         std::vector<std::pair<std::uint32_t, float>> all;
         all.reserve(mesh_.n_edges());
@@ -252,7 +252,9 @@ private:
         }
         const auto crease = mesh_.get_property<Edge, std::uint8_t>(kCreaseProperty);
         for (Edge e : mesh_.edges()) {
-            if (!mesh_.is_boundary(e) && !(crease && crease[e] != 0)) {
+            // With attributes, material borders too: a colour's edge stays where it was.
+            if (!mesh_.is_boundary(e) && !(crease && crease[e] != 0) &&
+                !(attributes_ && attributes_->is_material_border(e))) {
                 continue;
             }
             const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
@@ -285,7 +287,7 @@ private:
         }
         const Vec3& pa = mesh_.position(a);
         const Vec3& pb = mesh_.position(b);
-        if (crease_ || attributes_) {
+        if (crease_) {
             if (const std::optional<Candidate> held = on_crease(e, q)) {
                 return *held;
             }
@@ -310,10 +312,7 @@ private:
         return c;
     }
 
-    // A crease, or with attributes a UV seam or material border: held the same way.
-    bool is_crease(Edge e) const {
-        return (crease_ && crease_[e] != 0) || (attributes_ && attributes_->is_seam(e));
-    }
+    bool is_crease(Edge e) const { return crease_[e] != 0; }
     bool on_a_crease(Vertex v) const {
         for (Edge g : mesh_.edges(v)) {
             if (is_crease(g)) {
@@ -322,24 +321,6 @@ private:
         }
         return false;
     }
-    // A vertex whose features are all seams is a corner where the seam ends or charts meet
-    // (not where it turns: a seam on a curved model turns everywhere and would stay whole).
-    template <class IsFeature>
-    bool is_corner(Vertex v, IsFeature crease) const {
-        if (attributes_) {
-            int seams = 0;
-            bool marked = false;
-            for (Edge g : mesh_.edges(v)) {
-                marked = marked || (crease_ && crease_[g] != 0);
-                seams += attributes_->is_seam(g);
-            }
-            if (!marked) {
-                return seams != 2;
-            }
-        }
-        return is_feature_corner(mesh_, v, crease);
-    }
-
     // Where the survivor of e must go when an end is on a crease (the file's comment), or
     // nothing when neither is.
     std::optional<Candidate> on_crease(Edge e, const Quadric& q) const {
@@ -356,8 +337,8 @@ private:
             return on_a && on_b ? never : at(on_a ? a : b);
         }
         const auto crease = [this](Edge g) { return is_crease(g); };
-        const bool corner_a = is_corner(a, crease);
-        const bool corner_b = is_corner(b, crease);
+        const bool corner_a = is_feature_corner(mesh_, a, crease);
+        const bool corner_b = is_feature_corner(mesh_, b, crease);
         if (corner_a || corner_b) {
             return corner_a && corner_b ? never : at(corner_a ? a : b);
         }
@@ -400,7 +381,7 @@ private:
         mesh_.position(s) = p;
         quadric_[s.idx()] = q;
         if (attributes_) {
-            attributes_->apply(a, b, s);
+            attributes_->apply(a, b, s, quadric_[s.idx()]);
         }
         for (Edge g : mesh_.edges(s)) {
             heap_.set(g.idx(), key(error_of(candidate(g), g)));
@@ -444,7 +425,7 @@ std::string why_not_simplify(const Mesh& mesh, const SimplifyOptions& options) {
     // each) and 1.5 edges' heap entry, place and initial cost (20 bytes each), rounded up.
     const double faces = static_cast<double>(mesh.n_faces());
     const bool aware =
-        options.attributes == SimplifyAttributes::Aware && qem::AttributeSimplifier::applies(mesh);
+        options.attributes == SimplifyAttributes::Aware && AttributeSimplifier::applies(mesh);
     const double per_face = aware ? 100.0 + AttributeSimplifier::bytes_per_vertex() / 2 : 100.0;
     if (const auto over = over_budget(per_face * faces)) {
         return "cannot simplify: the quadrics and the queue of " + std::to_string(mesh.n_faces()) +

@@ -75,6 +75,17 @@ struct AttributeQuadric {
         q.a00 += r00, q.a01 += r01, q.a02 += r02, q.a11 += r11, q.a12 += r12, q.a22 += r22;
         q.a03 += b.x, q.a13 += b.y, q.a23 += b.z, q.a33 += c;
     }
+    // Adds E(p, s) for the fixed values s to q as a quadric in p.
+    void fix_into(Quadric& q, const double* s) const {
+        q.a00 += m00, q.a01 += m01, q.a02 += m02, q.a11 += m11, q.a12 += m12, q.a22 += m22;
+        Vec3 b = m;
+        double c = k;
+        for (int j = 0; j < N; ++j) {
+            b = b - g[j] * s[j];
+            c += w * s[j] * s[j] - 2.0 * s[j] * d[j];
+        }
+        q.a03 += b.x, q.a13 += b.y, q.a23 += b.z, q.a33 += c;
+    }
     // The best value of channel j at p (false without faces).
     bool optimum(const Vec3& p, double* out) const {
         if (!(w > 0.0)) {
@@ -101,8 +112,9 @@ public:
     /// Whether the mesh has anything for the aware path: texture coordinates, vertex colours
     /// or more than one material.
     static bool applies(const Mesh& mesh);
-    /// Before the first collapse: the quadrics and the colours' range.
-    void gather();
+    /// Before the first collapse: the quadrics and the colours' range. A seam vertex's
+    /// texture error goes into its `position` quadric (its corners stay as they are).
+    void gather(memory::Array<Quadric>& position);
 
     /// An interior edge whose faces give either end different texture coordinates, or whose
     /// faces have different materials.
@@ -116,17 +128,27 @@ public:
         }
         return uv_ && (!(uv_[h] == uv_[mesh_.prev(t)]) || !(uv_[mesh_.prev(h)] == uv_[t]));
     }
+    /// An interior edge between faces of two materials.
+    bool is_material_border(Edge e) const {
+        return material_ && !mesh_.is_boundary(e) &&
+               material_[mesh_.face(e, 0)] != material_[mesh_.face(e, 1)];
+    }
 
     /// Adds the attribute quadrics of a and b, each at its best values, to q.
     void reduce_into(Vertex a, Vertex b, Quadric& q) const;
 
-    /// Works out the corners and colour the collapse of e leaves with the survivor at p:
-    /// at `at`'s corners when it is pinned to an end (a seam or crease vertex), else at the
-    /// quadrics' best values. Refuses a collapse that would mix two charts at one corner
-    /// (Seam) or turn a UV triangle over (UvFlip). Call before collapse().
+    /// Works out the corners and colour the collapse of e leaves with the survivor at p
+    /// (`at`: the end a crease pins it to, if any). Without a seam at either end, every
+    /// corner takes the UV quadric's best value (or an end's, or their mean: the first that
+    /// turns nothing over). Along a seam, each side's two corners are interpolated where p
+    /// projects onto the edge. Else one end (the seam end) keeps its corners and each run of
+    /// the other's corners takes the kept corner on its side. Refuses a collapse that would
+    /// mix two charts at one corner (Seam) or turn a UV triangle over (UvFlip). Call before
+    /// collapse().
     CornerPlan plan(Edge e, const Vec3& p, Vertex at);
-    /// After collapse() made `s` of a and b: writes the planned values and the merged quadric.
-    void apply(Vertex a, Vertex b, Vertex s);
+    /// After collapse() made `s` of a and b: writes the planned values and the merged
+    /// quadrics (`position`: s's, which takes a new seam vertex's texture error).
+    void apply(Vertex a, Vertex b, Vertex s, Quadric& position);
 
     /// Bytes per vertex it holds (for the simplifier's budget).
     static double bytes_per_vertex() { return sizeof(UvQuadric) + sizeof(ColorQuadric); }
@@ -134,10 +156,15 @@ public:
 private:
     bool on_seam(Vertex v) const;
     Halfedge corner(Face f, Vertex v) const;
+    CornerPlan plan_free(Vertex a, Vertex b, Face f0, Face f1, const Vec3& p);
+    CornerPlan plan_along(Vertex a, Vertex b, Face f0, Face f1, double t);
+    CornerPlan plan_kept(Vertex x, Vertex y, Face f0, Face f1);
+    std::size_t faces_beside(Vertex v, Face f0, Face f1) const;
+    bool turns_over() const;
     bool spread_run(Halfedge start, const Vec2& value, Face f0, Face f1);
 
     Mesh& mesh_;
-    double uv_weight_, color_weight_;
+    double uv_scale_, uv_weight_, color_weight_;
     HalfedgeProperty<Vec2> uv_;
     VertexProperty<Vec4> color_;
     FaceProperty<std::uint32_t> material_;
@@ -154,6 +181,7 @@ private:
     std::vector<PlannedCorner> corners_;
     std::vector<Halfedge> queue_;
     Vec4 planned_color_;
+    Vec2 kept_uv_;  // plan_kept(): the value the other end's faces took
 };
 
 }  // namespace meshedit::qem

@@ -121,7 +121,8 @@ Breaks breaks(const Mesh& before, const Mesh& after) {
         const std::vector<int> chart = charts(before);
         for (Face f : after.faces()) {
             const double was = uv_area(before, f), now = uv_area(after, f);
-            b.flipped += was != 0.0 && !(was > 0 ? now > 0 : now < 0);
+            // Turned over beyond rounding (a sliver may come out at ±1e-19).
+            b.flipped += was * now < 0.0 && std::abs(now) > 1e-9 * std::abs(was);
         }
         for (Edge e : after.edges()) {
             if (!after.is_boundary(e) &&
@@ -238,8 +239,14 @@ TEST(SimplifyAttributes, AffineUvStaysAffine) {
     EXPECT_LT(worst, 1e-9);
 }
 
-// Material borders are held as seams: every vertex between two materials afterwards was on
-// the border before, at the same place.
+// Material borders are held as seams (no collapse across one) and by the boundary's penalty
+// planes: every vertex between two materials afterwards lies near the border line it had.
+double segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+    const Vec3 ab = b - a;
+    const double t = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
+    return distance(p, a + ab * t);
+}
+
 TEST(SimplifyAttributes, MaterialBordersStay) {
     Mesh torus = shapes::torus(60, 30);
     auto material = torus.add_property<Face, std::uint32_t>(kMaterialProperty);
@@ -250,29 +257,43 @@ TEST(SimplifyAttributes, MaterialBordersStay) {
         }
         material[f] = c.x + 0.3 * c.y > 0 ? 1 : 0;
     }
-    const auto on_border = [](const Mesh& mesh, Vertex v) {
+    const auto border_edges = [](const Mesh& mesh) {
         const auto m = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
-        bool zero = false, one = false;
-        for (Face f : mesh.faces(v)) {
-            (m[f] != 0 ? one : zero) = true;
+        std::vector<Edge> out;
+        for (Edge e : mesh.edges()) {
+            if (m[mesh.face(e, 0)] != m[mesh.face(e, 1)]) {
+                out.push_back(e);
+            }
         }
-        return zero && one;
+        return out;
     };
-    std::vector<Vec3> border;
-    for (Vertex v : torus.vertices()) {
-        if (on_border(torus, v)) {
-            border.push_back(torus.position(v));
-        }
-    }
+    const std::vector<Edge> border = border_edges(torus);
     ASSERT_GT(border.size(), 20u);
-    const Mesh out = simplified(torus, 0.1, SimplifyAttributes::Aware);
-    EXPECT_LE(out.n_faces(), 400u);
-    for (Vertex v : out.vertices()) {
-        if (on_border(out, v)) {
-            EXPECT_NE(std::find(border.begin(), border.end(), out.position(v)), border.end())
-                << "vertex " << v.idx() << " left the material border";
+    // How far the vertices between two materials lie from the input's border line.
+    const auto drift = [&](const Mesh& out) {
+        double farthest = 0;
+        for (Edge e : border_edges(out)) {
+            for (const Vertex v : {out.vertex(e, 0), out.vertex(e, 1)}) {
+                double nearest = 1e9;
+                for (Edge g : border) {
+                    nearest =
+                        std::min(nearest, segment_distance(out.position(v),
+                                                           torus.position(torus.vertex(g, 0)),
+                                                           torus.position(torus.vertex(g, 1))));
+                }
+                farthest = std::max(farthest, nearest);
+            }
         }
-    }
+        return farthest;
+    };
+    const Mesh aware = simplified(torus, 0.1, SimplifyAttributes::Aware);
+    EXPECT_LE(aware.n_faces(), 400u);
+    const double held = drift(aware);
+    const double free = drift(simplified(torus, 0.1, SimplifyAttributes::Blind));
+    // The border's penalty planes hold it as a mesh boundary is held (within 0.5% of the
+    // torus's size of 2.8 here; the chords of a curved line); blind lets it wander.
+    EXPECT_LT(held, 0.015);
+    EXPECT_LT(held, 0.3 * free) << held << " vs " << free;
 }
 
 // Blind, and aware on a mesh without attributes, are the simplification of before this
