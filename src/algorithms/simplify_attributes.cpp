@@ -83,14 +83,22 @@ void AttributeSimplifier::gather(memory::Array<Quadric>& position) {
             color_high_ = {std::max(color_high_.x, c.x), std::max(color_high_.y, c.y),
                            std::max(color_high_.z, c.z), std::max(color_high_.w, c.w)};
         }
+        // A channel constant over the mesh adds nothing (its value comes back by the clamp to
+        // the input's range): the quadrics leave it out, and the last ones are not reduced.
+        color_channels_ = 0;
+        for (int j = 0; j < 4; ++j) {
+            if (channel(color_low_, j) != channel(color_high_, j)) {
+                color_channels_ = j + 1;
+            }
+        }
     }
     if (!uv_ && !color_) {
         return;
     }
-    std::vector<std::uint8_t> seam(mesh_.vertices_size(), 0);
+    seam_.assign(mesh_.vertices_size(), 0);
     if (uv_) {
         for (Vertex v : mesh_.vertices()) {
-            seam[v.idx()] = on_seam(v);
+            seam_[v.idx()] = on_seam(v);
         }
         // A UV difference weighs as the distance it spans on the surface (the root of the
         // ratio of the surface's area to the texture's): scale-free, and the same for a
@@ -130,7 +138,7 @@ void AttributeSimplifier::gather(memory::Array<Quadric>& position) {
             double d[2];
             fields(g, d, 2, [&](int i, int j) { return uv_weight_ * channel(uv_[h[i]], j); });
             for (int i = 0; i < 3; ++i) {
-                if (seam[v[i].idx()] == 0) {
+                if (seam_[v[i].idx()] == 0) {
                     uvq_[v[i].idx()].add_face(area, g, d);
                     continue;
                 }
@@ -145,7 +153,11 @@ void AttributeSimplifier::gather(memory::Array<Quadric>& position) {
         if (color_) {
             Vec3 g[4];
             double d[4];
-            fields(g, d, 4, [&](int i, int j) { return color_weight_ * channel(color_[v[i]], j); });
+            fields(g, d, 4, [&](int i, int j) {
+                return channel(color_low_, j) == channel(color_high_, j)
+                           ? 0.0
+                           : color_weight_ * channel(color_[v[i]], j);
+            });
             for (const Vertex u : v) {
                 colorq_[u.idx()].add_face(area, g, d);
             }
@@ -164,14 +176,10 @@ bool AttributeSimplifier::on_seam(Vertex v) const {
 
 void AttributeSimplifier::reduce_into(Vertex a, Vertex b, Quadric& q) const {
     if (uv_) {
-        UvQuadric u = uvq_[a.idx()];
-        u.add(uvq_[b.idx()]);
-        u.reduce_into(q);
+        UvQuadric::reduce_into(uvq_[a.idx()], uvq_[b.idx()], q);
     }
     if (color_) {
-        ColorQuadric c = colorq_[a.idx()];
-        c.add(colorq_[b.idx()]);
-        c.reduce_into(q);
+        ColorQuadric::reduce_into(colorq_[a.idx()], colorq_[b.idx()], q, color_channels_);
     }
 }
 
@@ -236,8 +244,9 @@ CornerPlan AttributeSimplifier::plan(Edge e, const Vec3& p, Vertex at) {
         return CornerPlan::Ok;
     }
     const Face f0 = mesh_.face(e, 0), f1 = mesh_.face(e, 1);
-    const bool seam_a = on_seam(a), seam_b = on_seam(b);
-    if (!seam_a && !seam_b) {
+    const bool seam_a = seam_[a.idx()] != 0, seam_b = seam_[b.idx()] != 0;
+    planned_free_ = !seam_a && !seam_b;
+    if (planned_free_) {
         return plan_free(a, b, f0, f1, p);
     }
     CornerPlan why = CornerPlan::Seam;
@@ -392,7 +401,10 @@ void AttributeSimplifier::apply(Vertex a, Vertex b, Vertex s, Quadric& position)
             uv_[at_s] = planned->uv;
         }
     }
-    if (on_seam(s)) {
+    // Both ends off seams: so is s (its merged edges join corners of one chart). Else see;
+    // no other vertex changes (each merged edge keeps both sides' values).
+    seam_[s.idx()] = !planned_free_ && on_seam(s);
+    if (seam_[s.idx()] != 0) {
         // The free end's faces joined a seam vertex at the kept corner's value: their error
         // is now the position's (as gather() does for seam vertices).
         const double kept[2] = {uv_weight_ * kept_uv_.x, uv_weight_ * kept_uv_.y};

@@ -56,21 +56,26 @@ struct AttributeQuadric {
         }
         w += area;
     }
-    // Adds min over s of E(p, s) to q as a quadric in p.
-    void reduce_into(Quadric& q) const {
+    // Adds min over s of the E(p, s) of x + y to q as a quadric in p, for the first
+    // `channels` channels (the others hold nothing: constant over the mesh).
+    static void reduce_into(const AttributeQuadric& x, const AttributeQuadric& y, Quadric& q,
+                            int channels = N) {
+        const double w = x.w + y.w;
         if (!(w > 0.0)) {
             return;
         }
         const double inv = 1.0 / w;
-        double r00 = m00, r01 = m01, r02 = m02, r11 = m11, r12 = m12, r22 = m22;
-        Vec3 b = m;
-        double c = k;
-        for (int j = 0; j < N; ++j) {
-            const Vec3& G = g[j];
+        double r00 = x.m00 + y.m00, r01 = x.m01 + y.m01, r02 = x.m02 + y.m02;
+        double r11 = x.m11 + y.m11, r12 = x.m12 + y.m12, r22 = x.m22 + y.m22;
+        Vec3 b = x.m + y.m;
+        double c = x.k + y.k;
+        for (int j = 0; j < channels; ++j) {
+            const Vec3 G = x.g[j] + y.g[j];
+            const double D = x.d[j] + y.d[j];
             r00 -= G.x * G.x * inv, r01 -= G.x * G.y * inv, r02 -= G.x * G.z * inv;
             r11 -= G.y * G.y * inv, r12 -= G.y * G.z * inv, r22 -= G.z * G.z * inv;
-            b = b - G * (d[j] * inv);
-            c -= d[j] * d[j] * inv;
+            b = b - G * (D * inv);
+            c -= D * D * inv;
         }
         q.a00 += r00, q.a01 += r01, q.a02 += r02, q.a11 += r11, q.a12 += r12, q.a22 += r22;
         q.a03 += b.x, q.a13 += b.y, q.a23 += b.z, q.a33 += c;
@@ -171,6 +176,7 @@ private:
     memory::Array<UvQuadric> uvq_;
     memory::Array<ColorQuadric> colorq_;
     Vec4 color_low_, color_high_;
+    int color_channels_ = 4;  // the last non-constant colour channel + 1 (alpha often is)
     // The plan: each face around the edge's ends but its own two, its corner there and the
     // value it gets; and the survivor's colour.
     struct PlannedCorner {
@@ -178,6 +184,8 @@ private:
         Halfedge corner;  ///< before the collapse
         Vec2 uv;
     };
+    std::vector<std::uint8_t> seam_;  // per vertex: on a seam (kept up to date by apply())
+    bool planned_free_ = false;       // the plan had no seam at either end
     std::vector<PlannedCorner> corners_;
     std::vector<Halfedge> queue_;
     Vec4 planned_color_;

@@ -18,6 +18,7 @@
 #include "meshedit/core/simplify.h"
 #include "meshedit/core/validate.h"
 #include "meshedit/io/io.h"
+#include "support/textured_torus.h"
 
 namespace meshedit {
 namespace {
@@ -27,53 +28,6 @@ double uv_area(const Mesh& mesh, Face f) {
     const Halfedge h = mesh.halfedge(f);
     const Vec2 a = uv[h], b = uv[mesh.next(h)], c = uv[mesh.prev(h)];
     return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
-// A torus whose UV is (angle around the axis, angle around the tube) / 2π: one chart cut
-// open along two loops (seams where the angles wrap), the UV an affine function of the angles.
-Mesh uv_torus(int m, int n) {
-    Mesh mesh = shapes::torus(m, n);
-    auto uv = mesh.add_property<Halfedge, Vec2>(kTexCoordProperty);
-    for (Face f : mesh.faces()) {
-        Vec2 corner[3];
-        Halfedge hs[3];
-        int i = 0;
-        for (Halfedge h : mesh.halfedges(f)) {
-            const Vec3& p = mesh.position(mesh.to_vertex(h));
-            const double rho = std::hypot(p.x, p.y);
-            const double u = std::atan2(p.y, p.x) / (2 * std::numbers::pi);
-            const double v = std::atan2(p.z, rho - 1.0) / (2 * std::numbers::pi);
-            corner[i] = {u < -1e-9 ? u + 1.0 : u, v < -1e-9 ? v + 1.0 : v};
-            hs[i++] = h;
-        }
-        // A face across the wrap takes the far side's values on its near corners.
-        for (const bool along_u : {true, false}) {
-            double low = 2, high = -1;
-            for (const Vec2& c : corner) {
-                const double x = along_u ? c.x : c.y;
-                low = std::min(low, x), high = std::max(high, x);
-            }
-            for (Vec2& c : corner) {
-                double& x = along_u ? c.x : c.y;
-                if (high - low > 0.5 && x < 0.5) {
-                    x += 1.0;
-                }
-            }
-        }
-        for (int k = 0; k < 3; ++k) {
-            uv[hs[k]] = corner[k];
-        }
-    }
-    return mesh;
-}
-
-void add_colors(Mesh& mesh) {
-    auto color = mesh.add_property<Vertex, Vec4>(kColorProperty);
-    for (Vertex v : mesh.vertices()) {
-        const Vec3& p = mesh.position(v);
-        color[v] = {0.5 + 0.3 * std::sin(3 * p.x), 0.5 + 0.3 * std::cos(2 * p.y), 0.5 + 0.4 * p.z,
-                    1.0};
-    }
 }
 
 bool corners_differ(const Mesh& mesh, Edge e) {
@@ -151,7 +105,7 @@ Breaks breaks(const Mesh& before, const Mesh& after) {
 }
 
 // The mean distance, in UV, from each corner's value to the angles of its vertex's place
-// (the torus's texture as uv_torus() maps it), modulo the wrap.
+// (the torus's texture as test::uv_torus() maps it), modulo the wrap.
 double uv_slide(const Mesh& mesh) {
     const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
     double sum = 0;
@@ -186,8 +140,8 @@ Mesh simplified(const Mesh& mesh, double share, SimplifyAttributes mode,
 }
 
 TEST(SimplifyAttributes, TorusSeamsHoldAndNoUvTriangleTurns) {
-    Mesh torus = uv_torus(60, 30);  // 3,600 triangles, seams along two loops
-    add_colors(torus);
+    Mesh torus = test::uv_torus(60, 30);  // 3,600 triangles, seams along two loops
+    test::add_colors(torus);
     ASSERT_GT(std::count_if(torus.edges().begin(), torus.edges().end(),
                             [&](Edge e) { return corners_differ(torus, e); }),
               0);
@@ -327,8 +281,8 @@ TEST(SimplifyAttributes, BlindIsTodaysOutput) {
     const std::uint64_t today = geometry_hash(simplified(plain, 0.1, SimplifyAttributes::Aware));
     EXPECT_EQ(today, geometry_hash(simplified(plain, 0.1, SimplifyAttributes::Blind)));
     EXPECT_EQ(today, kTodaysTorusHash);
-    Mesh textured = uv_torus(60, 30);
-    add_colors(textured);
+    Mesh textured = test::uv_torus(60, 30);
+    test::add_colors(textured);
     EXPECT_EQ(today, geometry_hash(simplified(textured, 0.1, SimplifyAttributes::Blind)));
     EXPECT_NE(today, geometry_hash(simplified(textured, 0.1, SimplifyAttributes::Aware)));
 }
