@@ -15,6 +15,10 @@
 // edge between two crease vertices that is no crease would cut a chord, and never collapses.
 // Without crease marks none of this runs and the result is as before.
 //
+// With texture coordinates, colours or materials (SimplifyAttributes::Aware), the attribute
+// quadrics of simplify_attributes.h join the position quadric and plan each collapse's corner
+// values; the blind instantiation of the simplifier is the one of before.
+//
 // Candidates live in an indexed 4-ary min-heap of (cost, edge), 8 bytes an entry, with each
 // edge's place in it: a collapse re-keys the edges around the survivor in place and removes
 // the deleted ones, so the heap never holds more than one entry per edge. (A heap of stale
@@ -165,6 +169,9 @@ struct Candidate {
     Vertex at;            ///< the end it is pinned to (a crease vertex), if any
 };
 
+// Aware: with the attribute quadrics (simplify_attributes.h). The blind instantiation is the
+// simplifier of before, branch for branch: a mesh without attributes pays nothing for them.
+template <bool Aware>
 class Simplifier {
 public:
     Simplifier(Mesh& mesh, const SimplifyOptions& options)
@@ -175,14 +182,14 @@ public:
           cos_limit_(std::cos(options.max_normal_change_deg * M_PI / 180.0)),
           diagonal_(mesh.bounds().diagonal()),
           crease_(mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
-        if (options.attributes == SimplifyAttributes::Aware && AttributeSimplifier::applies(mesh)) {
+        if constexpr (Aware) {
             attributes_.emplace(mesh, diagonal_);
         }
     }
 
     SimplifyReport run() {
         gather_quadrics();
-        if (attributes_) {
+        if constexpr (Aware) {
             attributes_->gather(quadric_);
         }
         std::vector<std::pair<std::uint32_t, float>> all;
@@ -215,7 +222,7 @@ public:
                 ++report_.refused_normal;
                 continue;
             }
-            if (attributes_) {
+            if constexpr (Aware) {
                 const CornerPlan plan = attributes_->plan(e, c.position, c.at);
                 if (plan != CornerPlan::Ok) {
                     ++(plan == CornerPlan::Seam ? report_.refused_seam : report_.refused_uv_flip);
@@ -254,7 +261,7 @@ private:
         for (Edge e : mesh_.edges()) {
             // With attributes, material borders too: a colour's edge stays where it was.
             if (!mesh_.is_boundary(e) && !(crease && crease[e] != 0) &&
-                !(attributes_ && attributes_->is_material_border(e))) {
+                !(Aware && attributes_->is_material_border(e))) {
                 continue;
             }
             const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
@@ -282,7 +289,7 @@ private:
     Candidate candidate(Edge e) const {
         const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
         Quadric q = quadric_[a.idx()] + quadric_[b.idx()];
-        if (attributes_) {
+        if constexpr (Aware) {
             attributes_->reduce_into(a, b, q);  // each attribute at its best for a place
         }
         const Vec3& pa = mesh_.position(a);
@@ -380,7 +387,7 @@ private:
         const Vertex s = *collapse(mesh_, e);
         mesh_.position(s) = p;
         quadric_[s.idx()] = q;
-        if (attributes_) {
+        if constexpr (Aware) {
             attributes_->apply(a, b, s, quadric_[s.idx()]);
         }
         for (Edge g : mesh_.edges(s)) {
@@ -452,7 +459,10 @@ SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options) {
     SimplifyReport report;
     {
         const UnitScale unit(mesh);  // quadrics square coordinates: keep them near 1
-        report = Simplifier(mesh, options).run();
+        report =
+            options.attributes == SimplifyAttributes::Aware && AttributeSimplifier::applies(mesh)
+                ? Simplifier<true>(mesh, options).run()
+                : Simplifier<false>(mesh, options).run();
     }
     report.creases_marked = marked;
     MESHEDIT_ASSERT(!validate(mesh));

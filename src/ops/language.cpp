@@ -62,10 +62,9 @@ bool parse_amount(std::string_view s, double& out) {
 // `inf` and `nan` too, as make_step() writes them (`simplify:0.5,inf,40`: no error bound,
 // then a feature angle); no verb is called so.
 bool starts_like_number(std::string_view s) {
-    return !s.empty() &&
-           (std::isdigit(static_cast<unsigned char>(s.front())) != 0 || s.front() == '-' ||
-            s.front() == '+' || s.front() == '.' || s == "inf" || s == "nan" ||
-            s.starts_with("inf:") || s.starts_with("nan:"));
+    return !s.empty() && (std::isdigit(static_cast<unsigned char>(s.front())) != 0 ||
+                          s.front() == '-' || s.front() == '+' || s.front() == '.' || s == "inf" ||
+                          s == "nan" || s.starts_with("inf:") || s.starts_with("nan:"));
 }
 
 // 12 levels multiply the face count by 4^12 ≈ 1.7e7: more is never intended.
