@@ -28,6 +28,14 @@ uniform bool u_field;         // colour by a scalar field (v_color), lit by Blin
 uniform bool u_edge_field;    // and draw the real sides in their edge field's colours
 in vec3 v_color;
 flat in vec3 v_side_color[3];
+// Where the lit colour comes from (overlay/shading.h SurfaceColor): 0 u_base_color, 1 the
+// face's material colour, 2 the vertex colours, 3 the material's texture, 4 a UV checker.
+uniform int u_surface;
+uniform sampler2DArray u_textures;  // every material's base-colour texture, sRGB, unit 3
+in vec2 v_uv;
+in vec4 v_vertex_color;
+flat in vec4 v_material_color;
+flat in float v_layer;
 uniform float u_wire_width;   // pixels
 uniform vec4 u_wire_color;
 uniform vec2 u_depth_range;   // view-space distance of the nearest and farthest scene point
@@ -91,6 +99,42 @@ vec3 envmap_reflection(vec3 n, vec3 v) {
     return sqrt(clamp(c, 0.0, 1.0));
 }
 
+vec3 material_color() {
+    return v_material_color.a > 0.0 ? v_material_color.rgb : u_base_color;
+}
+
+// A UV checker in the manner of Blender's colour grid: 8 × 8 cells per unit square, each
+// cell's hue set by its place (so a mirrored or rotated chart reads differently), light and
+// dark alternating, thin lines between cells. Stretch, flips and seams show at a glance.
+vec3 uv_checker(vec2 uv) {
+    vec2 cell = floor(uv * 8.0);
+    float hue = fract((cell.x + 3.0 * cell.y) / 8.0 + 0.02 * cell.y);
+    vec3 tint = clamp(abs(mod(hue * 6.0 + vec3(0.0, 4.0, 2.0), 6.0) - 3.0) - 1.0, 0.0, 1.0);
+    float parity = mod(cell.x + cell.y, 2.0);
+    vec3 color = mix(vec3(0.25), vec3(0.92), parity) * mix(vec3(1.0), tint, 0.55);
+    vec2 line = abs(fract(uv * 8.0 + 0.5) - 0.5) / max(fwidth(uv * 8.0), vec2(1e-6));
+    return mix(vec3(0.05), color, clamp(min(line.x, line.y) - 0.5, 0.0, 1.0));
+}
+
+// The colour the shading lights (its albedo), from u_surface.
+vec3 surface_color() {
+    if (u_surface == 1) {
+        return material_color();
+    } else if (u_surface == 2) {
+        return v_vertex_color.rgb;
+    } else if (u_surface == 3) {
+        if (v_layer < 0.0) {
+            return material_color();
+        }
+        // The texture is filtered in linear light; the shading works on display values.
+        vec3 linear = texture(u_textures, vec3(v_uv.x, 1.0 - v_uv.y, v_layer)).rgb;
+        return pow(linear, vec3(1.0 / 2.2));
+    } else if (u_surface == 4) {
+        return uv_checker(v_uv);
+    }
+    return u_base_color;
+}
+
 // The on-screen length in pixels of the side between corners j and k, from the screen
 // gradients of their barycentrics (a, b: corner j's d/dx, d/dy; c, d: corner k's): going
 // from corner j to corner k changes them by (-1, 1).
@@ -110,6 +154,7 @@ void main() {
         side = 0.82;
     }
 
+    vec3 base = surface_color();
     vec3 color;
     if (MESHEDIT_MODE == 7 && !u_field) {
         color = envmap_reflection(n, v);
@@ -121,7 +166,7 @@ void main() {
         vec3 fn = normalize(v_flat_normal_view) * (gl_FrontFacing ? 1.0 : -1.0);
         color = vec3(0.62) * (0.72 + 0.28 * max(dot(fn, kKeyDir), 0.0)) * side;
     } else if (MESHEDIT_MODE == 3) {
-        color = studio(n, v, u_base_color) * side;
+        color = studio(n, v, base) * side;
     } else if (MESHEDIT_MODE == 4) {
         color = matcap(n) * side;
     } else if (MESHEDIT_MODE == 5) {
@@ -131,10 +176,10 @@ void main() {
     } else if (MESHEDIT_MODE == 6) {
         float up = 0.5 + 0.5 * normalize(v_normal_world).y * (gl_FrontFacing ? 1.0 : -1.0);
         vec3 light = mix(vec3(0.42, 0.36, 0.30), vec3(1.0, 0.98, 0.95), up);
-        color = u_base_color * light * side;
+        color = base * light * side;
     } else {
         // 1 and the reserved aliases 8-9.
-        color = blinn_phong(n, v, u_base_color) * side;
+        color = blinn_phong(n, v, base) * side;
     }
 
     if (u_edge_field) {

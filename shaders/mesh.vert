@@ -9,6 +9,10 @@ layout(location = 4) in vec4 a_color;          // a scalar field's colour (when 
 layout(location = 5) in vec4 a_side_color0;    // an edge field's colour of the side opposite
 layout(location = 6) in vec4 a_side_color1;    // corner 0, 1, 2 (when u_edge_field)
 layout(location = 7) in vec4 a_side_color2;
+layout(location = 8) in vec2 a_uv;             // the corner's texture coordinate
+layout(location = 9) in vec4 a_vertex_color;   // its vertex (or face) colour
+layout(location = 10) in vec4 a_material_color; // its face's material colour (alpha 0: none)
+layout(location = 11) in float a_layer;         // its material's texture layer, or -1
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
@@ -22,6 +26,10 @@ out vec3 v_barycentric;
 flat out int v_edge_mask;
 out vec3 v_color;
 flat out vec3 v_side_color[3];
+out vec2 v_uv;
+out vec4 v_vertex_color;
+flat out vec4 v_material_color;
+flat out float v_layer;
 
 void main() {
     vec4 p = u_view * vec4(a_position, 1.0);
@@ -39,5 +47,9 @@ void main() {
     v_side_color[0] = a_side_color0.rgb;
     v_side_color[1] = a_side_color1.rgb;
     v_side_color[2] = a_side_color2.rgb;
+    v_uv = a_uv;
+    v_vertex_color = a_vertex_color;
+    v_material_color = a_material_color;
+    v_layer = a_layer;
     gl_Position = u_projection * p;
 }

@@ -32,6 +32,31 @@ void check_mesh_output(const std::filesystem::path& out) {
     }
 }
 
+namespace {
+bool strict_output = false;  // --strict: one command runs per process
+}  // namespace
+
+void add_strict_option(CLI::App& command) {
+    command.add_flag("--strict", strict_output,
+                     "refuse (exit 1, nothing written) when OUT's format cannot keep something "
+                     "the mesh carries, instead of naming it in a note");
+}
+
+void write_output(const Mesh& mesh, const std::filesystem::path& out, const IoFlags& flags) {
+    if (strict_output) {
+        const std::vector<std::string> unkept = unkept_by_format(mesh, file_extension(out));
+        if (!unkept.empty()) {
+            std::string what;
+            for (const std::string& item : unkept) {
+                what += (what.empty() ? "" : "; ") + item;
+            }
+            throw Failure(out.string() + ": not written (--strict): the format cannot keep " +
+                          what);
+        }
+    }
+    report_unkept(out, write_mesh(mesh, out, flags));
+}
+
 void report_unkept(const std::filesystem::path& out, const std::vector<std::string>& unkept) {
     for (const std::string& what : unkept) {
         print_notice(out.string() + ": not kept: " + what);

@@ -19,6 +19,7 @@
 #include "exit_status.h"
 #include "meshedit/core/number_text.h"
 #include "meshedit/io/document.h"
+#include "meshedit/io/io.h"
 
 namespace meshedit::cli {
 
@@ -41,6 +42,12 @@ void print_notice(const std::string& text);
 /// Refuses an output we cannot write before doing any work, so a typo in the output name
 /// does not cost a long subdivision first. \throws IoError naming it.
 void check_mesh_output(const std::filesystem::path& out);
+
+/// `--strict` on a command that writes a mesh: write_output() then refuses to drop anything.
+void add_strict_option(CLI::App& command);
+/// Writes `mesh` to `out` and names in notes what its format could not keep; with --strict
+/// refuses instead (\throws Failure naming the output and what, nothing written).
+void write_output(const Mesh& mesh, const std::filesystem::path& out, const IoFlags& flags = {});
 
 /// What the output's format could not keep (write_mesh()'s answer), as notes: never lost
 /// without a word.

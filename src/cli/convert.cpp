@@ -70,7 +70,7 @@ int run_one_step(const std::filesystem::path& in, const std::filesystem::path& o
             rethrow_with_file(e, in);
         }
     }
-    report_unkept(out, write_mesh(input.mesh, out));
+    write_output(input.mesh, out);
     return 0;
 }
 
@@ -125,6 +125,7 @@ Command add_convert(CLI::App& meshedit) {
                             ops::help_lines())
             ->type_name("LIST");
     add_density_option(*app, s->density);
+    add_strict_option(*app);
     app->add_flag("--ascii", s->ascii, "write PLY and STL as text rather than binary");
     const std::string formats = mesh_extension_list(" ");
     app->footer(
@@ -183,7 +184,7 @@ Command add_convert(CLI::App& meshedit) {
                 }
                 IoFlags flags;
                 flags.ascii = s->ascii;
-                report_unkept(s->out, write_mesh(input.mesh, s->out, flags));
+                write_output(input.mesh, s->out, flags);
                 return 0;
             }};
 }
@@ -231,6 +232,7 @@ Command add_subdivide(CLI::App& meshedit) {
                    uv_interpolation_names() + ")";
         });
     add_density_option(*app, s->density);
+    add_strict_option(*app);
     app->footer(
         "Subdivides IN K times and writes OUT. Loop turns every triangle into four each\n"
         "time and refuses polygons (triangulate first: `meshedit convert --ops triangulate`).\n"
@@ -294,6 +296,7 @@ Command add_simplify(CLI::App& meshedit) {
         ->type_name("aware|blind")
         ->check(CLI::IsMember({"aware", "blind"}));
     add_density_option(*app, s->density);
+    add_strict_option(*app);
     app->footer(
         "Simplifies IN by edge collapses, cheapest quadric error first (Garland-Heckbert:\n"
         "area-weighted plane quadrics, boundaries and creases held, the survivor at the\n"
@@ -353,6 +356,7 @@ Command add_remesh(CLI::App& meshedit) {
     app->add_option("--iterations", s->iterations, "rounds, 1 to 100 (default 3)")->type_name("N");
     add_feature_angle_option(*app, s->feature_angle);
     add_density_option(*app, s->density);
+    add_strict_option(*app);
     app->footer(
         "Remeshes IN toward edges of length L (Botsch-Kobbelt: split edges longer than 4/3 L,\n"
         "collapse those shorter than 4/5 L, flip toward valence 6, smooth tangentially and\n"

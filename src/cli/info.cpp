@@ -1,6 +1,7 @@
 // `meshedit info FILE [--json] [--stats] [--density N]`: counts, topology, bounding box, repairs.
 
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -8,9 +9,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include "cli.h"
+#include "meshedit/core/attribute_summary.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/fields.h"
 #include "meshedit/core/normals.h"
@@ -197,6 +201,32 @@ void print_stats(const Mesh& mesh, bool closed, long euler_characteristic) {
     }
 }
 
+Json attributes_json(const Mesh& mesh, const AttributeSummary& a) {
+    Json materials = Json::array();
+    for (const Material& m : mesh.materials()) {
+        Json j = {{"name", m.name}};
+        if (m.has_base_colour) {
+            j["base_colour"] = {m.base_colour.x, m.base_colour.y, m.base_colour.z};
+        }
+        if (m.has_opacity) {
+            j["opacity"] = m.opacity;
+        }
+        if (!m.base_colour_texture.empty()) {
+            std::error_code ec;
+            j["texture"] = m.base_colour_texture;
+            j["texture_found"] = std::filesystem::exists(m.base_colour_texture, ec);
+        }
+        materials.push_back(std::move(j));
+    }
+    return {{"texcoords", a.texcoords},
+            {"uv_seam_edges", a.uv_seam_edges},
+            {"corner_normals", a.corner_normals},
+            {"vertex_colours", a.vertex_colours},
+            {"face_colours", a.face_colours},
+            {"material_border_edges", a.material_borders},
+            {"materials", a.face_materials ? materials : Json::array()}};
+}
+
 int info(const std::filesystem::path& path, bool json, int density, bool with_stats) {
     ReadOptions options;
     options.density = density;
@@ -212,6 +242,7 @@ int info(const std::filesystem::path& path, bool json, int density, bool with_st
     const BoundingBox box = mesh.bounds();
     const bool bez = input.kind == DocumentKind::Surface;
     const std::map<std::size_t, std::size_t> degrees = face_degrees(mesh);
+    const AttributeSummary attributes = summarize_attributes(mesh);
 
     if (json) {
         Json j;
@@ -251,9 +282,7 @@ int info(const std::filesystem::path& path, bool json, int density, bool with_st
             }
             j["parts"] = std::move(parts);
         }
-        if (with_stats) {
-            j["stats"] = stats_json(mesh, stats.boundary_loops == 0);
-        }
+        j["attributes"] = attributes_json(mesh, attributes);
         if (with_stats) {
             j["stats"] = stats_json(mesh, stats.boundary_loops == 0);
         }
@@ -279,6 +308,9 @@ int info(const std::filesystem::path& path, bool json, int density, bool with_st
     print_row("crease edges", std::to_string(creases));
     print_row("bounding box", bbox_text(box, 3));
     print_row("unit", format_number(input.unit_meter) + " m");
+    for (const auto& [name, value] : attribute_rows(mesh, attributes)) {
+        print_row(name, value);
+    }
     if (repairs.empty()) {
         print_row("repairs", "none");
     }

@@ -52,6 +52,7 @@ Command add_repair(CLI::App& meshedit) {
         "repair", "merge, clean and orient a mesh as read, then write it (small holes filled)");
     app->add_option("IN", s->in, "the input mesh file")->required();
     app->add_option("OUT", s->out, "the output file")->required();
+    add_strict_option(*app);
     auto* distance = app->add_option("--merge-distance", s->distance,
                                      "merge vertices at most D apart (an absolute distance)")
                          ->type_name("D");
@@ -148,7 +149,7 @@ Command add_repair(CLI::App& meshedit) {
                 }
                 IoFlags flags;
                 flags.ascii = s->ascii;
-                report_unkept(s->out, write_mesh(repaired.loaded.mesh, s->out, flags));
+                write_output(repaired.loaded.mesh, s->out, flags);
                 return 0;
             }};
 }

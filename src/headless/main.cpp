@@ -162,6 +162,8 @@ int run(const Options& options) {
         scene.mesh = &mesh;
         scene.patches = patches;
         scene.show_nets = options.net && is_surface;
+        scene.uv_seams = options.color == SurfaceColor::Checker;
+        scene.material_borders = options.color == SurfaceColor::Material;
         if (options.patch_steps) {
             const auto& [index, u, v, step] = *options.patch_steps;
             if (!is_surface) {
@@ -280,6 +282,7 @@ int run(const Options& options) {
     SceneRenderer renderer;
     RenderOptions render_options;
     render_options.shading = options.shading;
+    render_options.color = options.color;
     render_options.smooth = options.smooth.value_or(true);
     render_options.wireframe = options.wireframe;
     render_options.exposure = options.exposure;
@@ -296,6 +299,20 @@ int run(const Options& options) {
     renderer.upload(is_curve || diagram ? nullptr : &mesh);
     if (field != nullptr) {
         renderer.mesh().set_field(field->site, shown.values, shown.coloring);
+    }
+    for (const std::string& note : renderer.mesh().texture_notes()) {
+        std::fprintf(stderr, "%s: note: %s\n", headless::program_name(), note.c_str());
+    }
+    if (const SurfaceColor shown = renderer.mesh().shown_color(options.color);
+        options.color != SurfaceColor::Auto && shown != options.color) {
+        std::fprintf(stderr, "%s: note: --color %s: the mesh has no %s; drawn as %s\n",
+                     headless::program_name(),
+                     std::string(kSurfaceColors[static_cast<int>(options.color)].name).c_str(),
+                     options.color == SurfaceColor::Vertex     ? "colours"
+                     : options.color == SurfaceColor::Material ? "materials"
+                     : options.color == SurfaceColor::Texture  ? "texture with texture coordinates"
+                                                               : "texture coordinates",
+                     std::string(kSurfaceColors[static_cast<int>(shown)].name).c_str());
     }
     renderer.overlay().upload(overlay);
     context->finish();

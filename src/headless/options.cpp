@@ -87,7 +87,7 @@ std::string shading_table() {
 // The values of the options that take text: checked after parsing, with the words the
 // program has always used.
 struct Raw {
-    std::string size, shading, camera, pick;
+    std::string size, shading, camera, pick, color;
 };
 
 void finish(const Raw& raw, Options& o) {
@@ -108,6 +108,13 @@ void finish(const Raw& raw, Options& o) {
             throw UsageError("unknown shading mode '" + raw.shading + "' (see --help)");
         }
         o.shading = mode->number;
+    }
+    if (!raw.color.empty()) {
+        const auto color = find_surface_color(raw.color);
+        if (!color) {
+            throw UsageError("unknown surface colour '" + raw.color + "' (see --help)");
+        }
+        o.color = color->color;
     }
     if (!raw.camera.empty()) {
         const auto parts = split(raw.camera, ',');
@@ -155,6 +162,13 @@ int parse_options(int argc, char** argv, Options& o) {
         ->type_name("LIST");
     app.add_option("--shading", raw.shading, "name or number (default phong):" + shading_table())
         ->type_name("MODE");
+    std::string colors;
+    for (const SurfaceColorMode& mode : kSurfaceColors) {
+        colors += "\n  " + std::string(mode.name) + ": " + std::string(mode.description);
+    }
+    app.add_option("--color", raw.color,
+                   "where the surface colour comes from (default auto):" + colors)
+        ->type_name("FROM");
     app.add_flag_callback(
         "--smooth", [&o] { o.smooth = true; }, "area-weighted vertex normals (the default)");
     app.add_flag_callback(

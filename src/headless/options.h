@@ -17,6 +17,7 @@
 #include "meshedit/core/stencil.h"
 #include "meshedit/overlay/camera.h"
 #include "meshedit/overlay/colormap.h"
+#include "meshedit/overlay/shading.h"
 
 namespace meshedit::headless {
 
@@ -30,6 +31,7 @@ struct Options {
     int height = 384;
     std::string ops;
     int shading = 1;
+    SurfaceColor color = SurfaceColor::Auto;
     std::optional<bool> smooth;
     bool wireframe = false;
     std::optional<float> azimuth, elevation, distance;

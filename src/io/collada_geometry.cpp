@@ -215,6 +215,7 @@ private:
     std::unordered_map<const void*, std::vector<Vec3>> cache_;
     std::unordered_map<const void*, std::vector<double>> tuple_cache_;
     bool texcoords_ok_ = true, corner_normals_ok_ = true, colors_ok_ = true;
+    bool other_sets_said_ = false;  // a second texture coordinate set's notice given
     std::vector<std::uint8_t> colour_seen_;
     std::size_t colour_seams_ = 0;  // positions whose corners' colours differ
     std::string attribute_problem_;
@@ -362,6 +363,16 @@ GeometryReader::Inputs GeometryReader::read_inputs(pugi::xml_node primitive) {
     }
     if (!has_vertex) {
         doc_.fail(primitive, "no <input semantic=\"VERTEX\">");
+    }
+    // One texture coordinate set is kept: the others are said, once per geometry.
+    const Input* kept = inputs.first("TEXCOORD");
+    for (const Input& input : inputs.all) {
+        if (input.semantic == "TEXCOORD" && &input != kept && !other_sets_said_) {
+            g_.notices.push_back("texture coordinate set " + str(input.set) + " of " +
+                                 doc_.where(geometry_) + " not kept (MeshEdit keeps one set, " +
+                                 str(kept->set) + ")");
+            other_sets_said_ = true;
+        }
     }
     return inputs;
 }

@@ -7,8 +7,10 @@
 #include "collada_material.h"
 
 #include <cstring>
+#include <filesystem>
 #include <string_view>
 
+#include "io_util.h"
 #include "meshedit/core/number_text.h"
 
 namespace meshedit::collada {
@@ -41,7 +43,8 @@ std::string texture_path(const Document& doc, pugi::xml_node profile, const std:
     if (!image || std::strcmp(image.name(), "image") != 0) {
         return "";
     }
-    return text_of(image.child("init_from"));
+    return io_util::resolve_texture(text_of(image.child("init_from")),
+                                    std::filesystem::path(doc.file()).parent_path(), true);
 }
 
 void append_numbers(std::string& out, std::initializer_list<double> values) {
@@ -117,7 +120,8 @@ std::string xml_escape(const std::string& s) {
     return out;
 }
 
-std::string materials_text(const std::vector<Material>& materials) {
+std::string materials_text(const std::vector<Material>& materials,
+                           const std::filesystem::path& folder) {
     if (materials.empty()) {
         return "";
     }
@@ -129,7 +133,8 @@ std::string materials_text(const std::vector<Material>& materials) {
         std::string params;
         if (!m.base_colour_texture.empty()) {
             images += "    <image id=\"image-" + n + "\">\n      <init_from>" +
-                      xml_escape(m.base_colour_texture) + "</init_from>\n    </image>\n";
+                      xml_escape(io_util::texture_relative_to(m.base_colour_texture, folder)) +
+                      "</init_from>\n    </image>\n";
             params = "        <newparam sid=\"surface-" + n +
                      "\">\n          <surface type=\"2D\">\n            <init_from>image-" + n +
                      "</init_from>\n          </surface>\n        </newparam>\n"

@@ -4,6 +4,7 @@
 /// `<effect>`'s diffuse colour or texture image as a Material; a mesh's materials as
 /// `<library_images>`, `<library_effects>` and `<library_materials>`.
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,9 @@ namespace meshedit::collada {
 Material read_material(const Document& doc, pugi::xml_node node);
 
 /// The libraries for `materials`, material i as id "material-i" (effect "effect-i", image
-/// "image-i"), each escaped for XML.
-std::string materials_text(const std::vector<Material>& materials);
+/// "image-i"), each escaped for XML; a texture path relative to `folder`, the output's.
+std::string materials_text(const std::vector<Material>& materials,
+                           const std::filesystem::path& folder);
 
 /// `s` with & < > " escaped.
 std::string xml_escape(const std::string& s);

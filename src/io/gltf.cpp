@@ -21,6 +21,7 @@
 #include <map>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 #include "gltf_guard.h"
 #include "gltf_meshopt.h"
@@ -290,6 +291,9 @@ private:
 
     void add_texcoords(const tinygltf::Primitive& prim, const std::string& where,
                        std::size_t n_vertices) {
+        if (prim.attributes.count("TEXCOORD_1") != 0 && !std::exchange(other_sets_said_, true)) {
+            out_.notices.push_back(where + ": TEXCOORD_1 not kept (MeshEdit keeps TEXCOORD_0)");
+        }
         const auto it = prim.attributes.find("TEXCOORD_0");
         if (!all_have_texcoords_ || it == prim.attributes.end()) {
             all_have_texcoords_ = false;
@@ -303,7 +307,8 @@ private:
                               " elements, POSITION " + std::to_string(n_vertices));
         }
         for (std::size_t i = 0; i < n_vertices; ++i) {
-            texcoords_.push_back(Vec2{uv[2 * i], uv[2 * i + 1]});
+            // glTF's v runs down, MeshEdit's (OBJ's) up: exact in double for a float in [0, 1].
+            texcoords_.push_back(Vec2{uv[2 * i], 1.0 - uv[2 * i + 1]});
         }
     }
 
@@ -463,11 +468,7 @@ private:
             if (source >= 0 && static_cast<std::size_t>(source) < model_.images.size()) {
                 const tinygltf::Image& image = model_.images[static_cast<std::size_t>(source)];
                 if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0) {
-                    std::error_code ec;
-                    const std::filesystem::path resolved = (folder_ / image.uri).lexically_normal();
-                    m.base_colour_texture = std::filesystem::exists(resolved, ec)
-                                                ? std::filesystem::absolute(resolved, ec).string()
-                                                : image.uri;
+                    m.base_colour_texture = io_util::resolve_texture(image.uri, folder_, true);
                 } else {
                     out_.notices.push_back("the embedded base-colour texture of material '" +
                                            g.name + "' is not kept (MeshEdit keeps texture files)");
@@ -685,7 +686,8 @@ private:
     std::vector<std::int64_t> origin_;  // per soup vertex: the mesh vertex it copies, or -1
     std::vector<int> face_material_;    // per soup face: the file's material index, or -1
     bool all_have_texcoords_ = true;
-    std::vector<Vec4> colours_;  // COLOR_0 per soup vertex, while every primitive has it
+    bool other_sets_said_ = false;  // TEXCOORD_1's notice given
+    std::vector<Vec4> colours_;     // COLOR_0 per soup vertex, while every primitive has it
     bool all_have_colours_ = true;
     bool all_have_normals_ = true;
     double planned_bytes_ = 0.0;

@@ -182,7 +182,8 @@ private:
         if (uv_) {
             std::vector<float> uv;
             for (const Corner& c : vertices_) {
-                uv.insert(uv.end(), {static_cast<float>(c.uv.x), static_cast<float>(c.uv.y)});
+                uv.insert(uv.end(), {static_cast<float>(c.uv.x),
+                                     static_cast<float>(1.0 - c.uv.y)});  // v down
             }
             attributes["TEXCOORD_0"] =
                 add_accessor(add_view(uv, TINYGLTF_TARGET_ARRAY_BUFFER),
@@ -264,15 +265,15 @@ private:
         std::error_code ec;
         const fs::path file(path);
         const fs::path folder = path_.parent_path().empty() ? fs::path(".") : path_.parent_path();
-        if (binary_ && fs::is_regular_file(file, ec)) {
+        const std::string ext = file_extension(file);
+        // glTF holds PNG and JPEG images; another kind is named, not embedded.
+        if (binary_ && (ext == ".png" || ext == ".jpg" || ext == ".jpeg") &&
+            fs::is_regular_file(file, ec)) {
             const std::string bytes = read_file(file);
             image.bufferView = add_view(std::vector<unsigned char>(bytes.begin(), bytes.end()), 0);
-            const std::string ext = file_extension(file);
             image.mimeType = ext == ".png" ? "image/png" : "image/jpeg";
         } else {
-            fs::path relative =
-                file.is_absolute() ? fs::relative(file, fs::absolute(folder), ec) : file;
-            image.uri = utf8((ec || relative.empty() ? file : relative).generic_string());
+            image.uri = utf8(io_util::texture_relative_to(path, folder));
         }
         model_.images.push_back(std::move(image));
         return static_cast<int>(model_.images.size() - 1);

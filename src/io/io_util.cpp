@@ -2,10 +2,50 @@
 
 #include "io_util.h"
 
+#include <cctype>
+#include <filesystem>
+#include <string>
+
 #include <algorithm>
 #include <charconv>
 
 namespace meshedit::io_util {
+
+std::string resolve_texture(std::string written, const std::filesystem::path& folder, bool uri) {
+    namespace fs = std::filesystem;
+    if (uri && written.rfind("file://", 0) == 0) {
+        written.erase(0, 7);  // file:///C:/x keeps its slash: a path either way
+    }
+    std::string path;
+    for (std::size_t i = 0; i < written.size(); ++i) {
+        const char c = written[i];
+        const auto hex = [&](std::size_t k) {
+            const char x = k < written.size() ? written[k] : 'g';
+            return std::isxdigit(static_cast<unsigned char>(x)) != 0;
+        };
+        if (uri && c == '%' && hex(i + 1) && hex(i + 2)) {
+            path += static_cast<char>(std::stoi(written.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            path += c == '\\' ? '/' : c;
+        }
+    }
+    std::error_code ec;
+    const fs::path resolved = (folder / path).lexically_normal();
+    return fs::exists(resolved, ec) ? fs::absolute(resolved, ec).string() : path;
+}
+
+std::string texture_relative_to(const std::string& texture, const std::filesystem::path& folder) {
+    namespace fs = std::filesystem;
+    const fs::path file(texture);
+    if (!file.is_absolute()) {
+        return file.generic_string();
+    }
+    std::error_code ec;
+    const fs::path relative =
+        fs::relative(file, fs::absolute(folder.empty() ? fs::path(".") : folder, ec), ec);
+    return (ec || relative.empty() ? file : relative).generic_string();
+}
 
 std::string_view text_of(std::string_view bytes, const std::string& name) {
     if (bytes.substr(0, 3) == "\xEF\xBB\xBF") {

@@ -4,6 +4,7 @@
 /// meshedit/files/files.h.
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,6 +15,16 @@
 #include "meshedit/files/files.h"
 
 namespace meshedit::io_util {
+
+/// A texture path as a file wrote it (OBJ's map_Kd, glTF's image uri, COLLADA's init_from),
+/// made a path: backslashes made slashes and, for a `uri` (glTF, COLLADA), a `file://` prefix
+/// dropped and %XX escapes decoded;
+/// a relative one is taken from `folder` (the file's). Absolute when that file exists, else
+/// as written: a missing texture is said by whoever shows it, never a failure to read.
+std::string resolve_texture(std::string written, const std::filesystem::path& folder, bool uri);
+/// The path to write for a texture into a file in `folder`: relative to that folder when the
+/// texture's path is absolute (so the output folder can move with its textures).
+std::string texture_relative_to(const std::string& texture, const std::filesystem::path& folder);
 
 /// The text of a text format's file: `bytes` without a UTF-8 byte-order mark. \throws
 /// IoError naming `name` for UTF-16 or UTF-32 text (a byte-order mark or NUL bytes in the first

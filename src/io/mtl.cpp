@@ -76,13 +76,8 @@ void read_library(const fs::path& file, MeshSoup& soup, std::vector<bool>& defin
                  t = io_util::next_token(line)) {
                 path = std::string(t);
             }
-            for (char& c : path) {
-                c = c == '\\' ? '/' : c;
-            }
-            std::error_code ec;
-            const fs::path resolved = (file.parent_path() / path).lexically_normal();
             current->base_colour_texture =
-                fs::exists(resolved, ec) ? fs::absolute(resolved, ec).string() : path;
+                io_util::resolve_texture(path, file.parent_path(), false);
         } else {
             current->other.emplace_back(whole);
         }
@@ -146,14 +141,7 @@ std::string text(const Mesh& mesh, const fs::path& folder) {
             out += "d " + number_text(m.opacity) + "\n";
         }
         if (!m.base_colour_texture.empty()) {
-            fs::path texture(m.base_colour_texture);
-            std::error_code ec;
-            if (texture.is_absolute()) {
-                const fs::path relative = fs::relative(
-                    texture, fs::absolute(folder.empty() ? fs::path(".") : folder, ec), ec);
-                texture = ec || relative.empty() ? texture : relative;
-            }
-            out += "map_Kd " + texture.generic_string() + "\n";
+            out += "map_Kd " + io_util::texture_relative_to(m.base_colour_texture, folder) + "\n";
         }
         for (const std::string& line : m.other) {
             out += line + "\n";

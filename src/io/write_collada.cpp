@@ -63,7 +63,8 @@ void append_vec3_source(std::string& out, const std::string& id, const std::vect
     append_source(out, id, flat, names);
 }
 
-std::string collada_text(const Mesh& mesh, const IoFlags& flags) {
+std::string collada_text(const Mesh& mesh, const IoFlags& flags,
+                         const std::filesystem::path& folder) {
     const PolygonSoup soup = to_polygon_soup(mesh);
     std::string out;
     out.reserve(64 * soup.positions.size() + 8 * soup.indices.size() + 2048);
@@ -208,7 +209,7 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags) {
         "    </geometry>\n"
         "  </library_geometries>\n";
     if (use_materials) {
-        out += collada::materials_text(materials);
+        out += collada::materials_text(materials, folder);
     }
     out +=
         "  <library_visual_scenes>\n"
@@ -249,9 +250,9 @@ void write_collada(const Mesh& mesh, const std::filesystem::path& path, const Io
     if (mesh.has_garbage()) {
         Mesh compact = mesh;
         compact.garbage_collection();
-        text = collada_text(compact, flags);
+        text = collada_text(compact, flags, path.parent_path());
     } else {
-        text = collada_text(mesh, flags);
+        text = collada_text(mesh, flags, path.parent_path());
     }
     write_atomically(path, [&](const std::filesystem::path& tmp) {
         std::ofstream file(tmp, std::ios::binary | std::ios::trunc);

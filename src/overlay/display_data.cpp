@@ -21,12 +21,14 @@ void DisplayData::follow(const Mesh& mesh, const Change& change) {
     }
 }
 
-const OverlayBatch& DisplayData::features(const Mesh& mesh, bool edges, bool marks) {
-    if (features_stale_ || edges != features_edges_ || marks != features_marks_) {
+const OverlayBatch& DisplayData::features(const Mesh& mesh, bool edges, bool marks, bool seams,
+                                          bool borders) {
+    if (features_stale_ || edges != features_edges_ || marks != features_marks_ ||
+        seams != features_seams_ || borders != features_borders_) {
         const OverlayStyle style;
         features_.clear();
         if (edges) {
-            add_feature_edges(mesh, style, features_);
+            add_feature_edges(mesh, style, features_, seams, borders);
         }
         if (marks) {
             add_loop_phase_marks(mesh, style, features_);
@@ -34,6 +36,8 @@ const OverlayBatch& DisplayData::features(const Mesh& mesh, bool edges, bool mar
         features_stale_ = false;
         features_edges_ = edges;
         features_marks_ = marks;
+        features_seams_ = seams;
+        features_borders_ = borders;
     }
     return features_;
 }
@@ -43,11 +47,11 @@ OverlayBatch DisplayData::overlay(const SceneContent& scene, bool edges, bool ma
     if (scene.mesh != nullptr && marks && scene.marks_near_selection &&
         is_live(*scene.mesh, scene.selected)) {
         // Filtered by the selection, which changes with every click: not cached.
-        batch = features(*scene.mesh, edges, false);
+        batch = features(*scene.mesh, edges, false, scene.uv_seams, scene.material_borders);
         add_loop_phase_marks(*scene.mesh, OverlayStyle(), batch,
                              vertices_near(*scene.mesh, scene.selected, 2));
     } else if (scene.mesh != nullptr && (edges || marks)) {
-        batch = features(*scene.mesh, edges, marks);
+        batch = features(*scene.mesh, edges, marks, scene.uv_seams, scene.material_borders);
     }
     add_scene_marks(scene, OverlayStyle(), batch);
     return batch;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "meshedit/core/attribute_summary.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/display_fan.h"
 #include "meshedit/core/loop_steps.h"
@@ -114,17 +115,26 @@ void OverlayBatch::append(const OverlayBatch& other) {
     labels.insert(labels.end(), other.labels.begin(), other.labels.end());
 }
 
-void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out) {
+void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out, bool seams,
+                       bool borders) {
     const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty);
+    const auto uv =
+        seams ? mesh.get_property<Halfedge, Vec2>(kTexCoordProperty) : HalfedgeProperty<Vec2>();
+    const auto material = borders ? mesh.get_property<Face, std::uint32_t>(kMaterialProperty)
+                                  : FaceProperty<std::uint32_t>();
     for (Edge e : mesh.edges()) {
-        // Boundary wins over crease: a boundary edge is sharp anyway, and the boundary is
-        // the more important thing to see.
-        const bool boundary = mesh.is_boundary(e);
-        if (!boundary && !(crease && crease[e] != 0)) {
-            continue;
+        // Boundary wins over crease, crease over seam, seam over material border: a boundary
+        // edge is sharp anyway, and the boundary is the more important thing to see.
+        const Color* color = mesh.is_boundary(e)             ? &style.boundary
+                             : crease && crease[e] != 0      ? &style.crease
+                             : uv && is_uv_seam(mesh, e, uv) ? &style.uv_seam
+                             : material && is_material_border(mesh, e, material)
+                                 ? &style.material_border
+                                 : nullptr;
+        if (color != nullptr) {
+            out.lines.push_back({mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)),
+                                 *color, style.feature_width_px});
         }
-        out.lines.push_back({mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)),
-                             boundary ? style.boundary : style.crease, style.feature_width_px});
     }
 }
 

@@ -26,4 +26,16 @@ std::optional<ShadingMode> find_shading_mode(std::string_view name_or_number) {
     return std::nullopt;
 }
 
+std::optional<SurfaceColorMode> find_surface_color(std::string_view name) {
+    for (const SurfaceColorMode& mode : kSurfaceColors) {
+        if (mode.name == name) {
+            return mode;
+        }
+    }
+    if (name == "colors" || name == "colours" || name == "attribute") {
+        return kSurfaceColors[3];
+    }
+    return std::nullopt;
+}
+
 }  // namespace meshedit

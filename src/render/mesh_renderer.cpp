@@ -34,6 +34,8 @@ MeshRenderer::~MeshRenderer() {
         glDeleteBuffers(1, &vbo_);
         glDeleteBuffers(1, &color_vbo_);
         glDeleteBuffers(1, &side_color_vbo_);
+        glDeleteBuffers(1, &surface_vbo_);
+        glDeleteTextures(1, &texture_array_);
         glDeleteTextures(1, &env_texture_);
         glDeleteTextures(1, &env_cube_);
         glDeleteBuffers(1, &pick_tbo_buffer_);
@@ -74,6 +76,19 @@ void MeshRenderer::ensure_gl_objects() {
         glVertexAttribPointer(5 + k, 4, GL_UNSIGNED_BYTE, GL_TRUE, 12,
                               reinterpret_cast<const void*>(static_cast<std::uintptr_t>(4 * k)));
     }
+    // Texture coordinates, colours, material colour and texture layer: bound when the mesh
+    // has any (mesh_surface.cpp).
+    glGenBuffers(1, &surface_vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, surface_vbo_);
+    constexpr GLsizei surface_stride = sizeof(SurfaceCorner);
+    glVertexAttribPointer(8, 2, GL_FLOAT, GL_FALSE, surface_stride,
+                          reinterpret_cast<const void*>(offsetof(SurfaceCorner, uv)));
+    glVertexAttribPointer(9, 4, GL_UNSIGNED_BYTE, GL_TRUE, surface_stride,
+                          reinterpret_cast<const void*>(offsetof(SurfaceCorner, colour)));
+    glVertexAttribPointer(10, 4, GL_UNSIGNED_BYTE, GL_TRUE, surface_stride,
+                          reinterpret_cast<const void*>(offsetof(SurfaceCorner, material)));
+    glVertexAttribPointer(11, 1, GL_FLOAT, GL_FALSE, surface_stride,
+                          reinterpret_cast<const void*>(offsetof(SurfaceCorner, layer)));
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glBindVertexArray(0);
 
@@ -102,6 +117,7 @@ void MeshRenderer::upload(const Mesh& mesh) {
     }
     triangle_count_ = live_triangles_ = triangle_faces_.size();
     fill_geometry(mesh);
+    fill_surface(mesh);
 
     glBindBuffer(GL_TEXTURE_BUFFER, pick_tbo_buffer_);
     upload_buffer(GL_TEXTURE_BUFFER, pick_capacity_, pick_table_.data(),
@@ -222,6 +238,7 @@ void MeshRenderer::draw(const Camera& camera, float aspect, const RenderOptions&
             glDisableVertexAttribArray(k);
         }
     }
+    bind_surface(shader, options.color);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangle_count_));
     glBindVertexArray(0);
     glDisable(GL_CULL_FACE);

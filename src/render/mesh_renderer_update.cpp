@@ -155,9 +155,14 @@ bool MeshRenderer::update(const Mesh& mesh, std::span<const Face> faces,
     face_first_.resize(mesh.faces_size());
     face_slots_.resize(mesh.faces_size());
     vertices_.resize(3 * triangle_count_);
+    const bool surface = !surface_.empty();
+    surface_.resize(surface ? 3 * triangle_count_ : 0);
     for (const auto& [first, last] : written) {
         for (std::size_t t = first; t < last; ++t) {
             write_gpu_triangle(mesh, t);
+            if (surface) {
+                write_surface_triangle(mesh, t);
+            }
         }
     }
     if (near_boundary) {
@@ -168,7 +173,9 @@ bool MeshRenderer::update(const Mesh& mesh, std::span<const Face> faces,
     // To the GPU: everything when the buffers had to grow, else the ranges written.
     const std::size_t vertex_bytes = vertices_.size() * sizeof(MeshGpuVertex);
     const std::size_t pick_bytes = pick_table_.size() * sizeof(std::uint32_t);
-    if (vertex_bytes > vbo_capacity_ || pick_bytes > pick_capacity_) {
+    const std::size_t surface_bytes = surface_.size() * sizeof(SurfaceCorner);
+    if (vertex_bytes > vbo_capacity_ || pick_bytes > pick_capacity_ ||
+        surface_bytes > surface_capacity_) {
         glBindBuffer(GL_ARRAY_BUFFER, vbo_);
         upload_buffer(GL_ARRAY_BUFFER, vbo_capacity_, vertices_.data(), vertex_bytes);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -178,6 +185,11 @@ bool MeshRenderer::update(const Mesh& mesh, std::span<const Face> faces,
         glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, pick_tbo_buffer_);
         glBindTexture(GL_TEXTURE_BUFFER, 0);
         glBindBuffer(GL_TEXTURE_BUFFER, 0);
+        if (surface) {
+            glBindBuffer(GL_ARRAY_BUFFER, surface_vbo_);
+            upload_buffer(GL_ARRAY_BUFFER, surface_capacity_, surface_.data(), surface_bytes);
+            glBindBuffer(GL_ARRAY_BUFFER, 0);
+        }
     } else {
         std::sort(written.begin(), written.end());
         for (std::size_t i = 0; i < written.size();) {
@@ -189,6 +201,9 @@ bool MeshRenderer::update(const Mesh& mesh, std::span<const Face> faces,
             }
             send(GL_ARRAY_BUFFER, vbo_, vertices_, 3, written[i].first, last);
             send(GL_TEXTURE_BUFFER, pick_tbo_buffer_, pick_table_, 8, written[i].first, last);
+            if (surface) {
+                send(GL_ARRAY_BUFFER, surface_vbo_, surface_, 3, written[i].first, last);
+            }
             i = j;
         }
     }

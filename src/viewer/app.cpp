@@ -583,6 +583,18 @@ void App::apply(const Outcome& outcome) {
 void App::upload_document() {
     scene_->mesh().set_normal_split(editor_.view().normals);
     scene_->upload(mesh_mode() ? &editor_.mesh() : nullptr);
+    // A texture that cannot be shown is said once, when the textures are (re)loaded.
+    const std::vector<std::string>& notes = scene_->mesh().texture_notes();
+    if (notes != texture_notes_) {
+        texture_notes_ = notes;
+        if (!notes.empty()) {
+            set_status(notes.front() +
+                           (notes.size() > 1
+                                ? " (and " + std::to_string(notes.size() - 1) + " more textures)"
+                                : ""),
+                       false);
+        }
+    }
     editor_.set_hover({});
     cursor_moved_ = true;  // the caller rebuilds the overlay
 }
@@ -595,6 +607,8 @@ void App::rebuild_overlay() {
         scene.mesh = &doc.mesh;
         scene.patches = doc.patches;
         scene.show_nets = view.show_nets;
+        scene.uv_seams = view.render.color == SurfaceColor::Checker;
+        scene.material_borders = view.render.color == SurfaceColor::Material;
     } else {
         scene.curve = &doc.curve;
         scene.t = view.t;

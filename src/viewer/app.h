@@ -222,6 +222,7 @@ private:
     glm::dvec2 modal_center_px_{0.0};  ///< the selection's centre on screen then
     double modal_depth_ = 0.0;         ///< and its normalised device depth
     Vec3 modal_center_;
+    std::vector<std::string> texture_notes_;  ///< the renderer's, as last said
 };
 
 }  // namespace meshedit::viewer

@@ -4,12 +4,15 @@
 
 #include "meshedit/viewer/editor.h"
 
+#include "meshedit/core/attributes.h"
+
 #include <algorithm>
 #include <exception>
 #include <new>
 #include <stdexcept>
 #include <utility>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/viewer/paths.h"
 
@@ -42,6 +45,7 @@ bool display_command(Command c) {
         case Command::CycleField:
         case Command::ReloadShaders:
         case Command::CycleColormap:
+        case Command::CycleSurfaceColor:
         case Command::Screenshot:
             return true;
         default:
@@ -217,6 +221,8 @@ Outcome Editor::run_display(Action action) {
             return cycle_field();
         case Command::ReloadShaders:
             return {kReloadShaders, ""};
+        case Command::CycleSurfaceColor:
+            return cycle_surface_color();
         case Command::CycleColormap: {
             std::optional<ColorMap>& map = view_.colormap;
             map = !map                        ? std::optional(ColorMap::Viridis)
@@ -396,6 +402,30 @@ Outcome Editor::cycle_field() {
         message += " from the selected vertex (vertex 0 when none)";
     }
     return {kDisplay, message + " (Alt+F: next)"};
+}
+
+Outcome Editor::cycle_surface_color() {
+    // The choices this mesh has data for, in the table's order, Auto first.
+    const Mesh& m = mesh();
+    const bool uv = m.has_property<Halfedge>(kTexCoordProperty);
+    const bool texture =
+        std::any_of(m.materials().begin(), m.materials().end(),
+                    [](const Material& x) { return !x.base_colour_texture.empty(); });
+    const bool has[] = {
+        true,
+        true,
+        m.has_property<Face>(kMaterialProperty) && !m.materials().empty(),
+        m.has_property<Vertex>(kColorProperty) || m.has_property<Face>(kFaceColorProperty),
+        uv && texture,
+        uv};
+    std::size_t i = static_cast<std::size_t>(view_.render.color);
+    do {
+        i = (i + 1) % kSurfaceColors.size();
+    } while (!has[i]);
+    const SurfaceColorMode& mode = kSurfaceColors[i];
+    view_.render.color = mode.color;
+    return {kDisplay, "surface colour: " + std::string(mode.name) + " — " +
+                          std::string(mode.description) + " (Alt+C: next)"};
 }
 
 ElementRef Editor::stencil_element() const {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "meshedit/core/attribute_summary.h"
 #include "meshedit/core/normals.h"
 #include "meshedit/io/io.h"
 #include "meshedit/overlay/shading.h"
@@ -209,6 +210,20 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDispl
         } else {
             const Mesh& mesh = editor.mesh();
             ImGui::Text("V %zu  E %zu  F %zu", mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
+            const SurfaceColor shown = editor.view().render.color;
+            ImGui::Text("surface colour: %s (Alt+C)",
+                        kSurfaceColors[static_cast<std::size_t>(shown)].name.data());
+            if (ImGui::TreeNode("Attributes")) {
+                // O(edges) for the seam count: once per edit, not per frame.
+                if (attributes_revision_ != doc.revision) {
+                    attribute_rows_ = attribute_rows(mesh, summarize_attributes(mesh));
+                    attributes_revision_ = doc.revision;
+                }
+                for (const auto& [name, value] : attribute_rows_) {
+                    ImGui::TextWrapped("%s: %s", name.c_str(), value.c_str());
+                }
+                ImGui::TreePop();
+            }
             if (doc.mode == Mode::Surface) {
                 ImGui::Text("%zu patches, density %d", doc.patches.size(), doc.density);
             }

@@ -112,7 +112,10 @@ private:
     static constexpr float kInfoWidth = 300.0f;  ///< before scaling
     static constexpr float kInfoMargin = 10.0f;
     float scale_ = 1.0f;
-    float diagram_left_ = 0.0f;                           ///< diagram_left_edge()
+    float diagram_left_ = 0.0f;  ///< diagram_left_edge()
+    /// The Attributes section's rows (attribute_summary.h), for the revision they describe.
+    std::vector<std::pair<std::string, std::string>> attribute_rows_;
+    std::uint64_t attributes_revision_ = UINT64_MAX;
     float info_left_ = 0.0f, info_right_ = 0.0f;          ///< last drawn edges; right 0 until drawn
     std::vector<std::pair<glm::vec2, glm::vec2>> rects_;  ///< min, max of last frame's panels
     bool prompting_ = false;

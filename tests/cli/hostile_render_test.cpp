@@ -134,5 +134,45 @@ TEST_F(HostileRender, LongCurveAtALowLevelDrawsOnlyThatLevel) {
     EXPECT_TRUE(fs::exists(dir_ / "out.png"));
 }
 
+// Textures that cannot be shown never stop the picture: missing, not an image, a FIFO, a
+// header promising 100000 x 100000 pixels, one promising pixels that are not there. Each is
+// one note naming the file and its material; the faces take the material's colour.
+TEST_F(HostileRender, TexturesThatCannotBeShownAreNamedAndTheMeshDrawn) {
+    std::ofstream(dir_ / "text.png") << "not an image\n";
+    ASSERT_EQ(::mkfifo((dir_ / "pipe.png").c_str(), 0600), 0);
+    // Headers promising 100000 x 100000 pixels, and 4096 x 4096 with 100 bytes of them.
+    std::ofstream(dir_ / "huge.ppm", std::ios::binary) << "P6\n100000 100000\n255\n"
+                                                       << std::string(100, '\x80');
+    std::ofstream(dir_ / "lie.ppm", std::ios::binary) << "P6\n4096 4096\n255\n"
+                                                      << std::string(100, '\x80');
+    const char* names[] = {"missing.png", "text.png", "pipe.png", "huge.ppm", "lie.ppm"};
+    std::ofstream mtl(dir_ / "t.mtl");
+    std::ofstream obj(dir_ / "t.obj");
+    obj << "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n";
+    for (int i = 0; i < 5; ++i) {
+        mtl << "newmtl m" << i << "\nKd 0.2 0.4 0.6\nmap_Kd " << names[i] << "\n";
+        obj << "usemtl m" << i << "\nf 1/1 2/2 3/3\n";
+    }
+    mtl.close();
+    obj.close();
+    const RunResult r = run_meshedit(
+        {"render", (dir_ / "t.obj").string(), "-o", (dir_ / "out.png").string(), "--size", "64x48"},
+        kSeconds, kAddressSpace);
+    EXPECT_FALSE(r.timed_out);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir_ / "out.png"));
+    const std::vector<std::string> lines = split_lines(r.err);
+    ASSERT_EQ(lines.size(), 5u) << r.err;
+    const char* why[] = {"was not found", "is not an image", "is not a file",
+                         "100000 × 100000 pixels, more than MeshEdit shows", "could not be read"};
+    for (int i = 0; i < 5; ++i) {
+        SCOPED_TRACE(names[i]);
+        EXPECT_NE(lines[i].find(names[i]), std::string::npos) << lines[i];
+        EXPECT_NE(lines[i].find("of material 'm" + std::to_string(i) + "'"), std::string::npos)
+            << lines[i];
+        EXPECT_NE(lines[i].find(why[i]), std::string::npos) << lines[i];
+    }
+}
+
 }  // namespace
 }  // namespace meshedit::test

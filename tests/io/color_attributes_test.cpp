@@ -452,14 +452,17 @@ TEST(ColorAttributes, ColladaFilesRoundTripExactly) {
     const Attributes duck = expect_round_trip(models / "duck.dae", ".dae", dir);
     EXPECT_EQ(duck.uvs.size(), duck.normals.size());
     ASSERT_EQ(duck.materials.size(), 1u);
-    EXPECT_EQ(duck.materials[0].base_colour_texture, "./duckCM.tga");
+    // The texture's path as read: the file beside it (the writer wrote it relative to the
+    // scratch folder, the second read resolved it back).
+    EXPECT_EQ(duck.materials[0].base_colour_texture, (models / "duckCM.tga").string());
 
     const Attributes colours = expect_round_trip(models / "kwxport_test_vcolors.dae", ".dae", dir);
     EXPECT_EQ(colours.colors.size(), 8u);
     EXPECT_EQ(colours.colors[0], (Vec4{1, 0, 0, 1}));
     ASSERT_EQ(colours.materials.size(), 3u);
     EXPECT_EQ(colours.materials[0].name, "bottom");
-    EXPECT_EQ(colours.materials[0].base_colour_texture, "./../X/bottom.tga");
+    EXPECT_EQ(colours.materials[0].base_colour_texture,
+              (models.parent_path() / "X/bottom.tga").string());
     EXPECT_FALSE(colours.uvs.empty());
 
     // Every file of the package that loads (earthCylindrical.DAE and teapots.DAE write

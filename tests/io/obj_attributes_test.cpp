@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -184,6 +186,37 @@ TEST(ObjAttributes, GltfKeepsThemAndWeldsItsSeamsBack) {
             EXPECT_TRUE(test::slurp(dir / name).find("image/png") != std::string::npos);
         }
     }
+}
+
+// glTF's texture v runs down the image, OBJ's (and MeshEdit's) up. assimp, an independent
+// reader, converts BoxTextured.gltf to OBJ; MeshEdit reading the glTF must give that OBJ's
+// corners (a reader that kept glTF's v would show every texture upside down after a
+// conversion).
+TEST(ObjAttributes, GltfTexcoordsAreThoseAssimpWritesToObj) {
+    const fs::path gltf = "/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf";
+    if (!fs::exists(gltf)) {
+        GTEST_SKIP() << "install assimp-testmodels (scripts/install-deps.sh does)";
+    }
+    test::ScratchDir dir;
+    const fs::path obj = dir / "box.obj";
+    const std::string command =
+        "assimp export '" + gltf.string() + "' '" + obj.string() + "' > /dev/null 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    // assimp prints 8 significant digits: compare on a 1e-5 grid.
+    const auto rounded = [](const Mesh& mesh) {
+        std::multiset<std::vector<long>> out;
+        for (const Corner& c : corners_of(mesh)) {
+            std::vector<long> key;
+            for (const double x : {c.at.x, c.at.y, c.at.z, c.uv.x, c.uv.y}) {
+                key.push_back(std::lround(x * 1e5));
+            }
+            out.insert(key);
+        }
+        return out;
+    };
+    const Mesh ours = read_mesh(gltf).mesh;
+    ASSERT_TRUE(ours.has_property<Halfedge>(kTexCoordProperty));
+    EXPECT_EQ(rounded(ours), rounded(read_mesh(obj).mesh));
 }
 
 TEST(ObjAttributes, FormatsThatCannotKeepThemSaySo) {

@@ -34,8 +34,8 @@ const char* const kScanSize = "576x432";
 
 /// One golden image: what to render and how.
 struct GoldenCase {
-    std::string name;               ///< file stem in tests/golden/ and the gtest parameter name
-    std::string input;              ///< relative to the repository root, or "demo:STEM"
+    std::string name;   ///< file stem in tests/golden/ and the gtest parameter name
+    std::string input;  ///< relative to the repository root, "demo:STEM" or "assimp:PATH"
     std::vector<std::string> args;  ///< after `FILE -o OUT --size WxH`; tests/golden/data/… paths
                                     ///< are made absolute
     std::string size = kSize;
@@ -173,6 +173,22 @@ const std::vector<GoldenCase>& golden_cases() {
           "--wireframe"}},
         {"cc_creased", "dae/creased.dae", {"--ops", "catmull_clark:2", "--wireframe"}},
         {"cc_quadball", "dae/quadball.dae", {"--ops", "catmull_clark:2", "--wireframe"}},
+        // What a mesh carries (docs/attributes.md): assimp's textured duck (COLLADA, a TGA
+        // texture) as read, after Loop and Catmull-Clark (face-varying UVs, seams kept) and
+        // in the UV checker; a vertex-coloured model; the material colours of one model.
+        {"textured_duck", "assimp:Collada/duck.dae", {"--camera", "60,15"}},
+        {"textured_duck_loop1",
+         "assimp:Collada/duck.dae",
+         {"--ops", "triangulate,loop:1", "--camera", "60,15"}},
+        {"textured_duck_cc1",
+         "assimp:Collada/duck.dae",
+         {"--ops", "catmull_clark:1", "--camera", "60,15"}},
+        // The checker shows the charts: eye, beak and wings each their own, head and body
+        // squeezed into one cell of the yellow (seams orange).
+        {"textured_duck_checker",
+         "assimp:Collada/duck.dae",
+         {"--color", "checker", "--camera", "60,15"}},
+        {"vertex_colours", "assimp:Collada/kwxport_test_vcolors.dae", {"--color", "vertex"}},
         // QEM simplification (docs/simplify.md): the teapot (4,032 triangles) at 10% and 2.5%;
         // rims, spout tip and handle keep their shape, flat regions get the big triangles.
         {"teapot_input_wire", "dae/teapot.dae", {"--flat", "--wireframe"}},
@@ -364,6 +380,10 @@ void PrintTo(const GoldenCase& c, std::ostream* os) {
 fs::path input_path(const std::string& input) {
     if (input.rfind("demo:", 0) == 0) {
         return test::demo_mesh(input.substr(5), fs::path(MESHEDIT_BUILD_DIR) / "demo_data");
+    }
+    if (input.rfind("assimp:", 0) == 0) {
+        // assimp-testmodels' files, installed by scripts/install-deps.sh, read where they are.
+        return fs::path("/usr/share/assimp/models") / input.substr(7);
     }
     return source_dir() / input;
 }

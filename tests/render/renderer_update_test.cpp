@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh_change.h"
 #include "meshedit/core/shapes.h"
@@ -24,19 +25,20 @@ namespace {
 constexpr int kSize = 160;
 
 Image draw(BackgroundRenderer& background, MeshRenderer& renderer, const Camera& camera,
-           bool smooth) {
+           bool smooth, SurfaceColor color) {
     const float black[3] = {0, 0, 0};  // the background clears colour and depth
     background.draw(black, black);
     RenderOptions options;
     options.smooth = smooth;
     options.wireframe = true;
+    options.color = color;
     renderer.draw(camera, 1.0f, options);
     return read_framebuffer(kSize, kSize);
 }
 
 // Random flips, splits, collapses, dissolves and pokes; after each, and after undoing it,
 // the updated renderer and a fresh one must draw the same picture.
-void check(Mesh mesh, unsigned seed, int edits) {
+void check(Mesh mesh, unsigned seed, int edits, SurfaceColor color = SurfaceColor::Single) {
     const auto context = test::make_test_context(kSize, kSize);
     RenderTarget target(kSize, kSize, 1);
     target.bind();
@@ -78,8 +80,8 @@ void check(Mesh mesh, unsigned seed, int edits) {
             fresh.upload(mesh);
             ASSERT_EQ(updated.triangle_count(), fresh.triangle_count());
             for (const bool smooth : {true, false}) {
-                const Image a = draw(background, updated, camera, smooth);
-                const Image b = draw(background, fresh, camera, smooth);
+                const Image a = draw(background, updated, camera, smooth, color);
+                const Image b = draw(background, fresh, camera, smooth, color);
                 ASSERT_TRUE(a.rgba == b.rgba)
                     << "edit " << i << (undo ? " undone" : "") << (smooth ? ", smooth" : ", flat");
                 ++compared;
@@ -96,6 +98,32 @@ TEST(RendererUpdate, TriangleMeshDrawsAsAFreshUpload) {
 
 TEST(RendererUpdate, OpenGridDrawsAsAFreshUpload) {
     check(shapes::grid(8, 6), 2, 60);
+}
+
+// The surface colours follow the edits too: texture coordinates (drawn as the UV checker,
+// seams from a chart per face side) and vertex colours.
+Mesh with_surface(Mesh mesh) {
+    auto uv = mesh.property<Halfedge, Vec2>(kTexCoordProperty);
+    auto colour = mesh.property<Vertex, Vec4>(kColorProperty);
+    for (const Halfedge h : mesh.halfedges()) {
+        if (!mesh.is_boundary(h)) {
+            const Vec3 p = mesh.position(mesh.to_vertex(h));
+            uv[h] = Vec2{0.7 * p.x + 0.1 * (mesh.face(h).idx() % 3), 0.7 * p.y + 0.3 * p.z};
+        }
+    }
+    for (const Vertex v : mesh.vertices()) {
+        const Vec3 p = mesh.position(v);
+        colour[v] = Vec4{0.5 + 0.4 * p.x, 0.5 + 0.4 * p.y, 0.5 + 0.4 * p.z, 1.0};
+    }
+    return mesh;
+}
+
+TEST(RendererUpdate, TextureCoordinatesDrawAsAFreshUpload) {
+    check(with_surface(shapes::torus(16, 10)), 4, 60, SurfaceColor::Checker);
+}
+
+TEST(RendererUpdate, VertexColoursDrawAsAFreshUpload) {
+    check(with_surface(shapes::quad_sphere(3)), 5, 60, SurfaceColor::Vertex);
 }
 
 TEST(RendererUpdate, PolygonsDrawAsAFreshUpload) {

@@ -55,9 +55,11 @@ public:
     };
     void follow(const Mesh& mesh, const Change& change);
 
-    /// Boundary and crease edges (`edges`) and a phased Loop's marks (`marks`) of `mesh`,
-    /// recomputed when the mesh or the features changed.
-    const OverlayBatch& features(const Mesh& mesh, bool edges, bool marks);
+    /// Boundary and crease edges (`edges`, with UV `seams` and material `borders`) and a
+    /// phased Loop's marks (`marks`) of `mesh`, recomputed when the mesh or the features
+    /// changed.
+    const OverlayBatch& features(const Mesh& mesh, bool edges, bool marks, bool seams = false,
+                                 bool borders = false);
     /// The overlay of a frame: the features of the scene's mesh and the scene's marks.
     OverlayBatch overlay(const SceneContent& scene, bool edges, bool marks);
 
@@ -82,6 +84,7 @@ private:
     OverlayBatch features_;
     bool features_stale_ = true;
     bool features_edges_ = true, features_marks_ = true;
+    bool features_seams_ = false, features_borders_ = false;
     FieldDisplay field_;
     bool field_stale_ = true;
     FaceBvh tree_;

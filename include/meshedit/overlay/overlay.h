@@ -93,10 +93,12 @@ struct OverlayBatch {
 
 /// The overlay palette (one place, so viewer, headless renders and docs agree).
 struct OverlayStyle {
-    Color selected{1.0f, 0.55f, 0.0f, 1.0f};  ///< orange
-    Color hovered{0.2f, 0.75f, 1.0f, 1.0f};   ///< light blue
-    Color boundary{0.85f, 0.1f, 0.1f, 1.0f};  ///< red
-    Color crease{0.1f, 0.55f, 0.1f, 1.0f};    ///< green
+    Color selected{1.0f, 0.55f, 0.0f, 1.0f};          ///< orange
+    Color hovered{0.2f, 0.75f, 1.0f, 1.0f};           ///< light blue
+    Color boundary{0.85f, 0.1f, 0.1f, 1.0f};          ///< red
+    Color crease{0.1f, 0.55f, 0.1f, 1.0f};            ///< green
+    Color uv_seam{0.95f, 0.55f, 0.1f, 1.0f};          ///< orange: texture coordinates split here
+    Color material_border{0.45f, 0.3f, 0.85f, 1.0f};  ///< violet: two materials meet
     float vertex_size_px = 12.0f;
     float control_point_px = 16.0f;  ///< a hovered or selected curve control point
     float edge_width_px = 4.0f;
@@ -125,8 +127,11 @@ struct OverlayStyle {
     float loop_point_px = 8.0f;
 };
 
-/// Boundary edges and crease edges ("e:crease") of `mesh`.
-void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out);
+/// Boundary edges and crease edges ("e:crease") of `mesh`, with `seams` its UV seams and with
+/// `borders` its material borders (attribute_summary.h), each edge once in the first of
+/// those colours that applies.
+void add_feature_edges(const Mesh& mesh, const OverlayStyle& style, OverlayBatch& out,
+                       bool seams = false, bool borders = false);
 
 /// The state of a phased Loop (core/loop_steps.h), if one is under way: after phase 1 every
 /// vertex's new position (a teal dot, and a line from where it is) and every edge point
@@ -197,6 +202,10 @@ struct SceneContent {
     /// Meshes: a phased Loop's marks only within two rings of `selected` (dense meshes, where
     /// every vertex's target at once is a blur); all of them when nothing is selected.
     bool marks_near_selection = false;
+    /// Meshes: UV seams and material borders among the feature lines (shown with the UV
+    /// checker and with material colours).
+    bool uv_seams = false;
+    bool material_borders = false;
     /// Surfaces: patch `steps_patch` evaluated at (steps_u, steps_v) by de Casteljau up to
     /// step `steps` (add_patch_steps()); no steps when negative.
     int steps = -1;

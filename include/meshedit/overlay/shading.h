@@ -33,6 +33,36 @@ inline constexpr std::array<ShadingMode, 10> kShadingModes{{
 /// Looks a mode up by name or number ("phong", "1"); nullopt if unknown.
 std::optional<ShadingMode> find_shading_mode(std::string_view name_or_number);
 
+/// Where the surface's colour comes from (as Blender's viewport "Color" choice); the shading
+/// mode then lights it. `--color` of `meshedit render` and the viewer's Alt+C.
+enum class SurfaceColor {
+    Auto,      ///< texture, else vertex colours, else several materials' colours, else single
+    Single,    ///< RenderOptions::base_color everywhere
+    Material,  ///< each face's material base colour (f:material, Mesh::materials())
+    Vertex,    ///< the vertex colours (v:color), else the face colours (f:color)
+    Texture,   ///< the material's base-colour texture at the corner UVs, times its colour
+    Checker,   ///< a UV checker: a numbered-looking grid of the corner UVs (seams show)
+};
+
+/// A surface colour: its CLI word and one-line description.
+struct SurfaceColorMode {
+    SurfaceColor color;
+    std::string_view name;
+    std::string_view description;
+};
+
+inline constexpr std::array<SurfaceColorMode, 6> kSurfaceColors{{
+    {SurfaceColor::Auto, "auto", "texture, else vertex colours, else material colours, else one"},
+    {SurfaceColor::Single, "single", "one base colour"},
+    {SurfaceColor::Material, "material", "each face's material colour"},
+    {SurfaceColor::Vertex, "vertex", "vertex colours (else face colours)"},
+    {SurfaceColor::Texture, "texture", "base-colour textures at the texture coordinates"},
+    {SurfaceColor::Checker, "checker", "a UV checker grid: stretch, flips and seams show"},
+}};
+
+/// Looks a surface colour up by its word ("texture"); nullopt if unknown.
+std::optional<SurfaceColorMode> find_surface_color(std::string_view name);
+
 /// Blinn-Phong coefficients of shading mode 1 (the viewer's shading panel edits them). The
 /// light direction is in view space (x right, y up, z towards the viewer), so the lighting
 /// follows the camera.
@@ -54,6 +84,8 @@ struct RenderOptions {
     std::array<float, 4> wire_color{0.16f, 0.17f, 0.2f, 1.0f};
     /// Base colour of the surface (a warm white).
     std::array<float, 3> base_color{0.93f, 0.89f, 0.82f};
+    /// Where the colour that the shading lights comes from (modes 1, 3, 6 and the users').
+    SurfaceColor color = SurfaceColor::Auto;
     PhongParams phong;
     /// Mode 7: the environment's brightness in stops (2^exposure), before the highlights
     /// above 0.8 roll off towards white and the result is encoded as sRGB.

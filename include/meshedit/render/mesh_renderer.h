@@ -124,6 +124,17 @@ public:
     void clear_field() { has_field_ = has_edge_field_ = false; }
     bool has_field() const { return has_field_; }
 
+    /// The surface colour draw() shows when `wanted` is asked for on the uploaded mesh: Auto
+    /// resolved (a texture, else vertex or face colours, else the colours of several
+    /// materials, else Single); a choice the mesh has no data for (Texture without texture
+    /// coordinates or a readable texture, Checker without texture coordinates, Vertex
+    /// without colours, Material without materials) is drawn as Single.
+    SurfaceColor shown_color(SurfaceColor wanted) const;
+    /// One line for each base-colour texture the last upload() could not show (missing,
+    /// unreadable, too large), naming the file and the material: those faces are drawn in
+    /// their material's colour.
+    const std::vector<std::string>& texture_notes() const { return texture_notes_; }
+
     /// Which edges split smooth shading (core/normals.h; by default crease edges). Takes
     /// effect at the next upload() or update_geometry().
     void set_normal_split(const NormalSplit& split) { normal_split_ = split; }
@@ -134,7 +145,23 @@ public:
     bool culls_back_faces(const Camera& camera) const;
 
 private:
+    /// A triangle corner's surface colour data (attributes 8-11), kept only for a mesh with
+    /// texture coordinates, colours or materials.
+    struct SurfaceCorner {
+        float uv[2];               ///< h:texcoord
+        std::uint8_t colour[4];    ///< v:color, else f:color (sRGB bytes as the file had)
+        std::uint8_t material[4];  ///< the face's material colour and opacity
+        float layer;               ///< its texture's layer in the texture array, or -1
+    };
+
     void ensure_gl_objects();
+    /// The surface data of every triangle (after upload's fans), and the textures.
+    void fill_surface(const Mesh& mesh);
+    void write_surface_triangle(const Mesh& mesh, std::size_t t);
+    /// Loads the materials' textures into one texture array when their paths changed.
+    void load_textures(const std::vector<Material>& materials);
+    /// Binds the surface data for draw() (attributes 8-11 and texture unit 3).
+    void bind_surface(const ShaderProgram& shader, SurfaceColor color);
     void fill_geometry(const Mesh& mesh);
     /// Appends face f's fan triangles to the staging arrays.
     void append_fan(const Mesh& mesh, Face f);
@@ -192,6 +219,20 @@ private:
     /// vertices_size() and faces_size() when vertex_normals_ were last brought up to date.
     std::pair<std::size_t, std::size_t> normals_sizes_{0, 0};
     bool split_normals_ = false;  ///< corner normals in use (some edge splits)
+
+    // Surface colours (mesh_surface.cpp).
+    std::vector<SurfaceCorner> surface_;  ///< 3 per triangle; empty without surface data
+    unsigned surface_vbo_ = 0;
+    std::size_t surface_capacity_ = 0;
+    bool has_texcoords_ = false;
+    bool has_colours_ = false;  ///< vertex or face colours
+    bool several_material_colours_ = false;
+    bool has_materials_ = false;
+    unsigned texture_array_ = 0;
+    std::vector<std::string> texture_paths_;  ///< what texture_array_ holds, by material
+    std::vector<float> material_layers_;      ///< each material's layer, or -1
+    bool has_texture_ = false;                ///< some layer loaded
+    std::vector<std::string> texture_notes_;
 };
 
 }  // namespace meshedit

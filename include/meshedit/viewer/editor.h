@@ -432,6 +432,8 @@ private:
     Outcome run_display(Action action);
     Outcome cycle_stencil();
     Outcome cycle_field();
+    /// Alt+C: the next surface colour the mesh has data for (overlay/shading.h).
+    Outcome cycle_surface_color();
     Outcome undo();
     Outcome redo();
     Outcome quit();

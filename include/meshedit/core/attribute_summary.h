@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// What a mesh carries besides its shape (attributes.h): texture coordinates and their seams,
+/// corner normals, colours, materials and their borders. `meshedit info`, the viewer's info
+/// panel and the seam lines of the view read it from here.
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "meshedit/core/attributes.h"
+#include "meshedit/core/mesh.h"
+
+namespace meshedit {
+
+/// Whether edge e is a UV seam: an interior edge whose two faces give one of its ends
+/// different texture coordinates. A boundary edge is not a seam.
+bool is_uv_seam(const Mesh& mesh, Edge e, const HalfedgeProperty<Vec2>& uv);
+
+/// Whether edge e separates faces of two materials.
+bool is_material_border(const Mesh& mesh, Edge e, const FaceProperty<std::uint32_t>& material);
+
+struct AttributeSummary {
+    bool texcoords = false;            ///< h:texcoord
+    std::size_t uv_seam_edges = 0;     ///< is_uv_seam() edges
+    bool corner_normals = false;       ///< h:normal (split normals a file gave)
+    bool vertex_colours = false;       ///< v:color
+    bool face_colours = false;         ///< f:color
+    bool face_materials = false;       ///< f:material with Mesh::materials()
+    std::size_t material_borders = 0;  ///< is_material_border() edges
+    std::size_t textured_materials = 0;
+    std::size_t missing_textures = 0;  ///< texture paths that name no file
+};
+
+AttributeSummary summarize_attributes(const Mesh& mesh);
+
+/// The summary as rows of (name, value) for `meshedit info` and the viewer's info panel:
+/// texture coordinates, corner normals, colours, materials, then one row per material
+/// (name, colour, opacity, texture path, "(missing)" when it names no file).
+std::vector<std::pair<std::string, std::string>> attribute_rows(const Mesh& mesh,
+                                                                const AttributeSummary& a);
+
+}  // namespace meshedit
