@@ -4,6 +4,9 @@
     scripts/simplify_psnr.py --meshedit build/src/cli/meshedit [--out DIR] [--size 256]
         [--renderer meshedit|own] [--color auto|texture|checker|vertex] [MODEL ...]
 
+The table of docs/simplify.md: the defaults with --color auto and with --color checker on
+duck.dae, sphere.dae, teapot_instancenodes.DAE, ClearCoatTest.gltf and spider.obj.
+
 For each model: `meshedit convert MODEL orig.obj --ops triangulate`, then the same with
 `simplify:R:attributes=A` for R in 0.1 and 0.02 and A in aware and blind; renders every
 file from 8 fixed views (azimuths 0, 45, ..., 315 degrees, elevations +20 and -20 in turn)
@@ -37,11 +40,10 @@ RATIOS = (0.1, 0.02)
 MODES = ("aware", "blind")
 DEFAULT_MODELS = [
     "/usr/share/assimp/models/Collada/duck.dae",
+    "/usr/share/assimp/models/Collada/sphere.dae",
+    "/usr/share/assimp/models/Collada/teapot_instancenodes.DAE",
+    "/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf",
     "/usr/share/assimp/models/OBJ/spider.obj",
-    "/usr/share/assimp/models/PLY/Wuson.ply",
-    "/usr/share/assimp/models/OBJ/regr01.obj",
-    "/tmp/cgal/data/meshes/dino.off",
-    "/tmp/cgal/data/meshes/cactus.off",
 ]
 
 
@@ -222,7 +224,7 @@ def main():
     ap.add_argument("--meshedit", default="build/src/cli/meshedit")
     ap.add_argument("--out", default=None, help="where the OBJ files and renders go")
     ap.add_argument("--size", type=int, default=256)
-    ap.add_argument("--renderer", choices=("own", "meshedit"), default="own")
+    ap.add_argument("--renderer", choices=("own", "meshedit"), default="meshedit")
     ap.add_argument("--color", default="auto")
     args = ap.parse_args()
     out = Path(args.out or tempfile.mkdtemp(prefix="simplify_psnr_"))
