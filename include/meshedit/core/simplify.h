@@ -18,7 +18,7 @@ namespace meshedit {
 /// Whether simplify() weighs texture coordinates, vertex colours and materials
 /// (docs/simplify.md, "Attributes").
 enum class SimplifyAttributes : std::uint8_t {
-    /// Seams and material borders held like creases, no UV triangle turned over, UVs and
+    /// No collapse across a UV seam or material border, no UV triangle turned over, UVs and
     /// colours in the quadric (Hoppe 1999) and set at its optimum. A mesh with none of them
     /// takes Blind's path, bit for bit.
     Aware,
@@ -87,11 +87,13 @@ OpStatus check_simplify(const Mesh& mesh, const SimplifyOptions& options);
 /// edges, or two that turn by more than 30 degrees; two corners never collapse), a collapse of
 /// another edge with one crease end puts it at that end, and one between two crease vertices
 /// is refused. With SimplifyAttributes::Aware on a mesh with texture coordinates, colours or
-/// materials, UV seams and material borders are held as creases are, the attribute quadrics
-/// join the position quadric, a collapse that would turn a UV triangle over or mix two charts
-/// is refused, and the survivor's corners and colour take the quadric's best values (seam
-/// vertices keep each chart's corner). Deleted elements stay tombstoned (garbage collection is the
-/// caller's). \pre check_simplify() returned ok. \post validate(mesh) passes.
+/// materials, the attribute quadrics join the position quadric, a collapse that would turn a
+/// UV triangle over or mix two charts at a corner is refused, the survivor's corners take the
+/// UV quadric's best value inside a chart (along a seam each side's two corners interpolated,
+/// else the seam end's corners), its colour the colour quadric's best within the input's
+/// range, and material borders get the boundary's penalty planes. Deleted elements stay
+/// tombstoned (garbage collection is the caller's). \pre check_simplify() returned ok.
+/// \post validate(mesh) passes.
 SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options);
 
 }  // namespace meshedit
