@@ -3,8 +3,6 @@
 // each task in forked children and reports every case, a score per task and the total
 // (docs/student.md).
 
-#include <dlfcn.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +17,7 @@
 #include "grade_sandbox.h"
 #include "meshedit/files/files.h"
 #include "meshedit/files/io_error.h"
+#include "student_library.h"
 
 namespace meshedit::cli {
 namespace {
@@ -39,29 +38,13 @@ struct Settings {
     std::vector<std::string> tasks;
 };
 
-// dlopen()s the library and asks it for its table. The library stays loaded for the
-// grader's life; the children inherit it.
+// The library's table; a library that cannot be loaded is bad usage.
 const grade::st::StudentTasks& load(const std::filesystem::path& path) {
-    // dlopen() searches the library path for a bare name; a file here is meant.
-    const std::string name = path.has_parent_path() ? path.string() : "./" + path.string();
-    void* handle = ::dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (handle == nullptr) {
-        throw UsageError("cannot load " + path.string() + ": " + ::dlerror());
+    try {
+        return grade::load_student_library(path);
+    } catch (const std::runtime_error& e) {
+        throw UsageError(e.what());
     }
-    using Entry = const grade::st::StudentTasks* (*)();
-    const auto entry = reinterpret_cast<Entry>(::dlsym(handle, MESHEDIT_STUDENT_ENTRY));
-    if (entry == nullptr) {
-        throw UsageError(path.string() + " does not export " MESHEDIT_STUDENT_ENTRY
-                                         "() (one .cpp of it says MESHEDIT_STUDENT_REGISTER())");
-    }
-    const grade::st::StudentTasks* tasks = entry();
-    if (tasks == nullptr || tasks->abi_version != grade::st::kStudentAbiVersion) {
-        throw UsageError(path.string() + " was built against student API version " +
-                         (tasks ? std::to_string(tasks->abi_version) : "?") +
-                         ", this meshedit has version " +
-                         std::to_string(grade::st::kStudentAbiVersion) + ": rebuild it");
-    }
-    return *tasks;
 }
 
 std::string points(double x) {

@@ -24,6 +24,7 @@
 #include <utility>
 
 #include "gltf_guard.h"
+#include "gltf_images.h"
 #include "gltf_meshopt.h"
 #include "io_util.h"
 #include "meshedit/core/budget.h"
@@ -119,8 +120,12 @@ Mat4 local_matrix(const tinygltf::Node& node) {
 
 class GltfReader {
 public:
-    GltfReader(const tinygltf::Model& model, std::string file, std::filesystem::path folder)
-        : model_(model), file_(std::move(file)), folder_(std::move(folder)) {}
+    GltfReader(const tinygltf::Model& model, std::string file, std::filesystem::path folder,
+               gltf_images::Embedded embedded)
+        : model_(model),
+          file_(std::move(file)),
+          folder_(std::move(folder)),
+          embedded_(std::move(embedded)) {}
 
     MeshSoup read() {
         const auto& scenes = model_.scenes;
@@ -467,11 +472,16 @@ private:
             const int source = model_.textures[static_cast<std::size_t>(t)].source;
             if (source >= 0 && static_cast<std::size_t>(source) < model_.images.size()) {
                 const tinygltf::Image& image = model_.images[static_cast<std::size_t>(source)];
-                if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0) {
+                const auto embedded = embedded_.find(source);
+                if (embedded != embedded_.end()) {
+                    // A name for it (the image's, else the material's) and its bytes.
+                    const std::string stem = !image.name.empty() ? image.name
+                                             : !g.name.empty()   ? g.name
+                                                               : "texture" + std::to_string(source);
+                    m.base_colour_texture = gltf_images::file_name(stem, embedded->second);
+                    m.base_colour_texture_bytes = embedded->second;
+                } else if (!image.uri.empty()) {
                     m.base_colour_texture = io_util::resolve_texture(image.uri, folder_, true);
-                } else {
-                    out_.notices.push_back("the embedded base-colour texture of material '" +
-                                           g.name + "' is not kept (MeshEdit keeps texture files)");
                 }
             }
         }
@@ -685,6 +695,7 @@ private:
     std::vector<Vec2> texcoords_;       // per soup vertex, while every primitive has them
     std::vector<std::int64_t> origin_;  // per soup vertex: the mesh vertex it copies, or -1
     std::vector<int> face_material_;    // per soup face: the file's material index, or -1
+    gltf_images::Embedded embedded_;    // embedded images' bytes, by image index
     bool all_have_texcoords_ = true;
     bool other_sets_said_ = false;  // TEXCOORD_1's notice given
     std::vector<Vec4> colours_;     // COLOR_0 per soup vertex, while every primitive has it
@@ -693,13 +704,6 @@ private:
     double planned_bytes_ = 0.0;
     std::size_t skipped_primitives_ = 0;
 };
-
-/// Images are irrelevant to geometry; accepting them unread keeps textured files loadable
-/// without an image decoder.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
-    return true;
-}
 
 std::string one_line(std::string s) {
     while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) {
@@ -754,7 +758,8 @@ MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
         bytes = *rewritten;
     }
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skip_image, nullptr);
+    gltf_images::Embedded embedded;  // images are kept as bytes, never decoded
+    loader.SetImageLoader(&gltf_images::keep_embedded, &embedded);
     const std::string base_dir = folder ? folder->string() : std::string();
     gltf_guard::ConfinedFiles files(folder, kMaxBufferFileBytes);
     loader.SetFsCallbacks(files.callbacks());
@@ -790,7 +795,9 @@ MeshSoup parse_gltf(std::string_view bytes, const std::string& file,
         throw IoError(file, "", err.empty() ? "cannot parse" : one_line(err));
     }
     gltf_meshopt::decode(model, file);
-    MeshSoup soup = GltfReader(model, file, folder.value_or(std::filesystem::path())).read();
+    MeshSoup soup =
+        GltfReader(model, file, folder.value_or(std::filesystem::path()), std::move(embedded))
+            .read();
     if (!warn.empty()) {
         soup.notices.push_back(one_line(warn));
     }

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "gltf_images.h"
 #include "io_util.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/normals.h"
@@ -245,7 +246,8 @@ private:
         if (m.opacity < 1.0) {
             g.alphaMode = "BLEND";
         }
-        if (const int image = add_image(m.base_colour_texture); image >= 0) {
+        if (const int image = add_image(m.base_colour_texture, m.base_colour_texture_bytes);
+            image >= 0) {
             tinygltf::Texture texture;
             texture.source = image;
             model_.textures.push_back(texture);
@@ -256,12 +258,26 @@ private:
         return static_cast<int>(model_.materials.size() - 1);
     }
 
-    // A .glb carries the image's bytes; a .gltf names it relative to itself.
-    int add_image(const std::string& path) {
-        if (path.empty()) {
-            return -1;
+    // A .glb carries the image's bytes; a .gltf names it relative to itself, or holds it as a
+    // data: URI when the mesh has it as bytes (an image another glTF embedded).
+    int add_image(const std::string& path, const std::string& embedded) {
+        const std::string mime = gltf_images::mime_of(embedded);
+        if (path.empty() || (!embedded.empty() && mime.empty())) {
+            return -1;  // an embedded image glTF cannot hold: unkept_by_format() says so
         }
         tinygltf::Image image;
+        if (!embedded.empty()) {
+            image.name = utf8(fs::path(path).stem().string());
+            image.mimeType = mime;
+            if (binary_) {
+                image.bufferView =
+                    add_view(std::vector<unsigned char>(embedded.begin(), embedded.end()), 0);
+            } else {
+                image.uri = "data:" + mime + ";base64," + gltf_images::base64(embedded);
+            }
+            model_.images.push_back(std::move(image));
+            return static_cast<int>(model_.images.size() - 1);
+        }
         std::error_code ec;
         const fs::path file(path);
         const fs::path folder = path_.parent_path().empty() ? fs::path(".") : path_.parent_path();

@@ -232,6 +232,17 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
                              " has no materials; " + writers + " keep them)");
         }
     }
+    // An image a glTF file embedded: glTF writes it back (PNG and JPEG, the kinds it holds);
+    // the other formats only name texture files.
+    for (const Material& m : mesh.materials()) {
+        if (format->corner_attributes && !m.base_colour_texture_bytes.empty() &&
+            !(format->name == std::string("glTF") && (m.base_colour_texture.ends_with(".png") ||
+                                                      m.base_colour_texture.ends_with(".jpg")))) {
+            unkept.push_back("the embedded texture " + m.base_colour_texture + " of material '" +
+                             m.name + "' (" + name +
+                             " names texture files; .glb and .gltf embed it)");
+        }
+    }
     if (!format->colors && mesh.has_property<Vertex>(kColorProperty)) {
         unkept.push_back("vertex colours (" + name + " has no colours; " +
                          names_of_formats(std::mem_fn(&MeshFormat::colors)) + " keep them)");

@@ -541,12 +541,12 @@ constexpr std::array kVerbs{
          "flips the interior edge A-B: it turns inside its two faces to join the corners "
          "after its ends (triangles stay triangles, polygons keep their sides)",
          "flip the selected edge", check_flip, run_flip, nullptr, false, kDefaultTraits,
-         CodeNames::Flip},
+         CodeNames::Flip, nullptr, "flip_edge"},
     Verb{"split", kEdgeArg, 0, 0, kNoDefaults, "split:A-B",
          "splits A-B at its midpoint and divides the triangles beside it (a polygon only "
          "gains the vertex); the new vertex gets the next free index (`V` before the split)",
          "split the selected edge", check_split, run_split, nullptr, false, kDefaultTraits,
-         CodeNames::Split},
+         CodeNames::Split, nullptr, "split_edge"},
     Verb{"bisect", kEdgeArg, 0, 0, kNoDefaults, "bisect:A-B",
          "inserts a vertex at the midpoint of A-B without dividing any face (each face beside "
          "it gains a corner); the new vertex gets index `V`",
@@ -665,7 +665,8 @@ constexpr std::array kVerbs{
          "K levels (default 1) of Loop subdivision (Warren weights) of a triangle mesh; old "
          "vertices keep their indices, the vertex on old edge `e` gets index `V + e`; texture "
          "coordinates follow OpenSubdiv's face-varying option U (default `corners`)",
-         "Loop-subdivide the mesh", check_loop, run_loop, plan_loop},
+         "Loop-subdivide the mesh", check_loop, run_loop, plan_loop, false, kDefaultTraits,
+         CodeNames::ByIndex, nullptr, "upsample"},
     Verb{"loop_step", kWholeMesh | kLevels, 0, 0, kNoDefaults, "loop_step, loop_step:N",
          "the next N phases (default 1) of Loop as it is taught: 1 compute the new positions, "
          "2 split every edge, 3 flip the new edges that join an old and a new vertex, 4 move "

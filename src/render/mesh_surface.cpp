@@ -2,6 +2,7 @@
 // face colours and material colours per triangle corner, and the materials' base-colour
 // textures in one texture array, so one draw call shows every material.
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -44,14 +45,16 @@ std::string one_line(std::string message) {
     return message;
 }
 
-// Reads `path` as RGBA8, rows top first; empty with `why` set when it cannot.
-OIIO::ImageBuf read_rgba(const std::string& path, std::string& why) {
+// Reads `path` (or, for an image a file embedded, its `bytes`; the path only names it) as
+// RGBA8, rows top first; empty with `why` set when it cannot.
+OIIO::ImageBuf read_rgba(const std::string& path, const std::string& bytes, std::string& why) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
+    if (bytes.empty() && !std::filesystem::is_regular_file(path, ec)) {
         why = std::filesystem::exists(path, ec) ? "is not a file" : "was not found";
         return {};
     }
-    auto in = OIIO::ImageInput::open(path);
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    auto in = OIIO::ImageInput::open(path, nullptr, bytes.empty() ? nullptr : &memory);
     if (!in) {
         why = "is not an image OpenImageIO reads (" + one_line(OIIO::geterror()) + ")";
         return {};
@@ -196,9 +199,12 @@ void MeshRenderer::write_surface_triangle(const Mesh& mesh, std::size_t t) {
 }
 
 void MeshRenderer::load_textures(const std::vector<Material>& materials) {
-    std::vector<std::string> paths;
+    std::vector<std::string> paths;  // an embedded image by its size too: a cheap key
     for (const Material& m : materials) {
-        paths.push_back(m.base_colour_texture);
+        paths.push_back(m.base_colour_texture +
+                        (m.base_colour_texture_bytes.empty()
+                             ? ""
+                             : "#" + std::to_string(m.base_colour_texture_bytes.size())));
     }
     if (paths == texture_paths_ && texture_array_ != 0) {
         return;  // the same textures: an edit does not reload them
@@ -211,17 +217,17 @@ void MeshRenderer::load_textures(const std::vector<Material>& materials) {
     std::vector<OIIO::ImageBuf> images;
     int side = 1;
     for (std::size_t i = 0; i < materials.size(); ++i) {
-        const std::string& path = paths[i];
+        const std::string& path = materials[i].base_colour_texture;
         if (path.empty()) {
             continue;
         }
-        const auto known = std::find(files.begin(), files.end(), path);
+        const auto known = std::find(files.begin(), files.end(), paths[i]);
         if (known != files.end()) {
             material_layers_[i] = static_cast<float>(known - files.begin());
             continue;
         }
         std::string why;
-        OIIO::ImageBuf image = read_rgba(path, why);
+        OIIO::ImageBuf image = read_rgba(path, materials[i].base_colour_texture_bytes, why);
         if (!image.initialized()) {
             texture_notes_.push_back("the texture " + path + " of material '" + materials[i].name +
                                      "' " + why + ": its faces show the material's colour");
@@ -229,7 +235,7 @@ void MeshRenderer::load_textures(const std::vector<Material>& materials) {
         }
         side = std::max({side, image.spec().width, image.spec().height});
         material_layers_[i] = static_cast<float>(files.size());
-        files.push_back(path);
+        files.push_back(paths[i]);
         images.push_back(std::move(image));
     }
     has_texture_ = !images.empty();

@@ -32,8 +32,8 @@ const char* state(st::HalfedgeMesh& m, const st::ElementIter<T>& it) {
     return static_cast<std::size_t>(it.index()) < m.list<T>().size() ? "deleted" : "out of range";
 }
 
-BridgeError error(const char* invariant, std::string message) {
-    return {invariant, std::move(message)};
+BridgeError error(const char* invariant, ElementRef at, std::string message) {
+    return {invariant, std::move(message), at};
 }
 
 std::string hname(int i) {
@@ -48,35 +48,37 @@ BridgeError check(st::HalfedgeMesh& m, std::size_t old_edges) {
             continue;
         }
         const std::string name = hname(static_cast<int>(i));
+        const ElementRef at = ElementRef::halfedge(Halfedge(std::uint32_t(i)));
         if (!usable(m, h.twin())) {
-            return error("twin", name + "'s twin is " + state(m, h.twin()));
+            return error("twin", at, name + "'s twin is " + state(m, h.twin()));
         }
         if (h.twin()->twin().index() != static_cast<int>(i)) {
-            return error("twin", name + "'s twin is " + hname(h.twin().index()) +
-                                     ", whose twin is " + hname(h.twin()->twin().index()) +
-                                     ", not " + name);
+            return error("twin", at,
+                         name + "'s twin is " + hname(h.twin().index()) + ", whose twin is " +
+                             hname(h.twin()->twin().index()) + ", not " + name);
         }
         if (!usable(m, h.next())) {
-            return error("next", name + "'s next is " + state(m, h.next()));
+            return error("next", at, name + "'s next is " + state(m, h.next()));
         }
         if (!usable(m, h.vertex())) {
-            return error("vertex", name + "'s vertex is " + state(m, h.vertex()));
+            return error("vertex", at, name + "'s vertex is " + state(m, h.vertex()));
         }
         if (!usable(m, h.face())) {
-            return error("face", name + "'s face is " + state(m, h.face()));
+            return error("face", at, name + "'s face is " + state(m, h.face()));
         }
         if (!usable(m, h.edge())) {
-            return error("edge", name + "'s edge is " + state(m, h.edge()));
+            return error("edge", at, name + "'s edge is " + state(m, h.edge()));
         }
         if (h.edge() != h.twin()->edge()) {
-            return error("edge", name + " is on edge " + std::to_string(h.edge().index()) +
-                                     " but its twin on edge " +
-                                     std::to_string(h.twin()->edge().index()));
+            return error("edge", at,
+                         name + " is on edge " + std::to_string(h.edge().index()) +
+                             " but its twin on edge " + std::to_string(h.twin()->edge().index()));
         }
         const st::HalfedgeIter g = h.edge()->halfedge();
         if (g.index() != static_cast<int>(i) && g.index() != h.twin().index()) {
-            return error("edge", name + " says it is on edge " + std::to_string(h.edge().index()) +
-                                     ", whose halfedge is " + hname(g.index()));
+            return error("edge", at,
+                         name + " says it is on edge " + std::to_string(h.edge().index()) +
+                             ", whose halfedge is " + hname(g.index()));
         }
     }
     for (std::size_t e = 0; e < m.edges.size(); ++e) {
@@ -85,28 +87,31 @@ BridgeError check(st::HalfedgeMesh& m, std::size_t old_edges) {
             continue;
         }
         const std::string name = "edge " + std::to_string(e);
+        const ElementRef at = ElementRef::edge(Edge(std::uint32_t(e)));
         if (!usable(m, edge.halfedge())) {
-            return error("edge", name + "'s halfedge is " + state(m, edge.halfedge()));
+            return error("edge", at, name + "'s halfedge is " + state(m, edge.halfedge()));
         }
         if (edge.halfedge()->edge().index() != static_cast<int>(e)) {
-            return error("edge", name + "'s halfedge " + hname(edge.halfedge().index()) +
-                                     " is on edge " +
-                                     std::to_string(edge.halfedge()->edge().index()));
+            return error("edge", at,
+                         name + "'s halfedge " + hname(edge.halfedge().index()) + " is on edge " +
+                             std::to_string(edge.halfedge()->edge().index()));
         }
         // MeshEdit's halfedges 2e and 2e+1 are edge e's for good.
         const int a = edge.halfedge().index(), b = edge.halfedge()->twin().index();
         if (e < old_edges && !((a == int(2 * e) && b == int(2 * e + 1)) ||
                                (a == int(2 * e + 1) && b == int(2 * e)))) {
-            return error("edge", name + " now holds " + hname(a) + " and " + hname(b) +
-                                     "; an edge keeps the two halfedges it had (give new "
-                                     "halfedges a new edge)");
+            return error("edge", at,
+                         name + " now holds " + hname(a) + " and " + hname(b) +
+                             "; an edge keeps the two halfedges it had (give new "
+                             "halfedges a new edge)");
         }
     }
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
         st::Face& face = m.faces[f];
         if (!face.deleted && !face.isBoundary() && !usable(m, face.halfedge())) {
-            return error("face", "face " + std::to_string(f) + "'s halfedge is " +
-                                     state(m, face.halfedge()));
+            return error(
+                "face", ElementRef::face(Face(std::uint32_t(f))),
+                "face " + std::to_string(f) + "'s halfedge is " + state(m, face.halfedge()));
         }
     }
     return {};

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/student/student.h"
 
@@ -19,6 +20,8 @@ namespace st = meshedit::student;
 struct BridgeError {
     std::string invariant;  ///< "twin", "next", "vertex", "edge", "face"
     std::string message;
+    /// The element whose rule is broken, in the student's numbering (none when fine).
+    ElementRef element;
 };
 
 /// Copies `mesh` (no deleted elements) into `out`: halfedge, vertex, edge and face i of the

@@ -51,7 +51,7 @@ double tolerance_for(const Mesh& mesh) {
 
 }  // namespace
 
-std::string difference(const Mesh& got, const Mesh& expected) {
+Difference compare_results(const Mesh& got, const Mesh& expected) {
     const TopologyMatch match = match_topology(got, expected);
     if (!match.isomorphic) {
         std::string out =
@@ -59,7 +59,7 @@ std::string difference(const Mesh& got, const Mesh& expected) {
         if (!match.first_a.is_none()) {
             out += " (first at your " + to_string(match.first_a) + ")";
         }
-        return out;
+        return {out, match.first_a, match.first_b};
     }
     const double tol = tolerance_for(expected);
     for (const Vertex v : got.vertices()) {
@@ -69,11 +69,16 @@ std::string difference(const Mesh& got, const Mesh& expected) {
         }
         const Vec3 &p = got.position(v), &q = expected.position(w);
         if (!(distance(p, q) <= tol)) {
-            return "vertex " + std::to_string(v.idx()) + " is at " + text(p) +
-                   ", the reference puts it at " + text(q);
+            return {"vertex " + std::to_string(v.idx()) + " is at " + text(p) +
+                        ", the reference puts it at " + text(q),
+                    ElementRef::vertex(v), ElementRef::vertex(w)};
         }
     }
-    return "";
+    return {};
+}
+
+std::string difference(const Mesh& got, const Mesh& expected) {
+    return compare_results(got, expected).text;
 }
 
 std::string check_step(const st::StudentTasks& tasks, const std::vector<Vec3>& points, double t) {

@@ -9,6 +9,7 @@
 
 #include "grade_bridge.h"
 #include "meshedit/bezier/bezier_patch.h"
+#include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
 
 namespace meshedit::cli::grade {
@@ -36,6 +37,14 @@ struct SessionStep {
 /// compared after each.
 std::string check_session(const st::StudentTasks& tasks, const Mesh& mesh,
                           const std::vector<SessionStep>& steps);
+
+/// What differs between the student's mesh and the reference's, and where first: an element
+/// of each (none of either when the counts already differ).
+struct Difference {
+    std::string text;  ///< "" when the same
+    ElementRef got, expected;
+};
+Difference compare_results(const Mesh& got, const Mesh& expected);
 
 /// What differs between the student's mesh and the reference's, or "" when they are the
 /// same up to renumbering with the positions within a tolerance.

@@ -150,11 +150,20 @@ App::App(const ViewerOptions& options) {
     if (!options.envmap.empty()) {
         load_environment(options.envmap);
     }
+    // The student's library loads before the file, in a child first: a library that crashes
+    // loading is reported and the viewer runs MeshEdit's own operations.
+    const Outcome student =
+        options.student.empty() ? Outcome{} : editor_.load_student(options.student);
     if (!options.file.empty()) {
         help_hint_ = true;  // the first window says where the keys are, once the file opened
         open_file(options.file);
     } else {
         set_status("drop a file on the window or press Ctrl+O to open one; ? for help", false);
+    }
+    if (!student.message.empty()) {
+        std::printf("meshedit: %s\n", student.message.c_str());
+        std::fflush(stdout);
+        set_status(student.message + " — " + status_, student.refused || status_error_);
     }
     reset_camera();
 }
@@ -625,6 +634,9 @@ void App::rebuild_overlay() {
     // Surfaces (tessellated patches) show their nets, not the tessellation's features.
     const bool features = editor_.mode() == Mode::Mesh;
     OverlayBatch batch = display_.overlay(scene, features, features);
+    if (const StudentComparison* comparison = editor_.student_comparison()) {
+        add_comparison_marks(editor_.mesh(), *comparison, batch);
+    }
     labels_ = std::move(batch.labels);
     scene_->overlay().upload(batch);
     redraw_frames_ = kSettleFrames;

@@ -30,6 +30,7 @@ struct ViewerOptions {
     UpAxis up = UpAxis::Y;             ///< --up: which world axis starts up on the screen
     std::filesystem::path envmap;      ///< --envmap: shading 7's environment (empty: the default)
     std::filesystem::path shader_dir;  ///< --shader-dir: modes 8, 9 (empty: the per-user one)
+    std::filesystem::path student;     ///< --student: a student library (empty: none)
 };
 
 /// Whether a dropped file is an image (an environment for shading 7) rather than a document.

@@ -120,7 +120,7 @@ constexpr std::array kTable{
     Binding{Key::Space, kNoMods, kAllModes, {Command::ResetCamera}, "Space", "reset the camera"},
     Binding{key_of('Y'), kNoMods, kMeshModes, {Command::CycleUp}, "Y", "up axis: +Y (as the file declares) or +Z (the CS184 course's models)"},
     Binding{key_of('O'), kNoMods, kMeshModes, {Command::ToggleTrackball}, "O", "orbit: turntable (the up axis stays up) or trackball (free rotation)"},
-    Binding{Key::Escape, kNoMods, kAllModes, {Command::Escape}, "Esc", "clear the selection; with nothing selected, quit"},
+    Binding{Key::Escape, kNoMods, kAllModes, {Command::Escape}, "Esc", "clear the selection; with nothing selected, quit; on a student's side by side (--student), step back to the input"},
     Binding{key_of('Q'), kCtrl, kAllModes, {Command::Quit}, "Ctrl+Q", "quit"},
     // Curve mode.
     Binding{key_of('E'), kNoMods, kCurveMode, {Command::LevelDown}, "E", "show one more de Casteljau level"},

@@ -151,6 +151,13 @@ Outcome Editor::run(Action action) {
         case Command::Open:
             return {kAskOpenPath, ""};
         case Command::Escape:
+            if (student_comparison() != nullptr) {
+                Outcome back = undo();
+                back.message =
+                    "back to your input (the side by side is undone; Ctrl+Shift+Z "
+                    "shows it again)";
+                return back;
+            }
             if (!doc_.selection.is_none() || !doc_.also_selected.empty()) {
                 return select_none();
             }
@@ -158,6 +165,16 @@ Outcome Editor::run(Action action) {
         case Command::Quit:
             return quit();
         case Command::LevelDown:
+            if (student_) {
+                const int last = static_cast<int>(doc_.curve.control_points.size()) - 1;
+                const int level = view_.level < 0 ? last : std::min(view_.level, last);
+                if (level < last) {
+                    if (std::optional<Outcome> wrong = check_student_step(level)) {
+                        return *wrong;
+                    }
+                }
+            }
+            return run_curve(action);
         case Command::LevelUp:
         case Command::ToggleCurve:
         case Command::DecreaseT:
@@ -166,7 +183,13 @@ Outcome Editor::run(Action action) {
         case Command::RemovePoint:
             return run_curve(action);
         case Command::DensityUp:
-        case Command::DensityDown:
+        case Command::DensityDown: {
+            Outcome out = run_surface(c);
+            if (student_ && !out.refused) {
+                out.message += check_student_patches();
+            }
+            return out;
+        }
         case Command::ToggleNets:
             return run_surface(c);
         default:
@@ -178,10 +201,14 @@ Outcome Editor::run(Action action) {
 Outcome Editor::run_display(Action action) {
     RenderOptions& r = view_.render;
     switch (action.command) {
-        case Command::ToggleSmooth:
+        case Command::ToggleSmooth: {
             r.smooth = !r.smooth;
+            if (r.smooth && student_ && doc_.mode != Mode::Curve && !student_comparison()) {
+                return check_student_normals();
+            }
             return {kDisplay,
                     r.smooth ? "smooth shading (area-weighted vertex normals)" : "flat shading"};
+        }
         case Command::ToggleWireframe:
             r.wireframe = !r.wireframe;
             return {kDisplay, r.wireframe ? "wireframe on" : "wireframe off"};

@@ -213,6 +213,11 @@ Outcome Editor::save_as(const std::filesystem::path& path) {
 }
 
 Outcome Editor::write_to(const std::filesystem::path& path) {
+    if (student_comparison() != nullptr) {  // two meshes side by side are no one's document
+        return refused(
+            "this is the side by side of your result and the reference's, not "
+            "your mesh: Esc steps back to it first");
+    }
     Outcome outcome;
     std::vector<std::string> unkept;
     const bool patches = doc_.mode == Mode::Surface && file_extension(path) == ".bez";

@@ -17,6 +17,15 @@ Outcome Editor::edit_mesh(std::string_view name) {
     if (verb == nullptr) {
         return refused("no such edit: '" + std::string(name) + "'");
     }
+    if (student_ && !verb->course_task.empty()) {
+        return run_student(*verb);
+    }
+    return run_verb(*verb);
+}
+
+Outcome Editor::run_verb(const ops::Verb& v) {
+    const ops::Verb* verb = &v;
+    const std::string_view name = verb->name;
     if (verb->accepts(ops::Target::None)) {
         // Whole-mesh verbs with amounts take them from the tool settings (the info panel).
         std::span<const double> amounts;

@@ -59,6 +59,11 @@ int main(int argc, char** argv) {
                    "declared axis, +Y once read; the default); Y switches in the window")
         ->type_name("y|z|file")
         ->check(CLI::IsMember({"y", "z", "file"}));
+    std::string student;
+    app.add_option("--student", student,
+                   "a student library built from student/ (docs/student.md): F, S, L, Q and E "
+                   "call its functions in a sandbox and compare each result with MeshEdit's")
+        ->type_name("LIB.so");
     const CLI::Option* threads = meshedit::command_line::add_threads_option(app);
     app.footer(
         "The meshedit-view executable; 'meshedit FILE' and 'meshedit view FILE' run it.\n"
@@ -77,6 +82,7 @@ int main(int argc, char** argv) {
     options.file = file;
     options.envmap = envmap;
     options.shader_dir = shader_dir;
+    options.student = student;
     options.vsync = !no_vsync;
     options.up = up == "z" ? meshedit::UpAxis::Z : meshedit::UpAxis::Y;
     const char* display = std::getenv("DISPLAY");

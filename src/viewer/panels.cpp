@@ -201,6 +201,16 @@ void Panels::draw_info(Editor& editor, const FrameStats& stats, const FieldDispl
     info_left_ = ImGui::GetWindowPos().x;
     info_right_ = info_left_ + width;
     const Document& doc = editor.document();
+    // --student: the side by side's first difference, in the student's own numbering (the
+    // Selection section's indices are the side by side's).
+    if (const StudentComparison* c = editor.student_comparison();
+        c != nullptr && ImGui::CollapsingHeader("Student code", ImGuiTreeNodeFlags_DefaultOpen)) {
+        rows_table("student", {{"function", c->task},
+                               {"on", c->input},
+                               {"invariant", c->invariant.empty() ? "none broken" : c->invariant},
+                               {"first difference", c->difference},
+                               {"shown", "yours left, the reference's right; Esc steps back"}});
+    }
     if (ImGui::CollapsingHeader("Document", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::TextDisabled("%s", mode_description(doc.mode));
         if (doc.mode == Mode::Curve) {

@@ -219,6 +219,38 @@ TEST(ObjAttributes, GltfTexcoordsAreThoseAssimpWritesToObj) {
     EXPECT_EQ(rounded(ours), rounded(read_mesh(obj).mesh));
 }
 
+// An image a .glb embeds is kept as its bytes: written back embedded by .glb, as a data: URI
+// by .gltf, the same material bit for bit when read again; OBJ, which names texture files,
+// says it cannot keep it.
+TEST(ObjAttributes, EmbeddedTexturesGoBackIntoGltf) {
+    const fs::path glb = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    if (!fs::exists(glb)) {
+        GTEST_SKIP() << "install assimp-testmodels (scripts/install-deps.sh does)";
+    }
+    const LoadedMesh box = read_mesh(glb);
+    ASSERT_EQ(box.mesh.materials().size(), 1u);
+    const Material& m = box.mesh.materials()[0];
+    EXPECT_EQ(m.base_colour_texture, "Texture.png");
+    EXPECT_EQ(m.base_colour_texture_bytes.substr(1, 3), "PNG");
+    for (const std::string& notice : box.notices) {
+        EXPECT_EQ(notice.find("not kept"), std::string::npos) << notice;
+    }
+    test::ScratchDir dir;
+    for (const char* name : {"b.glb", "b.gltf"}) {
+        SCOPED_TRACE(name);
+        EXPECT_TRUE(write_mesh(box.mesh, dir / name).empty());
+        const LoadedMesh back = read_mesh(dir / name);
+        EXPECT_EQ(back.mesh.materials(), box.mesh.materials());
+        EXPECT_EQ(corners_of(back.mesh), corners_of(box.mesh));
+    }
+    EXPECT_NE(test::slurp(dir / "b.gltf").find("\"data:image/png;base64,"), std::string::npos);
+    const std::vector<std::string> unkept = write_mesh(box.mesh, dir / "b.obj");
+    ASSERT_EQ(unkept.size(), 1u);
+    EXPECT_EQ(unkept[0],
+              "the embedded texture Texture.png of material 'Texture' (OBJ names texture files; "
+              ".glb and .gltf embed it)");
+}
+
 TEST(ObjAttributes, FormatsThatCannotKeepThemSaySo) {
     test::ScratchDir dir;
     write_quad(dir);

@@ -188,6 +188,10 @@ const std::vector<GoldenCase>& golden_cases() {
         {"textured_duck_checker",
          "assimp:Collada/duck.dae",
          {"--color", "checker", "--camera", "60,15"}},
+        // glTF's textured box: its PNG embedded in the .glb, decoded from the bytes.
+        {"textured_box_glb",
+         "assimp:glTF2/BoxTextured-glTF-Binary/BoxTextured.glb",
+         {"--camera", "30,25"}},
         {"vertex_colours", "assimp:Collada/kwxport_test_vcolors.dae", {"--color", "vertex"}},
         // QEM simplification (docs/simplify.md): the teapot (4,032 triangles) at 10% and 2.5%;
         // rims, spout tip and handle keep their shape, flat regions get the big triangles.

@@ -366,7 +366,8 @@ TEST(Bindings, MarkdownTable) {
                        0),
               0u)
         << md;
-    EXPECT_NE(md.find("| Esc | clear the selection; with nothing selected, quit | all |\n"),
+    EXPECT_NE(md.find("| Esc | clear the selection; with nothing selected, quit; on a student's "
+                      "side by side (--student), step back to the input | all |\n"),
               std::string::npos);
     EXPECT_NE(md.find("| wheel | zoom to the cursor | mesh, surface |\n"), std::string::npos);
     EXPECT_NE(md.find("| wheel | change t by 0.01 a step | curve |\n"), std::string::npos);

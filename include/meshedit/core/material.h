@@ -16,6 +16,10 @@ struct Material {
     Vec3 base_colour{1.0, 1.0, 1.0};  ///< OBJ's Kd, glTF's baseColorFactor (rgb)
     double opacity = 1.0;             ///< OBJ's d (1 - Tr), glTF's baseColorFactor alpha
     std::string base_colour_texture;  ///< OBJ's map_Kd, glTF's baseColorTexture image (a path)
+    /// The texture's bytes when the file embedded it (a .glb's image, a data: URI) instead of
+    /// naming a file; base_colour_texture is then only a name for it ("Texture.png"). glTF
+    /// writes them back embedded; the formats that name files say they cannot keep them.
+    std::string base_colour_texture_bytes;
     /// Whether the file said the colour and the opacity: an OBJ material whose .mtl is missing
     /// or has no Kd (d, Tr) line has neither, and is written back without them rather than
     /// with invented values.

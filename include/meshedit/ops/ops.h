@@ -153,6 +153,10 @@ struct Verb {
     /// For the selection verbs (`select_loop:3-4`): the selection after the step, from the
     /// one before; they leave the mesh as it is. Null for the others.
     Selection (*select)(const Mesh& mesh, const Step& step, const Selection& now) = nullptr;
+    /// The course's function that does what the verb does on one element or the whole mesh
+    /// (meshedit/student/student.h: "flip_edge", "split_edge", "upsample"), which the viewer
+    /// calls instead under `--student`; empty for the others.
+    std::string_view course_task = {};
 
     bool accepts(Target target) const;
 };

@@ -33,10 +33,14 @@
 #include "meshedit/viewer/bindings.h"
 #include "meshedit/viewer/history.h"
 #include "meshedit/viewer/outcome.h"
+#include "meshedit/viewer/student_view.h"
 #include "meshedit/viewer/transaction.h"
 
 namespace meshedit::ops {
 struct Step;
+}
+namespace meshedit::cli::grade {
+struct MeshAttempt;
 }
 
 namespace meshedit::viewer {
@@ -120,6 +124,7 @@ private:
 ///                         (the steps a selection makes: selection_steps.cpp)
 ///   editor_modal.cpp      interactive edits: extrude, inset, bevel, move, rotate, scale
 ///   editor_curve.cpp      curve and surface commands
+///   editor_student.cpp    --student: the student's functions behind F, S, L, Q and E
 ///   editor_selection.cpp  selection (several elements, all, a hole, framing), moving it
 ///                         through the connectivity, vertex drags
 ///   element_info.cpp      the info panel's rows
@@ -166,6 +171,24 @@ public:
     /// Looks `key`+`mods` up in the binding table for the current mode and runs it; an
     /// unbound key returns an empty Outcome.
     Outcome press(Key key, unsigned mods);
+
+    // ------------------------------------------------------ student code (editor_student.cpp)
+
+    /// `--student LIB`: loads a student library (meshedit/student/student.h), in a child
+    /// first, as its initialisers are student code. From then on F, S and L run the student's
+    /// flip_edge, split_edge and upsample on a copy of the mesh in a forked child with a time
+    /// limit, compared with the reference on the same input: the same result goes in as the
+    /// usual undo step; another becomes a side by side (student_comparison()) that Esc or
+    /// Ctrl+Z steps back from; a crash, an endless loop or an exception is refused, naming
+    /// the function and the edge, the document untouched. Q turning smooth shading on checks
+    /// vertex_normal, E in Curve mode evaluate_step. Refused (nothing loaded) when the library
+    /// cannot be loaded or crashes loading. `seconds`: how long a call on one edge, and one on
+    /// the whole mesh (upsample, normals), may take before it counts as an endless loop.
+    Outcome load_student(const std::filesystem::path& library,
+                         std::pair<double, double> seconds = {2.0, 10.0});
+    bool student_mode() const;
+    /// The side by side the last F, S or L made, while the document is it; null otherwise.
+    const StudentComparison* student_comparison() const;
 
     // ---------------------------------------------------------- mesh edits (editor_mesh.cpp)
 
@@ -415,6 +438,27 @@ private:
     Outcome apply_modal();
     /// Undo (`forward` false) or redo, after ending a drag and cancelling an interactive edit.
     Outcome step_history(bool forward);
+
+    /// edit_mesh() without the student's code: the verb on the selection or the whole mesh.
+    Outcome run_verb(const ops::Verb& verb);
+    /// The student's function for `verb` (its course_task), checked (editor_student.cpp).
+    Outcome run_student(const ops::Verb& verb);
+    /// Puts the side by side of a student's result that differs in as one undo step.
+    Outcome show_comparison(const cli::grade::MeshAttempt& attempt, const Mesh& reference,
+                            const std::string& task, const std::string& what);
+    /// The side by side `shown` as one undo step, `comparison`'s elements selected.
+    Outcome put_comparison(Mesh shown, StudentComparison comparison, const std::string& message,
+                           unsigned changes);
+    /// Q under --student turning smooth shading on: vertex_normal checked at every vertex; a
+    /// difference shows the mesh twice with each one's normals.
+    Outcome check_student_normals();
+    /// + and - (Surface mode) under --student: "; your evaluate_patch …" at every point of
+    /// the tessellation's grid on every patch.
+    std::string check_student_patches();
+    /// E under --student: why the next curve level is not shown, or nullopt.
+    std::optional<Outcome> check_student_step(int level);
+    struct StudentMode;
+    std::shared_ptr<StudentMode> student_;  ///< null without --student
 
     /// Runs `steps` one after another through the edit funnel as one undo step and selects
     /// what they made (edit_mesh, delete_selection); refused with the first reason if none
