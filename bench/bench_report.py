@@ -38,6 +38,9 @@ JOB_TITLES = {
     "uniform weights, λ = 0.5 (OpenMesh's JacobiLaplaceSmootherT, C0); `ms_per_iteration`",
     "smooth_1m_implicit": "One implicit smoothing step (t = 1, cotangent weights) of the same "
     "torus; `solve_ms`: building the system and the conjugate-gradient solves",
+    "qem_torus_attrs_1m_to_100k": "QEM of the same torus carrying texture coordinates (two "
+    "seams) and vertex colours, attribute-aware (seams held, UV and colour quadrics): the cost "
+    "of the attributes against `qem_torus_1m_to_100k` (target ≤ 1.5×); MeshEdit only",
     "qem_bunny_1m_to_100k": "QEM simplification of bunny00 (CGAL's demo data) Loop-subdivided "
     "twice (1,206,530 triangles) to 100,000 faces; `hausdorff_pct` as above",
     "flips_1e6": "1,000,000 random edge flips on the 100k torus",

@@ -15,6 +15,10 @@
 // edge between two crease vertices that is no crease would cut a chord, and never collapses.
 // Without crease marks none of this runs and the result is as before.
 //
+// With texture coordinates, colours or materials (SimplifyAttributes::Aware), the attribute
+// quadrics of simplify_attributes.h join the position quadric and plan each collapse's corner
+// values; the blind instantiation of the simplifier is the one of before.
+//
 // Candidates live in an indexed 4-ary min-heap of (cost, edge), 8 bytes an entry, with each
 // edge's place in it: a collapse re-keys the edges around the survivor in place and removes
 // the deleted ones, so the heap never holds more than one entry per edge. (A heap of stale
@@ -39,59 +43,19 @@
 #include "meshedit/core/normals.h"
 #include "meshedit/core/number_text.h"
 #include "meshedit/core/validate.h"
+#include "simplify_attributes.h"
+#include "simplify_quadric.h"
 
 namespace meshedit {
 namespace {
 
+using qem::AttributeSimplifier;
+using qem::CornerPlan;
+using qem::Quadric;
+
 // The weight of a boundary or crease edge's constraint plane, times its squared length: large
 // against the face quadrics (area-weighted), so features move only along themselves.
 constexpr double kFeatureWeight = 100.0;
-
-// A symmetric 4 × 4 quadric v^T Q v, v = (x, y, z, 1), as its 10 distinct entries, and the
-// face area it gathers (for the error in distance units).
-struct Quadric {
-    double a00 = 0, a01 = 0, a02 = 0, a03 = 0, a11 = 0, a12 = 0, a13 = 0, a22 = 0, a23 = 0, a33 = 0;
-    double area = 0;
-
-    // w · (plane)(plane)^T for the plane n·x + d = 0.
-    void add_plane(const Vec3& n, double d, double w) {
-        a00 += w * n.x * n.x, a01 += w * n.x * n.y, a02 += w * n.x * n.z, a03 += w * n.x * d;
-        a11 += w * n.y * n.y, a12 += w * n.y * n.z, a13 += w * n.y * d;
-        a22 += w * n.z * n.z, a23 += w * n.z * d;
-        a33 += w * d * d;
-    }
-    Quadric operator+(const Quadric& o) const {
-        Quadric q;
-        q.a00 = a00 + o.a00, q.a01 = a01 + o.a01, q.a02 = a02 + o.a02, q.a03 = a03 + o.a03;
-        q.a11 = a11 + o.a11, q.a12 = a12 + o.a12, q.a13 = a13 + o.a13;
-        q.a22 = a22 + o.a22, q.a23 = a23 + o.a23, q.a33 = a33 + o.a33;
-        q.area = area + o.area;
-        return q;
-    }
-    double operator()(const Vec3& p) const {
-        const double x = p.x, y = p.y, z = p.z;
-        return a00 * x * x + 2 * a01 * x * y + 2 * a02 * x * z + 2 * a03 * x + a11 * y * y +
-               2 * a12 * y * z + 2 * a13 * y + a22 * z * z + 2 * a23 * z + a33;
-    }
-    // The minimiser of v^T Q v, when the 3 × 3 system is well conditioned.
-    bool minimiser(Vec3& out) const {
-        const double c00 = a11 * a22 - a12 * a12;
-        const double c01 = a02 * a12 - a01 * a22;
-        const double c02 = a01 * a12 - a02 * a11;
-        const double det = a00 * c00 + a01 * c01 + a02 * c02;
-        const double scale = std::max({a00, a11, a22});
-        if (!(std::abs(det) > 1e-9 * scale * scale * scale)) {
-            return false;
-        }
-        const double c11 = a00 * a22 - a02 * a02;
-        const double c12 = a01 * a02 - a00 * a12;
-        const double c22 = a00 * a11 - a01 * a01;
-        const double inv = -1.0 / det;
-        out = {inv * (c00 * a03 + c01 * a13 + c02 * a23), inv * (c01 * a03 + c11 * a13 + c12 * a23),
-               inv * (c02 * a03 + c12 * a13 + c22 * a23)};
-        return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
-    }
-};
 
 // A min-heap of edges keyed by a float, 4 children a node, with the place of every edge in it
 // (kInvalidIndex when absent) so a key can change in place.
@@ -202,8 +166,12 @@ struct Candidate {
     double cost;
     Vec3 position;
     bool allowed = true;  ///< false: it would pull a crease vertex off its crease
+    Vertex at;            ///< the end it is pinned to (a crease vertex), if any
 };
 
+// Aware: with the attribute quadrics (simplify_attributes.h). The blind instantiation is the
+// simplifier of before, branch for branch: a mesh without attributes pays nothing for them.
+template <bool Aware>
 class Simplifier {
 public:
     Simplifier(Mesh& mesh, const SimplifyOptions& options)
@@ -213,10 +181,17 @@ public:
           heap_(mesh.edges_size()),
           cos_limit_(std::cos(options.max_normal_change_deg * M_PI / 180.0)),
           diagonal_(mesh.bounds().diagonal()),
-          crease_(mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {}
+          crease_(mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+        if constexpr (Aware) {
+            attributes_.emplace(mesh, diagonal_);
+        }
+    }
 
     SimplifyReport run() {
         gather_quadrics();
+        if constexpr (Aware) {
+            attributes_->gather(quadric_);
+        }
         std::vector<std::pair<std::uint32_t, float>> all;
         all.reserve(mesh_.n_edges());
         for (Edge e : mesh_.edges()) {
@@ -246,6 +221,13 @@ public:
             if (collapse_turns_a_face(mesh_, e, c.position, cos_limit_)) {
                 ++report_.refused_normal;
                 continue;
+            }
+            if constexpr (Aware) {
+                const CornerPlan plan = attributes_->plan(e, c.position, c.at);
+                if (plan != CornerPlan::Ok) {
+                    ++(plan == CornerPlan::Seam ? report_.refused_seam : report_.refused_uv_flip);
+                    continue;
+                }
             }
             apply(e, c.position);
             report_.largest_error = std::max(report_.largest_error, error);
@@ -277,7 +259,9 @@ private:
         }
         const auto crease = mesh_.get_property<Edge, std::uint8_t>(kCreaseProperty);
         for (Edge e : mesh_.edges()) {
-            if (!mesh_.is_boundary(e) && !(crease && crease[e] != 0)) {
+            // With attributes, material borders too: a colour's edge stays where it was.
+            if (!mesh_.is_boundary(e) && !(crease && crease[e] != 0) &&
+                !(Aware && attributes_->is_material_border(e))) {
                 continue;
             }
             const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
@@ -304,7 +288,10 @@ private:
     // The cheapest place for the survivor of e and its cost.
     Candidate candidate(Edge e) const {
         const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
-        const Quadric q = quadric_[a.idx()] + quadric_[b.idx()];
+        Quadric q = quadric_[a.idx()] + quadric_[b.idx()];
+        if constexpr (Aware) {
+            attributes_->reduce_into(a, b, q);  // each attribute at its best for a place
+        }
         const Vec3& pa = mesh_.position(a);
         const Vec3& pb = mesh_.position(b);
         if (crease_) {
@@ -312,7 +299,7 @@ private:
                 return *held;
             }
         }
-        Candidate c{0.0, {}};
+        Candidate c{0.0, {}, true, {}};
         Vec3 best;
         // The minimiser, unless it lies far from the edge (a nearly singular system that
         // passed the determinant test): then the best of the ends and the midpoint.
@@ -349,9 +336,9 @@ private:
         if (!on_a && !on_b) {
             return std::nullopt;
         }
-        const Candidate never{std::numeric_limits<double>::infinity(), {}, false};
+        const Candidate never{std::numeric_limits<double>::infinity(), {}, false, {}};
         const auto at = [&](Vertex v) {
-            return Candidate{q(mesh_.position(v)), mesh_.position(v)};
+            return Candidate{q(mesh_.position(v)), mesh_.position(v), true, v};
         };
         if (!is_crease(e)) {
             return on_a && on_b ? never : at(on_a ? a : b);
@@ -400,6 +387,9 @@ private:
         const Vertex s = *collapse(mesh_, e);
         mesh_.position(s) = p;
         quadric_[s.idx()] = q;
+        if constexpr (Aware) {
+            attributes_->apply(a, b, s, quadric_[s.idx()]);
+        }
         for (Edge g : mesh_.edges(s)) {
             heap_.set(g.idx(), key(error_of(candidate(g), g)));
         }
@@ -411,7 +401,8 @@ private:
     EdgeHeap heap_;
     double cos_limit_;
     double diagonal_;
-    EdgeProperty<std::uint8_t> crease_;  // null: no crease marks, no crease rule
+    EdgeProperty<std::uint8_t> crease_;              // null: no crease marks, no crease rule
+    std::optional<AttributeSimplifier> attributes_;  // none: blind, or nothing to weigh
     SimplifyReport report_;
 };
 
@@ -440,7 +431,10 @@ std::string why_not_simplify(const Mesh& mesh, const SimplifyOptions& options) {
     // What the simplifier holds beside the mesh, per face: half a vertex's quadric (88 bytes
     // each) and 1.5 edges' heap entry, place and initial cost (20 bytes each), rounded up.
     const double faces = static_cast<double>(mesh.n_faces());
-    if (const auto over = over_budget(100.0 * faces)) {
+    const bool aware =
+        options.attributes == SimplifyAttributes::Aware && AttributeSimplifier::applies(mesh);
+    const double per_face = aware ? 100.0 + AttributeSimplifier::bytes_per_vertex() / 2 : 100.0;
+    if (const auto over = over_budget(per_face * faces)) {
         return "cannot simplify: the quadrics and the queue of " + std::to_string(mesh.n_faces()) +
                " faces " + *over;
     }
@@ -465,7 +459,10 @@ SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options) {
     SimplifyReport report;
     {
         const UnitScale unit(mesh);  // quadrics square coordinates: keep them near 1
-        report = Simplifier(mesh, options).run();
+        report =
+            options.attributes == SimplifyAttributes::Aware && AttributeSimplifier::applies(mesh)
+                ? Simplifier<true>(mesh, options).run()
+                : Simplifier<false>(mesh, options).run();
     }
     report.creases_marked = marked;
     MESHEDIT_ASSERT(!validate(mesh));

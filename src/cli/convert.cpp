@@ -273,6 +273,7 @@ Command add_simplify(CLI::App& meshedit) {
         double ratio = 0.0;
         double max_error = std::numeric_limits<double>::infinity();
         double feature_angle = kNoFeatureAngle;
+        std::string attributes;
         int density = 8;
     };
     auto s = std::make_shared<Settings>();
@@ -289,6 +290,11 @@ Command add_simplify(CLI::App& meshedit) {
         ->type_name("E")
         ->check(CLI::NonNegativeNumber);
     add_feature_angle_option(*app, s->feature_angle);
+    app->add_option("--attributes", s->attributes,
+                    "aware (default): UV seams and material borders held, no UV triangle turned "
+                    "over, UVs and colours weighed; blind: positions only")
+        ->type_name("aware|blind")
+        ->check(CLI::IsMember({"aware", "blind"}));
     add_density_option(*app, s->density);
     add_strict_option(*app);
     app->footer(
@@ -298,6 +304,9 @@ Command add_simplify(CLI::App& meshedit) {
         "of them) or the next collapse would exceed --max-error, and writes OUT.\n"
         "--feature-angle DEG marks the edges sharper than DEG degrees as creases first; crease\n"
         "vertices stay on their creases.\n"
+        "With texture coordinates, vertex colours or materials, --attributes aware (the\n"
+        "default) keeps UV seams and material borders, turns no UV triangle over and puts\n"
+        "each new corner's UV and colour where the attribute quadric is least.\n"
         "docs/simplify.md has the details.\n"
         "\n"
         "Example:\n"
@@ -305,25 +314,29 @@ Command add_simplify(CLI::App& meshedit) {
         "\n"
         "Exit status: 0 ok, 1 refused (polygons, a target out of range), 2 bad usage, bad\n"
         "input or an unwritable output.");
-    return {app, [s, faces, ratio] {
-                if (faces->count() == 0 && ratio->count() == 0) {
-                    throw UsageError("simplify: give --faces N or --ratio R");
-                }
-                if (ratio->count() > 0 && !(s->ratio > 0.0 && s->ratio < 1.0)) {
-                    throw UsageError("simplify: --ratio must be above 0 and below 1, not " +
-                                     ratio->as<std::string>());
-                }
-                // Through the language, as `--ops simplify:R,E`: one rounding of a share into a
-                // face count, one refusal and one "stopped at" message for every program.
-                const double kept = faces->count() > 0 ? static_cast<double>(s->faces) : s->ratio;
-                return run_one_step(
-                    s->in, s->out, s->density, "simplify", LoopWeights::Warren,
-                    [&](const Mesh& mesh) {
-                        return std::optional(ops::make_step(
-                            "simplify", mesh, ElementRef{},
-                            std::array<double, 3>{kept, s->max_error, s->feature_angle}));
-                    });
-            }};
+    return {
+        app, [s, faces, ratio] {
+            if (faces->count() == 0 && ratio->count() == 0) {
+                throw UsageError("simplify: give --faces N or --ratio R");
+            }
+            if (ratio->count() > 0 && !(s->ratio > 0.0 && s->ratio < 1.0)) {
+                throw UsageError("simplify: --ratio must be above 0 and below 1, not " +
+                                 ratio->as<std::string>());
+            }
+            // Through the language, as `--ops simplify:R,E`: one rounding of a share into a
+            // face count, one refusal and one "stopped at" message for every program.
+            const double kept = faces->count() > 0 ? static_cast<double>(s->faces) : s->ratio;
+            return run_one_step(
+                s->in, s->out, s->density, "simplify", LoopWeights::Warren, [&](const Mesh& mesh) {
+                    ops::Step step =
+                        ops::make_step("simplify", mesh, ElementRef{},
+                                       std::array<double, 3>{kept, s->max_error, s->feature_angle});
+                    if (!s->attributes.empty()) {
+                        step = ops::parse_step(step.text + ":attributes=" + s->attributes);
+                    }
+                    return std::optional(step);
+                });
+        }};
 }
 
 Command add_remesh(CLI::App& meshedit) {

@@ -62,9 +62,9 @@ bool parse_amount(std::string_view s, double& out) {
 // `inf` and `nan` too, as make_step() writes them (`simplify:0.5,inf,40`: no error bound,
 // then a feature angle); no verb is called so.
 bool starts_like_number(std::string_view s) {
-    return !s.empty() &&
-           (std::isdigit(static_cast<unsigned char>(s.front())) != 0 || s.front() == '-' ||
-            s.front() == '+' || s.front() == '.' || s == "inf" || s == "nan");
+    return !s.empty() && (std::isdigit(static_cast<unsigned char>(s.front())) != 0 ||
+                          s.front() == '-' || s.front() == '+' || s.front() == '.' || s == "inf" ||
+                          s == "nan" || s.starts_with("inf:") || s.starts_with("nan:"));
 }
 
 // 12 levels multiply the face count by 4^12 ≈ 1.7e7: more is never intended.
@@ -109,6 +109,9 @@ std::string argument_words(const Verb& verb) {
     }
     if ((verb.takes & kUvArg) != 0) {
         out += "; U one of " + uv_interpolation_names();
+    }
+    if ((verb.takes & kAttributesArg) != 0) {
+        out += "; A aware or blind";
     }
     return out;
 }
@@ -283,11 +286,31 @@ Step parse_step(std::string_view item) {
         if (!verb->accepts(Target::None)) {
             bad(text, "expected " + std::string(verb->syntax) + " with " + argument_words(*verb));
         }
-    } else if ((verb->takes & ~kWholeMesh) == 0) {
+    } else if ((verb->takes & ~(kWholeMesh | kAttributesArg)) == 0) {
         if (verb->max_amounts == 0) {
             bad(text, std::string(name) + " takes no argument");
         }
-        parse_amounts(item.substr(colon + 1), step);  // a whole-mesh verb's amounts: simplify:0.25
+        std::string_view arg = item.substr(colon + 1);
+        // simplify's last part may be attributes=A: `simplify:attributes=blind`,
+        // `simplify:0.1:attributes=blind`.
+        if (const auto last = arg.rfind(':');
+            (verb->takes & kAttributesArg) != 0 &&
+            arg.substr(last == std::string_view::npos ? 0 : last + 1).starts_with("attributes=")) {
+            const std::string_view mode =
+                arg.substr((last == std::string_view::npos ? 0 : last + 1) + 11);
+            if (mode != "aware" && mode != "blind") {
+                bad(text, "unknown attribute mode '" + std::string(mode) +
+                              "' (aware: texture coordinates, colours and seams weigh; blind: "
+                              "positions only)");
+            }
+            step.attributes =
+                mode == "blind" ? SimplifyAttributes::Blind : SimplifyAttributes::Aware;
+            if (last == std::string_view::npos) {
+                return step;
+            }
+            arg = arg.substr(0, last);
+        }
+        parse_amounts(arg, step);  // a whole-mesh verb's amounts: simplify:0.25
     } else {
         std::string_view arg = item.substr(colon + 1);
         // A subdivision's last part may be uv=U: `loop:uv=none`, `loop:2:uv=none`.

@@ -416,6 +416,7 @@ SimplifyOptions simplify_options(const Mesh& mesh, const Step& step) {
                                             : static_cast<std::size_t>(std::max(1.0, kept));
     options.max_error = step.amounts[1];
     options.feature_angle_deg = step.amounts[2];
+    options.attributes = step.attributes.value_or(options.attributes);
     return options;
 }
 OpStatus check_simplify_step(const Mesh& mesh, const Step& step) {
@@ -695,14 +696,17 @@ constexpr std::array kVerbs{
          "(U is accepted and changes nothing, as in OpenSubdiv's bilinear scheme)",
          "subdivide into quads without smoothing (linear)", check_quads, run_linear,
          plan_quad_subdivision},
-    Verb{"simplify", kWholeMesh, 3, 0, {0.5, kUnbounded, kNoFeatureAngle},
-         "simplify, simplify:R, simplify:R,E, simplify:R,E,F",
+    Verb{"simplify", kWholeMesh | kAttributesArg, 3, 0, {0.5, kUnbounded, kNoFeatureAngle},
+         "simplify, simplify:R, simplify:R,E, simplify:R,E,F, simplify:R,E,F:attributes=A",
          "QEM simplification (Garland-Heckbert) of a triangle mesh to about R of its faces "
          "(0 < R < 1, default 0.5) or to R faces (a whole number), stopping before a collapse "
          "whose error exceeds E times the bounding-box diagonal (left out or `inf`: no bound): "
          "edge collapses, cheapest quadric error first, boundaries and creases held, no face "
          "turned over; with F, the edges sharper than F degrees are marked as creases first "
-         "(`crease_by_angle:F`); indices are renumbered when written",
+         "(`crease_by_angle:F`); with texture coordinates, colours or materials A = aware "
+         "(default) holds UV seams and material borders, turns no UV triangle over and "
+         "weighs UVs and colours in the quadric, blind weighs positions only; indices are "
+         "renumbered when written",
          "simplify the mesh to the share of its faces the info panel sets (QEM)",
          check_simplify_step, run_simplify, nullptr, false, kDefaultTraits | kToolAmounts},
     Verb{"remesh", kWholeMesh, 3, 0, {0.0, 3.0, kNoFeatureAngle},

@@ -254,6 +254,7 @@ py::list verb_table() {
         d["whole_mesh"] = (verb.takes & ops::kWholeMesh) != 0;
         d["levels"] = (verb.takes & ops::kLevels) != 0;
         d["uv"] = (verb.takes & ops::kUvArg) != 0;
+        d["attributes"] = (verb.takes & ops::kAttributesArg) != 0;
         d["vertex"] = (verb.takes & ops::kVertexArg) != 0;
         d["edge"] = (verb.takes & ops::kEdgeArg) != 0;
         d["face"] = (verb.takes & ops::kFaceArg) != 0;

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "meshedit/core/smoothing.h"
@@ -33,6 +35,38 @@ TEST(CliSimplify, RatioReachesItsTargetAndMatchesTheOpsVerb) {
         run_meshedit({"convert", teapot(), (tmp / "ops.dae").string(), "--ops", "simplify:0.1"});
     ASSERT_EQ(ops.exit_code, 0) << ops.err;
     EXPECT_EQ(canonical_faces(read_mesh(tmp / "ops.dae").mesh), canonical_faces(small));
+}
+
+// --attributes: aware (the default) and blind are the verb's `attributes=`; on the duck
+// (texture coordinates with seams) they differ, on the teapot (none) they are the same bits.
+TEST(CliSimplify, AttributesAwareOrBlind) {
+    TempDir tmp;
+    const auto read_file = [](const std::filesystem::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    for (const char* mode : {"aware", "blind"}) {
+        const RunResult r =
+            run_meshedit({"simplify", teapot(), (tmp / (std::string(mode) + ".obj")).string(),
+                          "--ratio", "0.1", "--attributes", mode});
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    EXPECT_EQ(read_file(tmp / "aware.obj"), read_file(tmp / "blind.obj"));
+    const RunResult bad = run_meshedit({"simplify", teapot(), (tmp / "x.obj").string(), "--ratio",
+                                        "0.1", "--attributes", "smart"});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_FALSE(std::filesystem::exists(tmp / "x.obj"));
+    const std::filesystem::path duck = "/usr/share/assimp/models/Collada/duck.dae";
+    if (!std::filesystem::exists(duck)) {
+        GTEST_SKIP() << duck << " missing (assimp-testmodels)";
+    }
+    for (const char* mode : {"aware", "blind"}) {
+        const RunResult r = run_meshedit(
+            {"convert", duck.string(), (tmp / (std::string("duck_") + mode + ".obj")).string(),
+             "--ops", std::string("triangulate,simplify:0.1:attributes=") + mode});
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    EXPECT_NE(read_file(tmp / "duck_aware.obj"), read_file(tmp / "duck_blind.obj"));
 }
 
 TEST(CliSimplify, FacesAndErrorBound) {

@@ -122,6 +122,24 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
     EXPECT_EQ(syntax_error(""), "empty op in --ops list ''");
 }
 
+// simplify takes its attribute mode last, by name (after the amounts or alone); a wrong
+// name is refused with the two, and no other verb takes one.
+TEST(OpsLanguage, SimplifyTakesTheAttributeMode) {
+    const auto steps =
+        parse("simplify:attributes=blind, simplify:0.1,inf:attributes=aware, simplify:0.2");
+    ASSERT_EQ(steps.size(), 3u);
+    EXPECT_EQ(steps[0].attributes, SimplifyAttributes::Blind);
+    EXPECT_EQ(steps[0].amounts[0], 0.5);
+    EXPECT_EQ(steps[1].attributes, SimplifyAttributes::Aware);
+    EXPECT_EQ(steps[1].amounts[0], 0.1);
+    EXPECT_EQ(steps[2].attributes, std::nullopt);
+    EXPECT_EQ(syntax_error("simplify:0.1:attributes=smart"),
+              "bad op 'simplify:0.1:attributes=smart': unknown attribute mode 'smart' (aware: "
+              "texture coordinates, colours and seams weigh; blind: positions only)");
+    EXPECT_NE(syntax_error("remesh:attributes=blind"), "");
+    EXPECT_NE(syntax_error("loop:attributes=blind"), "");
+}
+
 // The subdivisions take the texture coordinates' interpolation last, by name; a wrong name is
 // refused with the names, and a verb that is no subdivision takes none.
 TEST(OpsLanguage, SubdivisionsTakeTheUvInterpolation) {

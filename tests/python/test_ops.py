@@ -35,6 +35,8 @@ def test_every_verb_is_a_method():
     (("loop", (2,), {"uv": "none"}), "loop:2:uv=none"),
     (("catmull_clark", (), {"uv": "corners+1"}), "catmull_clark:uv=corners+1"),
     (("simplify", (0.25,), {}), "simplify:0.25"),
+    (("simplify", (0.25,), {"attributes": "blind"}), "simplify:0.25:attributes=blind"),
+    (("simplify", (), {"attributes": "aware"}), "simplify:attributes=aware"),
     (("remesh", (), {"rounds": 5}), "remesh:0,5"),
     (("triangulate", (), {}), "triangulate"),
     (("triangulate", (), {"f": 2}), "triangulate:f2"),

@@ -4,6 +4,7 @@
 /// each survivor placed where the error is least (docs/simplify.md).
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <string>
@@ -13,6 +14,17 @@
 #include "meshedit/core/op_status.h"
 
 namespace meshedit {
+
+/// Whether simplify() weighs texture coordinates, vertex colours and materials
+/// (docs/simplify.md, "Attributes").
+enum class SimplifyAttributes : std::uint8_t {
+    /// No collapse across a UV seam or material border, no UV triangle turned over, UVs and
+    /// colours in the quadric (Hoppe 1999) and set at its optimum. A mesh with none of them
+    /// takes Blind's path, bit for bit.
+    Aware,
+    /// Positions only; the attributes follow collapse()'s carry (UVs and colours copied).
+    Blind,
+};
 
 struct SimplifyOptions {
     /// Stop once the mesh has at most this many faces (at least 1).
@@ -28,6 +40,8 @@ struct SimplifyOptions {
     /// crease (crease_by_angle(), normals.h); infinity: off (the creases already marked are
     /// kept all the same).
     double feature_angle_deg = kNoFeatureAngle;
+    /// Aware by default; it changes nothing on a mesh without UVs, colours or materials.
+    SimplifyAttributes attributes = SimplifyAttributes::Aware;
     /// Called with the fraction done (0…1), non-decreasing, at coarse intervals, last with 1.
     std::function<void(double)> progress;
 };
@@ -41,6 +55,10 @@ struct SimplifyReport {
     /// Candidate collapses skipped because they would pull a crease vertex off its crease:
     /// a non-crease edge between two crease vertices, or a crease edge between two corners.
     std::size_t refused_crease = 0;
+    /// Aware only: collapses skipped because they would mix two UV charts at a corner (a
+    /// vertex where three charts meet, a seam's end), or turn a UV triangle over.
+    std::size_t refused_seam = 0;
+    std::size_t refused_uv_flip = 0;
     std::size_t creases_marked = 0;  ///< by feature_angle_deg, before the first collapse
     /// The largest error of an applied collapse (same unit as SimplifyOptions::max_error).
     double largest_error = 0.0;
@@ -68,8 +86,14 @@ OpStatus check_simplify(const Mesh& mesh, const SimplifyOptions& options);
 /// edge's ends (the corner's, if one is a corner: the end of a crease, three or more crease
 /// edges, or two that turn by more than 30 degrees; two corners never collapse), a collapse of
 /// another edge with one crease end puts it at that end, and one between two crease vertices
-/// is refused. Deleted elements stay tombstoned (garbage collection is the caller's). \pre
-/// check_simplify() returned ok. \post validate(mesh) passes.
+/// is refused. With SimplifyAttributes::Aware on a mesh with texture coordinates, colours or
+/// materials, the attribute quadrics join the position quadric, a collapse that would turn a
+/// UV triangle over or mix two charts at a corner is refused, the survivor's corners take the
+/// UV quadric's best value inside a chart (along a seam each side's two corners interpolated,
+/// else the seam end's corners), its colour the colour quadric's best within the input's
+/// range, and material borders get the boundary's penalty planes. Deleted elements stay
+/// tombstoned (garbage collection is the caller's). \pre check_simplify() returned ok.
+/// \post validate(mesh) passes.
 SimplifyReport simplify(Mesh& mesh, const SimplifyOptions& options);
 
 }  // namespace meshedit

@@ -24,6 +24,7 @@
 #include "meshedit/core/local_ops.h"  // CodeNames
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/number_text.h"  // amounts are written as number_text() writes them
+#include "meshedit/core/simplify.h"     // SimplifyAttributes
 #include "meshedit/core/subdivision.h"
 
 namespace meshedit::ops {
@@ -41,6 +42,9 @@ enum Arg : unsigned {
     /// `loop:uv=corners`, `loop:2:uv=none`: how texture coordinates are refined (the names of
     /// uv_interpolation_name(), subdivision.h), after the levels
     kUvArg = 1u << 7,
+    /// `simplify:0.1:attributes=blind`: whether QEM weighs texture coordinates and colours
+    /// (aware or blind, simplify.h), after the amounts
+    kAttributesArg = 1u << 8,
 };
 
 /// The element kind a step names.
@@ -87,6 +91,8 @@ struct Step {
     std::array<double, kMaxAmounts> amounts{};
     /// kUvArg: the texture coordinates' interpolation as written, else the core's default.
     std::optional<UvInterpolation> uv;
+    /// kAttributesArg: `attributes=aware|blind` as written, else the core's default.
+    std::optional<SimplifyAttributes> attributes;
     std::string text;  ///< the step as written ("flip:3-4"), for messages
 };
 

@@ -90,7 +90,8 @@ def _region_text(faces, verb, info):
     return "+".join(f"f{x}" for x in indices)
 
 
-def step_text(verb, *args, v=None, f=None, e=None, levels=None, uv=None, **amounts):
+def step_text(verb, *args, v=None, f=None, e=None, levels=None, uv=None, attributes=None,
+              **amounts):
     """The edit-language step that mesh.<verb>(*args, **kwargs) runs.
 
     Elements: an edge as two vertex indices (`flip(0, 6)`, or `e=(0, 6)`), a weld's two edges
@@ -98,7 +99,8 @@ def step_text(verb, *args, v=None, f=None, e=None, levels=None, uv=None, **amoun
     when the verb takes only faces or only vertices: `poke(7)`). Amounts follow, positionally or
     by name (AMOUNT_NAMES); subdivision verbs take `levels` (`loop(2)`) and `uv`, how texture
     coordinates are refined (`loop(2, uv="none")`: none, corners, corners+1, corners+2,
-    boundaries or all); region verbs take the
+    boundaries or all); simplify takes `attributes`, "aware" (the default: UV seams, colours
+    and materials weigh) or "blind" (positions only); region verbs take the
     faces as a list or array of face indices (`extrude_region([6, 7, 8], 0.5)`, or `f=[...]`).
     """
     info = _VERBS.get(verb)
@@ -138,6 +140,10 @@ def step_text(verb, *args, v=None, f=None, e=None, levels=None, uv=None, **amoun
         raise TypeError(f"{verb}() got an unexpected keyword argument 'uv'")
     if uv is not None and not isinstance(uv, str):
         raise TypeError(f"{verb}(): uv must be a name such as 'corners', got {uv!r}")
+    if attributes is not None and not info.get("attributes"):
+        raise TypeError(f"{verb}() got an unexpected keyword argument 'attributes'")
+    if attributes is not None and attributes not in ("aware", "blind"):
+        raise ValueError(f"{verb}(): attributes must be 'aware' or 'blind', got {attributes!r}")
     if info["levels"]:
         if args and levels is None:
             levels = args.pop(0)
@@ -177,6 +183,8 @@ def step_text(verb, *args, v=None, f=None, e=None, levels=None, uv=None, **amoun
         text += ":" + target
     if values:
         text += ":" + ",".join(amount_text(x) for x in values)
+    if attributes is not None:
+        text += ":attributes=" + attributes
     return text
 
 
