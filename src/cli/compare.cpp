@@ -2,6 +2,7 @@
 // whether two files hold the same mesh up to renumbering, and how far apart they are
 // (core/compare.h).
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -61,6 +62,24 @@ void write_field(const std::filesystem::path& out, Mesh& a, const Deviation& d) 
     report_unkept(out, write_mesh(a, out));
 }
 
+// "the same (36 corners)", "12 of 36 differ, max 0.25; first: halfedge 7 of A", "only in A".
+std::string attribute_text(const AttributeDifference& x) {
+    if (x.in_a != x.in_b) {
+        return x.in_a ? "only in A" : "only in B";
+    }
+    const std::string of =
+        std::to_string(x.compared) + " " +
+        (x.name == "texture coordinates" || x.name == "corner normals" ? "corners"
+         : x.name == "vertex colours"                                  ? "vertices"
+                                                                       : "faces");
+    if (x.differing == 0) {
+        return "the same (" + of + ")";
+    }
+    return std::to_string(x.differing) + " of " + of + " differ" +
+           (x.name == "materials" ? "" : ", max " + readable_number(x.max)) +
+           "; first: " + to_string(x.first_a) + " of A";
+}
+
 int compare(Settings& s) {
     if (!s.field.empty() && file_extension(s.field) != ".ply") {
         throw UsageError("--field writes a .ply file (its vertices carry the deviation), not '" +
@@ -70,7 +89,15 @@ int compare(Settings& s) {
     const LoadedDocument b = load_surface(s.b, s.density);
     const TopologyMatch match = match_topology(a.mesh, b.mesh);
     const Deviation d = measure_deviation(a.mesh, b.mesh, match);
-    const bool same = match.isomorphic && d.max <= s.tolerance;
+    const std::vector<AttributeDifference> attributes = compare_attributes(a.mesh, b.mesh, match);
+    // An attribute one mesh lacks, a material that differs or a value beyond the tolerance
+    // makes them different too.
+    const auto attribute_same = [&](const AttributeDifference& x) {
+        return x.in_a == x.in_b &&
+               (x.name == "materials" ? x.differing == 0 : x.max <= s.tolerance);
+    };
+    const bool same = match.isomorphic && d.max <= s.tolerance &&
+                      std::all_of(attributes.begin(), attributes.end(), attribute_same);
     if (!s.field.empty()) {
         write_field(s.field, a.mesh, d);
     }
@@ -94,6 +121,18 @@ int compare(Settings& s) {
                           {"max_percent", percent_of(d.max, d.diagonal)},
                           {"rms_percent", percent_of(d.rms, d.diagonal)},
                           {"hausdorff_percent", percent_of(d.hausdorff, d.diagonal)}};
+        Json attribute_list = Json::array();
+        for (const AttributeDifference& x : attributes) {
+            attribute_list.push_back(
+                {{"name", x.name},
+                 {"in_a", x.in_a},
+                 {"in_b", x.in_b},
+                 {"compared", x.compared},
+                 {"differing", x.differing},
+                 {"max", x.max},
+                 {"first", x.first_a.is_none() ? Json(nullptr) : ref_json(x.first_a)}});
+        }
+        j["attributes"] = std::move(attribute_list);
         j["tolerance"] = s.tolerance;
         j["same"] = same;
         if (s.mapping && match.isomorphic) {
@@ -127,6 +166,9 @@ int compare(Settings& s) {
                                         readable_number(d.a_to_b) + ", B to A " +
                                         readable_number(d.b_to_a) + ")");
     print_row("diagonal", readable_number(d.diagonal) + " (A's bounding box, 100%)");
+    for (const AttributeDifference& x : attributes) {
+        print_row(x.name, attribute_text(x));
+    }
     print_row("result", std::string(same ? "the same" : "different") + " (tolerance " +
                             readable_number(s.tolerance) + ")");
     if (s.mapping && match.isomorphic) {

@@ -166,6 +166,36 @@ TEST(CliCompare, OtherCountsDiffer) {
     EXPECT_EQ(j["b"]["edges"].get<int>(), 69);
 }
 
+// What the meshes carry is compared too: assimp's duck through OBJ keeps everything (the
+// same), through PLY loses its material (different, said by name).
+TEST(CliCompare, AttributesAreCompared) {
+    const std::string duck = "/usr/share/assimp/models/Collada/duck.dae";
+    if (!std::filesystem::exists(duck)) {
+        GTEST_SKIP() << "install assimp-testmodels (scripts/install-deps.sh does)";
+    }
+    TempDir tmp;
+    for (const char* name : {"duck.obj", "duck.ply"}) {
+        ASSERT_EQ(run_meshedit({"convert", duck, (tmp / name).string()}).exit_code, 0);
+    }
+    const RunResult obj = run_meshedit({"compare", duck, (tmp / "duck.obj").string()});
+    EXPECT_EQ(obj.exit_code, 0) << obj.out << obj.err;
+    EXPECT_NE(obj.out.find("texture coordinates:"), std::string::npos) << obj.out;
+    EXPECT_NE(obj.out.find("the same (8500 corners)"), std::string::npos) << obj.out;
+    const RunResult ply = run_meshedit({"compare", duck, (tmp / "duck.ply").string(), "--json"});
+    EXPECT_EQ(ply.exit_code, 1) << ply.out << ply.err;
+    const Json j = Json::parse(ply.out);
+    EXPECT_EQ(j["isomorphic"], true);
+    bool materials = false;
+    for (const Json& a : j["attributes"]) {
+        if (a["name"] == "materials") {
+            materials = true;
+            EXPECT_EQ(a["in_a"], true);
+            EXPECT_EQ(a["in_b"], false);
+        }
+    }
+    EXPECT_TRUE(materials) << ply.out;
+}
+
 TEST(CliCompare, BadInputExitsTwo) {
     const Pair files([](Mesh&) {});
     const std::string missing = (files.dir / "missing.obj").string();

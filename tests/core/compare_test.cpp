@@ -9,9 +9,11 @@
 #include <cmath>
 #include <vector>
 
+#include "meshedit/core/attributes.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/compare.h"
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/shapes.h"
 #include "support/renumber.h"
 
@@ -209,6 +211,69 @@ TEST(Compare, DeviationOfOneLiftedVertex) {
     EXPECT_NEAR(c.vertex[lifted_a.idx()], 0.3, 1e-15);
     EXPECT_EQ(c.vertex[0], 0.0);
     EXPECT_NEAR(c.hausdorff, 0.3, 1e-15);
+}
+
+// Attributes computed from the geometry alone (a corner's texture coordinate from its vertex
+// and its face's centre, so the seams are real; colours from positions; a material per face
+// side), so a renumbered copy gets them by the same rule.
+void decorate(Mesh& mesh) {
+    auto uv = mesh.property<Halfedge, Vec2>(kTexCoordProperty);
+    auto colour = mesh.property<Vertex, Vec4>(kColorProperty);
+    auto material = mesh.property<Face, std::uint32_t>(kMaterialProperty);
+    mesh.materials() = {Material{.name = "up"}, Material{.name = "down"}};
+    for (const Face f : mesh.faces()) {
+        const Vec3 c = face_centroid(mesh, f);
+        material[f] = c.y > 0 ? 0 : 1;
+        for (const Halfedge h : mesh.halfedges(f)) {
+            const Vec3 p = mesh.position(mesh.to_vertex(h));
+            uv[h] = Vec2{p.x + 0.5 * std::round(c.z), p.y};
+        }
+    }
+    for (const Vertex v : mesh.vertices()) {
+        const Vec3 p = mesh.position(v);
+        colour[v] = Vec4{p.x, p.y, p.z, 1.0};
+    }
+}
+
+TEST(Compare, AttributesOfARenumberedCopyAreTheSameAndAChangeIsFound) {
+    Mesh a = shapes::torus(12, 8);
+    Mesh b = renumbered(a, 7);
+    decorate(a);
+    decorate(b);
+    const TopologyMatch match = match_topology(a, b);
+    ASSERT_TRUE(match.isomorphic);
+    std::vector<AttributeDifference> d = compare_attributes(a, b, match);
+    ASSERT_EQ(d.size(), 3u);  // texture coordinates, vertex colours, materials
+    for (const AttributeDifference& x : d) {
+        EXPECT_TRUE(x.in_a && x.in_b) << x.name;
+        EXPECT_EQ(x.differing, 0u) << x.name;
+        EXPECT_GT(x.compared, 0u) << x.name;
+    }
+    // One corner of B moved by 0.25 in u, one vertex's colour, one face's material.
+    auto uv = b.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const Halfedge moved = b.halfedge(Face(5));
+    uv[moved].x += 0.25;
+    b.get_property<Vertex, Vec4>(kColorProperty)[Vertex(3)].y = 0.5;
+    auto material = b.get_property<Face, std::uint32_t>(kMaterialProperty);
+    material[Face(9)] = 1 - material[Face(9)];
+    d = compare_attributes(a, b, match);
+    ASSERT_EQ(d.size(), 3u);
+    EXPECT_EQ(d[0].name, "texture coordinates");
+    EXPECT_EQ(d[0].differing, 1u);
+    EXPECT_NEAR(d[0].max, 0.25, 1e-12);
+    EXPECT_EQ(match.halfedge[d[0].first_a.index], moved.idx());
+    EXPECT_EQ(d[1].name, "vertex colours");
+    EXPECT_EQ(d[1].differing, 1u);
+    EXPECT_EQ(match.vertex[d[1].first_a.index], 3u);
+    EXPECT_EQ(d[2].name, "materials");
+    EXPECT_EQ(d[2].differing, 1u);
+    EXPECT_EQ(match.face[d[2].first_a.index], 9u);
+    // An attribute one side lacks.
+    auto colours = b.get_property<Vertex, Vec4>(kColorProperty);
+    b.remove_property(colours);
+    d = compare_attributes(a, b, match);
+    EXPECT_TRUE(d[1].in_a);
+    EXPECT_FALSE(d[1].in_b);
 }
 
 }  // namespace

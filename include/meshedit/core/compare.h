@@ -60,6 +60,23 @@ struct Deviation {
 /// a mesh without vertices is infinitely far from one with some.
 Deviation measure_deviation(const Mesh& a, const Mesh& b, const TopologyMatch& match);
 
+/// How one attribute (attributes.h) differs between A and B under an isomorphism.
+struct AttributeDifference {
+    std::string name;  ///< "texture coordinates", "corner normals", "vertex colours", …
+    bool in_a = false, in_b = false;  ///< which mesh has it
+    std::size_t compared = 0;         ///< corners, vertices or faces compared (both have it)
+    std::size_t differing = 0;        ///< of those, whose values are not equal
+    double max = 0.0;                 ///< the largest component difference (0 for materials)
+    ElementRef first_a;               ///< A's first differing element
+};
+
+/// Texture coordinates (per corner), corner normals, vertex and face colours and face
+/// materials (compared by name, colour, opacity and texture) of A against B's matched
+/// elements; each attribute either mesh has, in that order. Empty unless `match` is
+/// isomorphic.
+std::vector<AttributeDifference> compare_attributes(const Mesh& a, const Mesh& b,
+                                                    const TopologyMatch& match);
+
 /// 100 * distance / diagonal; 0 when both are 0.
 double percent_of(double distance, double diagonal);
 
