@@ -183,6 +183,9 @@ const std::vector<GoldenCase>& golden_cases() {
         {"textured_duck_cc1",
          "assimp:Collada/duck.dae",
          {"--ops", "catmull_clark:1", "--camera", "60,15"}},
+        {"textured_duck_simplify10",
+         "assimp:Collada/duck.dae",
+         {"--ops", "triangulate,simplify:0.1", "--camera", "60,15"}},
         // The checker shows the charts: eye, beak and wings each their own, head and body
         // squeezed into one cell of the yellow (seams orange).
         {"textured_duck_checker",
