@@ -616,6 +616,10 @@ void App::rebuild_overlay() {
         scene.mesh = &doc.mesh;
         scene.patches = doc.patches;
         scene.show_nets = view.show_nets;
+        scene.steps = editor_.mode() == Mode::Surface ? view.patch_step : -1;
+        scene.steps_patch = view.patch;
+        scene.steps_u = view.patch_u;
+        scene.steps_v = view.patch_v;
         scene.uv_seams = view.render.color == SurfaceColor::Checker;
         scene.material_borders = view.render.color == SurfaceColor::Material;
     } else {

@@ -140,6 +140,7 @@ constexpr std::array kTable{
     Binding{Key::Minus, kNoMods, kSurfaceMode, {Command::DensityDown}, "-", "tessellation density down"},
     Binding{Key::KeypadSubtract, kNoMods, kSurfaceMode, {Command::DensityDown}, "-", "tessellation density down"},
     Binding{key_of('B'), kNoMods, kSurfaceMode, {Command::ToggleNets}, "B", "toggle control nets"},
+    Binding{key_of('U'), kShift, kSurfaceMode, {Command::PatchStep}, "Shift+U", "evaluate the patch at the selection by de Casteljau, one step a press: along u on every row, then along v, to S(u, v); then off"},
 };
 
 // The mouse as each mode handles it (App::on_mouse_button, on_cursor, on_scroll).

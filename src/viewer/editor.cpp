@@ -191,6 +191,7 @@ Outcome Editor::run(Action action) {
             return out;
         }
         case Command::ToggleNets:
+        case Command::PatchStep:
             return run_surface(c);
         default:
             break;  // display commands, above

@@ -5,8 +5,12 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "meshedit/core/budget.h"
+#include "meshedit/core/normals.h"
+#include "meshedit/overlay/overlay.h"
 #include "meshedit/viewer/editor.h"
 
 namespace meshedit::viewer {
@@ -133,7 +137,87 @@ Outcome Editor::set_t(double t) {
     return {kDisplay, buf};
 }
 
+namespace {
+
+// Where a selected element is: a vertex's position, an edge's (or halfedge's) midpoint, a
+// face's centre; nothing for no (or a stale) selection.
+std::optional<Vec3> point_of(const Mesh& mesh, const ElementRef& e) {
+    if (!is_live(mesh, e)) {
+        return std::nullopt;
+    }
+    switch (e.kind) {
+        case ElementRef::Kind::Vertex:
+            return mesh.position(Vertex(e.index));
+        case ElementRef::Kind::Edge:
+        case ElementRef::Kind::Halfedge: {
+            const Halfedge h = e.kind == ElementRef::Kind::Edge ? Mesh::halfedge(Edge(e.index), 0)
+                                                                : Halfedge(e.index);
+            return 0.5 * (mesh.position(mesh.from_vertex(h)) + mesh.position(mesh.to_vertex(h)));
+        }
+        case ElementRef::Kind::Face:
+            return face_centroid(mesh, Face(e.index));
+        default:
+            return std::nullopt;
+    }
+}
+
+}  // namespace
+
+// Shift+U: the first press finds the patch and (u, v) nearest the selection (the tessellated
+// point closest to the selected vertex, edge midpoint or face centre; patch 0 at the middle
+// when nothing is selected), each press shows one more de Casteljau step, past the last off.
+Outcome Editor::step_patch() {
+    if (doc_.patches.empty()) {
+        return refused("no patches to evaluate");
+    }
+    if (view_.patch_step < 0) {
+        view_.patch = 0;
+        view_.patch_u = view_.patch_v = 0.5;
+        if (const std::optional<Vec3> at = point_of(doc_.mesh, doc_.selection)) {
+            constexpr int kGrid = 32;
+            double best = INFINITY;
+            for (std::size_t k = 0; k < doc_.patches.size(); ++k) {
+                for (int j = 0; j <= kGrid; ++j) {
+                    for (int i = 0; i <= kGrid; ++i) {
+                        const double u = double(i) / kGrid, v = double(j) / kGrid;
+                        const double d = distance(doc_.patches[k].evaluate(u, v), *at);
+                        if (d < best) {
+                            best = d;
+                            view_.patch = k;
+                            view_.patch_u = u;
+                            view_.patch_v = v;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    OverlayBatch scratch;
+    const int steps = add_patch_steps(doc_.patches[view_.patch], view_.patch_u, view_.patch_v,
+                                      1 << 20, OverlayStyle(), scratch);
+    if (++view_.patch_step > steps) {  // steps 0 (the net) … steps (S(u, v))
+        view_.patch_step = -1;
+        return {kDisplay, "patch evaluation off"};
+    }
+    const BezierPatch& patch = doc_.patches[view_.patch];
+    const int along_u = patch.cols - 1;
+    char where[96];
+    std::snprintf(where, sizeof where, "patch %zu at (u, v) = (%.3g, %.3g): ", view_.patch,
+                  view_.patch_u, view_.patch_v);
+    const std::string what =
+        view_.patch_step == 0         ? "the control net"
+        : view_.patch_step <= along_u ? "level " + std::to_string(view_.patch_step) + " along u"
+        : view_.patch_step + 1 < steps
+            ? "level " + std::to_string(view_.patch_step - along_u) + " along v"
+            : "S(u, v)";
+    return {kDisplay, where + what + " (step " + std::to_string(view_.patch_step) + " of " +
+                          std::to_string(steps) + "; Shift+U: next)"};
+}
+
 Outcome Editor::run_surface(Command command) {
+    if (command == Command::PatchStep) {
+        return step_patch();
+    }
     if (command == Command::ToggleNets) {
         view_.show_nets = !view_.show_nets;
         return {kDisplay, view_.show_nets ? "control nets shown" : "control nets hidden"};

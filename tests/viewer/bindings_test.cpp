@@ -48,6 +48,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('R'), kCtrl, kMeshModes, {Command::ReloadShaders}},
             {key_of('F'), kAlt | kShift, kMeshModes, {Command::CycleColormap}},
             {key_of('C'), kAlt, kMeshModes, {Command::CycleSurfaceColor}},
+            {key_of('U'), kShift, kSurfaceMode, {Command::PatchStep}},
             {key_of('V'), kShift, kMeshModes, {Command::Validate}},
             {key_of('V'), kAlt, kMeshModes, {Command::FindProblems}},
             {key_of('N'), kAlt, kMeshModes, {Command::ToggleMarksNear}},

@@ -243,4 +243,43 @@ TEST(Editor, SurfaceDensityRetessellates) {
 }
 
 }  // namespace
+// Shift+U steps de Casteljau on the patch at the selection: the first press finds the patch
+// and (u, v) whose point is the selected vertex, each press one step more, past S(u, v) off.
+TEST(Editor, PatchStepsFollowTheSelection) {
+    const fs::path file = fs::path(MESHEDIT_SOURCE_DIR) / "bez" / "teapot.bez";
+    const std::vector<BezierPatch> patches = read_bez(file);
+    Editor ed;
+    ASSERT_FALSE(ed.open(file).refused);
+    // The tessellation's point of patch 5 at (u, v) = (0.25, 0.75): density 8 samples it.
+    const Vec3 target = patches[5].evaluate(0.25, 0.75);
+    Vertex at;
+    for (const Vertex v : ed.mesh().vertices()) {
+        if (distance(ed.mesh().position(v), target) < 1e-9) {
+            at = v;
+        }
+    }
+    ASSERT_TRUE(at.is_valid());
+    ASSERT_FALSE(ed.select(ElementRef::vertex(at)).refused);
+    Outcome out = ed.press(key_of('U'), kShift);
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(ed.view().patch_step, 0);
+    // A seam point is on two patches: either one, at the point's own (u, v) there.
+    EXPECT_LT(
+        distance(patches[ed.view().patch].evaluate(ed.view().patch_u, ed.view().patch_v), target),
+        1e-9);
+    EXPECT_NE(out.message.find("the control net (step 0 of 6; Shift+U: next)"), std::string::npos)
+        << out.message;
+    // 3 levels along u, 3 along v (the last one S(u, v)), then off.
+    out = ed.press(key_of('U'), kShift);
+    EXPECT_NE(out.message.find("level 1 along u (step 1 of 6"), std::string::npos) << out.message;
+    for (int k = 2; k <= 6; ++k) {
+        out = ed.press(key_of('U'), kShift);
+        EXPECT_EQ(ed.view().patch_step, k);
+    }
+    EXPECT_NE(out.message.find("S(u, v) (step 6 of 6"), std::string::npos) << out.message;
+    out = ed.press(key_of('U'), kShift);
+    EXPECT_EQ(ed.view().patch_step, -1);
+    EXPECT_EQ(out.message, "patch evaluation off");
+}
+
 }  // namespace meshedit::viewer

@@ -72,15 +72,17 @@ enum class Command {
     ToggleInfo,
     ToggleHelp,
     ResetCamera,
-    CycleUp,            ///< which world axis is up: +Y, +Z
-    ToggleTrackball,    ///< turntable or trackball orbit
-    CycleStencil,       ///< stencil view: off, Loop (Warren), Loop (Loop's), Catmull-Clark
-    ToggleDiagram,      ///< the rewiring panel
-    ToggleMarksNear,    ///< a phased Loop's marks near the selection only, or everywhere
-    CycleField,         ///< the scalar field shown: off, then each of core/fields.h
-    ReloadShaders,      ///< recompile every shader from disk (user shaders: modes 8, 9)
-    CycleColormap,      ///< the field's colour map: default, viridis, magma, diverging
-    CycleSurfaceColor,  ///< where the surface colour comes from (overlay/shading.h)
+    CycleUp,          ///< which world axis is up: +Y, +Z
+    ToggleTrackball,  ///< turntable or trackball orbit
+    CycleStencil,     ///< stencil view: off, Loop (Warren), Loop (Loop's), Catmull-Clark
+    ToggleDiagram,    ///< the rewiring panel
+    ToggleMarksNear,  ///< a phased Loop's marks near the selection only, or everywhere
+    CycleField,       ///< the scalar field shown: off, then each of core/fields.h
+    ReloadShaders,    ///< recompile every shader from disk (user shaders: modes 8, 9)
+    CycleColormap,    ///< the field's colour map: default, viridis, magma, diverging
+    CycleSurfaceColor,
+    PatchStep,  ///< Surface mode: de Casteljau on the patch at the selection, one step more  ///<
+                ///< where the surface colour comes from (overlay/shading.h)
     Screenshot,
     // History and files.
     Undo,

@@ -92,6 +92,11 @@ struct ViewState {
     const FieldInfo* field = nullptr;
     std::optional<ColorMap> colormap;
     float field_clip = 0.05f;
+    /// Surface mode (Shift+U): patch `patch` evaluated at (patch_u, patch_v) by de Casteljau
+    /// up to step `patch_step` (SceneContent::steps); off when negative.
+    int patch_step = -1;
+    std::size_t patch = 0;
+    double patch_u = 0.5, patch_v = 0.5;
 };
 
 /// The parameters of the whole-mesh operations the keys run (the info panel's "Global
@@ -478,6 +483,7 @@ private:
     Outcome cycle_field();
     /// Alt+C: the next surface colour the mesh has data for (overlay/shading.h).
     Outcome cycle_surface_color();
+    Outcome step_patch();
     Outcome undo();
     Outcome redo();
     Outcome quit();
