@@ -27,6 +27,7 @@
 #include "meshedit/ops/ops.h"
 #include "meshedit/overlay/camera.h"
 #include "meshedit/overlay/display_data.h"
+#include "meshedit/overlay/label_layout.h"
 #include "meshedit/overlay/op_diagram.h"
 #include "meshedit/overlay/overlay.h"
 #include "meshedit/overlay/shading.h"
@@ -327,6 +328,10 @@ int run(const Options& options) {
     lap("draw");
     Image image = target.read();
     lap("readback");
+    if (!overlay.labels.empty() && !diagram && !is_curve && mesh.n_faces() > 0) {
+        const glm::vec3 eye = camera.eye();
+        hide_labels_behind(overlay.labels, Vec3(eye.x, eye.y, eye.z), mesh, FaceBvh(mesh));
+    }
     draw_labels(image, overlay.labels, camera, diagram ? diagram_font_px(w) : 0);
     if (field != nullptr) {
         draw_legend(image, shown.coloring,

@@ -3,6 +3,8 @@
 
 #include "meshedit/overlay/label_layout.h"
 
+#include <algorithm>
+
 namespace meshedit {
 namespace {
 
@@ -16,6 +18,16 @@ bool inside(const LabelRect& r, float width, float height) {
 }
 
 }  // namespace
+
+void hide_labels_behind(std::vector<OverlayBatch::Label>& labels, const Vec3& eye, const Mesh& mesh,
+                        const FaceBvh& tree) {
+    for (OverlayBatch::Label& label : labels) {
+        FaceBvh::Ray ray{eye, label.at - eye, 0.0, 0.999};
+        label.hidden = !label.fixed && tree.intersect(mesh, ray).has_value();
+    }
+    std::stable_partition(labels.begin(), labels.end(),
+                          [](const OverlayBatch::Label& label) { return !label.hidden; });
+}
 
 std::vector<std::optional<LabelRect>> place_labels(std::span<const LabelSpot> spots, float gap,
                                                    float margin, float width, float height) {

@@ -139,10 +139,13 @@ void draw_labels(Image& image, std::span<const OverlayBatch::Label> labels, cons
         const int x = m.x + static_cast<int>(std::lround(placed[i]->x - spots[i].box.x));
         const int y = m.y + static_cast<int>(std::lround(placed[i]->y - spots[i].box.y));
         // Light text on a translucent dark box: readable on any shading.
-        const std::array<float, 4> shade{0.05f, 0.05f, 0.08f, 0.7f};
+        // A label the surface hides (hide_labels_behind()) is drawn faded.
+        const float fade = m.label->hidden ? 0.4f : 1.0f;
+        const std::array<float, 4> shade{0.05f, 0.05f, 0.08f, 0.7f * fade};
         const Color& c = m.label->color;
-        const std::array<float, 4> color{0.5f + 0.5f * c[0], 0.5f + 0.5f * c[1], 0.5f + 0.5f * c[2],
-                                         1.0f};
+        // render_text() ignores alpha: a hidden label's text is mixed towards grey instead.
+        const auto ink = [&](float x) { return fade * (0.5f + 0.5f * x) + (1.0f - fade) * 0.55f; };
+        const std::array<float, 4> color{ink(c[0]), ink(c[1]), ink(c[2]), 1.0f};
         if (!OIIO::ImageBufAlgo::render_box(buffer, x + m.box.xbegin - pad, y + m.box.ybegin - pad,
                                             x + m.box.xend + pad, y + m.box.yend + pad, shade,
                                             true) ||

@@ -16,6 +16,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "meshedit/files/io_error.h"
+#include "meshedit/overlay/label_layout.h"
 #include "meshedit/overlay/overlay.h"
 #include "meshedit/render/image.h"
 #include "meshedit/render/labels.h"
@@ -712,7 +713,16 @@ void App::draw_frame() {
     stats.triangles = scene_->has_mesh() ? scene_->mesh().triangle_count() : 0;
     int window_w = 1, window_h = 1;
     glfwGetWindowSize(window_, &window_w, &window_h);
-    draw_labels(labels_, camera_, window_w, window_h);
+    if (!labels_.empty() && mesh_mode() && scene_->has_mesh() && !editor_.busy()) {
+        // Which labels the surface hides depends on the camera: every frame (tens of rays).
+        std::vector<OverlayBatch::Label> labels = labels_;
+        const glm::vec3 eye = camera_.eye();
+        hide_labels_behind(labels, Vec3(eye.x, eye.y, eye.z), editor_.mesh(),
+                           display_.picking_tree(editor_.mesh(), editor_.document().revision));
+        draw_labels(labels, camera_, window_w, window_h);
+    } else {
+        draw_labels(labels_, camera_, window_w, window_h);
+    }
     draw_region();
     const PanelRequests requests =
         panels_.draw(editor_, stats, status_, status_error_, display_.field());

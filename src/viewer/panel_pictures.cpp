@@ -57,9 +57,11 @@ void draw_placed_labels(ImDrawList* draw, const std::vector<const OverlayBatch::
         }
         const ImVec2 lo(origin.x + placed[i]->x, origin.y + placed[i]->y);
         const ImVec2 hi(lo.x + placed[i]->w, lo.y + placed[i]->h);
-        draw->AddRectFilled(lo, hi, IM_COL32(13, 13, 20, 180), 2.0f);
+        // A label the surface hides is drawn faded, as the x-ray marks are.
+        const float fade = labels[i]->hidden ? 0.4f : 1.0f;
+        draw->AddRectFilled(lo, hi, IM_COL32(13, 13, 20, static_cast<int>(180 * fade)), 2.0f);
         const Color& c = labels[i]->color;
-        const Color light{0.5f + 0.5f * c[0], 0.5f + 0.5f * c[1], 0.5f + 0.5f * c[2], 1.0f};
+        const Color light{0.5f + 0.5f * c[0], 0.5f + 0.5f * c[1], 0.5f + 0.5f * c[2], fade};
         draw->AddText(ImVec2(lo.x + 2.0f, lo.y + 1.0f), rgba(light), labels[i]->text.c_str());
     }
 }

@@ -7,7 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
+
+#include <vector>
+#include "meshedit/core/face_bvh.h"
+#include "meshedit/core/shapes.h"
 
 namespace meshedit {
 namespace {
@@ -84,4 +89,26 @@ TEST(LabelLayout, FixedLabelsStayAndTheOthersMakeRoom) {
 }
 
 }  // namespace
+// Labels the surface hides from the eye are marked and moved after the others: on the cube
+// seen from +z, a front corner's label stays, a back corner's is hidden, a point in front of
+// the cube stays, and a fixed label (a title) is never hidden.
+TEST(LabelLayout, LabelsBehindTheSurfaceAreMarkedAndPlacedLast) {
+    const Mesh cube = shapes::cube();  // corners at ±1
+    const FaceBvh tree(cube);
+    std::vector<OverlayBatch::Label> labels = {
+        {Vec3(1, 1, -1), "back", {}, OverlayBatch::Label::Side::Right, false},
+        {Vec3(1, 1, 1), "front", {}, OverlayBatch::Label::Side::Right, false},
+        {Vec3(0, 0, 0), "inside", {}, OverlayBatch::Label::Side::Right, false},
+        {Vec3(0, 0, 3), "outside", {}, OverlayBatch::Label::Side::Right, false},
+        {Vec3(-1, -1, -1), "title", {}, OverlayBatch::Label::Side::Right, true},
+    };
+    hide_labels_behind(labels, Vec3(0.3, 0.2, 10), cube, tree);
+    std::vector<std::string> order;
+    for (const OverlayBatch::Label& label : labels) {
+        order.push_back(label.text + (label.hidden ? " (hidden)" : ""));
+    }
+    EXPECT_EQ(order, (std::vector<std::string>{"front", "outside", "title", "back (hidden)",
+                                               "inside (hidden)"}));
+}
+
 }  // namespace meshedit

@@ -9,9 +9,17 @@
 #include <span>
 #include <vector>
 
+#include "meshedit/core/face_bvh.h"
 #include "meshedit/overlay/overlay.h"
 
 namespace meshedit {
+
+/// Marks the labels whose point the surface of `mesh` hides from `eye` (the segment from the
+/// eye meets a triangle of `tree` before 99.9% of the way, so a label on the surface facing
+/// the eye stays shown) and moves them after the others, keeping each group's order: the
+/// visible ones get their places first. Fixed labels are never hidden.
+void hide_labels_behind(std::vector<OverlayBatch::Label>& labels, const Vec3& eye, const Mesh& mesh,
+                        const FaceBvh& tree);
 
 /// A label's box in pixels (top-left corner, size; y grows downward).
 struct LabelRect {

@@ -74,6 +74,9 @@ struct OverlayBatch {
         /// A title or a row of a list rather than a name beside a point: drawn where it is,
         /// never moved or left out; the other labels make room (label_layout.h).
         bool fixed = false;
+        /// The surface is between the eye and its point (hide_labels_behind()): drawn faded
+        /// and placed after the others.
+        bool hidden = false;
     };
     std::vector<Label> labels;
 
