@@ -156,12 +156,13 @@ bool MeshRenderer::update(const Mesh& mesh, std::span<const Face> faces,
     face_slots_.resize(mesh.faces_size());
     vertices_.resize(3 * triangle_count_);
     const bool surface = !surface_.empty();
+    const SurfaceSources sources = surface ? surface_sources(mesh) : SurfaceSources{};
     surface_.resize(surface ? 3 * triangle_count_ : 0);
     for (const auto& [first, last] : written) {
         for (std::size_t t = first; t < last; ++t) {
             write_gpu_triangle(mesh, t);
             if (surface) {
-                write_surface_triangle(mesh, t);
+                write_surface_triangle(mesh, sources, t);
             }
         }
     }

@@ -73,20 +73,18 @@ OIIO::ImageBuf read_rgba(const std::string& path, const std::string& bytes, std:
         why = "could not be read (" + (error.empty() ? "its pixels end early" : error) + ")";
         return {};
     }
-    OIIO::ImageBuf rgba(OIIO::ImageSpec(spec.width, spec.height, 4, OIIO::TypeDesc::UINT8));
-    for (int y = 0; y < spec.height; ++y) {
-        for (int x = 0; x < spec.width; ++x) {
-            const std::uint8_t* p =
-                &pixels[(static_cast<std::size_t>(y) * spec.width + x) * channels];
-            // Grey, grey + alpha, RGB, RGBA.
-            const float r = p[0] / 255.0f;
-            const float g = channels >= 3 ? p[1] / 255.0f : r;
-            const float b = channels >= 3 ? p[2] / 255.0f : r;
-            const float a = channels == 4 ? p[3] / 255.0f : channels == 2 ? p[1] / 255.0f : 1.0f;
-            const float rgba_px[4] = {r, g, b, a};
-            rgba.setpixel(x, y, rgba_px);
-        }
+    // Grey, grey + alpha, RGB, RGBA: all to RGBA bytes in one pass.
+    const std::size_t n = static_cast<std::size_t>(spec.width) * spec.height;
+    std::vector<std::uint8_t> out(4 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint8_t* p = &pixels[i * channels];
+        out[4 * i] = p[0];
+        out[4 * i + 1] = channels >= 3 ? p[1] : p[0];
+        out[4 * i + 2] = channels >= 3 ? p[2] : p[0];
+        out[4 * i + 3] = channels == 4 ? p[3] : channels == 2 ? p[1] : 255;
     }
+    OIIO::ImageBuf rgba(OIIO::ImageSpec(spec.width, spec.height, 4, OIIO::TypeDesc::UINT8));
+    rgba.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, out.data());
     return rgba;
 }
 
@@ -120,10 +118,7 @@ SurfaceColor MeshRenderer::shown_color(SurfaceColor wanted) const {
 }
 
 void MeshRenderer::fill_surface(const Mesh& mesh) {
-    const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
-    const auto vertex_colour = mesh.get_property<Vertex, Vec4>(kColorProperty);
-    const auto face_colour = mesh.get_property<Face, Vec4>(kFaceColorProperty);
-    const auto material = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
+    const auto& [uv, vertex_colour, face_colour, material] = surface_sources(mesh);
     has_texcoords_ = static_cast<bool>(uv);
     has_colours_ = vertex_colour || face_colour;
     has_materials_ = material && !mesh.materials().empty();
@@ -145,8 +140,9 @@ void MeshRenderer::fill_surface(const Mesh& mesh) {
     }
     load_textures(has_materials_ ? mesh.materials() : std::vector<Material>{});
     surface_.resize(3 * triangle_count_);
+    const SurfaceSources sources = surface_sources(mesh);
     for (std::size_t t = 0; t < triangle_count_; ++t) {
-        write_surface_triangle(mesh, t);
+        write_surface_triangle(mesh, sources, t);
     }
     glBindBuffer(GL_ARRAY_BUFFER, surface_vbo_);
     upload_buffer(GL_ARRAY_BUFFER, surface_capacity_, surface_.data(),
@@ -154,11 +150,16 @@ void MeshRenderer::fill_surface(const Mesh& mesh) {
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void MeshRenderer::write_surface_triangle(const Mesh& mesh, std::size_t t) {
-    const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
-    const auto vertex_colour = mesh.get_property<Vertex, Vec4>(kColorProperty);
-    const auto face_colour = mesh.get_property<Face, Vec4>(kFaceColorProperty);
-    const auto material = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
+MeshRenderer::SurfaceSources MeshRenderer::surface_sources(const Mesh& mesh) {
+    return {mesh.get_property<Halfedge, Vec2>(kTexCoordProperty),
+            mesh.get_property<Vertex, Vec4>(kColorProperty),
+            mesh.get_property<Face, Vec4>(kFaceColorProperty),
+            mesh.get_property<Face, std::uint32_t>(kMaterialProperty)};
+}
+
+void MeshRenderer::write_surface_triangle(const Mesh& mesh, const SurfaceSources& sources,
+                                          std::size_t t) {
+    const auto& [uv, vertex_colour, face_colour, material] = sources;
     const std::uint32_t f = triangle_faces_[t];
     const bool live = f < mesh.faces_size() && !mesh.is_deleted(Face(f));
     std::uint8_t material_colour[4] = {0, 0, 0, 0};  // alpha 0: none, the base colour

@@ -157,7 +157,15 @@ private:
     void ensure_gl_objects();
     /// The surface data of every triangle (after upload's fans), and the textures.
     void fill_surface(const Mesh& mesh);
-    void write_surface_triangle(const Mesh& mesh, std::size_t t);
+    /// The properties the surface data comes from, looked up once per pass (by name).
+    struct SurfaceSources {
+        HalfedgeProperty<Vec2> uv;
+        VertexProperty<Vec4> vertex_colour;
+        FaceProperty<Vec4> face_colour;
+        FaceProperty<std::uint32_t> material;
+    };
+    static SurfaceSources surface_sources(const Mesh& mesh);
+    void write_surface_triangle(const Mesh& mesh, const SurfaceSources& sources, std::size_t t);
     /// Loads the materials' textures into one texture array when their paths changed.
     void load_textures(const std::vector<Material>& materials);
     /// Binds the surface data for draw() (attributes 8-11 and texture unit 3).
