@@ -240,7 +240,7 @@ std::string also_removed(std::size_t vertices, std::size_t creases) {
 }
 
 std::string number(double x) {
-    return x == 0.0 ? "0" : number_text(x);
+    return readable_number(x);  // a report is read by a person; the verbs keep exact amounts
 }
 
 }  // namespace meshedit::repair_detail

@@ -492,13 +492,13 @@ void App::set_status(std::string message, bool error) {
     redraw_frames_ = kSettleFrames;
 }
 
-void App::open_file(const std::filesystem::path& path) {
+void App::open_file(const std::filesystem::path& path, bool discard_confirmed) {
     if (is_environment_image(path)) {
         load_environment(path);  // Ctrl+O or a drop: an image is an environment, not a document
         return;
     }
     try {
-        apply(editor_.open(path));  // uploads, reframes and rebuilds the overlay
+        apply(editor_.open(path, discard_confirmed));  // uploads, reframes, rebuilds the overlay
     } catch (const std::exception& e) {
         set_status(editor_.open_failure(path, e), true);
     }
@@ -582,7 +582,16 @@ void App::apply(const Outcome& outcome) {
                          editor_.mode());
     }
     if (c & kAskOpenPath) {
-        panels_.ask_path(ChooserPurpose::Open, editor_.path(), editor_.mode());
+        // Told once, in the chooser, before the choice (a second Ctrl+O and the path typed
+        // again, as the refusal asked, was where a new user gave up).
+        open_discards_ = editor_.dirty();
+        const std::string name = editor_.path().empty() ? std::string("the untitled document")
+                                                        : editor_.path().filename().string();
+        panels_.ask_path(ChooserPurpose::Open, editor_.path(), editor_.mode(),
+                         open_discards_ ? "Unsaved changes to " + name +
+                                              ": Open discards them (Cancel, then Ctrl+S, to "
+                                              "keep them)."
+                                        : std::string());
     }
     applied_revision_ = editor_.document().revision;
     if (c & kQuit) {
@@ -740,7 +749,7 @@ void App::draw_frame() {
         apply(editor_.save_as(*requests.save_as));
     }
     if (requests.open) {
-        open_file(*requests.open);
+        open_file(*requests.open, open_discards_);
     }
     if (requests.export_session) {
         apply(editor_.export_session(*requests.export_session));

@@ -77,7 +77,8 @@ private:
 
     /// Reacts to what a command changed: uploads, overlay, camera, prompts, status line.
     void apply(const Outcome& outcome);
-    void open_file(const std::filesystem::path& path);
+    /// `discard_confirmed`: the Open chooser told the user the unsaved changes are lost.
+    void open_file(const std::filesystem::path& path, bool discard_confirmed = false);
     /// Makes `path` shading 7's environment and switches to mode 7; a bad image is reported
     /// in the status line and the environment stays (app_shading.cpp).
     void load_environment(const std::filesystem::path& path);
@@ -207,6 +208,7 @@ private:
     double last_pick_ms_ = 0.0;
     bool quit_ = false;
     bool help_hint_ = false;       ///< the first document opened says "? for help"
+    bool open_discards_ = false;   ///< the Open chooser shows with unsaved changes
     bool wireframe_shown_ = true;  ///< the wireframe setting hint_wireframe() last saw
     /// The median length on screen, in framebuffer pixels, of the mesh's edges at the
     /// orbit target's depth (from a thousand of them) (app_shading.cpp).

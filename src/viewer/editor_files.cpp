@@ -56,13 +56,29 @@ bool stands_along_z(const Mesh& mesh) {
     return size.z > 1.5 * size.y && size.z >= size.x;
 }
 
+// A hint when most edges are borders: faces that share no vertices (an STL-like soup, or a
+// file split at every normal or UV seam, as Blender's PLY export) look whole but are
+// thousands of parts, and repair's merge by distance is the remedy a new user cannot guess.
+std::string unwelded_hint(const Mesh& mesh) {
+    std::size_t borders = 0;
+    for (const Edge e : mesh.edges()) {
+        borders += mesh.is_boundary(e) ? 1 : 0;
+    }
+    if (mesh.n_edges() < 12 || 2 * borders < mesh.n_edges()) {
+        return {};
+    }
+    return "; " + std::to_string(borders) + " of its " + std::to_string(mesh.n_edges()) +
+           " edges are borders: if its faces should join, Alt+Shift+R merges vertices by "
+           "distance";
+}
+
 }  // namespace
 
-Outcome Editor::open(const std::filesystem::path& path) {
+Outcome Editor::open(const std::filesystem::path& path, bool discard_confirmed) {
     if (std::optional<Outcome> busy = refuse_if_busy()) {
         return *busy;
     }
-    if (dirty() && !ledger_.replace_armed) {
+    if (dirty() && !ledger_.replace_armed && !discard_confirmed) {
         ledger_.replace_armed = true;
         return refused("unsaved changes to " + file_name(path_) +
                        ": open again to discard them, or Ctrl+S to save first");
@@ -150,6 +166,9 @@ Outcome Editor::take_loaded(const std::filesystem::path& path, LoadedDocument lo
         up_for_next_open_.reset();
     } else {
         view_.up = remembered == 'z' ? UpAxis::Z : UpAxis::Y;
+    }
+    if (mode == Mode::Mesh) {
+        details += unwelded_hint(doc_.mesh);
     }
     if (remembered == 0 && view_.up == UpAxis::Y && mode != Mode::Curve &&
         stands_along_z(doc_.mesh)) {

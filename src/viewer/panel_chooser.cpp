@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <system_error>
+#include <utility>
 
 #include "meshedit/viewer/paths.h"
 #include "panels.h"
@@ -57,7 +58,9 @@ std::string joined(const std::vector<std::string>& words) {
 
 }  // namespace
 
-void Panels::ask_path(ChooserPurpose purpose, const std::filesystem::path& document, Mode mode) {
+void Panels::ask_path(ChooserPurpose purpose, const std::filesystem::path& document, Mode mode,
+                      std::string warning) {
+    prompt_warning_ = std::move(warning);
     std::vector<std::string> extensions = chooser_extensions(purpose, mode);
     std::string name;
     if (purpose != ChooserPurpose::Open) {
@@ -206,6 +209,9 @@ void Panels::draw_prompt(PanelRequests& requests) {
     ImGui::TextDisabled(
         "A name is in the folder above; a path from / or ~ (your home) replaces it. Enter "
         "opens a folder; Tab completes; Ctrl+A selects all; ↑ ↓ go through the list.");
+    if (!prompt_warning_.empty()) {
+        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s", prompt_warning_.c_str());
+    }
     ImGui::PopTextWrapPos();
     const char* verb = purpose == ChooserPurpose::SaveAs          ? "Save"
                        : purpose == ChooserPurpose::ExportSession ? "Export"

@@ -61,7 +61,9 @@ public:
     /// Shows the file chooser (panel_chooser.cpp, file_chooser.h) for the document at
     /// `document`, a `mode` document: it lists the document's folder (the current one when
     /// there is none), the field holds the suggested name (the document's, for the saves).
-    void ask_path(ChooserPurpose purpose, const std::filesystem::path& document, Mode mode);
+    /// `warning`, when not empty, stands above the buttons (what choosing would discard).
+    void ask_path(ChooserPurpose purpose, const std::filesystem::path& document, Mode mode,
+                  std::string warning = {});
     bool prompting() const { return prompting_; }
     /// A key pressed (or repeated) and a character typed while the chooser shows, straight
     /// from the GLFW callbacks: the chooser queues them and applies all of them in the next
@@ -121,6 +123,7 @@ private:
     bool prompting_ = false;
     std::uint64_t problems_opened_at_ = 0;  ///< draw_problems(): the list it last opened for
     bool prompt_fresh_ = false;             ///< open the popup next frame
+    std::string prompt_warning_;            ///< ask_path()'s warning
     bool scroll_to_row_ = false;            ///< Up/Down moved the highlighted row
     FileChooser chooser_;
     std::string shader_errors_;

@@ -148,8 +148,9 @@ public:
     /// With unsaved changes it is refused once, as quitting is (every way a document is replaced —
     /// Ctrl+O, a dropped file — comes here); the next open goes through. On failure throws IoError
     /// and leaves the current document untouched. Clears history and selection; the document
-    /// is clean (not dirty).
-    Outcome open(const std::filesystem::path& path);
+    /// is clean (not dirty). `discard_confirmed`: the user has already been told that the
+    /// changes are lost (the Open chooser says so above its buttons), so no second ask.
+    Outcome open(const std::filesystem::path& path, bool discard_confirmed = false);
     /// Replaces the document with an in-memory one (tests, new documents); clean.
     void set_document(Document document, std::filesystem::path path = {});
 
