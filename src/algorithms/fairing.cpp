@@ -125,6 +125,11 @@ bool solve(const Mesh& mesh, const std::vector<Vertex>& order,
 
 }  // namespace
 
+std::vector<Vertex> region_inner_vertices(const Mesh& mesh, std::span<const Face> region) {
+    std::vector<std::uint8_t> in_region;
+    return inner_vertices(mesh, region, in_region);
+}
+
 OpStatus check_fair(const Mesh& mesh, std::span<const Face> region, const FairOptions& options) {
     if (region.empty()) {
         return OpStatus::refused("cannot fair: the region is empty");

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "meshedit/core/cc_steps.h"
+#include "meshedit/core/loop_steps.h"
 
 namespace meshedit::ops {
 
@@ -34,6 +35,22 @@ StepResult run_cc_step(Mesh& mesh, const Step& step, const RunOptions&) {
         result.renumbers = result.renumbers || report.phase == 4;  // compacted
     }
     return result;
+}
+
+// Loop is defined on triangles; rather than cut polygons the user did not ask to cut, it
+// says so and names the step that does (the core's loop_subdivide() still triangulates).
+// A whole-mesh subdivision, simplification or remesh in the middle of a phased Loop would
+// carry its half-done state into a new mesh (the next phase threw "split did not append the
+// vertex" or "flip refused"); `verb` names the refused one.
+OpStatus phased_loop_refusal(const Mesh& mesh, const char* verb) {
+    const int next = next_loop_phase(mesh);
+    if (next == 1) {
+        return OpStatus::ok();
+    }
+    return OpStatus::composed("cannot " + std::string(verb) +
+                              ": a phased Loop is under way (phase " + std::to_string(next) +
+                              " of 4 is next: `loop_step:" + std::to_string(5 - next) +
+                              "` finishes it, undo goes back)");
 }
 
 }  // namespace meshedit::ops

@@ -9,6 +9,9 @@ namespace meshedit::ops {
 /// Four phases make a level: asking for more than remain is refused, naming `scheme`.
 OpStatus check_phases_left(const char* scheme, int asked, int next);
 
+/// Refuses a whole-mesh `verb` (subdivide, simplify, remesh) while a phased Loop is under way.
+OpStatus phased_loop_refusal(const Mesh& mesh, const char* verb = "subdivide");
+
 OpStatus check_cc_step_verb(const Mesh& mesh, const Step& step);
 StepResult run_cc_step(Mesh& mesh, const Step& step, const RunOptions& options);
 

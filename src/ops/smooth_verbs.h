@@ -14,6 +14,8 @@ OpStatus check_taubin(const Mesh& mesh, const Step& step);
 StepResult run_taubin(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_smooth_implicit(const Mesh& mesh, const Step& step);
 StepResult run_smooth_implicit(Mesh& mesh, const Step& step, const RunOptions& options);
+OpStatus check_smooth_region(const Mesh& mesh, const Step& step);
+StepResult run_smooth_region(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_fair_step(const Mesh& mesh, const Step& step);
 StepResult run_fair(Mesh& mesh, const Step& step, const RunOptions& options);
 

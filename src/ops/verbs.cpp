@@ -20,6 +20,7 @@
 #include "meshedit/core/subdivision.h"
 #include "meshedit/ops/ops.h"
 #include "phase_verbs.h"
+#include "reduce_verbs.h"
 #include "region_verbs.h"
 #include "repair_verbs.h"
 #include "smooth_verbs.h"
@@ -31,7 +32,6 @@ std::string idx(std::uint32_t i) {
     return std::to_string(i);
 }
 
-// The result of a local step: the element it documents and a sentence.
 // The result of an op that deletes elements is named by its size, not its index: the viewer
 // renumbers when it saves, so an index in its status line could later name another element.
 std::string corners(const Mesh& mesh, Face f) {
@@ -267,22 +267,6 @@ std::size_t non_triangles(const Mesh& mesh) {
     return n;
 }
 
-// Loop is defined on triangles; rather than cut polygons the user did not ask to cut, it
-// says so and names the step that does (the core's loop_subdivide() still triangulates).
-// A whole-mesh subdivision, simplification or remesh in the middle of a phased Loop would
-// carry its half-done state into a new mesh (the next phase threw "split did not append the
-// vertex" or "flip refused"); `verb` names the refused one.
-OpStatus phased_loop_refusal(const Mesh& mesh, const char* verb = "subdivide") {
-    const int next = next_loop_phase(mesh);
-    if (next == 1) {
-        return OpStatus::ok();
-    }
-    return OpStatus::composed("cannot " + std::string(verb) +
-                              ": a phased Loop is under way (phase " + std::to_string(next) +
-                              " of 4 is next: `loop_step:" + std::to_string(5 - next) +
-                              "` finishes it, undo goes back)");
-}
-
 OpStatus check_loop(const Mesh& mesh, const Step& step) {
     if (const OpStatus why = phased_loop_refusal(mesh); !why) {
         return why;
@@ -377,118 +361,6 @@ StepResult run_catmull_clark(Mesh& mesh, const Step& step, const RunOptions& opt
 }
 StepResult run_linear(Mesh& mesh, const Step& step, const RunOptions& options) {
     return run_quads(mesh, step, options, QuadScheme::Linear);
-}
-
-// crease_by_angle:D marks every interior edge sharper than D degrees as a crease; the
-// creases there stay (Blender's Mark Sharp from Select Sharp Edges).
-OpStatus check_crease_by_angle_step(const Mesh&, const Step& step) {
-    return check_crease_by_angle(step.amounts[0]);
-}
-StepResult run_crease_by_angle(Mesh& mesh, const Step& step, const RunOptions&) {
-    const std::size_t marked = crease_by_angle(mesh, step.amounts[0]);
-    StepResult result;
-    result.topology = false;
-    result.message = "marked " + std::to_string(marked) + (marked == 1 ? " edge" : " edges") +
-                     " sharper than " + number_text(step.amounts[0]) + "° as creases";
-    return result;
-}
-
-// What the feature angle of simplify and remesh (their third amount) marked first.
-std::string creases_marked(std::size_t marked, double degrees) {
-    if (degrees == kNoFeatureAngle) {
-        return {};
-    }
-    return "marked " + std::to_string(marked) + " edges sharper than " + number_text(degrees) +
-           "° as creases; ";
-}
-
-// simplify:R,E keeps about R of the faces (0 < R < 1) or R faces (a whole number), stopping
-// before a collapse whose error exceeds E (left out: no bound). The one place the CLI's
-// --ratio and --faces, the viewer's D and `--ops` turn a share into a face count.
-bool is_face_count(double r) {
-    return r >= 1.0 || r == 0.0;
-}
-SimplifyOptions simplify_options(const Mesh& mesh, const Step& step) {
-    SimplifyOptions options;
-    const double r = step.amounts[0];
-    const double kept = is_face_count(r) ? r : std::round(static_cast<double>(mesh.n_faces()) * r);
-    options.target_faces = is_face_count(r) ? static_cast<std::size_t>(std::min(kept, 1e18))
-                                            : static_cast<std::size_t>(std::max(1.0, kept));
-    options.max_error = step.amounts[1];
-    options.feature_angle_deg = step.amounts[2];
-    options.attributes = step.attributes.value_or(options.attributes);
-    return options;
-}
-OpStatus check_simplify_step(const Mesh& mesh, const Step& step) {
-    if (const OpStatus why = phased_loop_refusal(mesh, "simplify"); !why) {
-        return why;
-    }
-    const double r = step.amounts[0];
-    if (!(r > 0.0 && r < 1.0) && !(is_face_count(r) && r == std::floor(r) && r <= 1e18)) {
-        return OpStatus::composed(
-            "cannot simplify: keep a share of the faces above 0 and below 1, or a whole "
-            "number of faces, not " +
-            number_text(r));
-    }
-    return check_simplify(mesh, simplify_options(mesh, step));
-}
-StepResult run_simplify(Mesh& mesh, const Step& step, const RunOptions& options) {
-    SimplifyOptions simplify_with = simplify_options(mesh, step);
-    simplify_with.progress = options.progress;
-    const std::size_t before = mesh.n_faces();
-    const SimplifyReport report = simplify(mesh, simplify_with);
-    StepResult result;
-    result.renumbers = true;
-    result.message = creases_marked(report.creases_marked, simplify_with.feature_angle_deg) +
-                     "simplified " + std::to_string(before) + " faces to " +
-                     std::to_string(mesh.n_faces()) + " (" + std::to_string(report.collapses) +
-                     " collapses)";
-    if (report.stopped_early) {
-        result.notices.push_back(
-            "stopped at " + std::to_string(mesh.n_faces()) + " faces: " +
-            (std::isfinite(simplify_with.max_error)
-                 ? "the next collapse exceeds the error bound " +
-                       number_text(simplify_with.max_error)
-                 : std::string("no further collapse keeps the mesh valid and unfolded")));
-        result.message += "; " + result.notices.back();
-    }
-    return result;
-}
-
-// remesh, remesh:L, remesh:L,N: target length L (0: the mean), N iterations.
-RemeshOptions remesh_options(const Step& step) {
-    RemeshOptions options;
-    options.target_length = step.amounts[0];
-    options.iterations = static_cast<int>(step.amounts[1]);
-    options.feature_angle_deg = step.amounts[2];
-    return options;
-}
-OpStatus check_remesh_step(const Mesh& mesh, const Step& step) {
-    if (const OpStatus why = phased_loop_refusal(mesh, "remesh"); !why) {
-        return why;
-    }
-    const double n = step.amounts[1];
-    if (!(n >= 1 && n <= 100) || n != std::floor(n)) {
-        return OpStatus::composed(
-            "cannot remesh: iterations must be a whole number from 1 to 100, not " +
-            number_text(n));
-    }
-    return check_remesh(mesh, remesh_options(step));
-}
-StepResult run_remesh(Mesh& mesh, const Step& step, const RunOptions& options) {
-    RemeshOptions remesh_with = remesh_options(step);
-    remesh_with.progress = options.progress;
-    const RemeshReport report = remesh(mesh, remesh_with);
-    StepResult result;
-    result.renumbers = true;
-    char length[32];
-    std::snprintf(length, sizeof length, "%.4g", report.target_length);
-    result.message = creases_marked(report.creases_marked, remesh_with.feature_angle_deg) +
-                     "remeshed to edge length " + std::string(length) + ": " +
-                     std::to_string(mesh.n_faces()) + " faces (" + std::to_string(report.splits) +
-                     " splits, " + std::to_string(report.collapses) + " collapses, " +
-                     std::to_string(report.flips) + " flips)";
-    return result;
 }
 
 OpStatus check_triangulate(const Mesh& mesh, const Step& step) {
@@ -742,6 +614,12 @@ constexpr std::array kVerbs{
          "K = 1 keeps a closed mesh's volume",
          "smooth the mesh implicitly (backward Euler)", check_smooth_implicit,
          run_smooth_implicit, nullptr, false, kDefaultTraits | kToolAmounts},
+    Verb{"smooth_region", kRegion, 2, 0, {10.0, 0.5, 0.0},
+         "smooth_region:R, smooth_region:R:N,L",
+         "smooth's N uniform steps of L (defaults 10, 0.5) on the inner vertices of the faces "
+         "R only: their border and the rest of the mesh stay",
+         "smooth the selected faces (their border fixed)", check_smooth_region,
+         run_smooth_region, nullptr, false, kChangesTopology},
     Verb{"fair", kRegion, 0, 0, kNoDefaults, "fair:R",
          "moves the inner vertices of the faces R so that the bi-Laplacian vanishes there "
          "(L^2 x = 0, cotangent weights; uniform on a mesh with polygons), every other vertex "

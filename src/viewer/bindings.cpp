@@ -56,6 +56,7 @@ constexpr std::array kTable{
     Binding{key_of('R'), kAlt | kShift, kMeshModes, edit("repair"), "Alt+Shift+R", {}},
     Binding{key_of('F'), kCtrl, kMeshModes, edit("fill_holes_fair"), "Ctrl+F", {}},
     Binding{key_of('M'), kAlt, kMeshModes, edit("fair"), "Alt+M", {}},
+    Binding{key_of('M'), kCtrl | kShift, kMeshModes, edit("smooth_region"), "Ctrl+Shift+M", {}},
     // Selecting.
     Binding{key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}, "Ctrl+A", "select every element of the selected kind (faces if none)"},
     Binding{key_of('A'), kAlt, kMeshModes, {Command::SelectNone}, "Alt+A", "select nothing"},

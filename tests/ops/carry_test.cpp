@@ -92,7 +92,7 @@ bool places_off_affine(std::string_view verb) {
     return verb == "extrude" || verb == "extrude_region" || verb == "move" || verb == "simplify" ||
            verb == "remesh" || verb == "loop_step" || verb == "smooth" || verb == "smooth_cotan" ||
            verb == "taubin" || verb == "smooth_implicit" || verb == "fair" ||
-           verb == "fill_holes_fair" || verb == "cc_step";
+           verb == "smooth_region" || verb == "fill_holes_fair" || verb == "cc_step";
 }
 
 ElementRef random_live(const Mesh& mesh, Kind kind, std::mt19937& rng) {
@@ -113,7 +113,7 @@ ops::Step random_step(const Mesh& mesh, const ops::Verb& verb, std::mt19937& rng
     if (verb.accepts(ops::Target::Region)) {
         const double height = 0.25;
         return ops::make_region_step(verb.name, test::random_region(mesh, rng),
-                                     std::span<const double>(&height, verb.max_amounts));
+                                     std::span<const double>(&height, verb.min_amounts));
     }
     if (verb.accepts(ops::Target::EdgePair)) {
         // A weld joins boundary edges: pick two.

@@ -85,7 +85,7 @@ TEST(RecordedEdit, EveryElementVerbUndoesAndRedoesBitForBit) {
                 const ops::Step step =
                     region
                         ? ops::make_region_step(verb.name, test::random_region(mesh, rng),
-                                                std::span<const double>(&height, verb.max_amounts))
+                                                std::span<const double>(&height, verb.min_amounts))
                         : ops::make_step(verb.name, mesh, a, {}, b);
                 const Mesh before = mesh;
                 ASSERT_TRUE(test::is_valid(before)) << verb.name << " before";

@@ -76,6 +76,40 @@ TEST(SmoothVerbs, FairFlattensTheRegionItNames) {
     EXPECT_VALID(mesh);
 }
 
+// smooth_region moves only the inner vertices of the faces it names: the bump inside the
+// region halves in one step of 0.5 (its grid neighbours are flat), a bump outside and the
+// region's border stay bit for bit; over every face of a closed mesh it is smooth exactly.
+TEST(SmoothVerbs, SmoothRegionMovesOnlyItsInnerVertices) {
+    Mesh mesh = shapes::grid(6, 6);
+    mesh.position(Vertex(24)).z = 0.7;  // inside the faces of cells (2..3, 2..3)
+    mesh.position(Vertex(10)).z = 0.3;  // outside them
+    const Mesh before = mesh;
+    const StepResult result = run_step(mesh, parse_step("smooth_region:f28..31+f40..43:1,0.5"));
+    EXPECT_EQ(result.message,
+              "smoothed 1 iteration of 1 inner vertex of 8 faces (border fixed): largest move "
+              "0.35");
+    EXPECT_EQ(mesh.position(Vertex(24)).z, 0.35);
+    for (const Vertex v : mesh.vertices()) {
+        if (v != Vertex(24)) {
+            EXPECT_EQ(mesh.position(v), before.position(v)) << v.idx();
+        }
+    }
+    EXPECT_EQ(result.selected, ElementRef::face(Face(28)));
+    EXPECT_EQ(result.selected_too.size(), 7u);
+    EXPECT_VALID(mesh);
+
+    const Mesh sphere = shapes::icosphere(2);
+    Mesh region = sphere, whole = sphere;
+    const StepResult all = run_step(region, parse_step("smooth_region:f0..319"));
+    run_step(whole, parse_step("smooth"));
+    EXPECT_TRUE(test::identical(region, whole));
+    EXPECT_EQ(all.message.rfind("smoothed 10 iterations of 162 inner vertices of 320 faces "
+                                "(border fixed): volume −",
+                                0),
+              0u)
+        << all.message;
+}
+
 TEST(SmoothVerbs, RefusalsNameTheirReasonAndLeaveTheMesh) {
     Mesh sphere = shapes::icosphere(2);
     EXPECT_NE(
@@ -91,6 +125,11 @@ TEST(SmoothVerbs, RefusalsNameTheirReasonAndLeaveTheMesh) {
     EXPECT_NE(refusal(sphere, "fair:f0..319").find("covers a whole closed part"),
               std::string::npos);
     EXPECT_NE(refusal(sphere, "fair:f3").find("no inner vertex"), std::string::npos);
+    EXPECT_NE(refusal(sphere, "smooth_region:f3")
+                  .find("cannot smooth: every vertex of the 1 face is on their border"),
+              std::string::npos);
+    EXPECT_NE(refusal(sphere, "smooth_region:f0..319:0").find("iterations must be a whole number"),
+              std::string::npos);
     Mesh open = shapes::grid(4, 4);
     EXPECT_NE(refusal(open, "smooth:5,0.5,1").find("needs a closed mesh"), std::string::npos);
     Mesh quads = shapes::quad_grid(4, 4);
@@ -98,7 +137,8 @@ TEST(SmoothVerbs, RefusalsNameTheirReasonAndLeaveTheMesh) {
               std::string::npos);
     Mesh nan = shapes::icosphere(1);
     nan.position(Vertex(2)).z = std::numeric_limits<double>::quiet_NaN();
-    for (const char* step : {"smooth", "smooth_cotan", "taubin", "smooth_implicit", "fair:f0..5"}) {
+    for (const char* step : {"smooth", "smooth_cotan", "taubin", "smooth_implicit", "fair:f0..5",
+                             "smooth_region:f0..79"}) {
         EXPECT_NE(refusal(nan, step).find("not a finite number"), std::string::npos) << step;
     }
     Mesh empty;

@@ -83,6 +83,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('R'), kAlt | kShift, kMeshModes, edit("repair")},
             {key_of('F'), kCtrl, kMeshModes, edit("fill_holes_fair")},
             {key_of('M'), kAlt, kMeshModes, edit("fair")},
+            {key_of('M'), kCtrl | kShift, kMeshModes, edit("smooth_region")},
             {key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}},
             {key_of('A'), kAlt, kMeshModes, {Command::SelectNone}},
             {key_of('L'), kShift, kMeshModes, {Command::SelectLoop}},

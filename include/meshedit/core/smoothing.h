@@ -82,6 +82,11 @@ struct FairReport {
     double solve_seconds = 0.0;
 };
 
+/// The inner vertices of the faces `region`: those whose every face is in it and that are not
+/// on the mesh's boundary, sorted. fair() moves these; smoothing a region moves these (its
+/// border stays, so the region joins what is around it). O(the region's one-ring).
+std::vector<Vertex> region_inner_vertices(const Mesh& mesh, std::span<const Face> region);
+
 /// Why fair() cannot run, or ok: an empty region or one naming a missing face, no inner
 /// vertex (every vertex of the region is on its border), a piece of the region with no fixed
 /// vertex around it (a whole closed component), cotangent weights beside polygons, or a
