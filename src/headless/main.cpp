@@ -32,6 +32,7 @@
 #include "meshedit/overlay/overlay.h"
 #include "meshedit/overlay/shading.h"
 #include "meshedit/render/environment.h"
+#include "meshedit/repair/problems.h"
 #include "meshedit/render/labels.h"
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/scene.h"
@@ -138,6 +139,7 @@ int run(const Options& options) {
     const std::vector<BezierPatch>& patches = doc.patches;
     OverlayBatch overlay;
     SceneContent scene;
+    std::optional<ProblemReport> problems;
     std::optional<OpDiagram> diagram;
     if (is_curve) {
         if (!options.select.empty() || !options.ops.empty()) {
@@ -192,6 +194,11 @@ int run(const Options& options) {
             throw UsageError("--marks-near draws the marks near the --select element: select one");
         }
         scene.marks_near_selection = options.marks_near;
+        if (options.problems) {
+            // The loader's cuts describe the mesh as loaded: after --ops they name other places.
+            problems = find_problems(mesh, options.ops.empty() ? &doc.repairs : nullptr);
+            scene.problems = &*problems;
+        }
         if (options.stencil) {
             if (scene.selected.is_none()) {
                 throw UsageError("--stencil draws the stencil of the --select element: select one");

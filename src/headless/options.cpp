@@ -221,6 +221,10 @@ int parse_options(int argc, char** argv, Options& o) {
            ".bez: patch I evaluated at (U, V) by de Casteljau up to step S: along u on every "
            "row, then along v (docs/teaching.md)")
         ->type_name("I,U,V,S");
+    app.add_flag("--problems", o.problems,
+                 "marks what `meshedit check --problems` lists, as the viewer's Problems panel "
+                 "does: load cuts, holes, degenerate faces, inside-out and small parts, faces "
+                 "passing through each other (the cuts only without --ops)");
     app.add_flag("--marks-near", o.marks_near,
                  "a phased Loop's marks (--ops loop_step) only within two rings of the --select "
                  "element, as the viewer's Alt+N");

@@ -39,6 +39,7 @@ struct Options {
     std::string select;
     std::optional<StencilScheme> stencil;
     bool marks_near = false;
+    bool problems = false;  ///< --problems: the Problems panel's places marked
     /// --patch-steps I,U,V,S: patch I at (U, V) by de Casteljau up to step S.
     std::optional<std::array<double, 4>>
         patch_steps;  ///< --marks-near: a phased Loop's marks near --select only

@@ -14,6 +14,9 @@ void add_scene_marks(const SceneContent& scene, const OverlayStyle& style, Overl
             add_patch_steps(scene.patches[scene.steps_patch], scene.steps_u, scene.steps_v,
                             scene.steps, style, out);
         }
+        if (scene.problems != nullptr) {
+            add_problem_marks(mesh, *scene.problems, style, out);
+        }
         if (scene.hovered != scene.selected) {
             add_element_highlight(mesh, scene.hovered, style.hovered, style, out);
         }

@@ -644,6 +644,7 @@ void App::rebuild_overlay() {
     if (mesh_mode()) {
         scene.stencil = view.stencil;
         scene.marks_near_selection = view.marks_near_selection;
+        scene.problems = editor_.problems();  // null unless found for this revision
     }
     // Surfaces (tessellated patches) show their nets, not the tessellation's features.
     const bool features = editor_.mode() == Mode::Mesh;

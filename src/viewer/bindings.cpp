@@ -92,7 +92,7 @@ constexpr std::array kTable{
     Binding{key_of('C'), kAlt, kMeshModes, {Command::CycleSurfaceColor}, "Alt+C", "surface colour: auto, one colour, materials, vertex colours, textures, UV checker (each the file has)"},
     Binding{key_of('R'), kCtrl, kMeshModes, {Command::ReloadShaders}, "Ctrl+R", "recompile every shader from disk (modes 8 and 9 are yours: mesh8.frag, mesh9.frag in the user shader folder); on an error the old picture stays and the error names the file and line"},
     Binding{key_of('V'), kShift, kMeshModes, {Command::Validate}, "Shift+V", "check every invariant of the halfedge mesh (validate()); a broken one is selected, framed and named"},
-    Binding{key_of('V'), kAlt, kMeshModes, {Command::FindProblems}, "Alt+V", "find problems: the loader's cuts, holes, degenerate faces, parts inside out, small parts, faces that pass through each other; listed in the info panel's Problems section, where a click frames each"},
+    Binding{key_of('V'), kAlt, kMeshModes, {Command::FindProblems}, "Alt+V", "find problems: the loader's cuts, holes, degenerate faces, parts inside out, small parts, faces that pass through each other; listed in the info panel's Problems section, where a click frames each, and marked in the view (docs/rendering.md: the colours)"},
     // Display.
     Binding{key_of('Q'), kNoMods, kMeshModes, {Command::ToggleSmooth}, "Q", "toggle smooth (area-weighted vertex normals) / flat shading"},
     Binding{key_of('W'), kNoMods, kMeshModes, {Command::ToggleWireframe}, "W", "toggle wireframe overlay"},

@@ -68,8 +68,8 @@ std::string unwelded_hint(const Mesh& mesh) {
         return {};
     }
     return "; " + std::to_string(borders) + " of its " + std::to_string(mesh.n_edges()) +
-           " edges are borders: if its faces should join, Alt+Shift+R merges vertices by "
-           "distance";
+           " edges are borders: if its faces should join, Alt+Shift+R repairs it (merges "
+           "vertices by distance, orients faces)";
 }
 
 }  // namespace

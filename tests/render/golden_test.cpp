@@ -256,6 +256,14 @@ const std::vector<GoldenCase>& golden_cases() {
         {"shark_fill_fair",
          "demo:mech-holes-shark",
          {"--ops", "fill_holes_fair", "--flat", "--wireframe"}},
+        // The Problems panel's marks (--problems), each kind in its colour through the
+        // surface: CGAL's cube-shuffled, whose disagreeing faces the loader cut apart
+        // (magenta dots where it cut), leaving holes (yellow loops) and small parts (brown);
+        // degtri_sliding's four zero-area triangles along one line (cyan dots and sides) and
+        // its hole; beam, a closed box whose faces all point inward (blue edges).
+        {"problems_cut_cube", "demo:cube-shuffled", {"--problems", "--flat", "--wireframe"}},
+        {"problems_degenerate", "demo:degtri_sliding", {"--problems", "--flat", "--wireframe"}},
+        {"problems_inside_out", "demo:beam", {"--problems", "--flat", "--wireframe"}},
         // One selection of each element type. Vertex 0 = (−0.53, 0.85, 0) and 1 = (0.53, 0.85,
         // 0) share the faces (0,5,1) on +z and (0,1,7) on −z: each camera looks straight at
         // its element (az = atan2(x, z), el = asin(y)), so nothing sits on the silhouette.

@@ -617,5 +617,52 @@ TEST(Overlay, PatchStepsAlongUThenVEndAtTheEvaluatedPoint) {
     EXPECT_EQ(all.points.back().color, style.evaluated_point);
 }
 
+// The Problems panel's marks: a load cut's vertex a dot through the surface, a hole its
+// whole loop, a small part every face tinted, an inside-out part its edges (a tint would sink
+// under inward faces), a dropped face (no place) nothing; each in its kind's colour.
+TEST(Overlay, ProblemMarksDrawEachKindWhereItIs) {
+    const Mesh grid = shapes::grid(2, 2);
+    Edge border;
+    for (const Edge e : grid.edges()) {
+        if (grid.is_boundary(e)) {
+            border = e;
+        }
+    }
+    std::size_t border_edges = 0;
+    for (const Edge e : grid.edges()) {
+        border_edges += grid.is_boundary(e) ? 1 : 0;
+    }
+    ProblemReport report;
+    report.problems = {{ProblemKind::LoadCut, ElementRef::vertex(Vertex(4)), 1, ""},
+                       {ProblemKind::LoadCut, ElementRef{}, 1, "a dropped face"},
+                       {ProblemKind::Hole, ElementRef::edge(border), border_edges, ""},
+                       {ProblemKind::SmallPart, ElementRef::face(Face(0)), grid.n_faces(), ""}};
+    const OverlayStyle style;
+    OverlayBatch out;
+    add_problem_marks(grid, report, style, out);
+    ASSERT_EQ(out.points.size(), 1u);
+    EXPECT_EQ(out.points[0].p, grid.position(Vertex(4)));
+    EXPECT_EQ(out.points[0].color, style.problems[0]);
+    EXPECT_TRUE(out.points[0].xray);
+    ASSERT_EQ(out.lines.size(), border_edges);
+    for (const OverlayBatch::Line& line : out.lines) {
+        EXPECT_EQ(line.color, style.problems[1]);
+        EXPECT_EQ(line.width_px, style.problem_width_px);
+        EXPECT_TRUE(line.xray);
+    }
+    EXPECT_EQ(out.triangles.size(), grid.n_faces());  // triangles: one tint each
+    for (const OverlayBatch::Triangle& t : out.triangles) {
+        EXPECT_EQ(t.color[0], style.problems[4][0]);
+    }
+
+    const Mesh cube = shapes::cube();
+    ProblemReport inward;
+    inward.problems = {{ProblemKind::InsideOut, ElementRef::face(Face(3)), cube.n_faces(), ""}};
+    OverlayBatch edges;
+    add_problem_marks(cube, inward, style, edges);
+    EXPECT_EQ(edges.lines.size(), cube.n_edges()) << "each edge of the part once";
+    EXPECT_TRUE(edges.triangles.empty());
+}
+
 }  // namespace
 }  // namespace meshedit

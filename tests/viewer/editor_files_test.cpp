@@ -218,9 +218,10 @@ TEST(Editor, UnweldedFileHintsAtRepair) {
                            "f 1 2 3\nf 4 5 6\nf 7 8 9\nf 10 11 12\n";
     Editor ed;
     Outcome out = ed.open(soup);
-    EXPECT_NE(out.message.find("12 of its 12 edges are borders: if its faces should join, "
-                               "Alt+Shift+R merges vertices by distance"),
-              std::string::npos)
+    EXPECT_NE(
+        out.message.find("12 of its 12 edges are borders: if its faces should join, "
+                         "Alt+Shift+R repairs it (merges vertices by distance, orients faces)"),
+        std::string::npos)
         << out.message;
     ed.press(key_of('R'), kAlt | kShift);
     EXPECT_EQ(ed.document().mesh.n_vertices(), 4u);

@@ -18,6 +18,7 @@
 #include "meshedit/core/element_ref.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/stencil.h"
+#include "meshedit/repair/problems.h"
 
 namespace meshedit {
 
@@ -128,7 +129,24 @@ struct OverlayStyle {
     /// A subdivision stencil (core/stencil.h): its vertices and their weights.
     Color stencil{0.85f, 0.1f, 0.6f, 1.0f};  ///< magenta
     float loop_point_px = 8.0f;
+    /// The Problems panel's places (repair/problems.h), in ProblemKind's order: load cuts
+    /// magenta, holes yellow, degenerate faces cyan, inside-out parts blue, small parts
+    /// brown, faces passing through each other violet.
+    std::array<Color, kProblemKinds> problems{{{0.95f, 0.1f, 0.75f, 1.0f},
+                                               {1.0f, 0.8f, 0.0f, 1.0f},
+                                               {0.0f, 0.85f, 0.85f, 1.0f},
+                                               {0.15f, 0.3f, 1.0f, 1.0f},
+                                               {0.7f, 0.4f, 0.1f, 1.0f},
+                                               {0.55f, 0.2f, 1.0f, 1.0f}}};
+    float problem_width_px = 5.0f;  ///< a hole's loop
 };
+
+/// Marks in the view the places `report` lists (the Problems panel, `render --problems`), each
+/// in its kind's colour and drawn through the surface: a load cut's vertex as a dot, a hole as
+/// its whole boundary loop, a degenerate face as a dot at its centre and its tint, an inside-
+/// out or small part as every face of the part tinted, a face passing through another tinted.
+void add_problem_marks(const Mesh& mesh, const ProblemReport& report, const OverlayStyle& style,
+                       OverlayBatch& out);
 
 /// Boundary edges and crease edges ("e:crease") of `mesh`, with `seams` its UV seams and with
 /// `borders` its material borders (attribute_summary.h), each edge once in the first of
@@ -205,6 +223,8 @@ struct SceneContent {
     /// Meshes: a phased Loop's marks only within two rings of `selected` (dense meshes, where
     /// every vertex's target at once is a blur); all of them when nothing is selected.
     bool marks_near_selection = false;
+    /// Meshes: the problems to mark (add_problem_marks()), or none.
+    const ProblemReport* problems = nullptr;
     /// Meshes: UV seams and material borders among the feature lines (shown with the UV
     /// checker and with material colours).
     bool uv_seams = false;
