@@ -7,7 +7,8 @@ from bench_results import fmt_ms, ok_results
 
 # The passes whose MeshEdit row prints bytes_moved, in the report's order (warm twins follow).
 BOUND_JOBS = ("normals_6p4m", "loop_1m_1level", "loop_100k_levels_1", "cc_1m_1level",
-              "cc_100k_levels_1", "ply_load_1m_binary", "collada_load_1m_triangles",
+              "cc_100k_levels_1", "ply_load_1m_binary", "stl_load_1m_binary",
+              "collada_load_1m_triangles",
               "collada_load_1m_polylist")
 NORMALS_LIMIT = 1.5  # the target: area-weighted normals within 1.5× of the bound
 

@@ -4,6 +4,7 @@
 //   bench_io_draw --job collada_load_1m_triangles --impl meshedit|assimp [--runs N] [--data DIR]
 //   bench_io_draw --job collada_load_1m_polylist  --impl meshedit|assimp [--runs N] [--data DIR]
 //   bench_io_draw --job ply_load_1m_binary        --impl meshedit|assimp [--runs N] [--data DIR]
+//   bench_io_draw --job stl_load_1m_binary        --impl meshedit|assimp [--runs N] [--data DIR]
 //   bench_io_draw --job draw_1m_triangles [--impl all] [--runs N] [--size WxH] [--samples S]
 //   bench_io_draw --job pick_1m [--impl all] [--positions N] [--size WxH]
 //   bench_io_draw --generate [--data DIR]     writes the COLLADA and PLY inputs (untimed,
@@ -14,7 +15,8 @@
 // 1,000,000 triangles) as a COLLADA <triangles> file (~34 MB) and as a <polylist> with one
 // normal per face (NORMAL at offset 1, so every corner has two indices), and as a binary
 // little-endian PLY as scanners write it (float x y z, `list uchar int vertex_indices`,
-// ~18 MB). The draw job renders
+// ~18 MB), and as binary STL (each triangle its three corners and its normal, as every STL
+// file is: the loaders weld equal corners; ~50 MB). The draw job renders
 // the same torus at 1280x800 in one headless context (EGL, else OSMesa): N frames through
 // MeshRenderer::draw (smooth Blinn-Phong; back faces culled, as the torus is closed and outward)
 // and N through MeshRenderer::draw_bare (transform-only shader, same vertex buffer, back faces
@@ -48,6 +50,7 @@
 #include "../src/headless/gl_context.h"
 #include "bench_util.h"
 #include "meshedit/core/face_bvh.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/io/io.h"
 #include "meshedit/overlay/camera.h"
@@ -68,6 +71,7 @@ constexpr int kTorusTube = 500;
 const char* const kTrianglesFile = "torus_1m_triangles.dae";
 const char* const kPolylistFile = "torus_1m_polylist.dae";
 const char* const kPlyFile = "torus_1m_binary.ply";
+const char* const kStlFile = "torus_1m_binary.stl";
 
 /// A growing text buffer with fast number formatting (std::to_chars, shortest round trip).
 class Writer {
@@ -236,13 +240,41 @@ void write_ply_torus(const Mesh& mesh, const fs::path& path) {
                  static_cast<double>(w.size()) / 1e6);
 }
 
+/// The torus as binary STL: an 80-byte header, the count, then per triangle its normal, its
+/// three corners (float) and a zero attribute word.
+void write_stl_torus(const Mesh& mesh, const fs::path& path) {
+    Writer w;
+    w.text(std::string(80, ' '));
+    auto put = [&w](const auto& value) {  // the host is little-endian (x86-64, arm64)
+        w.text(std::string_view(reinterpret_cast<const char*>(&value), sizeof value));
+    };
+    put(static_cast<std::uint32_t>(mesh.n_faces()));
+    const auto put_vec = [&](const Vec3& p) {
+        put(static_cast<float>(p.x));
+        put(static_cast<float>(p.y));
+        put(static_cast<float>(p.z));
+    };
+    for (Face f : mesh.faces()) {
+        put_vec(face_normal(mesh, f));
+        const Halfedge h0 = mesh.halfedge(f);
+        for (Halfedge h : {h0, mesh.next(h0), mesh.next(mesh.next(h0))}) {
+            put_vec(mesh.position(mesh.to_vertex(h)));
+        }
+        put(std::uint16_t{0});
+    }
+    w.save(path);
+    std::fprintf(stderr, "bench_io_draw: wrote %s (%.1f MB)\n", path.c_str(),
+                 static_cast<double>(w.size()) / 1e6);
+}
+
 /// Writes the missing inputs into `data`.
 void generate(const fs::path& data) {
     fs::create_directories(data);
     const bool need_tri = !fs::exists(data / kTrianglesFile);
     const bool need_poly = !fs::exists(data / kPolylistFile);
     const bool need_ply = !fs::exists(data / kPlyFile);
-    if (!need_tri && !need_poly && !need_ply) {
+    const bool need_stl = !fs::exists(data / kStlFile);
+    if (!need_tri && !need_poly && !need_ply && !need_stl) {
         return;
     }
     const Mesh torus = shapes::torus(kTorusRing, kTorusTube);
@@ -255,12 +287,16 @@ void generate(const fs::path& data) {
     if (need_ply) {
         write_ply_torus(torus, data / kPlyFile);
     }
+    if (need_stl) {
+        write_stl_torus(torus, data / kStlFile);
+    }
 }
 
 /// The input of a load job.
 const char* input_of(const std::string& job) {
     return job == "collada_load_1m_triangles" ? kTrianglesFile
            : job == "ply_load_1m_binary"      ? kPlyFile
+           : job == "stl_load_1m_binary"      ? kStlFile
                                               : kPolylistFile;
 }
 
@@ -561,8 +597,8 @@ int main(int argc, char** argv) {
     try {
         const Args a = parse(argc, argv);
         if (a.list) {
-            for (const char* job :
-                 {"collada_load_1m_triangles", "collada_load_1m_polylist", "ply_load_1m_binary"}) {
+            for (const char* job : {"collada_load_1m_triangles", "collada_load_1m_polylist",
+                                    "ply_load_1m_binary", "stl_load_1m_binary"}) {
                 std::printf("%s meshedit\n%s assimp\n", job, job);
             }
             std::printf("draw_1m_triangles all\npick_1m all\n");
@@ -573,7 +609,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (a.job == "collada_load_1m_triangles" || a.job == "collada_load_1m_polylist" ||
-            a.job == "ply_load_1m_binary") {
+            a.job == "ply_load_1m_binary" || a.job == "stl_load_1m_binary") {
             bench_load(a.job, a.impl, a.runs, a.data);
         } else if (a.job == "draw_1m_triangles") {
             bench_draw(a.job, a.impl.empty() ? "all" : a.impl, a.runs, a.width, a.height,
@@ -583,7 +619,7 @@ int main(int argc, char** argv) {
         } else {
             throw std::invalid_argument("unknown job '" + a.job +
                                         "' (collada_load_1m_triangles, collada_load_1m_polylist, "
-                                        "ply_load_1m_binary, "
+                                        "ply_load_1m_binary, stl_load_1m_binary, "
                                         "draw_1m_triangles, pick_1m; or --list, --generate)");
         }
     } catch (const std::exception& e) {

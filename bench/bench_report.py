@@ -54,6 +54,9 @@ JOB_TITLES = {
     "(same impls)",
     "ply_load_1m_binary": "Load a 1M-triangle binary little-endian PLY (float x y z, `list "
     "uchar int vertex_indices`) into a mesh (same impls)",
+    "stl_load_1m_binary": "Load the same torus as binary STL (each triangle its own three "
+    "corners; both weld equal corners: MeshEdit by a hash of the position's bits, Assimp by "
+    "JoinIdenticalVertices) into a mesh",
     "build_torus_1m": "Build the halfedge mesh of a 1M-triangle torus soup (the ordinary "
     "shape, for comparison with the rows below)",
     **{f"build_fan_hub_first_{n}": f"Build a {n}-triangle fan whose hub is vertex 0 (all its "

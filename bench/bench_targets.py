@@ -267,7 +267,8 @@ def targets_table(jobs):
     for job, label in (("collada_load_1m_triangles", "COLLADA load, 1M triangles"),
                        ("collada_load_1m_polylist",
                         "COLLADA load, 1M triangles, `<polylist>` + per-face normals (variant)"),
-                       ("ply_load_1m_binary", "binary PLY load, 1M triangles")):
+                       ("ply_load_1m_binary", "binary PLY load, 1M triangles"),
+                       ("stl_load_1m_binary", "binary STL load, 1M triangles (welded)")):
         _, ratios, _, _ = ratio_info(jobs.get(job, []))
         if "assimp" in ratios:
             speedup = 1 / ratios["assimp"]

@@ -55,7 +55,8 @@ DEFAULT_CONFIGS = {
     ],
     "bench_io_draw": [
         (job, impl)
-        for job in ("collada_load_1m_triangles", "collada_load_1m_polylist", "ply_load_1m_binary")
+        for job in ("collada_load_1m_triangles", "collada_load_1m_polylist", "ply_load_1m_binary",
+                    "stl_load_1m_binary")
         for impl in ("meshedit", "assimp")
     ]
     + [("draw_1m_triangles", "all"),  # one run measures "meshedit" and "bare"

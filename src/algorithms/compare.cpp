@@ -11,6 +11,8 @@
 #include <tuple>
 #include <utility>
 
+#include "meshedit/core/hash.h"
+
 namespace meshedit {
 namespace {
 
@@ -25,11 +27,8 @@ PositionKey key_of(const Vec3& p) {
             std::bit_cast<std::uint64_t>(p.z)};
 }
 
-std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
+constexpr std::uint64_t mix(std::uint64_t x) {
+    return splitmix64(x);
 }
 
 std::string count_text(const char* what, std::size_t a, std::size_t b) {

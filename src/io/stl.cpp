@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "io_util.h"
+#include "meshedit/core/hash.h"
 #include "meshedit/core/mesh.h"
 
 namespace meshedit {
@@ -26,13 +27,6 @@ namespace {
 
 constexpr std::size_t kHeader = 84;
 constexpr std::size_t kRecord = 50;
-
-std::uint64_t hash_of(const Vec3& p) {
-    std::uint64_t h = std::bit_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull;
-    h ^= (std::bit_cast<std::uint64_t>(p.y) + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
-    h ^= (std::bit_cast<std::uint64_t>(p.z) + 0x165667B19E3779F9ull) * 0xD6E8FEB86659FD93ull;
-    return h ^ (h >> 29);
-}
 
 // Collects triangles, welding corners and checking stored normals against the winding. The
 // weld is an open-addressing table of vertex numbers keyed by position (NaN is refused before
@@ -80,7 +74,7 @@ private:
     std::uint32_t vertex_of(const Vec3& p) {
         std::vector<Vec3>& positions = out_.soup.positions;
         const std::size_t mask = slots_.size() - 1;
-        for (std::size_t i = hash_of(p) & mask;; i = (i + 1) & mask) {
+        for (std::size_t i = position_hash(p) & mask;; i = (i + 1) & mask) {
             if (slots_[i] == kEmpty) {
                 slots_[i] = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(p);
@@ -99,7 +93,7 @@ private:
         slots_.assign(slots_.size() * 2, kEmpty);
         const std::size_t mask = slots_.size() - 1;
         for (std::uint32_t v = 0; v < out_.soup.positions.size(); ++v) {
-            std::size_t i = hash_of(out_.soup.positions[v]) & mask;
+            std::size_t i = position_hash(out_.soup.positions[v]) & mask;
             while (slots_[i] != kEmpty) {
                 i = (i + 1) & mask;
             }
