@@ -8,9 +8,9 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
+#include "meshedit/core/hash.h"
 #include "meshedit/repair/repair.h"
 #include "soup_edit.h"
 
@@ -24,13 +24,60 @@ struct Cell {
     bool operator==(const Cell&) const = default;
 };
 
-struct CellHash {
-    std::size_t operator()(const Cell& c) const {
-        std::uint64_t h = static_cast<std::uint64_t>(c.x) * 0x9E3779B97F4A7C15ull;
-        h ^= static_cast<std::uint64_t>(c.y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
-        h ^= static_cast<std::uint64_t>(c.z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
-        return static_cast<std::size_t>(h);
+// Cell → number, open addressing in one array (a node per cell in std::unordered_map made
+// the lookups of a 10M-triangle merge cache misses twice over). Never holds kGone.
+class CellTable {
+public:
+    // The number at `c`, or kGone.
+    std::uint32_t find(const Cell& c) const {
+        if (slots_.empty()) {
+            return kGone;
+        }
+        for (std::size_t i = slot_of(c);; i = (i + 1) & (slots_.size() - 1)) {
+            if (slots_[i].value == kGone || slots_[i].cell == c) {
+                return slots_[i].value;
+            }
+        }
     }
+    // The number at `c`, set to `value` first if there was none.
+    std::uint32_t& at_or_set(const Cell& c, std::uint32_t value) {
+        if (2 * (used_ + 1) > slots_.size()) {
+            grow();
+        }
+        std::size_t i = slot_of(c);
+        while (slots_[i].value != kGone && slots_[i].cell != c) {
+            i = (i + 1) & (slots_.size() - 1);
+        }
+        if (slots_[i].value == kGone) {
+            slots_[i] = {c, value};
+            ++used_;
+        }
+        return slots_[i].value;
+    }
+
+private:
+    struct Slot {
+        Cell cell{};
+        std::uint32_t value = kGone;
+    };
+    std::size_t slot_of(const Cell& c) const {
+        return splitmix64(static_cast<std::uint64_t>(c.x) ^
+                          splitmix64(static_cast<std::uint64_t>(c.y) ^
+                                     splitmix64(static_cast<std::uint64_t>(c.z)))) &
+               (slots_.size() - 1);
+    }
+    void grow() {
+        std::vector<Slot> old = std::move(slots_);
+        slots_.assign(std::max<std::size_t>(64, 2 * old.size()), Slot{});
+        used_ = 0;
+        for (const Slot& s : old) {
+            if (s.value != kGone) {
+                at_or_set(s.cell, s.value);
+            }
+        }
+    }
+    std::vector<Slot> slots_;
+    std::size_t used_ = 0;
 };
 
 // `fraction` of the box's diagonal without overflow: scaled by the largest extent first, and
@@ -60,7 +107,9 @@ Vec3 without_negative_zero(Vec3 p) {
 }
 
 // Kept vertices by grid cell; a vertex joins the lowest-numbered kept vertex within the
-// distance among the 27 cells around its own, or is kept itself.
+// distance among the cells its ball of that radius touches, or is kept itself. Cells are four
+// distances wide, so the ball mostly lies in one cell (27 lookups a vertex, every one a hash
+// miss, were two thirds of a 10M-triangle repair).
 class Grid {
 public:
     Grid(const BoundingBox& box, double distance) : origin_(box.min), distance_(distance) {
@@ -71,21 +120,18 @@ public:
         for (int i = 0; i < 3; ++i) {
             largest = std::max(largest, box.max[i] * 0.5 - box.min[i] * 0.5);
         }
-        cell_ = std::max(distance, largest / std::ldexp(1.0, 39));
+        cell_ = std::max(4.0 * distance, largest / std::ldexp(1.0, 39));
     }
 
     // The kept vertex (an index into `kept`) that `p` merges into, or kGone.
     std::uint32_t find(const Vec3& p, const std::vector<Vec3>& kept) const {
-        const Cell c = cell_of(p);
+        const Cell lo = cell_of(p, -distance_);
+        const Cell hi = cell_of(p, distance_);
         std::uint32_t best = kGone;
-        for (std::int64_t dx = -1; dx <= 1; ++dx) {
-            for (std::int64_t dy = -1; dy <= 1; ++dy) {
-                for (std::int64_t dz = -1; dz <= 1; ++dz) {
-                    const auto at = heads_.find({c.x + dx, c.y + dy, c.z + dz});
-                    if (at == heads_.end()) {
-                        continue;
-                    }
-                    for (std::uint32_t k = at->second; k != kGone; k = next_[k]) {
+        for (std::int64_t x = lo.x; x <= hi.x; ++x) {
+            for (std::int64_t y = lo.y; y <= hi.y; ++y) {
+                for (std::int64_t z = lo.z; z <= hi.z; ++z) {
+                    for (std::uint32_t k = heads_.find({x, y, z}); k != kGone; k = next_[k]) {
                         if (k < best && distance(kept[k], p) <= distance_) {
                             best = k;
                         }
@@ -98,24 +144,27 @@ public:
 
     void add(const Vec3& p, std::uint32_t k) {
         next_.resize(k + 1, kGone);
-        auto [at, inserted] = heads_.try_emplace(cell_of(p), k);
-        if (!inserted) {
-            next_[k] = at->second;
-            at->second = k;
+        std::uint32_t& head = heads_.at_or_set(cell_of(p, 0.0), k);
+        if (head != k) {
+            next_[k] = head;
+            head = k;
         }
     }
 
 private:
-    Cell cell_of(const Vec3& p) const {
-        return {static_cast<std::int64_t>(std::floor((p.x * 0.5 - origin_.x * 0.5) / cell_ * 2.0)),
-                static_cast<std::int64_t>(std::floor((p.y * 0.5 - origin_.y * 0.5) / cell_ * 2.0)),
-                static_cast<std::int64_t>(std::floor((p.z * 0.5 - origin_.z * 0.5) / cell_ * 2.0))};
+    // The cell of p shifted by `by` along every axis (halved first, so no sum overflows).
+    Cell cell_of(const Vec3& p, double by) const {
+        const auto axis = [&](int i) {
+            return static_cast<std::int64_t>(
+                std::floor((p[i] * 0.5 - origin_[i] * 0.5 + by * 0.5) / cell_ * 2.0));
+        };
+        return {axis(0), axis(1), axis(2)};
     }
 
     Vec3 origin_;
     double distance_;
     double cell_ = 1.0;
-    std::unordered_map<Cell, std::uint32_t, CellHash> heads_;
+    CellTable heads_;
     std::vector<std::uint32_t> next_;  // the next kept vertex in the same cell
 };
 
@@ -147,14 +196,14 @@ std::vector<std::uint32_t> group_leaders(const std::vector<Vec3>& positions,
         return leader;
     }
     // Equal positions only: a hash of the exact coordinates.
-    std::unordered_map<Cell, std::uint32_t, CellHash> seen;
+    CellTable seen;
     for (std::uint32_t v = 0; v < positions.size(); ++v) {
         leader[v] = v;
         const Vec3 p = without_negative_zero(positions[v]);
         if (used[v] && is_finite(p)) {
             const Cell key{std::bit_cast<std::int64_t>(p.x), std::bit_cast<std::int64_t>(p.y),
                            std::bit_cast<std::int64_t>(p.z)};
-            leader[v] = seen.try_emplace(key, v).first->second;
+            leader[v] = seen.at_or_set(key, v);
         }
     }
     return leader;
