@@ -96,6 +96,18 @@ StepResult run_extrude_region(Mesh& mesh, const Step& step, const RunOptions&) {
                                     std::to_string(made.sides.size()) + " walls");
 }
 
+OpStatus check_inset_region(const Mesh& mesh, const Step& step) {
+    return is_inset_region_ok(mesh, region_of(mesh, step), step.amounts[0]);
+}
+StepResult run_inset_region(Mesh& mesh, const Step& step, const RunOptions&) {
+    const std::vector<Face> faces = named_faces(mesh, step);
+    RegionInset made;
+    inset_region(mesh, region_of(mesh, step), step.amounts[0], &made);
+    return region_result(faces, "inset " + count_faces(faces.size()) + " as one region by " +
+                                    number_text(step.amounts[0]) + ": a ring of " +
+                                    std::to_string(made.border.size()) + " quads");
+}
+
 OpStatus check_dissolve_region(const Mesh& mesh, const Step& step) {
     return is_dissolve_region_ok(mesh, region_of(mesh, step));
 }

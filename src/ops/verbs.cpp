@@ -469,6 +469,12 @@ constexpr std::array kVerbs{
          "joined (Blender's extrude region); the faces R become the top",
          "extrude the selected faces as one region (drag: the height)", check_extrude_region,
          run_extrude_region, nullptr, false, kChangesTopology},
+    Verb{"inset_region", kRegion, 1, 1, kNoDefaults, "inset_region:R:T",
+         "insets the faces R as one region (Blender's inset faces): a ring of quads T wide "
+         "inside its border, the border's copies moved into the region, an even ring; the "
+         "faces R keep their handles inside it",
+         "inset the selected faces as one region (drag: the thickness)", check_inset_region,
+         run_inset_region, nullptr, false, kChangesTopology},
     Verb{"dissolve_region", kRegion, 0, 0, kNoDefaults, "dissolve_region:R",
          "merges each piece of the faces R (faces joined across edges) into one face, its inner "
          "vertices and edges dissolved (Blender's dissolve faces); refused for a piece that is "

@@ -38,6 +38,7 @@ constexpr std::array kTable{
     Binding{key_of('W'), kShift, kMeshModes, edit("subdivide_region"), "Shift+W", {}},
     Binding{Key::Delete, kCtrl, kMeshModes, edit("dissolve_region"), "Ctrl+Delete", {}},
     Binding{key_of('I'), kShift, kMeshModes, interactive(Modal::Inset), "Shift+I", "inset the selected faces: drag for the amount"},
+    Binding{key_of('I'), kAlt, kMeshModes, interactive(Modal::InsetRegion), "Alt+I", "inset the selected faces as one region: drag for the thickness (a ring of quads inside its border)"},
     Binding{key_of('B'), kCtrl, kMeshModes, interactive(Modal::Bevel), "Ctrl+B", "bevel the selected vertices or edges: drag for the amount"},
     Binding{key_of('M'), kNoMods, kMeshModes, interactive(Modal::Move), "M", "move the selection in the screen plane (X/Y/Z lock an axis)"},
     Binding{key_of('R'), kNoMods, kMeshModes, interactive(Modal::Rotate), "R", "rotate the selection about its centre (X/Y/Z: about that axis)"},

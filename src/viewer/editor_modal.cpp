@@ -101,6 +101,8 @@ const char* verb_of(Modal kind) {
             return "bevel";
         case Modal::ExtrudeRegion:
             return "extrude_region";
+        case Modal::InsetRegion:
+            return "inset_region";
         default:
             return nullptr;
     }
@@ -116,6 +118,8 @@ const char* name_of(Modal kind) {
             return "scale";
         case Modal::ExtrudeRegion:
             return "extrude region";
+        case Modal::InsetRegion:
+            return "inset region";
         default:
             return verb_of(kind);
     }
@@ -261,6 +265,9 @@ Outcome Editor::modal_input(const ModalInput& in) {
         case Modal::ExtrudeRegion:
             modal_.amounts[0] = in.dy * in.pixel;
             break;
+        case Modal::InsetRegion:  // a distance on the mesh, as far as the mouse went
+            modal_.amounts[0] = std::hypot(in.dx, in.dy) * in.pixel;
+            break;
         case Modal::Move:
             modal_.offset = in.offset;
             if (modal_.axis >= 0) {
@@ -332,7 +339,8 @@ Outcome Editor::apply_modal() {
     if (m.kind == Modal::Bevel && !m.bevelled.empty()) {
         return move_bevelled();
     }
-    if (m.kind == Modal::ExtrudeRegion && m.region_built) {
+    if ((m.kind == Modal::ExtrudeRegion && m.region_built) ||
+        (m.kind == Modal::InsetRegion && m.inset_built)) {
         return move_region_top();
     }
     // Back to the document before the edit (in the time of what the last preview touched),
@@ -350,18 +358,23 @@ Outcome Editor::apply_modal() {
         m.built.clear();
         m.bevelled.clear();
         m.region_built.reset();
+        m.inset_built.reset();
         std::vector<ElementRef> made;
         for (const ops::Step& step : steps) {
             std::optional<ExtrudeBase> base;
             std::optional<BevelBase> bevel;
             try {
-                if (m.kind == Modal::ExtrudeRegion) {
+                if (m.kind == Modal::ExtrudeRegion || m.kind == Modal::InsetRegion) {
                     m.region = ops::named_faces(doc_.mesh, step);
                     FaceSet set(doc_.mesh.faces_size());
                     for (const Face f : m.region) {
                         set.insert(f);
                     }
-                    m.region_built = extrude_region_base(doc_.mesh, set);
+                    if (m.kind == Modal::ExtrudeRegion) {
+                        m.region_built = extrude_region_base(doc_.mesh, set);
+                    } else {
+                        m.inset_built = inset_region_base(doc_.mesh, set);
+                    }
                 } else if (faces) {
                     base = extrude_base(doc_.mesh, ops::named_face(doc_.mesh, step));
                 } else if (m.kind == Modal::Bevel) {
@@ -392,6 +405,7 @@ Outcome Editor::apply_modal() {
         if (m.steps.empty()) {
             m.built.clear();
             m.region_built.reset();
+            m.inset_built.reset();
         } else {
             m.refusal.clear();  // some ran: a partial result, as a key on a selection gives
             select_made(doc_, made);
@@ -474,12 +488,16 @@ Outcome Editor::move_extruded() {
     return out;
 }
 
-// Extrude region after its first preview: the walls stand and only the top moves
-// (extrude_region_positions(), the code the operation places it with).
+// Extrude or inset region after its first preview: the walls (the ring) stand and only the
+// top (the inner border) moves (extrude_region_positions(), inset_region_positions(): the
+// code the operation places it with).
 Outcome Editor::move_region_top() {
     ModalState& m = modal_;
     const double height = m.amounts[0];
-    if (const OpStatus ok = extrude_region_positions(doc_.mesh, *m.region_built, height); !ok) {
+    const bool inset = m.kind == Modal::InsetRegion;
+    if (const OpStatus ok = inset ? inset_region_positions(doc_.mesh, *m.inset_built, height)
+                                  : extrude_region_positions(doc_.mesh, *m.region_built, height);
+        !ok) {
         m.refusal = ok.text();
         return {kSelection, modal_status()};  // the last height that fits stays shown
     }
@@ -487,8 +505,7 @@ Outcome Editor::move_region_top() {
     out.region = m.transaction->amend();
     ++m.position_amendments;
     m.steps = {
-        ops::make_region_step("extrude_region", m.region, std::span<const double>(&height, 1))
-            .text};
+        ops::make_region_step(verb_of(m.kind), m.region, std::span<const double>(&height, 1)).text};
     return out;
 }
 
@@ -576,6 +593,9 @@ std::string Editor::modal_status() const {
             break;
         case Modal::ExtrudeRegion:
             out += " height " + number(m.amounts[0]);
+            break;
+        case Modal::InsetRegion:
+            out += " thickness " + number(m.amounts[0]);
             break;
         case Modal::Bevel:
             out += " t " + number(m.amounts[0]);

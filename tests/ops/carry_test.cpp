@@ -89,10 +89,11 @@ Registered register_properties(Mesh& mesh) {
 // smoothing and fairing, the fair hole fill's fairing, and a phased Catmull-Clark's moves (they
 // move positions and leave every attribute as it was).
 bool places_off_affine(std::string_view verb) {
-    return verb == "extrude" || verb == "extrude_region" || verb == "move" || verb == "simplify" ||
-           verb == "remesh" || verb == "loop_step" || verb == "smooth" || verb == "smooth_cotan" ||
-           verb == "taubin" || verb == "smooth_implicit" || verb == "fair" ||
-           verb == "smooth_region" || verb == "fill_holes_fair" || verb == "cc_step";
+    return verb == "extrude" || verb == "extrude_region" || verb == "inset_region" ||
+           verb == "move" || verb == "simplify" || verb == "remesh" || verb == "loop_step" ||
+           verb == "smooth" || verb == "smooth_cotan" || verb == "taubin" ||
+           verb == "smooth_implicit" || verb == "fair" || verb == "smooth_region" ||
+           verb == "fill_holes_fair" || verb == "cc_step";
 }
 
 ElementRef random_live(const Mesh& mesh, Kind kind, std::mt19937& rng) {

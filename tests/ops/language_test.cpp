@@ -81,12 +81,13 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
     EXPECT_EQ(
         syntax_error("twist:0-1"),
         "unknown op 'twist:0-1' (the verbs are flip, split, bisect, collapse, dissolve, "
-        "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, "
+        "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, inset_region, "
         "dissolve_region, subdivide_region, select, select_loop, select_ring, "
         "select_linked, select_more, select_less, select_invert, select_boundary, "
         "select_creases, select_valence, select_degree, crease, crease_by_angle, move, "
         "loop, loop_step, cc_step, catmull_clark, linear, simplify, remesh, smooth, smooth_cotan, "
-        "taubin, smooth_implicit, smooth_region, fair, repair, merge_by_distance, remove_degenerate, orient, "
+        "taubin, smooth_implicit, smooth_region, fair, repair, merge_by_distance, "
+        "remove_degenerate, orient, "
         "remove_small, fill_holes, fill_holes_fair, triangulate, flip_orientation or compact)");
     EXPECT_EQ(syntax_error("flip:0"),
               "bad op 'flip:0': expected flip:A-B with A-B (an edge by its two vertex indices)");

@@ -261,6 +261,14 @@ const std::vector<GoldenCase>& golden_cases() {
         // (magenta dots where it cut), leaving holes (yellow loops) and small parts (brown);
         // degtri_sliding's four zero-area triangles along one line (cyan dots and sides) and
         // its hole; beam, a closed box whose faces all point inward (blue edges).
+        // A plateau modelled as in Blender: the middle 3 x 3 quads of a 5 x 5 grid extruded as
+        // one region by 0.6, then inset as one region by 0.3 (Alt+I): a ring of 12 quads, 0.3
+        // wide all round (even at the corners), on top of the walls.
+        {"region_inset",
+         "tests/golden/data/grid5.obj",
+         {"--ops",
+          "extrude_region:f6..8+f11..13+f16..18:0.6,inset_region:f6..8+f11..13+f16..18:0.3",
+          "--flat", "--wireframe", "--up", "z", "--camera", "30,45"}},
         {"problems_cut_cube", "demo:cube-shuffled", {"--problems", "--flat", "--wireframe"}},
         {"problems_degenerate", "demo:degtri_sliding", {"--problems", "--flat", "--wireframe"}},
         {"problems_inside_out", "demo:beam", {"--problems", "--flat", "--wireframe"}},

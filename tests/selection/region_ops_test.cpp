@@ -156,6 +156,96 @@ TEST(ExtrudeRegion, RefusesWithItsReasonAndTouchesNothing) {
     refused(grid, faces(grid, {3}), 1e308, "range of numbers");
 }
 
+// The expected inset of the middle 3 × 3 of a 5 × 5 grid by `t`: the 16 quads around it as
+// they were, a ring of 12 quads from the square [1, 4]² in to [1 + t, 4 - t]², and inside it
+// the 9 quads, whose border vertices moved in by t (the corners diagonally) and whose four
+// inner vertices stayed.
+Mesh expected_inset(double t) {
+    std::vector<Vec3> positions;
+    std::vector<std::vector<std::uint32_t>> polygons;
+    std::map<std::array<double, 2>, std::uint32_t> index;
+    const auto at = [&](double x, double y) {
+        const auto [it, made] =
+            index.emplace(std::array<double, 2>{x, y}, std::uint32_t(positions.size()));
+        if (made) {
+            positions.push_back({x, y, 0.0});
+        }
+        return it->second;
+    };
+    const auto inside = [](int i, int j) { return i >= 1 && i <= 3 && j >= 1 && j <= 3; };
+    const auto in = [&](int k) { return k == 1 ? 1 + t : k == 4 ? 4 - t : double(k); };
+    for (int j = 0; j < 5; ++j) {
+        for (int i = 0; i < 5; ++i) {
+            if (inside(i, j)) {
+                polygons.push_back({at(in(i), in(j)), at(in(i + 1), in(j)),
+                                    at(in(i + 1), in(j + 1)), at(in(i), in(j + 1))});
+            } else {
+                polygons.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        }
+    }
+    for (int k = 1; k <= 3; ++k) {  // the ring, counter-clockwise seen from +z
+        polygons.push_back({at(k, 1), at(k + 1, 1), at(in(k + 1), in(1)), at(in(k), in(1))});
+        polygons.push_back({at(4, k), at(4, k + 1), at(in(4), in(k + 1)), at(in(4), in(k))});
+        polygons.push_back({at(k + 1, 4), at(k, 4), at(in(k), in(4)), at(in(k + 1), in(4))});
+        polygons.push_back({at(1, k + 1), at(1, k), at(in(1), in(k)), at(in(1), in(k + 1))});
+    }
+    return test::mesh_from_faces(positions, polygons);
+}
+
+TEST(InsetRegion, NineQuadsGetOneRingOfTwelve) {
+    Mesh mesh = shapes::quad_grid(5, 5);
+    RegionInset made;
+    ASSERT_TRUE(inset_region(mesh, faces(mesh, middle_nine()), 0.25, &made));
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(mesh.n_vertices(), 36u + 12u);
+    EXPECT_EQ(mesh.n_edges(), 60u + 24u);
+    EXPECT_EQ(mesh.n_faces(), 25u + 12u);
+    EXPECT_EQ(made.border.size(), 12u);
+    EXPECT_TRUE(test::same_faces_by_position(mesh, expected_inset(0.25)));
+    // The region keeps its handles: its faces are the inner nine, each inside the ring.
+    double area = 0;
+    for (const std::uint32_t f : middle_nine()) {
+        area += face_area(mesh, Face(f));
+    }
+    EXPECT_NEAR(area, 2.5 * 2.5, 1e-12);
+}
+
+TEST(InsetRegion, MovingTheRingAgainEqualsInsettingThere) {
+    Mesh moved = shapes::quad_grid(5, 5);
+    RegionInset made;
+    ASSERT_TRUE(inset_region(moved, faces(moved, middle_nine()), 0.0, &made));
+    ASSERT_TRUE(inset_region_positions(moved, made, 0.4));
+    Mesh direct = shapes::quad_grid(5, 5);
+    ASSERT_TRUE(inset_region(direct, faces(direct, middle_nine()), 0.4));
+    EXPECT_TRUE(test::identical(moved, direct));
+    // The base taken before equals what the run made.
+    Mesh fresh = shapes::quad_grid(5, 5);
+    const RegionInset base = inset_region_base(fresh, faces(fresh, middle_nine()));
+    EXPECT_EQ(base.border, made.border);
+    EXPECT_EQ(base.inward, made.inward);
+}
+
+TEST(InsetRegion, RefusesWithItsReasonAndTouchesNothing) {
+    const Mesh grid = shapes::quad_grid(5, 5);
+    const Mesh cube = test::quad_cube();
+    const auto refused = [](const Mesh& before, const FaceSet& region, double thickness,
+                            const std::string& reason) {
+        Mesh mesh = before;
+        const auto r = inset_region(mesh, region, thickness);
+        EXPECT_FALSE(r);
+        EXPECT_NE(std::string(r.reason()).find(reason), std::string::npos) << r.reason();
+        EXPECT_EQ(std::string(r.reason()).rfind("cannot inset the region: ", 0), 0u);
+        EXPECT_TRUE(test::identical(mesh, before));
+    };
+    refused(cube, faces(cube, {0, 1, 2, 3, 4, 5}), 0.1, "whole closed surface");
+    refused(grid, faces(grid, {0, 6}), 0.1, "touches itself at vertex 7");
+    refused(grid, faces(grid, {}), 0.1, "select one or more live faces");
+    refused(grid, faces(grid, {3}), -0.1, "at least 0");
+    refused(grid, faces(grid, {3}), std::nan(""), "finite");
+    refused(grid, faces(grid, {3}), 1e308, "range of numbers");
+}
+
 TEST(SubdivideRegion, OneQuadSplitsAndItsNeighboursFan) {
     Mesh mesh = shapes::quad_grid(3, 3);
     std::vector<Face> inside;

@@ -69,6 +69,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('G'), kShift, kMeshModes, {Command::SelectTrait}},
             {key_of('B'), kAlt, kMeshMode, {Command::BrushSelect}},
             {key_of('I'), kShift, kMeshModes, interactive(Modal::Inset)},
+            {key_of('I'), kAlt, kMeshModes, interactive(Modal::InsetRegion)},
             {key_of('B'), kCtrl, kMeshModes, interactive(Modal::Bevel)},
             {key_of('M'), 0, kMeshModes, interactive(Modal::Move)},
             {key_of('R'), 0, kMeshModes, interactive(Modal::Rotate)},

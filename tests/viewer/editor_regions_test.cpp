@@ -159,6 +159,50 @@ TEST(EditorRegions, ShiftXExtrudesTheRegionAsOneAndShiftWSubdividesIt) {
     EXPECT_EQ(refused.message, "select faces (click, Shift+click, B or Ctrl+right-drag) first");
 }
 
+// Alt+I insets the selected faces as one region: a drag builds the ring once and then only
+// moves its inner border; the session's step replays to the same mesh; Ctrl+Shift+M then
+// smooths the inner region only (its border, the ring's inner side, stays).
+TEST(EditorRegions, AltIInsetsTheRegionAsOne) {
+    const Mesh grid = quad_grid(5, 5);
+    Editor ed = editor_with(grid);
+    std::vector<ElementRef> nine;
+    for (const std::uint32_t f : {6u, 7u, 8u, 11u, 12u, 13u, 16u, 17u, 18u}) {
+        nine.push_back(ElementRef::face(Face(f)));
+    }
+    ed.select_elements(nine, false, "box");
+    ASSERT_FALSE(ed.press(key_of('I'), kAlt).refused);
+    ModalInput in;
+    in.pixel = 0.01;
+    for (int k = 1; k <= 25; ++k) {
+        in.dx = k;
+        ed.modal_input(in);
+    }
+    EXPECT_EQ(ed.modal_counts().topology_changes, 1u);
+    EXPECT_EQ(ed.modal_counts().position_amendments, 25u);
+    EXPECT_EQ(ed.modal_status().rfind("inset region thickness 0.25", 0), 0u) << ed.modal_status();
+    ASSERT_FALSE(ed.press(Key::Enter, 0).refused);
+    EXPECT_EQ(ed.history().undo_steps(), 1u);
+    const std::vector<std::string>& session = ed.document().session;
+    ASSERT_FALSE(session.empty());
+    EXPECT_EQ(session.back(), "inset_region:f6..8+f11..13+f16..18:0.25");
+    EXPECT_EQ(ed.mesh().n_faces(), 37u);
+    EXPECT_EQ(count(ed), 9u);
+    Mesh expected = grid;
+    ops::apply_steps(expected, ops::parse(session.back()));
+    expect_as_replayed(ed, grid, expected);
+
+    const Mesh inset = ed.mesh();
+    const Outcome smoothed = ed.press(key_of('M'), kCtrl | kShift);
+    ASSERT_FALSE(smoothed.refused) << smoothed.message;
+    EXPECT_EQ(session.back(), "smooth_region:f6..8+f11..13+f16..18:10,0.5");
+    EXPECT_EQ(smoothed.message.rfind("smoothed 10 iterations of 4 inner vertices of 9 faces", 0),
+              0u)
+        << smoothed.message;
+    Mesh replayed = inset;
+    ops::apply_steps(replayed, ops::parse(session.back()));
+    expect_as_replayed(ed, inset, replayed);
+}
+
 // Shift+G selects by the trait the info panel sets: on a 5 x 5 grid the border faces (16),
 // the border's vertices of valence 3 (16), the quads (25), a crease; turned away from the
 // eye, nothing until the eye goes behind the grid.

@@ -39,6 +39,31 @@ RegionExtrude extrude_region_base(const Mesh& mesh, const FaceSet& region);
 /// Moves an extruded region's top to `height` (the same positions extrude_region() gives).
 OpStatus extrude_region_positions(Mesh& mesh, const RegionExtrude& made, double height);
 
+/// What an inset of a region makes and where its inner border goes, to move it again without
+/// rebuilding it (inset_region_positions()).
+struct RegionInset {
+    std::vector<Vertex> border;  ///< the inner border's vertices: the copies extrude makes
+    std::vector<Vec3> base;      ///< where each starts (its original's position)
+    std::vector<Vec3> inward;    ///< its move per unit of thickness
+};
+
+/// \return ok if `thickness` is a finite number of at least 0, `region` can be extruded as
+/// one (is_extrude_region_ok() at height 0) and the thickness keeps the corners finite.
+OpStatus is_inset_region_ok(const Mesh& mesh, const FaceSet& region, double thickness);
+/// Insets the faces of `region` as one (Blender's inset faces): a ring of quads inside the
+/// region's border, `thickness` wide, the whole region inside it. It is extrude_region() at
+/// height 0 with the copies of the border moved into the region: each along the bisector of
+/// its two border sides' inward directions in their faces' planes, by thickness / cos of half
+/// the angle between them (an even ring; at most 4 × thickness at a sharp corner). Inner
+/// vertices stay. The faces of the region keep their handles.
+OpResult<Face> inset_region(Mesh& mesh, const FaceSet& region, double thickness,
+                            RegionInset* made = nullptr);
+/// What inset_region() will make of `region`, taken before it runs (the copies get the next
+/// vertex indices): for an interactive inset that builds the ring once, then only moves it.
+RegionInset inset_region_base(const Mesh& mesh, const FaceSet& region);
+/// Moves an inset's inner border to `thickness` (the positions inset_region() gives).
+OpStatus inset_region_positions(Mesh& mesh, const RegionInset& made, double thickness);
+
 /// \return ok if `region` holds live faces and every piece of it (faces joined across
 /// edges) with more than one face is a disk: one border loop that visits each vertex once, and
 /// V - E + F = 1. Checked by running the dissolves on a copy (O(mesh)): a region operation is

@@ -32,7 +32,7 @@ constexpr ModeMask mode_bit(Mode mode) {
 /// The interactive edits: a key starts one, the mouse (or typed numbers) sets its amount
 /// live, and it ends confirmed (one undo step) or cancelled (the document as it was, bit for
 /// bit). Editor::begin_modal().
-enum class Modal { None, Extrude, Inset, Bevel, ExtrudeRegion, Move, Rotate, Scale };
+enum class Modal { None, Extrude, Inset, Bevel, ExtrudeRegion, InsetRegion, Move, Rotate, Scale };
 
 /// Everything a key can ask for.
 enum class Command {

@@ -428,9 +428,11 @@ private:
         /// Bevel: what each bevel that ran needs to place its corners again; empty when two
         /// bevels touch what the other wrote (each preview then runs them all again).
         std::vector<BevelBase> bevelled;
-        /// ExtrudeRegion: the region's faces and, once it ran, what moves its top again.
+        /// ExtrudeRegion, InsetRegion: the region's faces and, once it ran, what moves its
+        /// top (its inner border) again.
         std::vector<Face> region;
         std::optional<RegionExtrude> region_built;
+        std::optional<RegionInset> inset_built;
         std::size_t topology_changes = 0;     ///< previews that ran the verb
         std::size_t position_amendments = 0;  ///< previews that only moved what it made
     };
