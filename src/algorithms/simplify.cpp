@@ -185,6 +185,12 @@ public:
         if constexpr (Aware) {
             attributes_.emplace(mesh, diagonal_);
         }
+        if (!options.vertices.empty()) {
+            movable_.assign(mesh.vertices_size(), 0);
+            for (const Vertex v : options.vertices) {
+                movable_[v.idx()] = 1;
+            }
+        }
     }
 
     SimplifyReport run() {
@@ -195,7 +201,9 @@ public:
         std::vector<std::pair<std::uint32_t, float>> all;
         all.reserve(mesh_.n_edges());
         for (Edge e : mesh_.edges()) {
-            all.emplace_back(e.idx(), key(error_of(candidate(e), e)));
+            if (movable(e)) {
+                all.emplace_back(e.idx(), key(error_of(candidate(e), e)));
+            }
         }
         heap_.assign(all);
         const std::size_t start = mesh_.n_faces();
@@ -391,8 +399,16 @@ private:
             attributes_->apply(a, b, s, quadric_[s.idx()]);
         }
         for (Edge g : mesh_.edges(s)) {
-            heap_.set(g.idx(), key(error_of(candidate(g), g)));
+            if (movable(g)) {
+                heap_.set(g.idx(), key(error_of(candidate(g), g)));
+            }
         }
+    }
+
+    // Whether e may collapse: both ends among SimplifyOptions::vertices (or no list).
+    bool movable(Edge e) const {
+        return movable_.empty() ||
+               (movable_[mesh_.vertex(e, 0).idx()] != 0 && movable_[mesh_.vertex(e, 1).idx()] != 0);
     }
 
     Mesh& mesh_;
@@ -403,6 +419,7 @@ private:
     double diagonal_;
     EdgeProperty<std::uint8_t> crease_;              // null: no crease marks, no crease rule
     std::optional<AttributeSimplifier> attributes_;  // none: blind, or nothing to weigh
+    std::vector<std::uint8_t> movable_;              // empty: every vertex may go
     SimplifyReport report_;
 };
 
@@ -418,6 +435,11 @@ std::string why_not_simplify(const Mesh& mesh, const SimplifyOptions& options) {
     }
     if (!(options.max_error >= 0.0)) {
         return "cannot simplify: the error bound must be a number of 0 or more";
+    }
+    for (const Vertex v : options.vertices) {
+        if (v.idx() >= mesh.vertices_size() || mesh.is_deleted(v)) {
+            return "cannot simplify: vertex " + std::to_string(v.idx()) + " does not exist";
+        }
     }
     if (options.feature_angle_deg != kNoFeatureAngle &&
         !check_crease_by_angle(options.feature_angle_deg)) {

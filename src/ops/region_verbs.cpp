@@ -3,11 +3,16 @@
 
 #include "region_verbs.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "meshedit/core/simplify.h"
+#include "meshedit/core/smoothing.h"
 #include "meshedit/selection/region_ops.h"
 #include "meshedit/selection/selection.h"
+#include "phase_verbs.h"
 
 namespace meshedit::ops {
 namespace {
@@ -106,6 +111,78 @@ StepResult run_inset_region(Mesh& mesh, const Step& step, const RunOptions&) {
     return region_result(faces, "inset " + count_faces(faces.size()) + " as one region by " +
                                     number_text(step.amounts[0]) + ": a ring of " +
                                     std::to_string(made.border.size()) + " quads");
+}
+
+namespace {
+
+// simplify_region:R:K keeps about K (0 < K < 1) of the faces R, collapsing only edges between
+// their inner vertices (region_inner_vertices()): the region's border and the rest stay.
+struct RegionSimplify {
+    SimplifyOptions options;
+    std::vector<Face> faces;
+    std::string why;
+};
+RegionSimplify region_simplify(const Mesh& mesh, const Step& step) {
+    RegionSimplify r;
+    r.faces = named_faces(mesh, step);
+    const double k = step.amounts[0];
+    if (!(k > 0.0 && k < 1.0)) {
+        r.why =
+            "cannot simplify the region: keep a share of its faces above 0 and below 1, "
+            "not " +
+            number_text(k);
+        return r;
+    }
+    r.options.vertices = region_inner_vertices(mesh, r.faces);
+    if (r.options.vertices.empty()) {
+        r.why = "cannot simplify the region: every vertex of the " + count_faces(r.faces.size()) +
+                " is on their border (select the faces around a vertex too)";
+        return r;
+    }
+    const auto drop =
+        static_cast<std::size_t>(std::round(static_cast<double>(r.faces.size()) * (1.0 - k)));
+    if (drop == 0) {
+        r.why = "cannot simplify the region: keeping " + number_text(k) + " of " +
+                count_faces(r.faces.size()) + " removes none";
+        return r;
+    }
+    r.options.target_faces = mesh.n_faces() - std::min(drop, mesh.n_faces() - 1);
+    return r;
+}
+
+}  // namespace
+
+OpStatus check_simplify_region(const Mesh& mesh, const Step& step) {
+    if (const OpStatus why = phased_loop_refusal(mesh, "simplify"); !why) {
+        return why;
+    }
+    const RegionSimplify r = region_simplify(mesh, step);
+    if (!r.why.empty()) {
+        return OpStatus::composed(r.why);
+    }
+    return check_simplify(mesh, r.options);
+}
+StepResult run_simplify_region(Mesh& mesh, const Step& step, const RunOptions& options) {
+    RegionSimplify r = region_simplify(mesh, step);
+    r.options.progress = options.progress;
+    const std::size_t before = mesh.n_faces();
+    const SimplifyReport report = simplify(mesh, r.options);
+    std::vector<Face> kept;
+    for (const Face f : r.faces) {
+        if (!mesh.is_deleted(f)) {
+            kept.push_back(f);
+        }
+    }
+    const std::size_t removed = before - mesh.n_faces();
+    std::string message = "simplified the region of " + count_faces(r.faces.size()) + " to " +
+                          std::to_string(r.faces.size() - removed) + " (" +
+                          std::to_string(report.collapses) + " collapses; its border and the " +
+                          "rest unchanged)";
+    if (report.stopped_early) {
+        message += "; stopped early: no further collapse inside it keeps the mesh valid";
+    }
+    StepResult result = kept.empty() ? local(ElementRef{}, message) : region_result(kept, message);
+    return result;
 }
 
 OpStatus check_dissolve_region(const Mesh& mesh, const Step& step) {

@@ -23,6 +23,8 @@ OpStatus check_extrude_region(const Mesh& mesh, const Step& step);
 StepResult run_extrude_region(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_inset_region(const Mesh& mesh, const Step& step);
 StepResult run_inset_region(Mesh& mesh, const Step& step, const RunOptions& options);
+OpStatus check_simplify_region(const Mesh& mesh, const Step& step);
+StepResult run_simplify_region(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_dissolve_region(const Mesh& mesh, const Step& step);
 StepResult run_dissolve_region(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_subdivide_region(const Mesh& mesh, const Step& step);

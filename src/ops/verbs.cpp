@@ -475,6 +475,13 @@ constexpr std::array kVerbs{
          "faces R keep their handles inside it",
          "inset the selected faces as one region (drag: the thickness)", check_inset_region,
          run_inset_region, nullptr, false, kChangesTopology},
+    Verb{"simplify_region", kRegion, 1, 0, {0.5, 0.0, 0.0},
+         "simplify_region:R, simplify_region:R:K",
+         "QEM simplification of the faces R only, to about K of them (0 < K < 1, default "
+         "0.5): only edges between their inner vertices collapse, so their border and the "
+         "rest of the mesh stay bit for bit",
+         "simplify the selected faces to half (their border fixed)", check_simplify_region,
+         run_simplify_region, nullptr, false, kChangesTopology},
     Verb{"dissolve_region", kRegion, 0, 0, kNoDefaults, "dissolve_region:R",
          "merges each piece of the faces R (faces joined across edges) into one face, its inner "
          "vertices and edges dissolved (Blender's dissolve faces); refused for a piece that is "

@@ -52,6 +52,7 @@ constexpr std::array kTable{
     Binding{key_of('L'), kCtrl, kMeshModes, edit("linear"), "Ctrl+L", {}},
     Binding{key_of('L'), kAlt, kMeshModes, edit("loop_step"), "Alt+L", {}},
     Binding{key_of('D'), kNoMods, kMeshModes, edit("simplify"), "D", {}},
+    Binding{key_of('D'), kAlt, kMeshModes, edit("simplify_region"), "Alt+D", {}},
     Binding{key_of('R'), kShift, kMeshModes, edit("remesh"), "Shift+R", {}},
     Binding{key_of('M'), kShift, kMeshModes, edit("smooth"), "Shift+M", {}},
     Binding{key_of('R'), kAlt | kShift, kMeshModes, edit("repair"), "Alt+Shift+R", {}},

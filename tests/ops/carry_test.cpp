@@ -90,8 +90,8 @@ Registered register_properties(Mesh& mesh) {
 // move positions and leave every attribute as it was).
 bool places_off_affine(std::string_view verb) {
     return verb == "extrude" || verb == "extrude_region" || verb == "inset_region" ||
-           verb == "move" || verb == "simplify" || verb == "remesh" || verb == "loop_step" ||
-           verb == "smooth" || verb == "smooth_cotan" || verb == "taubin" ||
+           verb == "move" || verb == "simplify" || verb == "simplify_region" || verb == "remesh" ||
+           verb == "loop_step" || verb == "smooth" || verb == "smooth_cotan" || verb == "taubin" ||
            verb == "smooth_implicit" || verb == "fair" || verb == "smooth_region" ||
            verb == "fill_holes_fair" || verb == "cc_step";
 }

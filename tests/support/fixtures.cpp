@@ -1,5 +1,6 @@
 #include "support/fixtures.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <tuple>
@@ -223,6 +224,17 @@ std::vector<Face> random_region(const Mesh& mesh, std::mt19937& rng) {
             const Face g = mesh.face(Mesh::twin(h));
             if (g.is_valid() && rng() % 2 == 0) {
                 out.push_back(g);
+            }
+        }
+        // Half the time every face around one of its corners too, so that the region has an
+        // inner vertex (what smoothing and simplifying a region move).
+        if (rng() % 2 == 0) {
+            const Vertex v = mesh.to_vertex(mesh.halfedge(out.front()));
+            for (const Halfedge h : mesh.halfedges(v)) {
+                const Face g = mesh.face(h);
+                if (g.is_valid() && std::find(out.begin(), out.end(), g) == out.end()) {
+                    out.push_back(g);
+                }
             }
         }
     }

@@ -94,7 +94,8 @@ using Faces = std::vector<std::vector<std::uint32_t>>;
 Faces faces_of(const PolygonSoup& soup);
 
 /// A random region for the region verbs: a live face and, with odds one in two each, the
-/// faces across its sides (none when the mesh has no face).
+/// faces across its sides, and with odds one in two every face around its first corner (an
+/// inner vertex); none when the mesh has no face.
 std::vector<Face> random_region(const Mesh& mesh, std::mt19937& rng);
 
 }  // namespace meshedit::test

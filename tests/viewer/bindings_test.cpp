@@ -79,6 +79,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('C'), kShift, kMeshModes, edit("catmull_clark")},
             {key_of('L'), kCtrl, kMeshModes, edit("linear")},
             {key_of('D'), 0, kMeshModes, edit("simplify")},
+            {key_of('D'), kAlt, kMeshModes, edit("simplify_region")},
             {key_of('R'), kShift, kMeshModes, edit("remesh")},
             {key_of('M'), kShift, kMeshModes, edit("smooth")},
             {key_of('R'), kAlt | kShift, kMeshModes, edit("repair")},

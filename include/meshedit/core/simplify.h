@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
@@ -42,6 +43,10 @@ struct SimplifyOptions {
     double feature_angle_deg = kNoFeatureAngle;
     /// Aware by default; it changes nothing on a mesh without UVs, colours or materials.
     SimplifyAttributes attributes = SimplifyAttributes::Aware;
+    /// Only these vertices move or go: an edge collapses only when both its ends are listed,
+    /// so every other vertex (a region's border, everything outside it) stays bit for bit;
+    /// empty: every vertex (simplify_region: a region's inner vertices).
+    std::vector<Vertex> vertices;
     /// Called with the fraction done (0…1), non-decreasing, at coarse intervals, last with 1.
     std::function<void(double)> progress;
 };
