@@ -196,16 +196,39 @@ StepResult run_dissolve_region(Mesh& mesh, const Step& step, const RunOptions&) 
                                      count_faces(merged.size()) + " (one per piece)");
 }
 
+namespace {
+
+StepResult run_region_scheme(Mesh& mesh, const Step& step, RegionScheme scheme) {
+    const std::size_t before = named_faces(mesh, step).size();
+    std::vector<Face> inside;
+    subdivide_region(mesh, region_of(mesh, step), &inside, scheme);
+    const char* how = scheme == RegionScheme::Loop           ? " (Loop inside)"
+                      : scheme == RegionScheme::CatmullClark ? " (Catmull-Clark inside)"
+                                                             : "";
+    return region_result(inside, "subdivided " + count_faces(before) + " into " +
+                                     std::to_string(inside.size()) + how +
+                                     ", their neighbours cut into fans of triangles");
+}
+
+}  // namespace
+
 OpStatus check_subdivide_region(const Mesh& mesh, const Step& step) {
     return is_subdivide_region_ok(mesh, region_of(mesh, step));
 }
 StepResult run_subdivide_region(Mesh& mesh, const Step& step, const RunOptions&) {
-    const std::size_t before = named_faces(mesh, step).size();
-    std::vector<Face> inside;
-    subdivide_region(mesh, region_of(mesh, step), &inside);
-    return region_result(inside, "subdivided " + count_faces(before) + " into " +
-                                     std::to_string(inside.size()) +
-                                     ", their neighbours cut into fans of triangles");
+    return run_region_scheme(mesh, step, RegionScheme::Linear);
+}
+OpStatus check_loop_region(const Mesh& mesh, const Step& step) {
+    return is_subdivide_region_ok(mesh, region_of(mesh, step), RegionScheme::Loop);
+}
+StepResult run_loop_region(Mesh& mesh, const Step& step, const RunOptions&) {
+    return run_region_scheme(mesh, step, RegionScheme::Loop);
+}
+OpStatus check_catmull_clark_region(const Mesh& mesh, const Step& step) {
+    return is_subdivide_region_ok(mesh, region_of(mesh, step), RegionScheme::CatmullClark);
+}
+StepResult run_catmull_clark_region(Mesh& mesh, const Step& step, const RunOptions&) {
+    return run_region_scheme(mesh, step, RegionScheme::CatmullClark);
 }
 
 // ------------------------------------------------------------------ selection verbs

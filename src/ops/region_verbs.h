@@ -27,6 +27,10 @@ OpStatus check_simplify_region(const Mesh& mesh, const Step& step);
 StepResult run_simplify_region(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_dissolve_region(const Mesh& mesh, const Step& step);
 StepResult run_dissolve_region(Mesh& mesh, const Step& step, const RunOptions& options);
+OpStatus check_loop_region(const Mesh& mesh, const Step& step);
+StepResult run_loop_region(Mesh& mesh, const Step& step, const RunOptions& options);
+OpStatus check_catmull_clark_region(const Mesh& mesh, const Step& step);
+StepResult run_catmull_clark_region(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_subdivide_region(const Mesh& mesh, const Step& step);
 StepResult run_subdivide_region(Mesh& mesh, const Step& step, const RunOptions& options);
 

@@ -494,6 +494,19 @@ constexpr std::array kVerbs{
          "triangles from it (the transition ring)",
          "subdivide the selected faces once (linear, with a transition ring)",
          check_subdivide_region, run_subdivide_region, nullptr, false, kChangesTopology},
+    Verb{"loop_region", kRegion, 0, 0, kNoDefaults, "loop_region:R",
+         "subdivide_region's pattern with Loop's rules inside the triangles R (Warren's "
+         "weights): their inner vertices and the edges between two of them smoothed, their "
+         "border and the rest unmoved; over a whole closed mesh it is `loop`",
+         "Loop-subdivide the selected triangles once (border fixed, a transition ring)",
+         check_loop_region, run_loop_region, nullptr, false, kChangesTopology},
+    Verb{"catmull_clark_region", kRegion, 0, 0, kNoDefaults, "catmull_clark_region:R",
+         "subdivide_region's pattern with Catmull-Clark's rules inside the faces R (every "
+         "face into quads): their border and the rest unmoved; over a whole closed mesh it "
+         "is `catmull_clark`",
+         "Catmull-Clark-subdivide the selected faces once (border fixed, a transition ring)",
+         check_catmull_clark_region, run_catmull_clark_region, nullptr, false,
+         kChangesTopology},
     // The selection a list carries (run_steps()): set by these, named `sel` by region verbs.
     Verb{"select", kRegion, 0, 0, kNoDefaults, "select:R",
          "selects the faces R, for the region verbs that follow to name as `sel`",

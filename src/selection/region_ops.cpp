@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "meshedit/core/assert.h"
+#include "region_targets.h"
 
 namespace meshedit {
 namespace {
@@ -571,9 +572,19 @@ Halfedge into(const Mesh& mesh, Face f, Vertex v) {
 
 }  // namespace
 
-OpStatus is_subdivide_region_ok(const Mesh& mesh, const FaceSet& region) {
+OpStatus is_subdivide_region_ok(const Mesh& mesh, const FaceSet& region, RegionScheme scheme) {
     if (!all_live(mesh, region)) {
         return OpStatus::refused("cannot subdivide the region: select one or more live faces");
+    }
+    if (scheme == RegionScheme::Loop) {
+        for (const Face f : region.elements()) {
+            if (mesh.valence(f) != 3) {
+                return OpStatus::composed(
+                    "cannot subdivide the region with Loop: face " + std::to_string(f.idx()) +
+                    " has " + std::to_string(mesh.valence(f)) +
+                    " corners (Loop takes triangles; Catmull-Clark takes any face)");
+            }
+        }
     }
     return OpStatus::ok();
 }
@@ -592,8 +603,9 @@ OpStatus is_subdivide_region_ok(const Mesh& mesh, const FaceSet& region) {
 // A face beside the region with midpoints m on its sides is cut by connect_corners() from its
 // first midpoint to every corner not beside it (a fan). The carry is that of bisect, poke,
 // dissolve and connect_corners().
-OpResult<Face> subdivide_region(Mesh& mesh, const FaceSet& region, std::vector<Face>* inside) {
-    if (const OpStatus ok = is_subdivide_region_ok(mesh, region); !ok) {
+OpResult<Face> subdivide_region(Mesh& mesh, const FaceSet& region, std::vector<Face>* inside,
+                                RegionScheme scheme) {
+    if (const OpStatus ok = is_subdivide_region_ok(mesh, region, scheme); !ok) {
         return ok;
     }
     const std::vector<Face> faces = region.elements();
@@ -618,6 +630,9 @@ OpResult<Face> subdivide_region(Mesh& mesh, const FaceSet& region, std::vector<F
             }
         }
     }
+    const region_detail::RegionTargets targets =
+        scheme == RegionScheme::Linear ? region_detail::RegionTargets{}
+                                       : region_detail::smooth_targets(mesh, region, edges, scheme);
     const auto first_mid = static_cast<std::uint32_t>(mesh.vertices_size());
     for (const Edge e : edges) {
         [[maybe_unused]] const bool ok = bisect(mesh, e).ok();  // a live edge always bisects
@@ -626,7 +641,7 @@ OpResult<Face> subdivide_region(Mesh& mesh, const FaceSet& region, std::vector<F
     const auto first_f = static_cast<std::uint32_t>(mesh.faces_size());
     for (std::size_t i = 0; i < faces.size(); ++i) {
         const Face f = faces[i];
-        if (corners[i].size() == 3) {
+        if (corners[i].size() == 3 && scheme != RegionScheme::CatmullClark) {
             for (const Vertex p : corners[i]) {  // f keeps the middle triangle
                 const Halfedge to_p = into(mesh, f, p);
                 const Halfedge before = mesh.prev(to_p);  // into the midpoint before p
@@ -654,6 +669,17 @@ OpResult<Face> subdivide_region(Mesh& mesh, const FaceSet& region, std::vector<F
         while (mesh.valence(mesh.face(x)) > 3) {
             connect_corners(mesh, x, mesh.next(mesh.next(x)));
         }
+    }
+    // The smooth scheme's places (computed on the mesh before it was cut); the topology and
+    // what each element carries are the linear pattern's.
+    for (std::size_t i = 0; i < targets.edge_points.size(); ++i) {
+        if (targets.edge_points[i].first) {
+            mesh.position(Vertex(first_mid + static_cast<std::uint32_t>(i))) =
+                targets.edge_points[i].second;
+        }
+    }
+    for (const auto& [v, p] : targets.vertices) {
+        mesh.position(v) = p;
     }
     std::vector<Face> made;
     for (const Face f : faces) {

@@ -36,6 +36,8 @@ constexpr std::array kTable{
     Binding{key_of('X'), kNoMods, kMeshModes, interactive(Modal::Extrude), "X", "extrude the selected faces: drag up/down for height, left/right for shrink"},
     Binding{key_of('X'), kShift, kMeshModes, interactive(Modal::ExtrudeRegion), "Shift+X", "extrude the selected faces as one region: drag up/down for the height (walls around its border; shared sides stay joined)"},
     Binding{key_of('W'), kShift, kMeshModes, edit("subdivide_region"), "Shift+W", {}},
+    Binding{key_of('W'), kCtrl | kShift, kMeshModes, edit("loop_region"), "Ctrl+Shift+W", {}},
+    Binding{key_of('W'), kAlt | kShift, kMeshModes, edit("catmull_clark_region"), "Alt+Shift+W", {}},
     Binding{Key::Delete, kCtrl, kMeshModes, edit("dissolve_region"), "Ctrl+Delete", {}},
     Binding{key_of('I'), kShift, kMeshModes, interactive(Modal::Inset), "Shift+I", "inset the selected faces: drag for the amount"},
     Binding{key_of('I'), kAlt, kMeshModes, interactive(Modal::InsetRegion), "Alt+I", "inset the selected faces as one region: drag for the thickness (a ring of quads inside its border)"},

@@ -86,14 +86,15 @@ Registered register_properties(Mesh& mesh) {
 
 // Verbs that move vertices off affine combinations of the old ones: the lift of an extrude,
 // a move, the quadric's optimum, the remesher's relaxation, the teaching phases' moves, and
-// smoothing and fairing, the fair hole fill's fairing, and a phased Catmull-Clark's moves (they
-// move positions and leave every attribute as it was).
+// smoothing and fairing, the fair hole fill's fairing, a phased Catmull-Clark's moves and a
+// region's Loop or Catmull-Clark (they move positions and leave every attribute as it was).
 bool places_off_affine(std::string_view verb) {
     return verb == "extrude" || verb == "extrude_region" || verb == "inset_region" ||
            verb == "move" || verb == "simplify" || verb == "simplify_region" || verb == "remesh" ||
            verb == "loop_step" || verb == "smooth" || verb == "smooth_cotan" || verb == "taubin" ||
            verb == "smooth_implicit" || verb == "fair" || verb == "smooth_region" ||
-           verb == "fill_holes_fair" || verb == "cc_step";
+           verb == "fill_holes_fair" || verb == "cc_step" || verb == "loop_region" ||
+           verb == "catmull_clark_region";
 }
 
 ElementRef random_live(const Mesh& mesh, Kind kind, std::mt19937& rng) {

@@ -269,6 +269,18 @@ const std::vector<GoldenCase>& golden_cases() {
          {"--ops",
           "extrude_region:f6..8+f11..13+f16..18:0.6,inset_region:f6..8+f11..13+f16..18:0.3",
           "--flat", "--wireframe", "--up", "z", "--camera", "30,45"}},
+        // Subdividing a selection with a smooth scheme (Ctrl+Shift+W, Alt+Shift+W): Loop inside
+        // a patch of the twice-subdivided icosahedron (face 0 grown twice), Catmull-Clark
+        // inside the quad ball's 3 x 3 patch around face 75; the border stays and the faces
+        // beside it are cut into fans (the transition ring).
+        {"region_loop_cap",
+         "dae/icosahedron.dae",
+         {"--ops", "loop:2,select:f0,select_more,select_more,loop_region:sel", "--flat",
+          "--wireframe", "--camera", "-35,35"}},
+        {"region_catmull_clark",
+         "dae/quadball.dae",
+         {"--ops", "select:f75,select_more,catmull_clark_region:sel", "--flat", "--wireframe",
+          "--camera", "35,10"}},
         {"problems_cut_cube", "demo:cube-shuffled", {"--problems", "--flat", "--wireframe"}},
         {"problems_degenerate", "demo:degtri_sliding", {"--problems", "--flat", "--wireframe"}},
         {"problems_inside_out", "demo:beam", {"--problems", "--flat", "--wireframe"}},

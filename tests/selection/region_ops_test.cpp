@@ -11,6 +11,8 @@
 
 #include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/core/smoothing.h"
+#include "meshedit/core/subdivision.h"
 #include "meshedit/selection/region_ops.h"
 #include "support/fixtures.h"
 #include "support/mesh_compare.h"
@@ -318,6 +320,74 @@ TEST(SubdivideRegion, TheWholeQuadMeshEqualsLinearSubdivision) {
         ASSERT_VALID(mesh);
         EXPECT_TRUE(test::same_faces_by_position(mesh, expected));
     }
+}
+
+// Over every face of a closed mesh the smooth schemes are the whole-mesh ones: Loop on the
+// icosphere equals loop_subdivide() (Warren's weights), Catmull-Clark on the quad cube and on
+// the icosphere's triangles equals catmull_clark(), positions to 1e-12.
+TEST(SubdivideRegion, TheSmoothSchemesOverAWholeMeshAreTheWholeMeshOnes) {
+    const auto everything = [](const Mesh& mesh) {
+        FaceSet all(mesh.faces_size());
+        for (const Face f : mesh.faces()) {
+            all.insert(f);
+        }
+        return all;
+    };
+    {
+        Mesh mesh = shapes::icosphere(1);
+        Mesh expected = mesh;
+        loop_subdivide(expected);
+        ASSERT_TRUE(subdivide_region(mesh, everything(mesh), nullptr, RegionScheme::Loop));
+        ASSERT_VALID(mesh);
+        EXPECT_TRUE(test::same_faces_by_position(mesh, expected, 1e-12));
+    }
+    for (Mesh mesh : {test::quad_cube(), shapes::icosphere(1)}) {
+        Mesh expected = mesh;
+        quad_subdivide(expected);  // Catmull-Clark
+        ASSERT_TRUE(subdivide_region(mesh, everything(mesh), nullptr, RegionScheme::CatmullClark));
+        ASSERT_VALID(mesh);
+        EXPECT_TRUE(test::same_faces_by_position(mesh, expected, 1e-12));
+    }
+}
+
+// On part of a mesh the border stays: Loop on a cap of the icosphere moves its inner
+// vertices toward the limit surface (inside the sphere, as Loop shrinks) and leaves every
+// vertex on the cap's border and outside it where it was; the ring around it is fans.
+TEST(SubdivideRegion, LoopOnACapLeavesItsBorderAndTheRest) {
+    const Mesh sphere = shapes::icosphere(2);
+    std::vector<std::uint32_t> cap;
+    for (const Face f : sphere.faces()) {
+        bool near = true;
+        for (const Vertex v : sphere.vertices(f)) {
+            near = near && distance(sphere.position(v), Vec3{0, 0, 1}) < 0.7;
+        }
+        if (near) {
+            cap.push_back(f.idx());
+        }
+    }
+    ASSERT_GT(cap.size(), 10u);
+    Mesh mesh = sphere;
+    const FaceSet region = faces(mesh, cap);
+    const std::vector<Vertex> inner = region_inner_vertices(mesh, region.elements());
+    ASSERT_FALSE(inner.empty());
+    ASSERT_TRUE(subdivide_region(mesh, region, nullptr, RegionScheme::Loop));
+    ASSERT_VALID(mesh);
+    std::vector<bool> is_inner(sphere.vertices_size(), false);
+    for (const Vertex v : inner) {
+        is_inner[v.idx()] = true;
+        EXPECT_LT(norm(mesh.position(v)), 1.0 - 1e-6) << v.idx();
+    }
+    for (const Vertex v : sphere.vertices()) {
+        if (!is_inner[v.idx()]) {
+            EXPECT_EQ(mesh.position(v), sphere.position(v)) << v.idx();
+        }
+    }
+    Mesh quads = shapes::quad_grid(2, 2);
+    const auto refused = subdivide_region(quads, faces(quads, {0}), nullptr, RegionScheme::Loop);
+    EXPECT_FALSE(refused);
+    EXPECT_EQ(std::string(refused.reason()),
+              "cannot subdivide the region with Loop: face 0 has 4 corners (Loop takes "
+              "triangles; Catmull-Clark takes any face)");
 }
 
 TEST(SubdivideRegion, RefusesAnEmptyRegion) {

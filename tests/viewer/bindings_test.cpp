@@ -65,6 +65,8 @@ const std::vector<Expected>& expected_bindings() {
             // Operations on a region of faces.
             {key_of('X'), kShift, kMeshModes, interactive(Modal::ExtrudeRegion)},
             {key_of('W'), kShift, kMeshModes, edit("subdivide_region")},
+            {key_of('W'), kCtrl | kShift, kMeshModes, edit("loop_region")},
+            {key_of('W'), kAlt | kShift, kMeshModes, edit("catmull_clark_region")},
             {Key::Delete, kCtrl, kMeshModes, edit("dissolve_region")},
             {key_of('G'), kShift, kMeshModes, {Command::SelectTrait}},
             {key_of('B'), kAlt, kMeshMode, {Command::BrushSelect}},

@@ -75,15 +75,29 @@ OpStatus is_dissolve_region_ok(const Mesh& mesh, const FaceSet& region);
 OpResult<Face> dissolve_region(Mesh& mesh, const FaceSet& region,
                                std::vector<Face>* merged = nullptr);
 
-/// \return ok if `region` holds at least one live face.
-OpStatus is_subdivide_region_ok(const Mesh& mesh, const FaceSet& region);
+/// How subdivide_region() places the points inside the region.
+enum class RegionScheme {
+    Linear,        ///< midpoints and centroids: the shape stays
+    Loop,          ///< Loop's rules inside (triangles only), Warren's weights
+    CatmullClark,  ///< Catmull-Clark's rules inside; every face (triangles too) into quads
+};
+
+/// \return ok if `region` holds at least one live face, and for Loop only triangles.
+OpStatus is_subdivide_region_ok(const Mesh& mesh, const FaceSet& region,
+                                RegionScheme scheme = RegionScheme::Linear);
 /// Subdivides the faces of `region` once, linearly: each edge of the region gets its
 /// midpoint; a triangle becomes four triangles (Loop's pattern), any other face one quad per
 /// corner around its centroid (Catmull-Clark's). Each face beside the region that gained
 /// midpoints is cut into a fan of triangles from its first midpoint (the transition ring, as
 /// Blender's subdivide and red-green refinement do), so no face is left with a corner in the
-/// middle of a straight side. \return the faces inside the old region.
+/// middle of a straight side. With Loop or Catmull-Clark, the edges with both faces in the
+/// region (and no crease) get the scheme's edge points and its inner vertices (every face
+/// around them in it, on no crease) its vertex points; the border, its midpoints and
+/// everything outside stay, so the refined patch joins the rest without a gap. Over every
+/// face of a closed mesh it is loop_subdivide() / catmull_clark() (tested). \return the faces
+/// inside the old region.
 OpResult<Face> subdivide_region(Mesh& mesh, const FaceSet& region,
-                                std::vector<Face>* inside = nullptr);
+                                std::vector<Face>* inside = nullptr,
+                                RegionScheme scheme = RegionScheme::Linear);
 
 }  // namespace meshedit
