@@ -42,6 +42,9 @@ def test_every_verb_is_a_method():
     (("triangulate", (), {"f": 2}), "triangulate:f2"),
     (("extrude_region", ([6, 7, 8], 0.5), {}), "extrude_region:f6+f7+f8:0.5"),
     (("extrude_region", (), {"f": np.array([1, 2]), "height": 1}), "extrude_region:f1+f2:1"),
+    (("inset_region", ([6, 7],), {"thickness": 0.25}), "inset_region:f6+f7:0.25"),
+    (("simplify_region", ([3, 4, 5],), {"ratio": 0.5}), "simplify_region:f3+f4+f5:0.5"),
+    (("loop_region", ([0, 1],), {}), "loop_region:f0+f1"),
     (("subdivide_region", ([4],), {}), "subdivide_region:f4"),
 ])
 def test_calling_convention(call, text):

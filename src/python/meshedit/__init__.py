@@ -53,6 +53,8 @@ AMOUNT_NAMES = {
     "remesh": ("length", "rounds", "feature_angle"),
     "crease_by_angle": ("degrees",),
     "extrude_region": ("height",),
+    "inset_region": ("thickness",),
+    "simplify_region": ("ratio",),  # a share of the region's faces, below 1
     "merge_by_distance": ("tolerance", "absolute"),  # absolute=1: a distance, not a share
     "remove_small": ("faces",),
     "fill_holes": ("max_edges",),
