@@ -45,6 +45,8 @@ namespace {
 
 // A collapse may not turn a face by more than 60 degrees (cos 60° = 0.5), nor a flip.
 constexpr double kCosLimit = 0.5;
+// The scratch face property of a region remesh (removed before it returns).
+constexpr const char* kRegionProperty = "f:remesh_region";
 // More than this many passes of splits means the target is absurd for the mesh (each pass
 // halves every long edge): check_remesh() refuses such targets first.
 constexpr int kMaxSplitPasses = 40;
@@ -100,6 +102,14 @@ public:
           options_(options),
           input_(mesh),
           crease_(mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+        if (!options.faces.empty()) {
+            // Carried by every split (a face cut copies its value), so what the region's
+            // faces become stays in it.
+            region_ = mesh.add_property<Face, std::uint8_t>(kRegionProperty, 0);
+            for (const Face f : options.faces) {
+                region_[f] = 1;
+            }
+        }
         report_.target_length =
             options.target_length > 0.0 ? options.target_length : mean_edge_length(mesh);
         high_ = 4.0 / 3.0 * report_.target_length;
@@ -124,11 +134,31 @@ public:
             smooth_and_project();
             report();
         }
+        if (region_) {
+            mesh_.remove_property(region_);
+        }
         mesh_.garbage_collection();
         return report_;
     }
 
 private:
+    // A region remesh (RemeshOptions::faces): an edge may change when both its faces are in
+    // the region, a vertex move when every face around it is.
+    bool in_region(Face f) const { return !region_ || (f.is_valid() && region_[f] != 0); }
+    bool free_edge(Edge e) const {
+        return !region_ || (in_region(mesh_.face(e, 0)) && in_region(mesh_.face(e, 1)));
+    }
+    bool frozen(Vertex v) const {
+        if (!region_) {
+            return false;
+        }
+        for (const Halfedge h : mesh_.halfedges(v)) {
+            if (!in_region(mesh_.face(h))) {
+                return true;
+            }
+        }
+        return false;
+    }
     bool is_feature(Edge e) const { return mesh_.is_boundary(e) || (crease_ && crease_[e] != 0); }
     int features_at(Vertex v) const {
         int n = 0;
@@ -152,7 +182,8 @@ private:
             const std::size_t n = mesh_.edges_size();
             for (std::size_t i = 0; i < n; ++i) {
                 const Edge e(static_cast<std::uint32_t>(i));
-                if (!mesh_.is_deleted(e) && length(e) > high_ && is_split_ok(mesh_, e)) {
+                if (!mesh_.is_deleted(e) && free_edge(e) && length(e) > high_ &&
+                    is_split_ok(mesh_, e)) {
                     split(mesh_, e);
                     ++report_.splits;
                     any = true;
@@ -171,11 +202,13 @@ private:
         const std::size_t n = mesh_.edges_size();
         for (std::size_t i = 0; i < n; ++i) {
             const Edge e(static_cast<std::uint32_t>(i));
-            if (mesh_.is_deleted(e) || length(e) >= low_) {
+            if (mesh_.is_deleted(e) || !free_edge(e) || length(e) >= low_) {
                 continue;
             }
             const Vertex a = mesh_.vertex(e, 0), b = mesh_.vertex(e, 1);
-            const int fa = features_at(a), fb = features_at(b);
+            // A vertex on the region's border holds as a feature vertex does.
+            const int fa = features_at(a) + (frozen(a) ? 1 : 0);
+            const int fb = features_at(b) + (frozen(b) ? 1 : 0);
             Vec3 p;
             if (is_feature(e)) {
                 // Along a feature the survivor takes an end's place (a midpoint would leave a
@@ -230,7 +263,7 @@ private:
         const std::size_t n = mesh_.edges_size();
         for (std::size_t i = 0; i < n; ++i) {
             const Edge e(static_cast<std::uint32_t>(i));
-            if (mesh_.is_deleted(e) || is_feature(e) || !is_flip_ok(mesh_, e)) {
+            if (mesh_.is_deleted(e) || !free_edge(e) || is_feature(e) || !is_flip_ok(mesh_, e)) {
                 continue;
             }
             const Halfedge h = mesh_.halfedge(e, 0), t = Mesh::twin(h);
@@ -288,7 +321,7 @@ private:
                 }
                 const Vec3& p = mesh_.position(v);
                 moved_[i] = p;
-                if (mesh_.is_isolated(v) || features_at(v) > 0) {
+                if (mesh_.is_isolated(v) || features_at(v) > 0 || frozen(v)) {
                     continue;
                 }
                 Vec3 centroid;
@@ -315,6 +348,7 @@ private:
     const RemeshOptions& options_;
     const TriangleTree input_;
     EdgeProperty<std::uint8_t> crease_;
+    FaceProperty<std::uint8_t> region_;  // null: the whole mesh
     double high_ = 0.0, low_ = 0.0;
     std::vector<Vec3> normals_, moved_;
     std::vector<std::uint32_t> hint_;  // per vertex: the input triangle it was last projected on
@@ -325,6 +359,11 @@ private:
 std::string why_not_remesh(const Mesh& mesh, const RemeshOptions& options) {
     if (std::string why = refuse_unless_triangles(mesh, "remesh", "remeshing"); !why.empty()) {
         return why;
+    }
+    for (const Face f : options.faces) {
+        if (f.idx() >= mesh.faces_size() || mesh.is_deleted(f)) {
+            return "cannot remesh: face " + std::to_string(f.idx()) + " does not exist";
+        }
     }
     if (options.iterations < 1 || options.iterations > 100) {
         return "cannot remesh: iterations must be from 1 to 100, not " +
@@ -376,8 +415,13 @@ RemeshReport remesh(Mesh& mesh, const RemeshOptions& options) {
     }
     // On a copy: a remesh stopped by the growth guard leaves the input as it was.
     Mesh work = mesh;
+    RemeshOptions region = options;  // the region's faces as the compacted copy numbers them
     if (work.has_garbage()) {
-        work.garbage_collection();
+        GarbageCollectionMap map;
+        work.garbage_collection(&map);
+        for (Face& f : region.faces) {
+            f = map.faces[f.idx()];
+        }
     }
     RemeshReport report;
     // Sharp edges found become creases, which the remesher keeps as features.
@@ -387,7 +431,7 @@ RemeshReport remesh(Mesh& mesh, const RemeshOptions& options) {
     {
         // Lengths and areas square coordinates: keep them near 1, the target scaled alike.
         const UnitScale unit(work);
-        RemeshOptions scaled = options;
+        RemeshOptions scaled = region;
         scaled.target_length = unit.scaled(options.target_length);
         report = Remesher(work, scaled).run();
         report.target_length = unit.unscaled(report.target_length);

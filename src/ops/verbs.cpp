@@ -482,6 +482,13 @@ constexpr std::array kVerbs{
          "rest of the mesh stay bit for bit",
          "simplify the selected faces to half (their border fixed)", check_simplify_region,
          run_simplify_region, nullptr, false, kChangesTopology},
+    Verb{"remesh_region", kRegion, 2, 0, {0.0, 3.0, 0.0},
+         "remesh_region:R, remesh_region:R:L, remesh_region:R:L,N",
+         "remesh's N rounds (default 3) on the faces R only, toward edge length L (0 or left "
+         "out: the mean of their edges): only edges between two of their faces change and only "
+         "vertices inside them move, so their border and the rest stay",
+         "remesh the selected faces (their border fixed)", check_remesh_region,
+         run_remesh_region, nullptr, false, kChangesTopology | kRebuildsMesh},
     Verb{"dissolve_region", kRegion, 0, 0, kNoDefaults, "dissolve_region:R",
          "merges each piece of the faces R (faces joined across edges) into one face, its inner "
          "vertices and edges dissolved (Blender's dissolve faces); refused for a piece that is "

@@ -56,6 +56,7 @@ constexpr std::array kTable{
     Binding{key_of('D'), kNoMods, kMeshModes, edit("simplify"), "D", {}},
     Binding{key_of('D'), kAlt, kMeshModes, edit("simplify_region"), "Alt+D", {}},
     Binding{key_of('R'), kShift, kMeshModes, edit("remesh"), "Shift+R", {}},
+    Binding{key_of('R'), kCtrl | kShift, kMeshModes, edit("remesh_region"), "Ctrl+Shift+R", {}},
     Binding{key_of('M'), kShift, kMeshModes, edit("smooth"), "Shift+M", {}},
     Binding{key_of('R'), kAlt | kShift, kMeshModes, edit("repair"), "Alt+Shift+R", {}},
     Binding{key_of('F'), kCtrl, kMeshModes, edit("fill_holes_fair"), "Ctrl+F", {}},

@@ -55,7 +55,8 @@ Outcome Editor::run_verb(const ops::Verb& v) {
     if (steps.empty()) {
         return refused(hint);
     }
-    return edit_steps(steps, verb->name, (verb->traits & ops::kChangesTopology) != 0);
+    return edit_steps(steps, verb->name, (verb->traits & ops::kChangesTopology) != 0,
+                      (verb->traits & ops::kRebuildsMesh) == 0);
 }
 
 Editor::Edited Editor::after_whole_mesh(const ops::StepResult& result, const std::string& step) {
@@ -88,7 +89,7 @@ Outcome Editor::delete_selection() {
 }
 
 Outcome Editor::edit_steps(const std::vector<ops::Step>& steps, std::string_view what,
-                           bool topology) {
+                           bool topology, bool recorded) {
     // Each step's predicate runs once, in run_steps(); a list none of whose steps could run
     // is refused with the first reason, the recording rolled back.
     return edit([] { return OpStatus::ok(); },
@@ -105,7 +106,7 @@ Outcome Editor::edit_steps(const std::vector<ops::Step>& steps, std::string_view
                     edited.changes = topology ? kTopology | kSelection : kSelection | kDisplay;
                     return edited;
                 },
-                /*local=*/true);
+                recorded);
 }
 
 ToolSettings::Amounts& ToolSettings::amounts(std::string_view verb) {

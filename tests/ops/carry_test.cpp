@@ -94,7 +94,7 @@ bool places_off_affine(std::string_view verb) {
            verb == "loop_step" || verb == "smooth" || verb == "smooth_cotan" || verb == "taubin" ||
            verb == "smooth_implicit" || verb == "fair" || verb == "smooth_region" ||
            verb == "fill_holes_fair" || verb == "cc_step" || verb == "loop_region" ||
-           verb == "catmull_clark_region";
+           verb == "remesh_region" || verb == "catmull_clark_region";
 }
 
 ElementRef random_live(const Mesh& mesh, Kind kind, std::mt19937& rng) {

@@ -82,7 +82,7 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
         syntax_error("twist:0-1"),
         "unknown op 'twist:0-1' (the verbs are flip, split, bisect, collapse, dissolve, "
         "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, inset_region, "
-        "simplify_region, "
+        "simplify_region, remesh_region, "
         "dissolve_region, subdivide_region, loop_region, catmull_clark_region, select, "
         "select_loop, select_ring, "
         "select_linked, select_more, select_less, select_invert, select_boundary, "

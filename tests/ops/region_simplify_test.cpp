@@ -1,10 +1,13 @@
-// simplify_region through the edit language: only the region's inner vertices move or go, so
-// its border and everything outside it stay bit for bit; a selection grown by select_more
-// names the same region; refusals name their reason and leave the mesh.
+// simplify_region and remesh_region through the edit language: only the region's inner vertices
+// move or go, so its border and everything outside it stay bit for bit; a selection grown by
+// select_more names the same region; refusals name their reason and leave the mesh.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstring>
+#include <set>
 #include <string>
 
 #include "meshedit/core/shapes.h"
@@ -75,6 +78,49 @@ TEST(SimplifyRegion, OnlyTheInsideOfTheRegionChanges) {
     }
     EXPECT_EQ(outside, sphere.n_faces() - faces.size());
     EXPECT_EQ(result.selected_too.size() + 1, kept);  // what is left of the region, selected
+}
+
+// remesh_region refines a cap toward a shorter length; every face outside the cap comes out
+// with the same corners (remesh renumbers, so they are matched by position) and the cap's
+// border vertices stay where they were.
+TEST(RemeshRegion, OnlyTheRegionIsRemeshed) {
+    const Mesh sphere = shapes::icosphere(3);
+    const std::string region = cap(sphere, 0.6);
+    const Step step = parse_step("remesh_region:" + region + ":0.04");
+    const std::vector<Face> faces = named_faces(sphere, step);
+    std::vector<bool> in_region(sphere.faces_size(), false);
+    for (const Face f : faces) {
+        in_region[f.idx()] = true;
+    }
+    Mesh mesh = sphere;
+    const StepResult result = run_step(mesh, step);
+    EXPECT_VALID(mesh);
+    EXPECT_GT(mesh.n_faces(), sphere.n_faces()) << result.message;
+    EXPECT_EQ(result.message.rfind("remeshed the region of " + std::to_string(faces.size()) +
+                                       " faces to edge length 0.04: ",
+                                   0),
+              0u)
+        << result.message;
+    using Corners = std::array<std::array<double, 3>, 3>;
+    const auto corners_of = [](const Mesh& m, Face f) {
+        Corners c{};
+        std::size_t i = 0;
+        for (const Vertex v : m.vertices(f)) {
+            const Vec3 p = m.position(v);
+            c[i++] = {p.x, p.y, p.z};
+        }
+        std::sort(c.begin(), c.end());
+        return c;
+    };
+    std::set<Corners> after;
+    for (const Face f : mesh.faces()) {
+        after.insert(corners_of(mesh, f));
+    }
+    for (const Face f : sphere.faces()) {
+        if (!in_region[f.idx()]) {
+            EXPECT_EQ(after.count(corners_of(sphere, f)), 1u) << "face " << f.idx();
+        }
+    }
 }
 
 TEST(SimplifyRegion, RefusalsNameTheirReasonAndLeaveTheMesh) {

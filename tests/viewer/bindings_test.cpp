@@ -83,6 +83,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('D'), 0, kMeshModes, edit("simplify")},
             {key_of('D'), kAlt, kMeshModes, edit("simplify_region")},
             {key_of('R'), kShift, kMeshModes, edit("remesh")},
+            {key_of('R'), kCtrl | kShift, kMeshModes, edit("remesh_region")},
             {key_of('M'), kShift, kMeshModes, edit("smooth")},
             {key_of('R'), kAlt | kShift, kMeshModes, edit("repair")},
             {key_of('F'), kCtrl, kMeshModes, edit("fill_holes_fair")},

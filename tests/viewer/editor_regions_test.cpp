@@ -8,6 +8,7 @@
 #include "meshedit/ops/ops.h"
 #include "meshedit/viewer/editor.h"
 #include "support/fixtures.h"
+#include "support/mesh_compare.h"
 #include "viewer/editor_test_util.h"
 
 namespace meshedit::viewer {
@@ -201,6 +202,40 @@ TEST(EditorRegions, AltIInsetsTheRegionAsOne) {
     Mesh replayed = inset;
     ops::apply_steps(replayed, ops::parse(session.back()));
     expect_as_replayed(ed, inset, replayed);
+}
+
+// Ctrl+Shift+R remeshes the selected faces only (a verb that rebuilds the mesh: undone from a
+// copy, not recorded): the session's step replays to the same mesh, and undo gives back the
+// sphere bit for bit.
+TEST(EditorRegions, CtrlShiftRRemeshesTheSelectionAndUndoes) {
+    const Mesh sphere = shapes::icosphere(2);
+    Editor ed = editor_with(sphere);
+    std::vector<ElementRef> cap;
+    for (const Face f : sphere.faces()) {
+        bool near = true;
+        for (const Vertex v : sphere.vertices(f)) {
+            near = near && distance(sphere.position(v), Vec3{0, 0, 1}) < 0.7;
+        }
+        if (near) {
+            cap.push_back(ElementRef::face(f));
+        }
+    }
+    ASSERT_GT(cap.size(), 10u);
+    ed.select_elements(cap, false, "box");
+    const Outcome out = ed.press(key_of('R'), kCtrl | kShift);
+    ASSERT_FALSE(out.refused) << out.message;
+    EXPECT_EQ(
+        out.message.rfind("remeshed the region of " + std::to_string(cap.size()) + " faces", 0), 0u)
+        << out.message;
+    EXPECT_VALID(ed.mesh());
+    const std::vector<std::string>& session = ed.document().session;
+    ASSERT_FALSE(session.empty());
+    EXPECT_EQ(session.back().rfind("remesh_region:", 0), 0u) << session.back();
+    Mesh replayed = sphere;
+    ops::apply_steps(replayed, ops::parse(session.back()));
+    EXPECT_TRUE(test::identical(replayed, ed.mesh()));
+    ed.press(key_of('Z'), kCtrl);
+    EXPECT_TRUE(test::identical(ed.mesh(), sphere));
 }
 
 // Shift+G selects by the trait the info panel sets: on a 5 x 5 grid the border faces (16),

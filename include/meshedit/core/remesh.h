@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
@@ -23,6 +24,11 @@ struct RemeshOptions {
     /// crease (crease_by_angle(), normals.h), so that sharp edges stay sharp and straight;
     /// infinity: off (only the creases already marked are kept).
     double feature_angle_deg = kNoFeatureAngle;
+    /// Only these faces are remeshed (empty: every face): an edge is split, collapsed or
+    /// flipped only when both its faces are among them (or what they became), a vertex moves
+    /// only when every face around it is, so the region's border and the rest stay where they
+    /// were (renumbered at the end, as always).
+    std::vector<Face> faces;
     /// Called with the fraction done (0…1), non-decreasing, last with 1; may be empty.
     std::function<void(double)> progress;
 };

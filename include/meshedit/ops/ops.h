@@ -60,6 +60,9 @@ enum Trait : unsigned {
     /// A whole-mesh verb whose amounts the viewer takes from its tool settings (the info
     /// panel's sliders) rather than the defaults; element verbs with amounts are drags.
     kToolAmounts = 1u << 2,
+    /// Rebuilds the whole mesh (a region remesh compacts it): an editor undoes it from a copy,
+    /// as a whole-mesh verb, since it cannot be recorded element by element.
+    kRebuildsMesh = 1u << 3,
     kDefaultTraits = kChangesTopology | kDrawsDiagram,
 };
 

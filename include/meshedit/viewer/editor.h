@@ -471,7 +471,9 @@ private:
     /// Runs `steps` one after another through the edit funnel as one undo step and selects
     /// what they made (edit_mesh, delete_selection); refused with the first reason if none
     /// runs.
-    Outcome edit_steps(const std::vector<ops::Step>& steps, std::string_view what, bool topology);
+    /// `recorded` false: undone from a copy (a verb that rebuilds the mesh, ops::kRebuildsMesh).
+    Outcome edit_steps(const std::vector<ops::Step>& steps, std::string_view what, bool topology,
+                       bool recorded = true);
     /// Shift+V: validate(); on failure the culprit selected and framed, the broken
     /// invariant's sentence as the (refused) outcome.
     Outcome validate_mesh();
