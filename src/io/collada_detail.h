@@ -40,6 +40,10 @@ public:
     std::string where(pugi::xml_node node) const;
     /// An IoError placed at `node`.
     [[noreturn]] void fail(pugi::xml_node node, const std::string& problem) const;
+    /// Some list of numbers was written with decimal commas ("0,5": an exporter's locale) and
+    /// read as points (parse_doubles()); the reader says so once.
+    bool decimal_commas() const { return decimal_commas_; }
+    void note_decimal_commas() const { decimal_commas_ = true; }
 
 private:
     std::size_t line_of(std::ptrdiff_t offset) const;
@@ -48,6 +52,7 @@ private:
     std::string text_;                   // UTF-8, BOM removed; pugixml offsets index into it
     bool in_place_ = false;              // pugixml parsed (and changed) text_ in place
     std::vector<std::size_t> newlines_;  // offsets of text_'s newlines, when in_place_
+    mutable bool decimal_commas_ = false;
     pugi::xml_document doc_;
     std::unordered_map<std::string_view, pugi::xml_node> ids_;
 };

@@ -469,14 +469,50 @@ void Document::fail(pugi::xml_node node, const std::string& problem) const {
     throw IoError(file_, where(node), problem);
 }
 
+// A number written with a decimal comma ("-7,589569", as some exporters write them in their
+// locale): the comma read as a point; a token with both, or two commas, is not a number.
+TokenError scan_comma_double(const char*& p, const char* end, double& value) {
+    const char* begin = p;
+    const char* stop = begin;
+    while (stop != end && !is_space(*stop)) {
+        ++stop;
+    }
+    char token[64];
+    const std::size_t n = static_cast<std::size_t>(stop - begin);
+    if (n >= sizeof token || std::count(begin, stop, ',') > 1 ||
+        (std::find(begin, stop, ',') != stop && std::find(begin, stop, '.') != stop)) {
+        return scan_double(p, end, value);  // as it is: its own error names it
+    }
+    std::replace_copy(begin, stop, token, ',', '.');
+    const char* q = token;
+    const TokenError error = scan_double(q, token + n, value);
+    p = stop;
+    return error;
+}
+
 std::vector<double> parse_doubles(const Document& doc, pugi::xml_node node) {
-    return parse_list<double>(
+    const auto problem = [](std::size_t index, std::string_view token, TokenError error) {
+        return "number " + std::to_string(index) + " " + quoted_token(token) +
+               (error == TokenError::out_of_range ? " is out of range" : " is not a number");
+    };
+    try {
+        return parse_list<double>(
+            doc, node, 8,
+            [](const char*& p, const char* end, double& v) { return scan_double(p, end, v); },
+            problem);
+    } catch (const IoError&) {
+        // A comma in a list of numbers is never a separator in COLLADA (whitespace is): read
+        // again with decimal commas (a clean list never pays for this).
+        if (std::strchr(node.child_value(), ',') == nullptr) {
+            throw;
+        }
+    }
+    std::vector<double> values = parse_list<double>(
         doc, node, 8,
-        [](const char*& p, const char* end, double& v) { return scan_double(p, end, v); },
-        [](std::size_t index, std::string_view token, TokenError error) {
-            return "number " + std::to_string(index) + " " + quoted_token(token) +
-                   (error == TokenError::out_of_range ? " is out of range" : " is not a number");
-        });
+        [](const char*& p, const char* end, double& v) { return scan_comma_double(p, end, v); },
+        problem);
+    doc.note_decimal_commas();
+    return values;
 }
 
 std::vector<std::uint32_t> parse_indices(const Document& doc, pugi::xml_node node) {

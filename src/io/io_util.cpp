@@ -32,7 +32,38 @@ std::string resolve_texture(std::string written, const std::filesystem::path& fo
     }
     std::error_code ec;
     const fs::path resolved = (folder / path).lexically_normal();
-    return fs::exists(resolved, ec) ? fs::absolute(resolved, ec).string() : path;
+    if (fs::exists(resolved, ec)) {
+        return fs::absolute(resolved, ec).string();
+    }
+    // Files written on Windows name textures as its file system finds them: "\..\x\Earth.jpg"
+    // (from the drive's root, but meant beside the file) for x/earth.jpg. Tried: the path
+    // from the file's folder, then the name in any case in its folder (what the writer meant).
+    std::string relative = path;
+    while (!relative.empty() && relative.front() == '/') {
+        relative.erase(0, 1);
+    }
+    const fs::path beside = (folder / relative).lexically_normal();
+    if (fs::exists(beside, ec)) {
+        return fs::absolute(beside, ec).string();
+    }
+    const auto lower = [](std::string s) {
+        std::transform(s.begin(), s.end(), s.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        return s;
+    };
+    for (const fs::path& candidate : {resolved, beside}) {
+        const fs::path dir = candidate.parent_path();
+        if (dir.empty() || !fs::is_directory(dir, ec)) {
+            continue;
+        }
+        const std::string want = lower(candidate.filename().string());
+        for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+            if (lower(it->path().filename().string()) == want) {
+                return fs::absolute(it->path(), ec).string();
+            }
+        }
+    }
+    return path;
 }
 
 std::string texture_relative_to(const std::string& texture, const std::filesystem::path& folder) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -158,8 +159,18 @@ Mat4 SceneReader::read_asset() {
     const pugi::xml_node asset = doc_.root().child("asset");
     if (const pugi::xml_node unit = asset.child("unit")) {
         if (const pugi::xml_attribute meter = unit.attribute("meter")) {
-            const double value = meter.as_double(0.0);
-            if (std::isfinite(value) && value > 0.0) {
+            std::string text = meter.value();
+            if (text.find(',') != std::string::npos && text.find('.') == std::string::npos) {
+                std::replace(text.begin(), text.end(), ',', '.');  // "0,01": a decimal comma
+                doc_.note_decimal_commas();
+            }
+            text.erase(0, text.find_first_not_of(" \t\r\n"));
+            text.erase(text.find_last_not_of(" \t\r\n") + 1);
+            double value = 0.0;
+            const auto [stop, error] =
+                std::from_chars(text.data(), text.data() + text.size(), value);
+            if (error == std::errc() && stop == text.data() + text.size() && std::isfinite(value) &&
+                value > 0.0) {
                 out_.unit_meter = value;
             } else {
                 out_.notices.push_back(std::string("ignored <unit meter=\"") + meter.value() +
@@ -521,6 +532,11 @@ MeshSoup SceneReader::read() {
     if (!any_material_) {
         out_.face_materials.clear();
         out_.materials.clear();
+    }
+    if (doc_.decimal_commas()) {
+        out_.notices.push_back(
+            "read numbers written with decimal commas (\"0,5\", the exporter's locale) as "
+            "decimal points");
     }
     return std::move(out_);
 }

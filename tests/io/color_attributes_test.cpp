@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -465,8 +466,22 @@ TEST(ColorAttributes, ColladaFilesRoundTripExactly) {
               (models.parent_path() / "X/bottom.tga").string());
     EXPECT_FALSE(colours.uvs.empty());
 
-    // Every file of the package that loads (earthCylindrical.DAE and teapots.DAE write
-    // decimal commas, "-7,589569", which the reader refuses; others hold no mesh).
+    // earthCylindrical.DAE writes decimal commas ("-7,589569", <unit meter="0,010000">, its
+    // exporter's locale): read as points, said in one line; its texture is written
+    // "\..\LWO\LWO2\MappingModes\EarthCylindric.jpg" and is ../LWO/LWO2/MappingModes/
+    // earthCylindric.jpg beside the file.
+    const LoadedMesh earth = read_mesh(models / "earthCylindrical.DAE");
+    EXPECT_EQ(earth.unit_meter, 0.01);
+    EXPECT_EQ(earth.mesh.n_faces(), 1920u);
+    EXPECT_NE(std::find(earth.notices.begin(), earth.notices.end(),
+                        "read numbers written with decimal commas (\"0,5\", the exporter's "
+                        "locale) as decimal points"),
+              earth.notices.end());
+    ASSERT_FALSE(earth.mesh.materials().empty());
+    EXPECT_EQ(earth.mesh.materials()[0].base_colour_texture,
+              (models.parent_path() / "LWO/LWO2/MappingModes/earthCylindric.jpg").string());
+
+    // Every file of the package that loads (the others hold no mesh).
     std::size_t loaded = 0, with_uvs = 0;
     for (const auto& entry : fs::directory_iterator(models)) {
         const std::string ext = entry.path().extension().string();
@@ -481,8 +496,8 @@ TEST(ColorAttributes, ColladaFilesRoundTripExactly) {
         ++loaded;
         with_uvs += expect_round_trip(entry.path(), ".dae", dir).uvs.empty() ? 0 : 1;
     }
-    EXPECT_EQ(loaded, 20u);
-    EXPECT_EQ(with_uvs, 11u);
+    EXPECT_EQ(loaded, 22u);
+    EXPECT_EQ(with_uvs, 12u);
 }
 
 // A triangle whose TEXCOORD index is past its source and whose colour is not a number: the

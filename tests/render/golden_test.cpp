@@ -177,6 +177,9 @@ const std::vector<GoldenCase>& golden_cases() {
         // texture) as read, after Loop and Catmull-Clark (face-varying UVs, seams kept) and
         // in the UV checker; a vertex-coloured model; the material colours of one model.
         {"textured_duck", "assimp:Collada/duck.dae", {"--camera", "60,15"}},
+        // 3ds Max's earth: numbers with decimal commas and a texture named from the drive's
+        // root in another case ("\..\LWO\...\EarthCylindric.jpg"), both found as meant.
+        {"textured_earth", "assimp:Collada/earthCylindrical.DAE", {}},
         {"textured_duck_loop1",
          "assimp:Collada/duck.dae",
          {"--ops", "triangulate,loop:1", "--camera", "60,15"}},
