@@ -207,6 +207,10 @@ bool fill_repeats_a_face(const Mesh& mesh, Halfedge h) {
     return false;
 }
 
+}  // namespace
+
+namespace repair_detail {
+
 // Turns over each part that a fill closed (no boundary left) and that encloses a negative
 // volume, as orient_faces() turns closed parts outward: flip_orientation() on one part,
 // through the mesh's setters. \return how many parts; their faces are added to `faces`.
@@ -293,7 +297,13 @@ std::size_t turn_closed_parts_outward(Mesh& mesh, const std::vector<Face>& fille
     return parts;
 }
 
-}  // namespace
+std::string turned_outward(std::size_t faces, std::size_t parts) {
+    return "turned over " + count_of(faces, "face", "faces") + " so that " +
+           count_of(parts, "part", "parts") + " the fills closed " +
+           (parts == 1 ? "faces" : "face") + " outward";
+}
+
+}  // namespace repair_detail
 
 RepairResult fill_holes(Mesh& mesh, std::size_t max_edges) {
     RepairResult result;
@@ -379,9 +389,7 @@ RepairResult fill_holes(Mesh& mesh, std::size_t max_edges) {
                         ")");
     }
     if (turned > 0) {
-        parts.push_back("turned over " + count_of(turned_faces, "face", "faces") + " so that " +
-                        count_of(turned, "part", "parts") + " the fills closed " +
-                        (turned == 1 ? "faces" : "face") + " outward");
+        parts.push_back(turned_outward(turned_faces, turned));
     }
     if (polygons > 0) {
         parts.push_back(count_of(polygons, "filled hole stays one polygon",

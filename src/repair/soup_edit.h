@@ -69,4 +69,12 @@ std::string also_removed(std::size_t vertices, std::size_t creases);
 /// A number in the project's shortest round-trip form.
 std::string number(double x);
 
+/// Turns over each part that a fill closed (no boundary left, found from the faces `filled`)
+/// and that encloses a negative volume (holes.cpp): a part had no inside while it was open.
+/// \return how many parts; `faces` counts their faces.
+std::size_t turn_closed_parts_outward(Mesh& mesh, const std::vector<Face>& filled,
+                                      std::size_t& faces);
+/// "turned over 12 faces so that 1 part the fills closed faces outward".
+std::string turned_outward(std::size_t faces, std::size_t parts);
+
 }  // namespace meshedit::repair_detail
