@@ -27,7 +27,7 @@ def inputs(tmp):
 
 def run(cmd):
     try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=LIMIT)
+        p = subprocess.run(cmd, capture_output=True, text=True, errors='replace', timeout=LIMIT)
         return p.returncode, p.stdout, p.stderr
     except subprocess.TimeoutExpired:
         return None, '', f'timed out after {LIMIT} s'
