@@ -5,11 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
-#include "meshedit/core/remesh.h"
 #include "meshedit/core/simplify.h"
 #include "meshedit/core/smoothing.h"
 #include "meshedit/selection/region_ops.h"
@@ -184,63 +182,6 @@ StepResult run_simplify_region(Mesh& mesh, const Step& step, const RunOptions& o
         message += "; stopped early: no further collapse inside it keeps the mesh valid";
     }
     StepResult result = kept.empty() ? local(ElementRef{}, message) : region_result(kept, message);
-    return result;
-}
-
-namespace {
-
-// remesh_region:R:L,N: remesh()'s rounds on the faces R only, toward L (0: the mean length of
-// their edges).
-RemeshOptions region_remesh(const Mesh& mesh, const Step& step) {
-    RemeshOptions options;
-    options.faces = named_faces(mesh, step);
-    options.iterations = static_cast<int>(step.amounts[1]);
-    options.target_length = step.amounts[0];
-    if (options.target_length == 0.0) {
-        double sum = 0.0;
-        std::size_t n = 0;
-        for (const Face f : options.faces) {
-            for (const Halfedge h : mesh.halfedges(f)) {
-                sum +=
-                    distance(mesh.position(mesh.from_vertex(h)), mesh.position(mesh.to_vertex(h)));
-                ++n;
-            }
-        }
-        options.target_length = n > 0 ? sum / static_cast<double>(n) : 0.0;
-    }
-    return options;
-}
-
-}  // namespace
-
-OpStatus check_remesh_region(const Mesh& mesh, const Step& step) {
-    if (const OpStatus why = phased_loop_refusal(mesh, "remesh"); !why) {
-        return why;
-    }
-    const double n = step.amounts[1];
-    if (!(n >= 1 && n <= 100) || n != std::floor(n)) {
-        return OpStatus::composed(
-            "cannot remesh: iterations must be a whole number from 1 to 100, not " +
-            number_text(n));
-    }
-    return check_remesh(mesh, region_remesh(mesh, step));
-}
-StepResult run_remesh_region(Mesh& mesh, const Step& step, const RunOptions& options) {
-    RemeshOptions remesh_with = region_remesh(mesh, step);
-    remesh_with.progress = options.progress;
-    const std::size_t faces = remesh_with.faces.size();
-    const std::size_t before = mesh.n_faces();
-    const RemeshReport report = remesh(mesh, remesh_with);
-    StepResult result;
-    result.renumbers = true;
-    char length[32];
-    std::snprintf(length, sizeof length, "%.4g", report.target_length);
-    const long change = static_cast<long>(mesh.n_faces()) - static_cast<long>(before);
-    result.message = "remeshed the region of " + count_faces(faces) + " to edge length " + length +
-                     ": " + std::to_string(static_cast<long>(faces) + change) + " faces there (" +
-                     std::to_string(report.splits) + " splits, " +
-                     std::to_string(report.collapses) + " collapses, " +
-                     std::to_string(report.flips) + " flips; its border and the rest unmoved)";
     return result;
 }
 

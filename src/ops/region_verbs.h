@@ -25,8 +25,6 @@ OpStatus check_inset_region(const Mesh& mesh, const Step& step);
 StepResult run_inset_region(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_simplify_region(const Mesh& mesh, const Step& step);
 StepResult run_simplify_region(Mesh& mesh, const Step& step, const RunOptions& options);
-OpStatus check_remesh_region(const Mesh& mesh, const Step& step);
-StepResult run_remesh_region(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_dissolve_region(const Mesh& mesh, const Step& step);
 StepResult run_dissolve_region(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_loop_region(const Mesh& mesh, const Step& step);
