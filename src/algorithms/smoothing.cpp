@@ -37,22 +37,25 @@ double cot_at(const Vec3& apex, const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
+double edge_weight(const Mesh& mesh, Edge e, SmoothWeights weights) {
+    if (weights == SmoothWeights::Uniform) {
+        return 1.0;
+    }
+    double sum = 0.0;
+    for (unsigned i = 0; i < 2; ++i) {
+        const Halfedge h = Mesh::halfedge(e, i);
+        if (!mesh.is_boundary(h)) {
+            sum += cot_at(mesh.position(mesh.to_vertex(mesh.next(h))),
+                          mesh.position(mesh.from_vertex(h)), mesh.position(mesh.to_vertex(h)));
+        }
+    }
+    return std::max(0.5 * sum, 0.0);
+}
+
 std::vector<double> edge_weights(const Mesh& mesh, SmoothWeights weights) {
     std::vector<double> w(mesh.edges_size(), 0.0);
     for (const Edge e : mesh.edges()) {
-        if (weights == SmoothWeights::Uniform) {
-            w[e.idx()] = 1.0;
-            continue;
-        }
-        double sum = 0.0;
-        for (unsigned i = 0; i < 2; ++i) {
-            const Halfedge h = Mesh::halfedge(e, i);
-            if (!mesh.is_boundary(h)) {
-                sum += cot_at(mesh.position(mesh.to_vertex(mesh.next(h))),
-                              mesh.position(mesh.from_vertex(h)), mesh.position(mesh.to_vertex(h)));
-            }
-        }
-        w[e.idx()] = std::max(0.5 * sum, 0.0);
+        w[e.idx()] = edge_weight(mesh, e, weights);
     }
     return w;
 }
