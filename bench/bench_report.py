@@ -35,9 +35,15 @@ JOB_TITLES = {
     "`min_angle_deg`, `length_spread` (stddev / mean of the edge lengths) and `hausdorff_pct` "
     "by the same code for both",
     "smooth_1m_uniform": "Laplacian smoothing of a noisy 1M-triangle torus, 10 iterations, "
-    "uniform weights, λ = 0.5 (OpenMesh's JacobiLaplaceSmootherT, C0); `ms_per_iteration`",
+    "uniform weights, λ = 0.5 (OpenMesh's JacobiLaplaceSmootherT, C0); CGAL's closest "
+    "explicit analogue, `tangential_relaxation` (each vertex to its neighbours' mean, the move "
+    "kept in its tangent plane; `angle_and_area_smoothing` optimises angles and projects onto "
+    "the input, further away); `ms_per_iteration`",
     "smooth_1m_implicit": "One implicit smoothing step (t = 1, cotangent weights) of the same "
-    "torus; `solve_ms`: building the system and the conjugate-gradient solves",
+    "torus; `solve_ms`: building the system and the conjugate-gradient solves; CGAL's "
+    "`smooth_shape` (one backward Euler step of its cotangent Laplacian with the vertex areas "
+    "as mass, BiCGSTAB + incomplete LU), its time step t × (area / vertices) / 2√3 so that the "
+    "step is the same on this near-regular mesh",
     "qem_torus_attrs_1m_to_100k": "QEM of the same torus carrying texture coordinates (two "
     "seams) and vertex colours, attribute-aware (seams held, UV and colour quadrics): the cost "
     "of the attributes against `qem_torus_1m_to_100k` (target ≤ 1.5×); MeshEdit only",

@@ -64,8 +64,8 @@ DEFAULT_CONFIGS = {
         (f"build_{shape}_{size}", "meshedit")
         for shape in ("fan_hub_first", "polygon") for size in ("100k", "300k", "1m")
     ] + [("build_torus_1m", "meshedit")],
-    "bench_smooth": [("smooth_1m_uniform", "meshedit"), ("smooth_1m_uniform", "openmesh"),
-                     ("smooth_1m_implicit", "meshedit")],
+    "bench_smooth": [("smooth_1m_uniform", i) for i in ("meshedit", "openmesh", "cgal")]
+    + [("smooth_1m_implicit", i) for i in ("meshedit", "cgal")],
     "bench_compare": [(job, "meshedit") for job in ("compare_torus_1m_renumbered",
                                                     "compare_torus_1m_moved")],
     "bench_local_ops": [("dissolves_collapses_1e6_quad100k", "meshedit")]
