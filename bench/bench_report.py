@@ -106,6 +106,21 @@ def job_title(job):
                 "so page faults are out of the times")
     if job in JOB_TITLES:
         return JOB_TITLES[job]
+    m = re.fullmatch(r"fill_(bunny|armadillo)_(\w+)_(\d+)", job)
+    if m:
+        scan = {"bunny": "bunny00 Loop-subdivided " + ("three times" if m.group(2) == "5m"
+                                                       else "twice"),
+                "armadillo": "armadillo Loop-subdivided twice"}[m.group(1)]
+        return (f"Hole filling: one hole of at least {m.group(3)} border edges (`hole_edges`: "
+                f"what it came to) cut out of {scan} (CGAL's demo data), a disc of faces grown "
+                "from a fixed seed in the order of their distance over the faces' centroids; "
+                "MeshEdit's `fill_holes_fair` against CGAL's `triangulate_refine_and_fair_hole`, "
+                "both with their defaults (Liepa's density √2, bi-Laplacian fairing with "
+                "cotangent weights), the fill call alone timed. Of the patch: `hausdorff_pct`, "
+                "the symmetric Hausdorff distance to the faces cut away (100,000 points sampled "
+                "by area on each side), `patch_to_original_pct` the patch's side alone, in % of "
+                "the scan's bounding-box diagonal; `min_angle_deg`, `patch_faces`, "
+                "`patch_vertices` (new), `faired`")
     m = re.fullmatch(r"loop_100k_levels_(\d+)", job)
     if m:
         return f"Loop subdivision, {m.group(1)} level(s), 100k-face torus"
