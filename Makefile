@@ -75,7 +75,7 @@ test-clang:
 # is reported as skipped): MeshEdit's rows run at 1 thread and at all threads, so build + run
 # stays under about 25 minutes on 2 cores. run_bench.py first waits for the build's load to
 # settle and refuses a busy machine; BENCH_FLAGS=--allow-busy measures anyway (marked).
-BENCH_TARGETS ?= bench_bandwidth bench_loop bench_ops bench_io_draw bench_build bench_local_ops bench_catmark bench_simplify bench_remesh bench_smooth bench_editor bench_selection\
+BENCH_TARGETS ?= bench_bandwidth bench_loop bench_ops bench_io_draw bench_build bench_local_ops bench_catmark bench_simplify bench_remesh bench_smooth bench_fill bench_editor bench_selection\
 	bench_compare meshedit_python
 BENCH_BUDGET  ?= 1500
 BENCH_FLAGS   ?=

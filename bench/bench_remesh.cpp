@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
     const std::string& impl = args.impl;
     const int runs = args.runs;
     const fs::path& data_dir = args.data;
-    try {
+    return mb::run_or_skip(job, impl, [&] {
         meshedit::Mesh armadillo = meshedit::build_mesh(mb::real_mesh("armadillo", data_dir));
         meshedit::loop_subdivide(armadillo);
         const Surface input = mb::surface_of(armadillo);
@@ -114,10 +114,5 @@ int main(int argc, char** argv) {
                           {"length_spread", mb::edge_length_spread(out.result)},
                           {"hausdorff_pct", mb::hausdorff_percent(input, out.result)},
                           {"peak_rss_mb", mb::peak_rss_mb()}});
-    } catch (const std::exception& e) {
-        std::printf("NOTE %s %s failed: %s\n", job.c_str(), impl.c_str(), e.what());
-        mb::print_result(job, impl, {0.0}, {{"skipped", 1}});
-        return 1;
-    }
-    return 0;
+    });
 }

@@ -35,9 +35,15 @@ JOB_TITLES = {
     "`min_angle_deg`, `length_spread` (stddev / mean of the edge lengths) and `hausdorff_pct` "
     "by the same code for both",
     "smooth_1m_uniform": "Laplacian smoothing of a noisy 1M-triangle torus, 10 iterations, "
-    "uniform weights, λ = 0.5 (OpenMesh's JacobiLaplaceSmootherT, C0); `ms_per_iteration`",
+    "uniform weights, λ = 0.5 (OpenMesh's JacobiLaplaceSmootherT, C0); CGAL's closest "
+    "explicit analogue, `tangential_relaxation` (each vertex to its neighbours' mean, the move "
+    "kept in its tangent plane; `angle_and_area_smoothing` optimises angles and projects onto "
+    "the input, further away); `ms_per_iteration`",
     "smooth_1m_implicit": "One implicit smoothing step (t = 1, cotangent weights) of the same "
-    "torus; `solve_ms`: building the system and the conjugate-gradient solves",
+    "torus; `solve_ms`: building the system and the conjugate-gradient solves; CGAL's "
+    "`smooth_shape` (one backward Euler step of its cotangent Laplacian with the vertex areas "
+    "as mass, BiCGSTAB + incomplete LU), its time step t × (area / vertices) / 2√3 so that the "
+    "step is the same on this near-regular mesh",
     "qem_torus_attrs_1m_to_100k": "QEM of the same torus carrying texture coordinates (two "
     "seams) and vertex colours, attribute-aware (seams held, UV and colour quadrics): the cost "
     "of the attributes against `qem_torus_1m_to_100k` (target ≤ 1.5×); MeshEdit only",
@@ -103,6 +109,21 @@ def job_title(job):
                 "so page faults are out of the times")
     if job in JOB_TITLES:
         return JOB_TITLES[job]
+    m = re.fullmatch(r"fill_(bunny|armadillo)_(\w+)_(\d+)", job)
+    if m:
+        scan = {"bunny": "bunny00 Loop-subdivided " + ("three times" if m.group(2) == "5m"
+                                                       else "twice"),
+                "armadillo": "armadillo Loop-subdivided twice"}[m.group(1)]
+        return (f"Hole filling: one hole of at least {m.group(3)} border edges (`hole_edges`: "
+                f"what it came to) cut out of {scan} (CGAL's demo data), a disc of faces grown "
+                "from a fixed seed in the order of their distance over the faces' centroids; "
+                "MeshEdit's `fill_holes_fair` against CGAL's `triangulate_refine_and_fair_hole`, "
+                "both with their defaults (Liepa's density √2, bi-Laplacian fairing with "
+                "cotangent weights), the fill call alone timed. Of the patch: `hausdorff_pct`, "
+                "the symmetric Hausdorff distance to the faces cut away (100,000 points sampled "
+                "by area on each side), `patch_to_original_pct` the patch's side alone, in % of "
+                "the scan's bounding-box diagonal; `min_angle_deg`, `patch_faces`, "
+                "`patch_vertices` (new), `faired`")
     m = re.fullmatch(r"loop_100k_levels_(\d+)", job)
     if m:
         return f"Loop subdivision, {m.group(1)} level(s), 100k-face torus"

@@ -210,7 +210,7 @@ int main(int argc, char** argv) {
         mb::print_result(job, impl, {0.0}, {{"skipped", 1}});
         return 0;
     }
-    try {
+    return mb::run_or_skip(job, impl, [&] {
         const Surface input = load_input(job, data_dir);
         if (impl == "openmesh" || impl == "cgal") {
             runs = std::min(runs, 2);  // 10–20 s a run: two keep `make bench` within its budget
@@ -224,10 +224,5 @@ int main(int argc, char** argv) {
                           {"faces_out", static_cast<double>(out.result.triangles.size())},
                           {"hausdorff_pct", mb::hausdorff_percent(input, out.result)},
                           {"peak_rss_mb", mb::peak_rss_mb()}});
-    } catch (const std::exception& e) {
-        std::printf("NOTE %s %s failed: %s\n", job.c_str(), impl.c_str(), e.what());
-        mb::print_result(job, impl, {0.0}, {{"skipped", 1}});
-        return 1;
-    }
-    return 0;
+    });
 }

@@ -1,5 +1,5 @@
-// Laplacian smoothing (issue 35): MeshEdit against OpenMesh's JacobiLaplaceSmootherT, time per
-// iteration on 1M faces; and MeshEdit's implicit smoothing, whose solve time is reported.
+// Laplacian smoothing (issue 35): MeshEdit against OpenMesh's JacobiLaplaceSmootherT and CGAL's
+// smoothing, time per iteration on 1M faces; and implicit smoothing against CGAL's.
 //
 //     bench_smooth --job smooth_1m_uniform --impl openmesh [--runs 5]
 //     bench_smooth --list
@@ -12,18 +12,36 @@
 //       meshedit   smooth() (its one-ring arrays are built inside, so timed)
 //       openmesh   JacobiLaplaceSmootherT<TriMesh> (float positions, its default traits),
 //                  initialize(Tangential_and_Normal, C0), smooth(10)
-//   smooth_1m_implicit   one implicit step t = 1, cotangent weights (meshedit only):
-//       solve_ms: building the system and the conjugate-gradient solves.
+//       cgal       Polygon_mesh_processing::tangential_relaxation(vertices, mesh,
+//                  number_of_iterations(10)) on Surface_mesh<Simple_cartesian<double>>: CGAL's
+//                  explicit per-iteration smoothing closest to a uniform Laplacian step (each
+//                  vertex goes to its neighbours' mean, the move projected on its tangent
+//                  plane); its other one, angle_and_area_smoothing, optimises angles and areas
+//                  and projects onto the input through an AABB tree, further from this job.
+//   smooth_1m_implicit   one implicit step t = 1, cotangent weights:
+//       meshedit   smooth(Implicit); solve_ms: building the system and the conjugate-gradient
+//                  solves
+//       cgal       smooth_shape(faces, mesh, time, number_of_iterations(1)): the same backward
+//                  Euler step of the cotangent Laplacian, (M − time·L) x' = M x with M the
+//                  vertex areas, solved by its default BiCGSTAB with an incomplete LU. MeshEdit
+//                  solves (D − t·L) x' = D x (D: the sums of the weights), so CGAL's time is
+//                  t × (area / vertices) / 2√3 (a vertex's mean area over the weight sum of a
+//                  regular vertex), the same step on this near-regular mesh.
 
+#include <CGAL/Polygon_mesh_processing/smooth_shape.h>
+#include <CGAL/Polygon_mesh_processing/tangential_relaxation.h>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "bench_cgal.h"
+#include "bench_quality.h"
 #include "bench_util.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/shapes.h"
@@ -75,17 +93,46 @@ std::vector<double> run_openmesh(const meshedit::Mesh& in, int runs) {
         });
 }
 
+// CGAL's time step for MeshEdit's t on `in` (see the file comment).
+double cgal_time(const mb::Surface& in, double t) {
+    double area = 0.0;
+    for (const auto& tri : in.triangles) {
+        const Vec3& a = in.points[tri[0]];
+        area += 0.5 * norm(cross(in.points[tri[1]] - a, in.points[tri[2]] - a));
+    }
+    return t * area / static_cast<double>(in.points.size()) / (2.0 * std::sqrt(3.0));
+}
+
+std::vector<double> run_cgal(const meshedit::Mesh& in, bool implicit, double t, int runs) {
+    const mb::Surface surface = mb::surface_of(in);
+    const mb::CgalMesh input = mb::cgal_mesh(surface);
+    const double time = cgal_time(surface, t);
+    mb::CgalMesh mesh;
+    namespace pmp = CGAL::Polygon_mesh_processing;
+    return mb::time_runs(
+        runs, [&] { mesh = input; },
+        [&] {
+            if (implicit) {
+                pmp::smooth_shape(faces(mesh), mesh, time,
+                                  CGAL::parameters::number_of_iterations(1));
+            } else {
+                pmp::tangential_relaxation(vertices(mesh), mesh,
+                                           CGAL::parameters::number_of_iterations(kIterations));
+            }
+        });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::string jobs[] = {"smooth_1m_uniform", "smooth_1m_implicit"};
-    const std::string impls[] = {"meshedit", "openmesh"};
+    const std::string impls[] = {"meshedit", "openmesh", "cgal"};
     mb::JobArgs args;
     if (const std::optional<int> done = mb::read_command_line(argc, argv, jobs, impls, args)) {
         return *done;
     }
     const bool implicit = args.job == "smooth_1m_implicit";
-    if (implicit && args.impl != "meshedit") {
+    if (implicit && args.impl == "openmesh") {
         mb::print_result(args.job, args.impl, {0.0}, {{"skipped", 1}});
         return 0;
     }
@@ -99,8 +146,9 @@ int main(int argc, char** argv) {
     }
     double solve_ms = 0.0;
     const std::vector<double> ms =
-        args.impl == "openmesh"
-            ? run_openmesh(input, args.runs)
+        args.impl == "openmesh" ? run_openmesh(input, args.runs)
+        : args.impl == "cgal"
+            ? run_cgal(input, implicit, options.time, args.runs)
             : mb::time_runs(
                   args.runs, [&] { mesh = input; },
                   [&] { solve_ms = 1000.0 * meshedit::smooth(mesh, options).solve_seconds; });
@@ -109,7 +157,7 @@ int main(int argc, char** argv) {
         {"iterations", static_cast<double>(options.iterations)},
         {"ms_per_iteration", mb::median_of(ms) / options.iterations},
         {"peak_rss_mb", mb::peak_rss_mb()}};
-    if (implicit) {
+    if (implicit && args.impl == "meshedit") {
         extra["solve_ms"] = solve_ms;
     }
     mb::print_result(args.job, args.impl, ms, extra);

@@ -2,6 +2,8 @@
 records of one run (run_bench.py). Every ratio uses MeshEdit's 1-thread median: the anchors
 run on one thread (issue 38), so the targets compare algorithms, not cores."""
 
+import re
+
 from bench_bound import normals_target_rows
 from bench_results import (BUILD_SIZES, LOCAL_OPS, LOCAL_OPS_SIZES, QEM_JOBS, fmt_num,
                            is_meshedit, ok_results, ratio_info, size_label)
@@ -93,21 +95,64 @@ def remesh_target_rows(jobs):
 
 
 def smooth_target_rows(jobs):
-    """Issue 35: Laplacian smoothing ≤ 1/3 of OpenMesh's JacobiLaplaceSmootherT per
-    iteration on 1M faces; implicit smoothing's solve time reported."""
-    res = ok_results(jobs.get("smooth_1m_uniform", []))
-    me, om = res.get("meshedit"), res.get("openmesh")
+    """Issue 35: Laplacian smoothing ≤ 1/3 of the fastest anchor's time per iteration on 1M
+    faces (OpenMesh's JacobiLaplaceSmootherT, CGAL's tangential_relaxation); implicit
+    smoothing's solve time reported beside CGAL's smooth_shape."""
+    rows = jobs.get("smooth_1m_uniform", [])
+    me, ratios, fastest, r = ratio_info(rows)
     label = "Laplacian smoothing, 10 uniform iterations, 1M faces"
-    target = "≤ 1/3 of OpenMesh's time per iteration"
-    if me is None or om is None or not om["median_ms"] > 0:
+    target = "≤ 1/3 of the fastest anchor's time per iteration"
+    if r is None:
         return [(label, target, "not measured (smooth_1m_uniform)", "n/a")]
-    r = me["median_ms"] / om["median_ms"]
-    measured = (f"{r:.3f} of OpenMesh ({me['median_ms'] / 10:.1f} vs "
-                f"{om['median_ms'] / 10:.1f} ms per iteration)")
-    implicit = ok_results(jobs.get("smooth_1m_implicit", [])).get("meshedit")
-    if implicit is not None:
-        measured += f"; implicit step solve {implicit.get('solve_ms', 0):.0f} ms"
+    res = ok_results(rows)
+    measured = (f"{r:.3f} of {fastest} ({me['median_ms'] / 10:.1f} vs "
+                f"{res[fastest]['median_ms'] / 10:.1f} ms per iteration)")
+    others = [f"{ratios[a]:.3f} of {a}" for a in sorted(ratios) if a != fastest
+              and not is_meshedit(a)]
+    if others:
+        measured += "; " + ", ".join(others)
+    implicit = ok_results(jobs.get("smooth_1m_implicit", []))
+    if "meshedit" in implicit:
+        measured += (f"; implicit step {implicit['meshedit']['median_ms']:.0f} ms (solve "
+                     f"{implicit['meshedit'].get('solve_ms', 0):.0f} ms)")
+        if "cgal" in implicit:
+            measured += f" vs CGAL's smooth_shape {implicit['cgal']['median_ms']:.0f} ms"
     return [(label, target, measured, "yes" if r <= 1 / 3 else "no")]
+
+
+def fill_jobs(jobs):
+    """The hole-filling jobs (bench_fill), by scan and then hole size."""
+    found = []
+    for job in jobs:
+        m = re.fullmatch(r"fill_(.+)_(\d+)", job)
+        if m:
+            found.append((m.group(1), int(m.group(2)), job))
+    return sorted(found)
+
+
+def fill_target_rows(jobs):
+    """Issue 35's hole filling against CGAL's triangulate_refine_and_fair_hole, per hole: time
+    ≤ 1/3 of CGAL's, Hausdorff distance to the surface cut away ≤ CGAL's, smallest angle of
+    the patch ≥ CGAL's; the met column names each."""
+    rows = []
+    target = "time ≤ 1/3 of CGAL's; Hausdorff ≤ CGAL's; min angle ≥ CGAL's"
+    for scan, size, job in fill_jobs(jobs):
+        res = ok_results(jobs.get(job, []))
+        me, cgal = res.get("meshedit"), res.get("cgal")
+        label = f"hole filling, {scan.replace('_', ' ')}, hole of ≥ {size} edges"
+        if me is None or cgal is None or not cgal["median_ms"] > 0:
+            rows.append((label, target, f"not measured ({job})", "n/a"))
+            continue
+        r = me["median_ms"] / cgal["median_ms"]
+        h_me, h_cgal = me.get("hausdorff_pct", 1e9), cgal.get("hausdorff_pct", 0)
+        a_me, a_cgal = me.get("min_angle_deg", 0), cgal.get("min_angle_deg", 180)
+        checks = (("time", r <= 1 / 3), ("Hausdorff", h_me <= h_cgal), ("angle", a_me >= a_cgal))
+        measured = (f"{me.get('hole_edges', size):.0f} edges: {r:.3f} of CGAL "
+                    f"({me['median_ms']:.1f} vs {cgal['median_ms']:.1f} ms); Hausdorff "
+                    f"{h_me:.3g}% vs {h_cgal:.3g}%; min angle {a_me:.2f}° vs {a_cgal:.2f}°")
+        met = ", ".join(f"{name} {'yes' if ok else 'no'}" for name, ok in checks)
+        rows.append((label, target, measured, met))
+    return rows
 
 
 def selection_target_rows(jobs, not_measured):
@@ -220,6 +265,7 @@ def targets_table(jobs):
     rows += qem_target_rows(jobs)
     rows += remesh_target_rows(jobs)
     rows += smooth_target_rows(jobs)
+    rows += fill_target_rows(jobs)
     # The same subdivision targets under the warm protocol (memory reused: no page faults).
     if "loop_1m_1level_warm" in jobs:
         rows += [(r[0] + " (warm)",) + tuple(r[1:]) for r in subdivision_target_rows(

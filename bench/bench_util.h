@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -300,6 +301,21 @@ inline void print_result(const std::string& job, const std::string& impl,
     std::printf(", \"meshedit_threads\": %u", thread_count());
     std::printf("}\n");
     std::fflush(stdout);
+}
+
+/// Runs `body` (a job's measurement, which prints its RESULT); when it throws, prints `NOTE job
+/// impl failed: why` and a RESULT with `"skipped": 1` instead. \return the exit status: 0, or 1
+/// when it threw.
+template <class Body>
+int run_or_skip(const std::string& job, const std::string& impl, const Body& body) {
+    try {
+        body();
+    } catch (const std::exception& e) {
+        std::printf("NOTE %s %s failed: %s\n", job.c_str(), impl.c_str(), e.what());
+        print_result(job, impl, {0.0}, {{"skipped", 1}});
+        return 1;
+    }
+    return 0;
 }
 
 }  // namespace meshedit::bench

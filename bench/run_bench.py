@@ -65,8 +65,13 @@ DEFAULT_CONFIGS = {
         (f"build_{shape}_{size}", "meshedit")
         for shape in ("fan_hub_first", "polygon") for size in ("100k", "300k", "1m")
     ] + [("build_torus_1m", "meshedit")],
-    "bench_smooth": [("smooth_1m_uniform", "meshedit"), ("smooth_1m_uniform", "openmesh"),
-                     ("smooth_1m_implicit", "meshedit")],
+    "bench_smooth": [("smooth_1m_uniform", i) for i in ("meshedit", "openmesh", "cgal")]
+    + [("smooth_1m_implicit", i) for i in ("meshedit", "cgal")],
+    "bench_fill": [(f"fill_{scan}_{n}", impl)
+                   for scan, sizes in (("bunny_1m", (10, 30, 100, 300, 1000)),
+                                       ("bunny_5m", (2000,)),
+                                       ("armadillo_832k", (10, 30, 100, 300)))
+                   for n in sizes for impl in ("meshedit", "cgal")],
     "bench_compare": [(job, "meshedit") for job in ("compare_torus_1m_renumbered",
                                                     "compare_torus_1m_moved")],
     "bench_local_ops": [("dissolves_collapses_1e6_quad100k", "meshedit")]
@@ -89,7 +94,7 @@ DEFAULT_CONFIGS = {
     ],
 }
 PROGRAMS = ["bench_bandwidth", "bench_loop", "bench_catmark", "bench_simplify", "bench_remesh",
-            "bench_smooth", "bench_ops", "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor",
+            "bench_smooth", "bench_fill", "bench_ops", "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor",
             "bench_selection", "bench_compare", "bench_python"]
 # The warm protocol (bench_util.h, `--warm`): the same configurations again with every
 # implementation reusing its memory across repetitions, so algorithm cost shows apart from

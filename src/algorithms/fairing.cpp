@@ -87,13 +87,12 @@ bool every_piece_held(const Mesh& mesh, const std::vector<Vertex>& inner) {
 bool solve(const Mesh& mesh, const std::vector<Vertex>& order,
            const std::vector<std::int64_t>& local, std::size_t n_free, std::size_t n_rows,
            SmoothWeights weights, Eigen::MatrixX3d& x) {
-    const std::vector<double> w = laplacian::edge_weights(mesh, weights);
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::VectorXd inverse_d(static_cast<Eigen::Index>(n_rows));
     for (std::size_t i = 0; i < n_rows; ++i) {
         double sum = 0.0;
         for (const Halfedge h : mesh.halfedges(order[i])) {
-            const double wij = w[Mesh::edge(h).idx()];
+            const double wij = laplacian::edge_weight(mesh, Mesh::edge(h), weights);
             entries.emplace_back(i, local[mesh.to_vertex(h).idx()], wij);
             sum += wij;
         }

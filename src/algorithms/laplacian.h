@@ -17,6 +17,10 @@ namespace meshedit::laplacian {
 /// stays positive definite, and bounded above where a triangle is degenerate.
 std::vector<double> edge_weights(const Mesh& mesh, SmoothWeights weights);
 
+/// The weight of one live edge, as edge_weights() gives it: for a pass that reads a few edges
+/// of a big mesh (fair() on a small region).
+double edge_weight(const Mesh& mesh, Edge e, SmoothWeights weights);
+
 /// "cannot <verb>: vertex 12 has a position that is not a finite number", or empty.
 std::string refuse_non_finite(const Mesh& mesh, const char* verb);
 

@@ -54,6 +54,10 @@ struct MeshArrays {
     }
 
     static const memory::Array<Halfedge>& next(const Mesh& m) { return m.hnext_.vector(); }
+    static const memory::Array<Halfedge>& prev(const Mesh& m) { return m.hprev_.vector(); }
+    static const memory::Array<Halfedge>& vertex_halfedge(const Mesh& m) {
+        return m.vhalfedge_.vector();
+    }
     static const memory::Array<Vertex>& to_vertex(const Mesh& m) { return m.hvertex_.vector(); }
     static const memory::Array<Halfedge>& face_halfedge(const Mesh& m) {
         return m.fhalfedge_.vector();
