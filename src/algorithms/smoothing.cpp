@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "laplacian.h"
@@ -463,7 +464,7 @@ SmoothReport smooth(Mesh& mesh, const SmoothOptions& options) {
     const std::size_t n = mesh.vertices_size();
     memory::Array<Vec3> x;
     x.resize_for_overwrite(n + kPadding);
-    std::copy_n(mesh.position_vector().data(), n, x.data());
+    std::copy_n(std::as_const(mesh).position_vector().data(), n, x.data());  // read: recordable
     std::fill(x.begin() + static_cast<std::ptrdiff_t>(n), x.end(), Vec3());
     memory::Array<Vec3> y;
     if (options.method == SmoothMethod::Implicit) {
@@ -492,7 +493,7 @@ SmoothReport smooth(Mesh& mesh, const SmoothOptions& options) {
     // otherwise a vertex's move is measured as it is written.
     memory::Array<Vec3> start;
     if (options.keep_volume) {
-        start = mesh.position_vector();
+        start = std::as_const(mesh).position_vector();
     }
     for (const Vertex v : mesh.vertices()) {
         if (r.free[v.idx()] != 0) {
