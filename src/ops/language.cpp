@@ -11,6 +11,7 @@
 // it, so `extrude:f7:0.2,0.9,flip:1-2` is two steps.
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -97,7 +98,10 @@ std::string argument_words(const Verb& verb) {
         parts.emplace_back("A-B+C-D (two edges by their vertex indices)");
     }
     if ((verb.takes & kRegion) != 0) {
-        parts.emplace_back("R (faces: fI or fI..J, joined by +; sel: the selected faces)");
+        parts.emplace_back((verb.takes & kElementList) != 0
+                               ? "R (faces fI or fI..J, vertices vI or vI..J, or edges A-B, "
+                                 "joined by +)"
+                               : "R (faces: fI or fI..J, joined by +; sel: the selected faces)");
     }
     if ((verb.takes & kLevels) != 0) {
         parts.emplace_back("K from 1 to " + std::to_string(kMaxLevels));
@@ -120,22 +124,42 @@ std::string argument_words(const Verb& verb) {
     throw SyntaxError("bad op '" + text + "': " + why);
 }
 
-// A region: "f4", "f4..9", joined by '+' ("f1..3+f7"), or "sel" (the selection).
+// A region: "f4", "f4..9", joined by '+' ("f1..3+f7"), or "sel" (the selection); with
+// kElementList also vertices ("v2..5+v9") or edges ("3-4+4-5"), one kind per step.
 void parse_region(std::string_view arg, Step& step, const std::string& expected) {
     step.target = Target::Region;
     if (arg == "sel") {
         step.from_selection = true;
         return;
     }
+    const bool any_kind = (step.verb->takes & kElementList) != 0;
     std::size_t start = 0;
     while (start <= arg.size()) {
         const std::size_t plus = std::min(arg.find('+', start), arg.size());
         std::string_view item = arg.substr(start, plus - start);
-        if (item.empty() || item.front() != 'f') {
+        const ElementRef::Kind kind = item.empty()          ? ElementRef::Kind::None
+                                      : item.front() == 'f' ? ElementRef::Kind::Face
+                                      : item.front() == 'v' ? ElementRef::Kind::Vertex
+                                      : std::isdigit(static_cast<unsigned char>(item.front())) != 0
+                                          ? ElementRef::Kind::Edge
+                                          : ElementRef::Kind::None;
+        if (kind == ElementRef::Kind::None || (kind != ElementRef::Kind::Face && !any_kind)) {
             bad(step.text, expected);
         }
-        item.remove_prefix(1);
+        if (start != 0 && kind != step.region_kind) {
+            bad(step.text, "one kind of element per step (faces fI, vertices vI or edges A-B)");
+        }
+        step.region_kind = kind;
         std::array<std::uint32_t, 2> range{};
+        if (kind == ElementRef::Kind::Edge) {
+            if (!parse_edge(item, range[0], range[1])) {
+                bad(step.text, expected);
+            }
+            step.region.push_back(range);
+            start = plus + 1;
+            continue;
+        }
+        item.remove_prefix(1);
         const auto dots = item.find("..");
         if (!parse_index(item.substr(0, dots), range[0]) ||
             !parse_index(
@@ -582,7 +606,7 @@ ElementRef named_element(const Mesh& mesh, const Step& step) {
 }
 
 std::vector<Face> named_faces(const Mesh& mesh, const Step& step) {
-    MESHEDIT_ASSERT(step.target == Target::Region);
+    MESHEDIT_ASSERT(step.target == Target::Region && step.region_kind == ElementRef::Kind::Face);
     std::vector<Face> out;
     for (const auto& [first, last] : step.region) {
         for (std::uint64_t f = first; f <= last; ++f) {
@@ -595,30 +619,42 @@ std::vector<Face> named_faces(const Mesh& mesh, const Step& step) {
     return out;
 }
 
-Step make_region_step(std::string_view name, const std::vector<Face>& faces,
-                      std::span<const double> amounts) {
-    std::vector<std::uint32_t> sorted;
-    for (const Face f : faces) {
-        sorted.push_back(f.idx());
-    }
-    std::sort(sorted.begin(), sorted.end());
-    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-    MESHEDIT_ASSERT(!sorted.empty());
-    std::string text(name);
-    text += ':';
-    for (std::size_t i = 0; i < sorted.size();) {
+namespace {
+
+// `indices` as sorted ranges joined by '+', each after `prefix`: "f4..6+f9".
+void append_ranges(std::string& text, std::vector<std::uint32_t> indices, char prefix) {
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    for (std::size_t i = 0; i < indices.size();) {
         std::size_t j = i;
-        while (j + 1 < sorted.size() && sorted[j + 1] == sorted[j] + 1) {
+        while (j + 1 < indices.size() && indices[j + 1] == indices[j] + 1) {
             ++j;
         }
-        text += i == 0 ? "f" : "+f";
-        text += std::to_string(sorted[i]);
+        if (i != 0) {
+            text += '+';
+        }
+        text += prefix;
+        text += std::to_string(indices[i]);
         if (j > i) {
             text += "..";
-            text += std::to_string(sorted[j]);
+            text += std::to_string(indices[j]);
         }
         i = j + 1;
     }
+}
+
+}  // namespace
+
+Step make_region_step(std::string_view name, const std::vector<Face>& faces,
+                      std::span<const double> amounts) {
+    std::vector<std::uint32_t> indices;
+    for (const Face f : faces) {
+        indices.push_back(f.idx());
+    }
+    MESHEDIT_ASSERT(!indices.empty());
+    std::string text(name);
+    text += ':';
+    append_ranges(text, std::move(indices), 'f');
     const Verb* verb = find_verb(name);
     MESHEDIT_ASSERT(verb != nullptr && verb->max_amounts >= amounts.size());
     std::array<double, kMaxAmounts> values = verb->defaults;
@@ -630,6 +666,38 @@ Step make_region_step(std::string_view name, const std::vector<Face>& faces,
         text += number_text(values[i]);
     }
     return parse_step(text);
+}
+
+std::string select_step_text(const Mesh& mesh, const std::vector<ElementRef>& selected) {
+    using Kind = ElementRef::Kind;
+    const auto kind_of = [](const ElementRef& e) {
+        return e.kind == Kind::Halfedge ? Kind::Edge : e.kind;
+    };
+    const Kind kind = selected.empty() ? Kind::None : kind_of(selected.back());
+    std::vector<std::uint32_t> indices;
+    for (const ElementRef& e : selected) {
+        if (kind_of(e) == kind) {
+            indices.push_back(e.kind == Kind::Halfedge ? Mesh::edge(Halfedge(e.index)).idx()
+                                                       : e.index);
+        }
+    }
+    if (indices.empty() || (kind != Kind::Face && kind != Kind::Vertex && kind != Kind::Edge)) {
+        return "select_none";
+    }
+    std::string text = "select:";
+    if (kind != Kind::Edge) {
+        append_ranges(text, std::move(indices), kind == Kind::Face ? 'f' : 'v');
+        return text;
+    }
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+        const Halfedge h = mesh.halfedge(Edge(indices[i]), 0);
+        text += i == 0 ? "" : "+";
+        text += std::to_string(mesh.from_vertex(h).idx()) + '-' +
+                std::to_string(mesh.to_vertex(h).idx());
+    }
+    return text;
 }
 
 std::string syntax_list() {

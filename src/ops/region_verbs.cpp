@@ -233,9 +233,43 @@ StepResult run_catmull_clark_region(Mesh& mesh, const Step& step, const RunOptio
 
 // ------------------------------------------------------------------ selection verbs
 
+namespace {
+
+// What a `select` step lists, as indices of its kind. \throws OpError (not a refusal) for an
+// element the mesh does not have.
+Selection listed(const Mesh& mesh, const Step& step) {
+    if (step.region_kind == Kind::Face) {
+        Selection out;
+        for (const Face f : named_faces(mesh, step)) {
+            out.indices.push_back(f.idx());
+        }
+        return out;
+    }
+    Selection out{step.region_kind, {}};
+    Step one;  // each element as a step of its own, for named_edge()'s and named_vertex()'s errors
+    one.verb = step.verb;
+    one.text = step.text;
+    one.target = step.region_kind == Kind::Edge ? Target::Edge : Target::Vertex;
+    for (const auto& [a, b] : step.region) {
+        if (step.region_kind == Kind::Edge) {
+            one.a = a;
+            one.b = b;
+            out.indices.push_back(named_edge(mesh, one).idx());
+            continue;
+        }
+        for (std::uint64_t v = a; v <= b; ++v) {
+            one.a = static_cast<std::uint32_t>(v);
+            out.indices.push_back(named_vertex(mesh, one).idx());
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
 OpStatus check_select(const Mesh& mesh, const Step& step) {
     if (step.target == Target::Region) {
-        named_faces(mesh, step);  // throws for a face the mesh does not have
+        listed(mesh, step);  // throws for an element the mesh does not have
     } else if (step.target == Target::Edge) {
         named_edge(mesh, step);
     }
@@ -245,12 +279,11 @@ StepResult run_select(Mesh&, const Step& step, const RunOptions&) {
     return local({}, "selection: " + step.text, false);
 }
 
-Selection select_faces(const Mesh& mesh, const Step& step, const Selection&) {
-    Selection out;
-    for (const Face f : named_faces(mesh, step)) {
-        out.indices.push_back(f.idx());
-    }
-    return out;
+Selection select_listed(const Mesh& mesh, const Step& step, const Selection&) {
+    return listed(mesh, step);
+}
+Selection select_none(const Mesh&, const Step&, const Selection&) {
+    return {};
 }
 Selection select_loop(const Mesh& mesh, const Step& step, const Selection&) {
     Selection out{Kind::Edge, {}};

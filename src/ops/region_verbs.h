@@ -38,7 +38,8 @@ StepResult run_subdivide_region(Mesh& mesh, const Step& step, const RunOptions& 
 /// run() leaves the mesh alone, select() makes the selection.
 OpStatus check_select(const Mesh& mesh, const Step& step);
 StepResult run_select(Mesh& mesh, const Step& step, const RunOptions& options);
-Selection select_faces(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_listed(const Mesh& mesh, const Step& step, const Selection& now);
+Selection select_none(const Mesh& mesh, const Step& step, const Selection& now);
 Selection select_loop(const Mesh& mesh, const Step& step, const Selection& now);
 Selection select_ring(const Mesh& mesh, const Step& step, const Selection& now);
 Selection select_linked(const Mesh& mesh, const Step& step, const Selection& now);

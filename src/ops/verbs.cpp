@@ -515,10 +515,14 @@ constexpr std::array kVerbs{
          check_catmull_clark_region, run_catmull_clark_region, nullptr, false,
          kChangesTopology},
     // The selection a list carries (run_steps()): set by these, named `sel` by region verbs.
-    Verb{"select", kRegion, 0, 0, kNoDefaults, "select:R",
-         "selects the faces R, for the region verbs that follow to name as `sel`",
+    Verb{"select", kRegion | kElementList, 0, 0, kNoDefaults, "select:R",
+         "selects the faces R (or the vertices or edges R lists), for the region verbs that "
+         "follow to name as `sel`; what the viewer records for a region selection",
          "select faces", check_select, run_select, nullptr, false, 0, CodeNames::ByIndex,
-         select_faces},
+         select_listed},
+    Verb{"select_none", kWholeMesh, 0, 0, kNoDefaults, "select_none", "clears the selection",
+         "clear the selection", check_select, run_select, nullptr, false, 0, CodeNames::ByIndex,
+         select_none},
     Verb{"select_loop", kEdgeArg, 0, 0, kNoDefaults, "select_loop:A-B",
          "selects the edge loop through A-B (on across vertices of valence 4; stops at poles "
          "and the border)",

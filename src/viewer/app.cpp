@@ -240,6 +240,7 @@ void App::on_key(int key, int action, int mods) {
     }
     if (brush_mode() && (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_ENTER)) {
         drag_ = DragMode::None;  // Esc ends the brush; it does not clear the selection
+        editor_.end_selection_stroke();
         set_status("brush select ended", false);
         return;
     }

@@ -21,15 +21,18 @@ bool App::region_mouse_button(int button, int action, int mods) {
     if (brush_mode()) {
         if (action == GLFW_PRESS && button == GLFW_MOUSE_BUTTON_RIGHT) {
             drag_ = DragMode::None;
+            editor_.end_selection_stroke();
             set_status("brush select ended", false);
             swallow_release_ = true;
         } else if (action == GLFW_PRESS && button == GLFW_MOUSE_BUTTON_LEFT) {
             drag_ = DragMode::Brush;
+            editor_.begin_selection_stroke();  // one undo step per drag
             brush_removes_ = (mods & GLFW_MOD_SHIFT) != 0;
             brush_through_ = (mods & GLFW_MOD_ALT) != 0;
             paint_brush();
         } else if (action == GLFW_RELEASE && button == GLFW_MOUSE_BUTTON_LEFT) {
             drag_ = DragMode::BrushArmed;
+            editor_.end_selection_stroke();
         }
         redraw_frames_ = kSettleFrames;
         return true;

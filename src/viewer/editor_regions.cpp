@@ -47,6 +47,10 @@ const char* noun(Kind kind, std::size_t n) {
 }  // namespace
 
 Outcome Editor::select_region(Command command) {
+    return recorded_selection([&] { return choose_region(command); });
+}
+
+Outcome Editor::choose_region(Command command) {
     if (std::optional<Outcome> busy = refuse_if_busy()) {
         return *busy;
     }
@@ -252,8 +256,10 @@ Outcome Editor::select_elements(const std::vector<ElementRef>& elements, bool ad
             chosen.push_back(e);
         }
     }
-    return take_selection(std::move(chosen), what + ": nothing inside (the selection is empty)",
-                          what + ": ", add ? " selected in all" : " selected");
+    return recorded_selection([&] {
+        return take_selection(std::move(chosen), what + ": nothing inside (the selection is empty)",
+                              what + ": ", add ? " selected in all" : " selected");
+    });
 }
 
 Outcome Editor::take_selection(std::vector<ElementRef> chosen, const std::string& if_empty,
@@ -289,8 +295,10 @@ Outcome Editor::deselect_elements(const std::vector<ElementRef>& elements,
             kept.push_back(e);
         }
     }
-    return take_selection(std::move(kept), what + ": the selection is empty", what + ": ",
-                          " selected");
+    return recorded_selection([&] {
+        return take_selection(std::move(kept), what + ": the selection is empty", what + ": ",
+                              " selected");
+    });
 }
 
 }  // namespace meshedit::viewer

@@ -87,7 +87,24 @@ std::string Editor::count_text() const {
     return n > 1 ? " (" + std::to_string(n) + " selected)" : "";
 }
 
+Outcome Editor::recorded_selection(const std::function<Outcome()>& change) {
+    const ElementRef before = doc_.selection;
+    std::vector<ElementRef> also_before = doc_.also_selected;
+    Outcome out = change();
+    if (out.refused || doc_.mode != Mode::Mesh ||
+        (before == doc_.selection && also_before == doc_.also_selected)) {
+        return out;
+    }
+    ledger_.select(doc_, before, std::move(also_before),
+                   ops::select_step_text(doc_.mesh, selected()), stroke_);
+    return out;
+}
+
 Outcome Editor::select_all() {
+    return recorded_selection([&] { return choose_all(); });
+}
+
+Outcome Editor::choose_all() {
     if (doc_.mode == Mode::Curve) {
         return refused("select all is for meshes");
     }
@@ -135,12 +152,18 @@ Outcome Editor::select_all() {
 }
 
 Outcome Editor::select_none() {
-    doc_.selection = {};
-    doc_.also_selected.clear();
-    return {kSelection, "selection cleared"};
+    return recorded_selection([&] {
+        doc_.selection = {};
+        doc_.also_selected.clear();
+        return Outcome{kSelection, "selection cleared"};
+    });
 }
 
 Outcome Editor::select_boundary_loop() {
+    return recorded_selection([&] { return choose_boundary_loop(); });
+}
+
+Outcome Editor::choose_boundary_loop() {
     const Mesh& mesh = doc_.mesh;
     const ElementRef& s = doc_.selection;
     Halfedge h;

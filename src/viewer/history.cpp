@@ -35,7 +35,9 @@ std::size_t Document::bytes() const {
 // The selection is not part of the change: like a snapshot, each side keeps the selection
 // it had when the document last left it (a click after the edit survives undo and redo).
 void DocumentChange::undo(Document& doc) {
-    mesh.undo(doc.mesh);
+    if (!selection_only) {
+        mesh.undo(doc.mesh);
+    }
     selection_after = std::exchange(doc.selection, selection_before);
     also_after = std::exchange(doc.also_selected, also_before);
     doc.session.resize(doc.session.size() - session_added.size());
@@ -43,7 +45,9 @@ void DocumentChange::undo(Document& doc) {
 }
 
 void DocumentChange::redo(Document& doc) {
-    mesh.redo(doc.mesh);
+    if (!selection_only) {
+        mesh.redo(doc.mesh);
+    }
     selection_before = std::exchange(doc.selection, selection_after);
     also_before = std::exchange(doc.also_selected, also_after);
     doc.session.insert(doc.session.end(), session_added.begin(), session_added.end());
@@ -81,6 +85,21 @@ void History::push_step(Step step) {
     trim();
 }
 
+bool History::amend_selection(const DocumentChange& change) {
+    auto* last = undo_.empty() ? nullptr : std::get_if<DocumentChange>(&undo_.back());
+    if (last == nullptr || !last->selection_only || !redo_.empty() || change.stroke == 0 ||
+        last->stroke != change.stroke) {
+        return false;
+    }
+    bytes_ -= last->bytes();
+    last->selection_after = change.selection_after;
+    last->also_after = change.also_after;
+    last->session_added = change.session_added;
+    bytes_ += last->bytes();
+    trim();
+    return true;
+}
+
 template <class From, class To>
 History::Moved History::move_step(From& from, To& to, Document& current, bool forward) {
     if (from.empty()) {
@@ -91,7 +110,7 @@ History::Moved History::move_step(From& from, To& to, Document& current, bool fo
     from.pop_back();
     bytes_ -= bytes_of(step);
     if (auto* change = std::get_if<DocumentChange>(&step)) {
-        moved.region = change->mesh.region();
+        moved.region = change->selection_only ? MeshChange::Region{} : change->mesh.region();
         if (forward) {
             change->redo(current);
         } else {

@@ -29,6 +29,25 @@ std::optional<std::optional<MeshChange::Region>> Ledger::step(Document& doc, boo
     return std::move(moved.region);
 }
 
+void Ledger::select(Document& doc, ElementRef before, std::vector<ElementRef> also_before,
+                    std::string step, std::uint64_t stroke) {
+    DocumentChange change;
+    change.selection_only = true;
+    change.stroke = stroke;
+    change.selection_before = before;
+    change.also_before = std::move(also_before);
+    change.selection_after = doc.selection;
+    change.also_after = doc.also_selected;
+    change.session_added = {std::move(step)};
+    change.revision_before = change.revision_after = doc.revision;
+    if (history_.amend_selection(change)) {
+        doc.session.back() = change.session_added.front();
+        return;
+    }
+    doc.session.push_back(change.session_added.front());
+    history_.push(std::move(change));
+}
+
 // --------------------------------------------------------------------------- Transaction
 
 Transaction::Transaction(Ledger& ledger, Document& doc, Kind kind)

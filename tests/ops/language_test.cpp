@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -84,7 +85,7 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
         "make_boundary, fill, weld, poke, extrude, inset, bevel, extrude_region, inset_region, "
         "simplify_region, remesh_region, "
         "dissolve_region, subdivide_region, loop_region, catmull_clark_region, select, "
-        "select_loop, select_ring, "
+        "select_none, select_loop, select_ring, "
         "select_linked, select_more, select_less, select_invert, select_boundary, "
         "select_creases, select_valence, select_degree, crease, crease_by_angle, move, "
         "loop, loop_step, cc_step, catmull_clark, linear, simplify, remesh, smooth, smooth_cotan, "
@@ -375,6 +376,55 @@ TEST(OpsLanguage, SelectionVerbsFeedTheRegionVerbs) {
                      "select_ verb, picks them first)");
     }
     EXPECT_TRUE(test::identical(flat, before));
+}
+
+// `select` lists vertices or edges too (what the viewer records for a region selection of
+// that kind), one kind per step; select_step_text() writes what parses back to the same
+// selection, and `select_none` empties it.
+TEST(OpsLanguage, SelectListsVerticesAndEdgesAndWritesBack) {
+    Mesh grid = shapes::quad_grid(5, 4);  // vertex (i, j) = 6j + i
+    StepsRun run = run_steps(grid, parse("select:v0..2+v6"), OnRefusal::Stop);
+    EXPECT_EQ(run.selection.kind, ElementRef::Kind::Vertex);
+    EXPECT_EQ(run.selection.indices, (std::vector<std::uint32_t>{0, 1, 2, 6}));
+    run = run_steps(grid, parse("select:v0,select_more"), OnRefusal::Stop);
+    EXPECT_EQ(run.selection.indices.size(), 3u);  // the corner and its two neighbours
+    run = run_steps(grid, parse("select:14-15+15-16"), OnRefusal::Stop);
+    ASSERT_EQ(run.selection.kind, ElementRef::Kind::Edge);
+    ASSERT_EQ(run.selection.indices.size(), 2u);
+    EXPECT_EQ(Edge(run.selection.indices[0]), grid.find_edge(Vertex(14), Vertex(15)));
+    EXPECT_TRUE(
+        run_steps(grid, parse("select:f3,select_none"), OnRefusal::Stop).selection.indices.empty());
+    EXPECT_EQ(syntax_error("select:f1+v2"),
+              "bad op 'select:f1+v2': one kind of element per step (faces fI, vertices vI or "
+              "edges A-B)");
+    EXPECT_EQ(syntax_error("extrude_region:v1:0.5"),
+              "bad op 'extrude_region:v1:0.5': expected extrude_region:R:H with R (faces: fI or "
+              "fI..J, joined by +; sel: the selected faces)");
+    try {
+        apply_steps(grid, parse("select:3-10"));
+        FAIL() << "an edge that is not there was selected";
+    } catch (const OpError& e) {
+        EXPECT_FALSE(e.refused());
+    }
+
+    // Written back: sorted ranges of the active element's kind (a halfedge as its edge).
+    const Edge e1415 = grid.find_edge(Vertex(14), Vertex(15));
+    const std::vector<ElementRef> edges = {ElementRef::edge(grid.find_edge(Vertex(15), Vertex(16))),
+                                           ElementRef::halfedge(grid.halfedge(e1415, 1))};
+    const std::string text = select_step_text(grid, edges);
+    run = run_steps(grid, parse(text), OnRefusal::Stop);
+    std::vector<std::uint32_t> want = {edges[0].index, e1415.idx()};
+    std::sort(want.begin(), want.end());
+    std::vector<std::uint32_t> got = run.selection.indices;
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(got, want) << text;
+    EXPECT_EQ(select_step_text(grid, {ElementRef::face(Face(9)), ElementRef::face(Face(7)),
+                                      ElementRef::face(Face(8)), ElementRef::face(Face(2))}),
+              "select:f2+f7..9");
+    EXPECT_EQ(
+        select_step_text(grid, {ElementRef::vertex(Vertex(4)), ElementRef::vertex(Vertex(3))}),
+        "select:v3..4");
+    EXPECT_EQ(select_step_text(grid, {}), "select_none");
 }
 
 // Loop refuses polygons, counting them and naming the step that makes it possible.

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "meshedit/core/shapes.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/viewer/editor.h"
@@ -65,7 +67,86 @@ TEST(EditorRegions, MoreLessInvertAndLinked) {
     EXPECT_EQ(count(ed), 3u);  // the corner and its two neighbours
     ed.select(ElementRef::edge(Edge(0)));
     EXPECT_TRUE(ed.press(Key::Equal, kCtrl).refused);
-    EXPECT_EQ(ed.history().undo_steps(), 0u);  // selecting is not an edit
+    // Each region selection that ran is an undo step (not the clicks, not the refusal), and
+    // none of them is an unsaved change.
+    EXPECT_EQ(ed.history().undo_steps(), 6u);
+    EXPECT_EQ(ed.document().session.size(), 6u);
+    EXPECT_FALSE(ed.dirty());
+}
+
+// A region selection is an undo step with its `select` step in the session: Ctrl+Z takes the
+// selection back (to the one a click made before it), Ctrl+Shift+Z forward again; the
+// session's steps replayed through the language give the same selection; a brush drag is
+// one step however many times it paints.
+TEST(EditorRegions, RegionSelectionsUndoAndAreRecorded) {
+    const Mesh grid = quad_grid(5, 5);
+    Editor ed = editor_with(grid);
+    ed.select(ElementRef::face(Face(12)));
+    EXPECT_EQ(ed.history().undo_steps(), 0u);  // a click is how one looks, not a step
+    ASSERT_FALSE(ed.press(Key::Equal, kCtrl).refused);
+    const std::vector<std::string>& session = ed.document().session;
+    ASSERT_EQ(session.size(), 1u);
+    EXPECT_EQ(session.back(), "select:f6..8+f11..13+f16..18");
+    ASSERT_FALSE(ed.press(key_of('I'), kCtrl).refused);
+    EXPECT_EQ(session.back(), "select:f0..5+f9..10+f14..15+f19..24");
+    EXPECT_EQ(ed.history().undo_steps(), 2u);
+
+    ASSERT_FALSE(ed.press(key_of('Z'), kCtrl).refused);
+    EXPECT_EQ(count(ed), 9u);
+    EXPECT_EQ(session.size(), 1u);
+    ASSERT_FALSE(ed.press(key_of('Z'), kCtrl).refused);
+    EXPECT_EQ(ed.selected(), std::vector<ElementRef>{ElementRef::face(Face(12))});
+    EXPECT_TRUE(session.empty());
+    ASSERT_FALSE(ed.press(key_of('Z'), kCtrl | kShift).refused);
+    EXPECT_EQ(count(ed), 9u);
+    EXPECT_EQ(session.back(), "select:f6..8+f11..13+f16..18");
+    EXPECT_TRUE(test::identical(ed.mesh(), grid));
+    EXPECT_FALSE(ed.dirty());
+
+    // Vertices, edges (an Alt+E loop) and Alt+A, each replayed through the language.
+    const auto replays = [&](const char* what) {
+        Mesh copy = grid;
+        const ops::StepsRun run = ops::run_steps(
+            copy, ops::parse_session(ops::session_text({}, session)), ops::OnRefusal::Stop);
+        std::vector<std::uint32_t> want;
+        for (const ElementRef& e : ed.selected()) {
+            want.push_back(e.index);
+        }
+        std::sort(want.begin(), want.end());
+        std::vector<std::uint32_t> got = run.selection.indices;
+        std::sort(got.begin(), got.end());
+        EXPECT_EQ(got, want) << what << ": " << session.back();
+    };
+    replays("grown faces");
+    ed.select(ElementRef::vertex(Vertex(0)));
+    ASSERT_FALSE(ed.press(Key::Equal, kCtrl).refused);
+    EXPECT_EQ(session.back(), "select:v0..1+v6");
+    replays("grown vertices");
+    ed.select(ElementRef::edge(edge_of(ed.mesh(), 2 * 6 + 2, 2 * 6 + 3)));
+    ASSERT_FALSE(ed.press(key_of('E'), kAlt).refused);
+    replays("edge loop");
+    ASSERT_FALSE(ed.press(key_of('A'), kAlt).refused);
+    EXPECT_EQ(session.back(), "select_none");
+    replays("nothing");
+    const std::size_t steps = ed.history().undo_steps();
+
+    // A brush stroke: three paints, one step; the next stroke is another.
+    ed.begin_selection_stroke();
+    for (const std::uint32_t f : {0u, 1u, 2u}) {
+        ed.select_elements({ElementRef::face(Face(f))}, true, "brush");
+    }
+    ed.end_selection_stroke();
+    EXPECT_EQ(ed.history().undo_steps(), steps + 1);
+    EXPECT_EQ(session.back(), "select:f0..2");
+    ed.begin_selection_stroke();
+    ed.deselect_elements({ElementRef::face(Face(1))}, "brush");
+    ed.end_selection_stroke();
+    EXPECT_EQ(ed.history().undo_steps(), steps + 2);
+    EXPECT_EQ(session.back(), "select:f0+f2");
+    ASSERT_FALSE(ed.press(key_of('Z'), kCtrl).refused);
+    ASSERT_FALSE(ed.press(key_of('Z'), kCtrl).refused);
+    EXPECT_EQ(count(ed), 0u);
+    EXPECT_EQ(session.back(), "select_none");
 }
 
 // B hands the drag to the window (kBoxSelect); what the box holds comes back through
@@ -136,7 +217,7 @@ TEST(EditorRegions, ShiftXExtrudesTheRegionAsOneAndShiftWSubdividesIt) {
     EXPECT_EQ(ed.modal_counts().position_amendments, 50u);  // the key's preview built it
     EXPECT_EQ(ed.modal_status().rfind("extrude region height 0.5 ", 0), 0u) << ed.modal_status();
     ASSERT_FALSE(ed.press(Key::Enter, 0).refused);
-    EXPECT_EQ(ed.history().undo_steps(), 1u);
+    EXPECT_EQ(ed.history().undo_steps(), 2u);  // the box's selection, then the extrusion
     const std::vector<std::string>& session = ed.document().session;
     ASSERT_FALSE(session.empty());
     EXPECT_EQ(session.back(), "extrude_region:f6..8+f11..13+f16..18:0.5");
@@ -182,7 +263,7 @@ TEST(EditorRegions, AltIInsetsTheRegionAsOne) {
     EXPECT_EQ(ed.modal_counts().position_amendments, 25u);
     EXPECT_EQ(ed.modal_status().rfind("inset region thickness 0.25", 0), 0u) << ed.modal_status();
     ASSERT_FALSE(ed.press(Key::Enter, 0).refused);
-    EXPECT_EQ(ed.history().undo_steps(), 1u);
+    EXPECT_EQ(ed.history().undo_steps(), 2u);  // the box's selection, then the inset
     const std::vector<std::string>& session = ed.document().session;
     ASSERT_FALSE(session.empty());
     EXPECT_EQ(session.back(), "inset_region:f6..8+f11..13+f16..18:0.25");

@@ -45,6 +45,9 @@ enum Arg : unsigned {
     /// `simplify:0.1:attributes=blind`: whether QEM weighs texture coordinates and colours
     /// (aware or blind, simplify.h), after the amounts
     kAttributesArg = 1u << 8,
+    /// With kRegion: the list may name vertices (`select:v4..9`) or edges (`select:3-4+4-5`,
+    /// each by its two ends) instead of faces, one kind per step
+    kElementList = 1u << 9,
 };
 
 /// The element kind a step names.
@@ -87,6 +90,9 @@ struct Step {
     int levels = 1;  ///< kLevels
     /// Region: the faces as ranges of indices, first and last included (`f4` is {4, 4}).
     std::vector<std::array<std::uint32_t, 2>> region;
+    /// Region: what `region` names — faces; with kElementList also vertices (ranges, as
+    /// faces) or edges (each item one edge {a, b} by its two ends).
+    ElementRef::Kind region_kind = ElementRef::Kind::Face;
     /// Region written `sel`: the faces of the selection run_steps() carries, filled in
     /// before the step is checked.
     bool from_selection = false;
@@ -218,6 +224,12 @@ Step make_step(std::string_view verb, const Mesh& mesh, const ElementRef& target
 /// faces written as sorted ranges ("extrude_region:f4..6+f9:0.5"). \pre `verb` takes kRegion.
 Step make_region_step(std::string_view verb, const std::vector<Face>& faces,
                       std::span<const double> amounts = {});
+
+/// The `select` step that makes `selected` the selection (a session records a region
+/// selection with it): its elements of the last one's kind (a halfedge stands for its edge)
+/// as sorted ranges, `select:f4..6+f9`, `select:v2..3`, `select:3-4+4-5`; `select_none` when
+/// it holds none.
+std::string select_step_text(const Mesh& mesh, const std::vector<ElementRef>& selected);
 
 /// An element named in text, the one grammar of `--ops` steps, `--select` and the viewer's
 /// session: `v12` (a vertex), `3-4` (the edge between two vertices), `h3-4` (the halfedge

@@ -275,7 +275,9 @@ public:
 
     /// Selection and hover from picking (ElementRef of the mesh, or in Curve mode a Vertex
     /// ref whose index is a control point). Invalid or deleted elements select nothing.
-    /// Replaces the whole selection.
+    /// Replaces the whole selection. A click (and a Shift+click) is how one looks at an
+    /// element, so it is not an undo step; every other way of selecting below is one, with
+    /// its `select` step in the session (Ledger::select()).
     Outcome select(ElementRef element);
     /// Shift+click: adds `element` to the selection as the active element, or removes it if
     /// it is selected already.
@@ -302,6 +304,9 @@ public:
                             const std::string& what);
     /// The kind a region selects: the selection's (a halfedge's is Edge), faces if none.
     ElementRef::Kind region_kind() const;
+    /// A brush drag begins (ends): what it paints until it ends is one undo step.
+    void begin_selection_stroke() { stroke_ = next_stroke_++; }
+    void end_selection_stroke() { stroke_ = 0; }
     Outcome select_none();
     /// Selects every edge of the hole the selected boundary edge (or halfedge) borders.
     Outcome select_boundary_loop();
@@ -515,6 +520,14 @@ private:
     /// `before` + "N faces" + `after`.
     Outcome take_selection(std::vector<ElementRef> chosen, const std::string& if_empty,
                            const std::string& before, const std::string& after);
+    /// Runs `change` (a way of selecting) and, when it changed a mesh's selection, makes
+    /// that one undo step with its `select` step in the session.
+    Outcome recorded_selection(const std::function<Outcome()>& change);
+    Outcome choose_region(Command command);  ///< select_region() before it is recorded
+    Outcome choose_all();                    ///< select_all() before it is recorded
+    Outcome choose_boundary_loop();          ///< select_boundary_loop() before it is recorded
+    std::uint64_t stroke_ = 0;               ///< the brush drag under way, or 0
+    std::uint64_t next_stroke_ = 1;
     ToolSettings tools_;
     Vec3 toward_eye_{0, 0, 1};
     std::optional<UpAxis> up_for_next_open_;

@@ -37,6 +37,12 @@ struct DocumentChange {
     std::vector<ElementRef> also_before, also_after;
     std::vector<std::string> session_added;  ///< the steps the edit appended to the session
     std::uint64_t revision_before = 0, revision_after = 0;
+    /// A selection change (a box, a loop, a grown region): `mesh` is empty and untouched by
+    /// undo and redo; the selection, its session step and nothing else change.
+    bool selection_only = false;
+    /// A selection change's stroke (a brush drag): the next change of the same non-zero
+    /// stroke amends this step instead of adding one (History::amend_selection()).
+    std::uint64_t stroke = 0;
 
     /// Each keeps the selection of the side it leaves, for the way back.
     void undo(Document& doc);
@@ -58,6 +64,10 @@ public:
     /// Records a local edit's change (applied already to the current document) and clears
     /// the redo stack.
     void push(DocumentChange change);
+    /// A selection change of the same stroke as the newest undo step (a selection change,
+    /// nothing redone since): that step takes `change`'s selection after and session step
+    /// and true is returned; otherwise false and nothing changes.
+    bool amend_selection(const DocumentChange& change);
     /// What undo() or redo() did: whether there was a step, and where a recorded change
     /// changed the mesh (MeshChange::region(); none after a snapshot).
     struct Moved {

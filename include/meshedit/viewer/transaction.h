@@ -16,7 +16,8 @@
 ///
 /// A Ledger holds what only transactions write: the undo history, the revision counter,
 /// the saved revision and the arming of the warnings. Undo and redo go through it too
-/// (step()); opening a document starts it over (start()). Nothing else in src/ pushes
+/// (step()); opening a document starts it over (start()); a selection change, which leaves
+/// the mesh alone, is its own step (select()). Nothing else in src/ pushes
 /// history, bumps a revision or appends to the session (tests/check_transactions.cmake).
 
 #include <cstdint>
@@ -51,6 +52,14 @@ public:
     /// Undo (`forward` false) or redo one step; nullopt when there is none. The region is a
     /// recorded change's (none after a snapshot: everything is redrawn).
     std::optional<std::optional<MeshChange::Region>> step(Document& doc, bool forward);
+
+    /// A selection change as one undo step (a box, a lasso, a loop, a grown region): the
+    /// selection was `before` and `also_before` and is now `doc`'s; `step` (a `select` step,
+    /// ops::select_step_text()) goes to the session. Not a new revision: selecting is not an
+    /// unsaved change. With a non-zero `stroke` equal to the newest step's (a brush drag
+    /// painting on), that step takes the new selection and its session step is replaced.
+    void select(Document& doc, ElementRef before, std::vector<ElementRef> also_before,
+                std::string step, std::uint64_t stroke = 0);
 
     /// The warnings that let the next quit or open discard unsaved changes; every commit
     /// disarms both.
