@@ -24,7 +24,11 @@ struct Projected {
     std::vector<glm::vec4>& clip;
     std::vector<glm::vec3>& screen;     // pixels and NDC depth (when asked for)
     std::vector<std::uint8_t>& placed;  // 1 where to_screen() succeeded
+    // Where each vertex lands against the region's bounding box (kFar and kNotInside bits), so that
+    // most faces are decided from a byte per corner: the clip array does not fit a cache.
+    std::vector<std::uint8_t>& code;
     float w = 1, h = 1;
+    glm::mat4 m{1.0f};  // world to clip space
 
     // Pixels and NDC depth of a clip-space point; false behind the eye or outside the depth
     // range.
@@ -35,30 +39,83 @@ struct Projected {
         out = {(c.x / c.w + 1.0f) * 0.5f * w, (1.0f - c.y / c.w) * 0.5f * h, c.z / c.w};
         return true;
     }
+
+    // Vertex v in clip space: kept, or computed again (a box through the mesh keeps none:
+    // the few faces its codes leave undecided cost less than writing every vertex's).
+    glm::vec4 clip_of(const Mesh& mesh, std::uint32_t v) const {
+        if (!clip.empty()) {
+            return clip[v];
+        }
+        const Vec3& x = mesh.position(Vertex(v));
+        return m * glm::vec4(static_cast<float>(x.x), static_cast<float>(x.y),
+                             static_cast<float>(x.z), 1.0f);
+    }
 };
 
-Projected project_all(const Mesh& mesh, const Camera& camera, int width, int height, bool screen) {
+// A corner's code: the low four bits say on which sides it lies more than kFarPixels outside
+// the box (all corners of a face sharing one: the face, its centre included, lies beyond the
+// box and its depth window); the high four on which sides it is not kInsidePixels inside.
+// A corner that cannot be placed has only high bits: its face is decided the exact way.
+constexpr float kFarPixels = 2.0f;
+constexpr float kInsidePixels = 0.01f;  // far above float rounding of a centre in pixels
+constexpr std::uint8_t kFar = 0x0f, kNotInside = 0xf0;
+
+std::uint8_t code_of(bool placed, const glm::vec3& s, glm::vec2 lo, glm::vec2 hi) {
+    if (!placed) {
+        return kNotInside;
+    }
+    const auto sides = [&](float margin) {
+        return static_cast<std::uint8_t>(
+            (s.x < lo.x - margin ? 1 : 0) | (s.x > hi.x + margin ? 2 : 0) |
+            (s.y < lo.y - margin ? 4 : 0) | (s.y > hi.y + margin ? 8 : 0));
+    };
+    return static_cast<std::uint8_t>(sides(kFarPixels) | (sides(-kInsidePixels) << 4));
+}
+
+Projected project_all(const Mesh& mesh, const Camera& camera, int width, int height, bool screen,
+                      bool keep_clip, glm::vec2 lo, glm::vec2 hi) {
     thread_local std::vector<glm::vec4> clip;
     thread_local std::vector<glm::vec3> pixels;
     thread_local std::vector<std::uint8_t> placed;
-    Projected p{clip, pixels, placed};
+    thread_local std::vector<std::uint8_t> code;
+    Projected p{clip, pixels, placed, code};
     p.w = static_cast<float>(std::max(width, 1));
     p.h = static_cast<float>(std::max(height, 1));
-    const glm::mat4 m = camera.projection(p.w / p.h) * camera.view();
-    p.clip.resize(mesh.vertices_size());
+    p.m = camera.projection(p.w / p.h) * camera.view();
+    const glm::mat4& m = p.m;
+    p.clip.resize(keep_clip ? mesh.vertices_size() : 0);
+    p.code.resize(mesh.vertices_size());
     if (screen) {
         p.screen.resize(mesh.vertices_size());
         p.placed.assign(mesh.vertices_size(), 0);
     }
     for (const Vertex v : mesh.vertices()) {
         const Vec3& x = mesh.position(v);
-        p.clip[v.idx()] = m * glm::vec4(static_cast<float>(x.x), static_cast<float>(x.y),
-                                        static_cast<float>(x.z), 1.0f);
+        const glm::vec4 c = m * glm::vec4(static_cast<float>(x.x), static_cast<float>(x.y),
+                                          static_cast<float>(x.z), 1.0f);
+        if (keep_clip) {
+            p.clip[v.idx()] = c;
+        }
+        glm::vec3 s;
+        const bool ok = p.to_screen(c, s);
+        p.code[v.idx()] = code_of(ok, s, lo, hi);
         if (screen) {
-            p.placed[v.idx()] = p.to_screen(p.clip[v.idx()], p.screen[v.idx()]) ? 1 : 0;
+            p.screen[v.idx()] = s;
+            p.placed[v.idx()] = ok ? 1 : 0;
         }
     }
     return p;
+}
+
+// The AND (low byte) and OR (high byte) of face f's corner codes.
+std::uint16_t face_code(const Mesh& mesh, const Projected& p, Face f) {
+    std::uint8_t all = 0xff, any = 0;
+    for (const Halfedge h : mesh.halfedges(f)) {
+        const std::uint8_t c = p.code[mesh.to_vertex(h).idx()];
+        all &= c;
+        any |= c;
+    }
+    return static_cast<std::uint16_t>(all | (any << 8));
 }
 
 // Runs body(first, last, k) on consecutive ranges of [0, n), one per thread k (thread_count(),
@@ -104,8 +161,8 @@ public:
                 glm::vec3 corner[3];
                 for (std::size_t i = first; i < last; ++i) {
                     const Face f(static_cast<std::uint32_t>(i));
-                    if (mesh.is_deleted(f)) {
-                        continue;
+                    if (mesh.is_deleted(f) || (face_code(mesh, p, f) & kFar) != 0) {
+                        continue;  // beyond the window: no pixel of it to draw
                     }
                     std::size_t n = 0;
                     bool ok = true;
@@ -234,13 +291,16 @@ bool faces_viewer(const Mesh& mesh, const Projected& p, Face f) {
 }
 
 // What a region selects: `in_region(pixel)` says whether a projected point lies inside;
-// [lo, hi] bounds the region.
+// [lo, hi] bounds the region; `box`: the region is that box (a face whose corners are all
+// inside it has its centre inside too).
 template <class InRegion>
 std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, int width,
                                         int height, ElementRef::Kind kind, Reach reach,
-                                        glm::vec2 lo, glm::vec2 hi, const InRegion& in_region) {
-    const Projected p = project_all(mesh, camera, width, height,
-                                    reach != Reach::Through || kind != ElementRef::Kind::Face);
+                                        glm::vec2 lo, glm::vec2 hi, bool box,
+                                        const InRegion& in_region) {
+    const bool need_points = reach != Reach::Through || kind != ElementRef::Kind::Face;
+    const Projected p =
+        project_all(mesh, camera, width, height, need_points, need_points || !box, lo, hi);
     const bool cull = reach == Reach::VisibleFrontOnly;
     std::optional<DepthBuffer> depth;
     if (reach != Reach::Through) {
@@ -251,15 +311,24 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
         std::vector<std::vector<ElementRef>> parts(std::max(1u, thread_count()));
         const unsigned ran =
             in_ranges(mesh.faces_size(), [&](std::size_t first, std::size_t last, unsigned k) {
+                parts[k].reserve(last - first);  // address space only: no copies as it grows
                 for (std::size_t i = first; i < last; ++i) {
                     const Face f(static_cast<std::uint32_t>(i));
                     if (mesh.is_deleted(f)) {
                         continue;
                     }
+                    const std::uint16_t code = face_code(mesh, p, f);
+                    if ((code & kFar) != 0) {
+                        continue;  // every corner beyond one side: so is the centre
+                    }
+                    if (box && !depth && (code >> 8 & kNotInside) == 0) {
+                        parts[k].push_back(ElementRef::face(f));  // every corner inside
+                        continue;
+                    }
                     glm::vec4 sum(0.0f);
                     float n = 0.0f;
                     for (const Halfedge h : mesh.halfedges(f)) {
-                        sum += p.clip[mesh.to_vertex(h).idx()];
+                        sum += p.clip_of(mesh, mesh.to_vertex(h).idx());
                         n += 1.0f;
                     }
                     glm::vec3 s;
@@ -319,7 +388,7 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
 std::vector<ElementRef> elements_in_box(const Mesh& mesh, const Camera& camera,
                                         const ScreenBox& box, ElementRef::Kind kind, Reach reach) {
     const glm::vec2 lo = glm::min(box.a, box.b), hi = glm::max(box.a, box.b);
-    return elements_inside(mesh, camera, box.width, box.height, kind, reach, lo, hi,
+    return elements_inside(mesh, camera, box.width, box.height, kind, reach, lo, hi, true,
                            [&](const glm::vec2& q) {
                                return q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
                            });
@@ -350,14 +419,14 @@ std::vector<ElementRef> elements_in_lasso(const Mesh& mesh, const Camera& camera
         }
         return odd;
     };
-    return elements_inside(mesh, camera, width, height, kind, reach, lo, hi, in_outline);
+    return elements_inside(mesh, camera, width, height, kind, reach, lo, hi, false, in_outline);
 }
 
 std::vector<ElementRef> elements_in_circle(const Mesh& mesh, const Camera& camera, glm::vec2 centre,
                                            float radius, int width, int height,
                                            ElementRef::Kind kind, Reach reach) {
     const glm::vec2 r(radius, radius);
-    return elements_inside(mesh, camera, width, height, kind, reach, centre - r, centre + r,
+    return elements_inside(mesh, camera, width, height, kind, reach, centre - r, centre + r, false,
                            [&](const glm::vec2& q) {
                                const glm::vec2 d = q - centre;
                                return glm::dot(d, d) <= radius * radius;

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "meshedit/core/face_bvh.h"
 #include "meshedit/core/normals.h"
@@ -42,6 +45,51 @@ TEST(BoxSelect, ThroughTheMeshTakesEverythingInside) {
     // Corners given either way round select the same.
     const ScreenBox flipped{{100, 200}, {0, 0}, 200, 200};
     EXPECT_EQ(elements_in_box(cube, front(), flipped, ElementRef::Kind::Vertex), vertices);
+}
+
+// A box (and a lasso) decides most faces from a byte per corner (all beyond one side: out;
+// all well inside: in) and only the rest by their centre. Through the mesh that must be
+// what the rule says of every face, taken here face by face: the average of its corners in
+// clip space, divided, inside the box; visible only, the box must agree with a lasso of the
+// same rectangle (which skips the "all inside" shortcut).
+TEST(BoxSelect, CornerCodesDecideAsTheCentresDo) {
+    const Mesh torus = shapes::torus(300, 150);  // faces of a few pixels
+    Camera camera;
+    camera.azimuth_deg = 30.0f;
+    camera.elevation_deg = 25.0f;
+    camera.frame_mesh(torus, 1.6f);
+    const glm::mat4 m = camera.projection(1.6f) * camera.view();
+    std::size_t total = 0;
+    for (const auto& [a, b] : {std::pair<glm::vec2, glm::vec2>{{320, 200}, {960, 600}},
+                               {{0, 0}, {1280, 800}},
+                               {{101.3f, 57.9f}, {402.6f, 701.1f}},
+                               {{640, 400}, {641, 401}},
+                               {{-50, -50}, {20, 900}}}) {
+        std::vector<ElementRef> expected;
+        for (const Face f : torus.faces()) {
+            glm::vec4 sum(0.0f);
+            for (const Vertex v : torus.vertices(f)) {
+                const Vec3& x = torus.position(v);
+                sum += m * glm::vec4(float(x.x), float(x.y), float(x.z), 1.0f);
+            }
+            const float px = (sum.x / sum.w + 1.0f) * 0.5f * 1280.0f;
+            const float py = (1.0f - sum.y / sum.w) * 0.5f * 800.0f;
+            if (px >= a.x && px <= b.x && py >= a.y && py <= b.y) {
+                expected.push_back(ElementRef::face(f));
+            }
+        }
+        const ScreenBox box{a, b, 1280, 800};
+        const std::string where = std::to_string(a.x) + "," + std::to_string(a.y) + " to " +
+                                  std::to_string(b.x) + "," + std::to_string(b.y);
+        EXPECT_EQ(elements_in_box(torus, camera, box, ElementRef::Kind::Face), expected) << where;
+        const std::vector<glm::vec2> outline = {a, {b.x, a.y}, b, {a.x, b.y}};
+        EXPECT_EQ(elements_in_box(torus, camera, box, ElementRef::Kind::Face, Reach::Visible),
+                  elements_in_lasso(torus, camera, outline, 1280, 800, ElementRef::Kind::Face,
+                                    Reach::Visible))
+            << where;
+        total += expected.size();
+    }
+    EXPECT_GT(total, 50000u);  // the boxes hold faces: the comparison is not of empty lists
 }
 
 TEST(BoxSelect, VisibleOnlyTakesWhatTheViewShows) {
