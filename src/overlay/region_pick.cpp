@@ -138,48 +138,83 @@ unsigned in_ranges(std::size_t n, const Body& body) {
 // The faces the view shows in a window of the image (the region's bounding box): for each
 // pixel the nearest face at its centre and that face's depth plane in screen space (the
 // triangle drawn there), as a GPU's depth and ID passes would hold them.
+// What the depth pass saw of a face on its way (DepthBuffer's `look`): the sum of its corners
+// in clip space, whether every corner could be placed, and its signed area on the screen
+// (below zero: counter-clockwise with pixels running down, so it turns toward the eye, as
+// the renderer's culling decides).
+struct FaceSeen {
+    glm::vec4 clip{0.0f};
+    float corners = 0.0f;
+    bool placed = true;
+    float area = 0.0f;
+};
+
 class DepthBuffer {
 public:
-    DepthBuffer(const Mesh& mesh, const Projected& p, glm::vec2 lo, glm::vec2 hi, bool cull)
+    /// Draws every face of the window; `look(k, f, seen)` is called for each face not beyond
+    /// it and, with `cull`, not turned away (k: the thread's range), so that a caller needs no
+    /// second pass over the corners.
+    template <class Look>
+    DepthBuffer(const Mesh& mesh, const Projected& p, glm::vec2 lo, glm::vec2 hi, bool cull,
+                const Look& look)
         : x0_(std::max(0, static_cast<int>(std::floor(lo.x)))),
           y0_(std::max(0, static_cast<int>(std::floor(lo.y)))),
           x1_(std::min(static_cast<int>(p.w) - 1, static_cast<int>(std::ceil(hi.x)))),
           y1_(std::min(static_cast<int>(p.h) - 1, static_cast<int>(std::ceil(hi.y)))) {
-        if (x1_ < x0_ || y1_ < y0_) {
-            return;
-        }
-        const std::size_t size = static_cast<std::size_t>(x1_ - x0_ + 1) * (y1_ - y0_ + 1);
+        const std::size_t size =
+            x1_ < x0_ || y1_ < y0_ ? 0 : static_cast<std::size_t>(x1_ - x0_ + 1) * (y1_ - y0_ + 1);
         // Each thread draws its range of faces into its own buffer; the nearest wins.
         // Kept per calling thread between boxes (fresh pages cost as much as drawing).
         thread_local std::vector<std::vector<Pixel>> cache;
         cache.resize(std::max<std::size_t>(cache.size(), std::max(1u, thread_count())));
         std::vector<std::vector<Pixel>>& parts = cache;  // this thread's, named in the workers
-        const unsigned ran =
+        ranges_ =
             in_ranges(mesh.faces_size(), [&](std::size_t first, std::size_t last, unsigned k) {
                 std::vector<Pixel>& buffer = parts[k];
                 buffer.assign(size, Pixel{});
-                glm::vec3 corner[3];
+                std::vector<std::uint32_t> ids;
                 for (std::size_t i = first; i < last; ++i) {
                     const Face f(static_cast<std::uint32_t>(i));
-                    if (mesh.is_deleted(f) || (face_code(mesh, p, f) & kFar) != 0) {
+                    if (mesh.is_deleted(f)) {
+                        continue;
+                    }
+                    ids.clear();
+                    std::uint8_t all = 0xff;
+                    for (const Halfedge h : mesh.halfedges(f)) {
+                        ids.push_back(mesh.to_vertex(h).idx());
+                        all &= p.code[ids.back()];
+                    }
+                    if ((all & kFar) != 0) {
                         continue;  // beyond the window: no pixel of it to draw
                     }
-                    std::size_t n = 0;
-                    bool ok = true;
-                    for (const Halfedge h : mesh.halfedges(f)) {
-                        const std::uint32_t v = mesh.to_vertex(h).idx();
-                        ok = ok && p.placed[v] != 0;
-                        corner[std::min<std::size_t>(n, 2)] = p.screen[v];
-                        if (++n >= 3 && ok) {  // a fan: (first, previous, this)
-                            draw(buffer, f, corner[0], corner[1], corner[2], cull);
-                            corner[1] = corner[2];
+                    FaceSeen seen;
+                    glm::vec3 start{}, previous{};
+                    for (const std::uint32_t v : ids) {
+                        seen.placed = seen.placed && p.placed[v] != 0;
+                        const glm::vec3& q = p.screen[v];
+                        // A fan (start, previous, q); a face across the eye's plane hides
+                        // nothing we can place: not drawn from there on.
+                        if (seen.corners == 0.0f) {
+                            start = q;
+                        } else if (seen.corners >= 2.0f && seen.placed) {
+                            seen.area += (previous.x - start.x) * (q.y - start.y) -
+                                         (q.x - start.x) * (previous.y - start.y);
+                            draw(buffer, f, start, previous, q, cull);
                         }
+                        previous = q;
+                        seen.corners += 1.0f;
                     }
-                    // A face across the eye's plane hides nothing we can place: not drawn.
+                    if (cull && seen.placed && seen.area >= 0.0f) {
+                        continue;  // turned away where that hides it: nothing to look at
+                    }
+                    for (const std::uint32_t v : ids) {
+                        seen.clip += p.clip[v];
+                    }
+                    look(k, f, seen);
                 }
             });
         pixels_ = parts[0].data();
-        for (unsigned k = 1; k < ran; ++k) {
+        for (unsigned k = 1; k < ranges_; ++k) {
             for (std::size_t i = 0; i < size; ++i) {
                 if (parts[k][i].face != kEmpty &&
                     (pixels_[i].face == kEmpty ||
@@ -189,6 +224,9 @@ public:
             }
         }
     }
+
+    /// How many ranges of faces (threads) the looks came from.
+    unsigned ranges() const { return ranges_; }
 
     // Whether the view shows a point at screen position `s` (NDC depth s.z): its pixel is
     // empty, or the face nearest there is one of `own` (the point's face, a vertex's faces),
@@ -263,32 +301,9 @@ private:
     }
 
     int x0_, y0_, x1_, y1_;
+    unsigned ranges_ = 1;
     Pixel* pixels_ = nullptr;  // the first thread's buffer, the others merged into it
 };
-
-// Whether face f turns toward the eye: its screen polygon runs counter-clockwise (signed
-// area below zero, pixels running down), as the renderer's culling decides.
-bool faces_viewer(const Mesh& mesh, const Projected& p, Face f) {
-    float area = 0.0f;
-    glm::vec2 first{}, previous{};
-    int corners = 0;
-    for (const Halfedge h : mesh.halfedges(f)) {
-        const std::uint32_t v = mesh.to_vertex(h).idx();
-        if (p.placed[v] == 0) {
-            return true;  // across the eye's plane: not culled, as a partly clipped face
-        }
-        const glm::vec2 q(p.screen[v]);
-        if (corners == 0) {
-            first = q;
-        } else if (corners >= 2) {
-            area +=
-                (previous.x - first.x) * (q.y - first.y) - (q.x - first.x) * (previous.y - first.y);
-        }
-        previous = q;
-        ++corners;
-    }
-    return area < 0.0f;
-}
 
 // What a region selects: `in_region(pixel)` says whether a projected point lies inside;
 // [lo, hi] bounds the region; `box`: the region is that box (a face whose corners are all
@@ -303,8 +318,44 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
         project_all(mesh, camera, width, height, need_points, need_points || !box, lo, hi);
     const bool cull = reach == Reach::VisibleFrontOnly;
     std::optional<DepthBuffer> depth;
+    if (reach != Reach::Through && kind == ElementRef::Kind::Face) {
+        // The faces whose centre is inside and which turn toward the eye where that counts,
+        // found while the depth buffer is drawn; then those the buffer shows.
+        struct Candidate {
+            glm::vec3 s;
+            Face f;
+        };
+        // Kept per calling thread between boxes, as the other arrays (fresh pages).
+        thread_local std::vector<std::vector<Candidate>> kept;
+        kept.resize(std::max<std::size_t>(kept.size(), std::max(1u, thread_count())));
+        std::vector<std::vector<Candidate>>& candidates = kept;
+        for (std::vector<Candidate>& c : candidates) {
+            c.clear();
+        }
+        depth.emplace(mesh, p, lo, hi, cull, [&](unsigned k, Face f, const FaceSeen& seen) {
+            glm::vec3 s;
+            if (p.to_screen(seen.clip / seen.corners, s) && in_region(glm::vec2(s)) &&
+                (!cull || !seen.placed || seen.area < 0.0f)) {
+                candidates[k].push_back({s, f});
+            }
+        });
+        std::vector<ElementRef> out;
+        std::size_t most = 0;
+        for (unsigned k = 0; k < depth->ranges(); ++k) {
+            most += candidates[k].size();
+        }
+        out.reserve(most);
+        for (unsigned k = 0; k < depth->ranges(); ++k) {
+            for (const Candidate& c : candidates[k]) {
+                if (depth->shows(c.s, [&](Face g) { return g == c.f; })) {
+                    out.push_back(ElementRef::face(c.f));
+                }
+            }
+        }
+        return out;
+    }
     if (reach != Reach::Through) {
-        depth.emplace(mesh, p, lo, hi, cull);
+        depth.emplace(mesh, p, lo, hi, cull, [](unsigned, Face, const FaceSeen&) {});
     }
     std::vector<ElementRef> out;
     if (kind == ElementRef::Kind::Face) {
@@ -321,7 +372,7 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
                     if ((code & kFar) != 0) {
                         continue;  // every corner beyond one side: so is the centre
                     }
-                    if (box && !depth && (code >> 8 & kNotInside) == 0) {
+                    if (box && (code >> 8 & kNotInside) == 0) {
                         parts[k].push_back(ElementRef::face(f));  // every corner inside
                         continue;
                     }
@@ -332,9 +383,7 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
                         n += 1.0f;
                     }
                     glm::vec3 s;
-                    if (p.to_screen(sum / n, s) && in_region(glm::vec2(s)) &&
-                        (!cull || faces_viewer(mesh, p, f)) &&
-                        (!depth || depth->shows(s, [f](Face g) { return g == f; }))) {
+                    if (p.to_screen(sum / n, s) && in_region(glm::vec2(s))) {
                         parts[k].push_back(ElementRef::face(f));
                     }
                 }
