@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "local_ops/collapse_guard.h"
@@ -39,6 +40,7 @@
 #include "meshedit/core/normals.h"
 #include "meshedit/core/number_text.h"
 #include "meshedit/core/validate.h"
+#include "remesh_attributes.h"
 
 namespace meshedit {
 namespace {
@@ -47,6 +49,10 @@ namespace {
 constexpr double kCosLimit = 0.5;
 // The scratch face property of a region remesh (removed before it returns).
 constexpr const char* kRegionProperty = "f:remesh_region";
+// The scratch edge property marking the attributes' seams, carried as a crease is (removed
+// before it returns): a flag read at every feature test, where comparing corners cost a
+// quarter of the remesh.
+constexpr const char* kSeamProperty = "e:remesh_seam";
 // More than this many passes of splits means the target is absurd for the mesh (each pass
 // halves every long edge): check_remesh() refuses such targets first.
 constexpr int kMaxSplitPasses = 40;
@@ -97,11 +103,20 @@ double estimated_triangles(const Mesh& mesh, int exponent, double length) {
 
 class Remesher {
 public:
-    Remesher(Mesh& mesh, const RemeshOptions& options)
+    /// `source`: the input as it is now, unscaled, for its attributes (null: none to project).
+    Remesher(Mesh& mesh, const RemeshOptions& options, const Mesh* source)
         : mesh_(mesh),
           options_(options),
           input_(mesh),
-          crease_(mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
+          crease_(mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)),
+          source_(source) {
+        if (const remeshing::AttributeSeams seams(mesh); seams.any()) {
+            seam_ = mesh.add_property<Edge, std::uint8_t>(kSeamProperty, 0);
+            mesh.set_carry<Edge>(kSeamProperty, Carry::Any);
+            for (const Edge e : mesh.edges()) {
+                seam_[e] = seams.is_seam(e) ? 1 : 0;
+            }
+        }
         if (!options.faces.empty()) {
             // Carried by every split (a face cut copies its value), so what the region's
             // faces become stays in it.
@@ -134,8 +149,16 @@ public:
             smooth_and_project();
             report();
         }
+        if (source_ != nullptr) {
+            remeshing::project_attributes(
+                mesh_, *source_, input_, [this](Face f) { return in_region(f); },
+                [this](Vertex v) { return !frozen(v); }, hint_);
+        }
         if (region_) {
             mesh_.remove_property(region_);
+        }
+        if (seam_) {
+            mesh_.remove_property(seam_);
         }
         mesh_.garbage_collection();
         return report_;
@@ -159,7 +182,11 @@ private:
         }
         return false;
     }
-    bool is_feature(Edge e) const { return mesh_.is_boundary(e) || (crease_ && crease_[e] != 0); }
+    // Boundaries, creases and the attributes' seams (texture coordinates, split normals,
+    // materials): a face never spans two charts, so its corners can be projected from one.
+    bool is_feature(Edge e) const {
+        return mesh_.is_boundary(e) || (crease_ && crease_[e] != 0) || (seam_ && seam_[e] != 0);
+    }
     int features_at(Vertex v) const {
         int n = 0;
         for (Edge e : mesh_.edges(v)) {
@@ -348,6 +375,8 @@ private:
     const RemeshOptions& options_;
     const TriangleTree input_;
     EdgeProperty<std::uint8_t> crease_;
+    EdgeProperty<std::uint8_t> seam_;  // null: no attribute with seams
+    const Mesh* source_;
     FaceProperty<std::uint8_t> region_;  // null: the whole mesh
     double high_ = 0.0, low_ = 0.0;
     std::vector<Vec3> normals_, moved_;
@@ -416,13 +445,20 @@ RemeshReport remesh(Mesh& mesh, const RemeshOptions& options) {
     // On a copy: a remesh stopped by the growth guard leaves the input as it was.
     Mesh work = mesh;
     RemeshOptions region = options;  // the region's faces as the compacted copy numbers them
+    std::optional<Mesh> compacted;   // the input without garbage, for its attributes
     if (work.has_garbage()) {
         GarbageCollectionMap map;
         work.garbage_collection(&map);
         for (Face& f : region.faces) {
             f = map.faces[f.idx()];
         }
+        if (remeshing::has_projected_attributes(work)) {
+            compacted = work;
+        }
     }
+    const Mesh* source = compacted                                   ? &*compacted
+                         : remeshing::has_projected_attributes(mesh) ? &mesh
+                                                                     : nullptr;
     RemeshReport report;
     // Sharp edges found become creases, which the remesher keeps as features.
     const std::size_t marked = options.feature_angle_deg == kNoFeatureAngle
@@ -433,7 +469,7 @@ RemeshReport remesh(Mesh& mesh, const RemeshOptions& options) {
         const UnitScale unit(work);
         RemeshOptions scaled = region;
         scaled.target_length = unit.scaled(options.target_length);
-        report = Remesher(work, scaled).run();
+        report = Remesher(work, scaled, source).run();
         report.target_length = unit.unscaled(report.target_length);
     }
     report.creases_marked = marked;

@@ -189,6 +189,11 @@ const std::vector<GoldenCase>& golden_cases() {
         {"textured_duck_simplify10",
          "assimp:Collada/duck.dae",
          {"--ops", "triangulate,simplify:0.1", "--camera", "60,15"}},
+        // Remeshed (docs/remesh.md): the seams stay as features and every corner is taken
+        // from the input on its own side of them, so the checker's charts come through.
+        {"textured_duck_remesh_checker",
+         "assimp:Collada/duck.dae",
+         {"--ops", "triangulate,remesh", "--color", "checker", "--camera", "60,15"}},
         // The checker shows the charts: eye, beak and wings each their own, head and body
         // squeezed into one cell of the yellow (seams orange).
         {"textured_duck_checker",
