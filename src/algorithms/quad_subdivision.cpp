@@ -325,7 +325,8 @@ SubdivisionPlan plan_quad_subdivision(const Mesh& mesh, int levels) {
 }
 
 namespace {
-void quad_subdivide_arrays(Mesh& mesh, const QuadSubdivisionOptions& options);
+void quad_subdivide_arrays(Mesh& mesh, const QuadSubdivisionOptions& options,
+                           refine::ChannelGroups* groups = nullptr);
 }  // namespace
 
 void quad_subdivide(Mesh& mesh, const QuadSubdivisionOptions& options) {
@@ -336,19 +337,20 @@ void quad_subdivide(Mesh& mesh, const QuadSubdivisionOptions& options) {
         quad_subdivide_arrays(mesh, options);
         return;
     }
-    QuadSubdivisionOptions quiet = options;
-    quiet.progress = nullptr;
     const refine::FaceVaryingRules rules{options.scheme == QuadScheme::Linear
                                              ? refine::Scheme::Linear
                                              : refine::Scheme::CatmullClark,
                                          LoopWeights::Warren, options.uv};
-    refine::refine_carrying(
-        mesh, rules, [&](Mesh& m) { quad_subdivide_arrays(m, &m == &mesh ? options : quiet); });
+    refine::refine_carrying(mesh, rules, [&](Mesh& m, refine::ChannelGroups& groups) {
+        quad_subdivide_arrays(m, options, &groups);
+    });
 }
 
 namespace {
-// One level on a collected mesh, array by array.
-void quad_subdivide_arrays(Mesh& mesh, const QuadSubdivisionOptions& options) {
+// One level on a collected mesh, array by array; `groups`, if any, refined by the positions'
+// rules beside them.
+void quad_subdivide_arrays(Mesh& mesh, const QuadSubdivisionOptions& options,
+                           refine::ChannelGroups* groups) {
     Progress progress(options.progress);
     progress(0.0);
     const std::size_t nv = mesh.vertices_size();
@@ -373,6 +375,13 @@ void quad_subdivide_arrays(Mesh& mesh, const QuadSubdivisionOptions& options) {
                                   [&](memory::Array<Vec3>& out, const memory::Array<Vec3>& p) {
                                       refinement.positions(out, p, options.scheme);
                                   });
+        if (groups != nullptr) {
+            groups->out.resize(groups->in.size());
+            for (std::size_t i = 0; i < groups->in.size(); ++i) {
+                groups->out[i].resize_for_overwrite(nv + ne + nf);
+                refinement.positions(groups->out[i], groups->in[i], options.scheme);
+            }
+        }
         refinement.connectivity();
 
         const std::size_t new_ne = 2 * ne + corners;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <string_view>
 #include <typeinfo>
 #include <utility>
@@ -42,31 +43,30 @@ void reset(BasePropertyArray& a, std::size_t n) {
     a.resize(n);
 }
 
-// A blending vertex attribute through the refinement itself: three channels per run.
-void refine_channels(const Mesh& base, const BasePropertyArray& old, BasePropertyArray& out,
-                     const std::function<void(Mesh&)>& refine) {
+// The groups of three channels of a blending vertex attribute (the last padded with 0).
+void add_groups(const BasePropertyArray& old, std::size_t nv, ChannelGroups& groups) {
     std::vector<double> values;
     for (std::size_t c = 0; c < old.channels(); c += 3) {
-        Mesh m = base;
-        auto& p = m.position_vector();
-        for (std::size_t j = 0; j < 3; ++j) {
-            if (c + j < old.channels()) {
-                old.get_channel(c + j, values);
-                for (std::size_t v = 0; v < p.size(); ++v) {
-                    p[v][static_cast<int>(j)] = values[v];
-                }
-            } else {
-                for (Vec3& x : p) {
-                    x[static_cast<int>(j)] = 0.0;
-                }
+        memory::Array<Vec3>& in = groups.in.emplace_back();
+        in.assign(nv, Vec3{});
+        for (std::size_t j = 0; j < 3 && c + j < old.channels(); ++j) {
+            old.get_channel(c + j, values);
+            for (std::size_t v = 0; v < nv; ++v) {
+                in[v][static_cast<int>(j)] = values[v];
             }
         }
-        refine(m);
-        const auto& q = m.position_vector();
-        for (std::size_t j = 0; j < 3 && c + j < old.channels(); ++j) {
-            values.resize(q.size());
-            for (std::size_t v = 0; v < q.size(); ++v) {
-                values[v] = q[v][static_cast<int>(j)];
+    }
+}
+
+// Writes the refined groups from `first` on into `out`'s channels.
+void take_groups(const ChannelGroups& groups, std::size_t first, BasePropertyArray& out) {
+    std::vector<double> values;
+    for (std::size_t c = 0, g = first; c < out.channels(); c += 3, ++g) {
+        const memory::Array<Vec3>& refined = groups.out[g];
+        for (std::size_t j = 0; j < 3 && c + j < out.channels(); ++j) {
+            values.resize(refined.size());
+            for (std::size_t v = 0; v < refined.size(); ++v) {
+                values[v] = refined[v][static_cast<int>(j)];
             }
             out.set_channel(c + j, values);
         }
@@ -74,7 +74,7 @@ void refine_channels(const Mesh& base, const BasePropertyArray& old, BasePropert
 }
 
 // The old face's halfedge arriving at `v`, or invalid.
-Halfedge corner_at(const std::vector<Halfedge>& corners, const Mesh& base, Vertex v) {
+Halfedge corner_at(std::span<const Halfedge> corners, const Mesh& base, Vertex v) {
     for (const Halfedge h : corners) {
         if (base.to_vertex(h) == v) {
             return h;
@@ -120,7 +120,7 @@ bool has_attributes(const Mesh& mesh) {
 }
 
 void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
-                     const std::function<void(Mesh&)>& refine) {
+                     const std::function<void(Mesh&, ChannelGroups&)>& refine) {
     const Layout layout = rules.scheme == Scheme::Loop ? Layout::Loop : Layout::Quad;
     // The arrays stay the same objects (a user's Property handles stay valid): the old
     // values are copied aside, the refinement sizes the arrays, then they are derived.
@@ -140,18 +140,39 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
     }
     const std::size_t nv = base.vertices_size();
     const std::size_t ne = base.edges_size();
-    refine(mesh);
+    // The blending vertex attributes go through the refinement with the positions.
+    ChannelGroups groups;
+    std::vector<std::size_t> first_group(old[0].size(), 0);
+    for (std::size_t i = 0; i < old[0].size(); ++i) {
+        if (old[0][i]->carry() == Carry::Blend && old[0][i]->channels() > 0) {
+            first_group[i] = groups.in.size();
+            add_groups(*old[0][i], nv, groups);
+        }
+    }
+    refine(mesh, groups);
+    groups.in.clear();
 
     // Parents of the new faces, and the old faces' corners.
     std::vector<std::uint32_t> parent(mesh.faces_size());
-    std::vector<std::vector<Halfedge>> corners(base.faces_size());
-    for (const Face f : base.faces()) {
-        for (const Halfedge h : base.halfedges(f)) {
-            corners[f.idx()].push_back(h);
+    // Face f's corners are corner_list[corner_start[f] .. corner_start[f + 1]).
+    std::vector<std::uint32_t> corner_start(base.faces_size() + 1, 0);
+    std::vector<Halfedge> corner_list;
+    corner_list.reserve(base.halfedges_size());
+    for (std::uint32_t f = 0; f < base.faces_size(); ++f) {
+        corner_start[f] = static_cast<std::uint32_t>(corner_list.size());
+        if (!base.is_deleted(Face(f))) {
+            for (const Halfedge h : base.halfedges(Face(f))) {
+                corner_list.push_back(h);
+            }
         }
     }
+    corner_start[base.faces_size()] = static_cast<std::uint32_t>(corner_list.size());
+    const auto corners_of = [&](std::uint32_t f) {
+        return std::span<const Halfedge>(corner_list.data() + corner_start[f],
+                                         corner_start[f + 1] - corner_start[f]);
+    };
     for (std::uint32_t f = 0, c = 0; f < base.faces_size(); ++f) {
-        const std::size_t parts = layout == Layout::Loop ? 4 : corners[f].size();
+        const std::size_t parts = layout == Layout::Loop ? 4 : corners_of(f).size();
         for (std::size_t i = 0; i < parts && c < parent.size(); ++i) {
             parent[c++] = f;
         }
@@ -161,9 +182,10 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
     const auto all_corners = [&](auto pick, std::uint32_t f) {
         from.clear();
         weight.clear();
-        for (const Halfedge h : corners[f]) {
+        const std::span<const Halfedge> around = corners_of(f);
+        for (const Halfedge h : around) {
             from.push_back(pick(h));
-            weight.push_back(1.0 / static_cast<double>(corners[f].size()));
+            weight.push_back(1.0 / static_cast<double>(around.size()));
         }
     };
 
@@ -171,7 +193,7 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
         const BasePropertyArray* a = old[0][i].get();
         BasePropertyArray* out = now[0][i];  // old vertices keep their values
         if (a->carry() == Carry::Blend && a->channels() > 0) {
-            refine_channels(base, *a, *out, refine);
+            take_groups(groups, first_group[i], *out);
         } else {
             for (std::uint32_t e = 0; e < ne; ++e) {
                 const std::uint32_t ends[2] = {base.vertex(Edge(e), 0).idx(),
@@ -220,8 +242,10 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
                     const bool old_vertex = head < nv;
                     const Edge e(old_vertex ? 0 : head - static_cast<std::uint32_t>(nv));
                     const Halfedge ends[2] = {
-                        corner_at(corners[p], base, old_vertex ? Vertex(head) : base.vertex(e, 0)),
-                        corner_at(corners[p], base, old_vertex ? Vertex(head) : base.vertex(e, 1))};
+                        corner_at(corners_of(p), base,
+                                  old_vertex ? Vertex(head) : base.vertex(e, 0)),
+                        corner_at(corners_of(p), base,
+                                  old_vertex ? Vertex(head) : base.vertex(e, 1))};
                     if (ends[0].is_valid() && ends[1].is_valid()) {
                         const std::uint32_t src[2] = {ends[0].idx(), ends[1].idx()};
                         const double half[2] = {0.5, 0.5};

@@ -359,7 +359,8 @@ SubdivisionPlan plan_loop(const Mesh& mesh, int levels) {
 }
 
 namespace {
-void loop_subdivide_arrays(Mesh& mesh, const LoopOptions& options);
+void loop_subdivide_arrays(Mesh& mesh, const LoopOptions& options,
+                           refine::ChannelGroups* groups = nullptr);
 
 constexpr std::pair<UvInterpolation, std::string_view> kUvNames[] = {
     {UvInterpolation::None, "none"},
@@ -403,17 +404,17 @@ LoopReport loop_subdivide(Mesh& mesh, const LoopOptions& options) {
         loop_subdivide_arrays(mesh, options);
         return report;
     }
-    LoopOptions quiet = options;
-    quiet.progress = nullptr;
     const refine::FaceVaryingRules rules{refine::Scheme::Loop, options.weights, options.uv};
-    refine::refine_carrying(
-        mesh, rules, [&](Mesh& m) { loop_subdivide_arrays(m, &m == &mesh ? options : quiet); });
+    refine::refine_carrying(mesh, rules, [&](Mesh& m, refine::ChannelGroups& groups) {
+        loop_subdivide_arrays(m, options, &groups);
+    });
     return report;
 }
 
 namespace {
-// One level on a prepared mesh (loop_rules::prepare()), array by array.
-void loop_subdivide_arrays(Mesh& mesh, const LoopOptions& options) {
+// One level on a prepared mesh (loop_rules::prepare()), array by array; `groups`, if any,
+// refined by the positions' rules beside them.
+void loop_subdivide_arrays(Mesh& mesh, const LoopOptions& options, refine::ChannelGroups* groups) {
     Progress progress(options.progress);
     progress(0.0);
 
@@ -441,6 +442,14 @@ void loop_subdivide_arrays(Mesh& mesh, const LoopOptions& options) {
             mesh, new_nv, [&](memory::Array<Vec3>& out, const memory::Array<Vec3>& p) {
                 loop_positions(out, old, p, options.weights, threads, progress);
             });
+        if (groups != nullptr) {
+            groups->out.resize(groups->in.size());
+            for (std::size_t i = 0; i < groups->in.size(); ++i) {
+                groups->out[i].resize_for_overwrite(new_nv);
+                loop_positions(groups->out[i], old, groups->in[i], options.weights, threads,
+                               progress);
+            }
+        }
         LoopConnectivity(mesh, old, nv, threads, progress).run();
 
         // Both children of a crease edge stay creases; inner edges are not creases.
