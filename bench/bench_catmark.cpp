@@ -4,9 +4,10 @@
 //     bench_catmark --job cc_1m_1level --impl cgal [--runs 5]
 //     bench_catmark --list        (prints every "job impl" pair, one a line)
 //
-// Jobs: cc_1m_1level (a closed torus of 1000 × 1000 quads, 1M faces → 4M), cc_100k_levels_K
-// (K = 1..3: a closed torus of 330 × 275 quads with one quad in ten cut into two triangles,
-// 99,825 mixed faces; cumulative time from the input). Impls: meshedit, openmesh, cgal,
+// Jobs: cc_1m_1level (a closed torus of 1000 × 1000 quads, 1M faces → 4M), cc_1m_attrs_1level
+// (MeshEdit only: the same torus with texture coordinates and colours, the cost of carrying),
+// cc_100k_levels_K (K = 1..3: a closed torus of 330 × 275 quads with one quad in ten cut into two
+// triangles, 99,825 mixed faces; cumulative time from the input). Impls: meshedit, openmesh, cgal,
 // opensubdiv_min, opensubdiv_full.
 //
 // Every implementation is built from the same positions and polygons (bench_shapes.h). The
@@ -46,6 +47,7 @@
 #include "bench_util.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/quad_subdivision.h"
+#include "support/textured_torus.h"
 
 namespace {
 
@@ -60,10 +62,12 @@ struct Job {
     int m, n;
     bool mixed;
     int levels;
+    bool attributes = false;  // MeshEdit only: texture coordinates and colours carried
 };
 
 std::vector<Job> all_jobs() {
-    std::vector<Job> jobs{{"cc_1m_1level", 1000, 1000, false, 1}};
+    std::vector<Job> jobs{{"cc_1m_1level", 1000, 1000, false, 1},
+                          {"cc_1m_attrs_1level", 1000, 1000, false, 1, true}};
     for (int k = 1; k <= 3; ++k) {
         jobs.push_back({"cc_100k_levels_" + std::to_string(k), 330, 275, true, k});
     }
@@ -81,8 +85,15 @@ void for_each_polygon(const PolygonSoup& soup, const Fn& fn) {
 using mb::Outcome;
 using Setup = mb::BeforeCopy;
 
-Outcome run_meshedit(const PolygonSoup& soup, int levels, int runs, const Setup& before_copy) {
-    const meshedit::Mesh input = meshedit::build_mesh(soup);
+Outcome run_meshedit(const PolygonSoup& soup, int levels, int runs, const Setup& before_copy,
+                     bool attributes) {
+    meshedit::Mesh input = meshedit::build_mesh(soup);
+    if (attributes) {
+        // Texture coordinates (two seam loops) and RGBA colours: the cost of carrying them
+        // against cc_1m_1level.
+        meshedit::test::add_angle_uvs(input);
+        meshedit::test::add_colors(input);
+    }
     meshedit::Mesh mesh;
     Outcome out;
     out.ms = mb::time_runs(
@@ -199,6 +210,12 @@ int main(int argc, char** argv) {
         }
     }
     const std::string& impl = args.impl;
+    if (job->attributes && impl != "meshedit") {
+        std::printf("NOTE %s %s: MeshEdit only (the anchors carry no attributes here)\n",
+                    job->name.c_str(), impl.c_str());
+        mb::print_result(job->name, impl, {0.0}, {{"skipped", 1}});
+        return 0;
+    }
     const PolygonSoup soup = mb::quad_torus_soup(job->m, job->n, job->mixed);
     // The first level makes one quad per face corner, every later one four per quad.
     double faces_expected = static_cast<double>(soup.indices.size());
@@ -210,7 +227,7 @@ int main(int argc, char** argv) {
         job->name, impl, levels, static_cast<double>(soup.n_faces()), faces_expected,
         [&](const Setup& before_copy) {
             if (impl == "meshedit") {
-                return run_meshedit(soup, levels, args.runs, before_copy);
+                return run_meshedit(soup, levels, args.runs, before_copy, job->attributes);
             }
             if (impl == "openmesh") {
                 return run_openmesh(soup, levels, args.runs, before_copy);

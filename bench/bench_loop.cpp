@@ -5,10 +5,11 @@
 //     bench_loop --job loop_1m_1level --impl cgal --runs 5 [--data DIR]
 //     bench_loop --list        (prints every "job impl" pair, one a line)
 //
-// Jobs: loop_1m_1level (torus(1000, 500), 1M faces, one level), loop_100k_levels_K (torus(250,
-// 200), 100k faces, K = 1..4 levels, cumulative time from the input), loop_real_NAME_levels_K
-// (NAME = bunny, armadillo from CGAL's demo data, K = 1..3). Impls: meshedit, openmesh, cgal,
-// opensubdiv_min, opensubdiv_full.
+// Jobs: loop_1m_1level (torus(1000, 500), 1M faces, one level), loop_1m_attrs_1level (MeshEdit
+// only: the same torus with texture coordinates and colours, the cost of carrying them),
+// loop_100k_levels_K (torus(250, 200), 100k faces, K = 1..4 levels, cumulative time from the
+// input), loop_real_NAME_levels_K (NAME = bunny, armadillo from CGAL's demo data, K = 1..3). Impls:
+// meshedit, openmesh, cgal, opensubdiv_min, opensubdiv_full.
 //
 // Inputs: every implementation is built from the same position and triangle arrays (a
 // MeshEdit-built soup: the torus from shapes::torus, the real meshes read from .off and passed
@@ -73,6 +74,7 @@
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
+#include "support/textured_torus.h"
 
 namespace {
 
@@ -119,10 +121,12 @@ struct Job {
     std::string name;
     std::string input;  // "torus_1m", "torus_100k", or a real mesh name
     int levels = 1;
+    bool attributes = false;  // MeshEdit only: the torus with texture coordinates and colours
 };
 
 std::vector<Job> all_jobs() {
-    std::vector<Job> jobs{{"loop_1m_1level", "torus_1m", 1}};
+    std::vector<Job> jobs{{"loop_1m_1level", "torus_1m", 1},
+                          {"loop_1m_attrs_1level", "torus_1m", 1, true}};
     for (int k = 1; k <= 4; ++k) {
         jobs.push_back({"loop_100k_levels_" + std::to_string(k), "torus_100k", k});
     }
@@ -159,8 +163,14 @@ Input load_input(const Job& job, const fs::path& data_dir) {
 using meshedit::bench::Outcome;
 
 Outcome run_meshedit(const Input& in, int levels, int runs,
-                     const std::function<void()>& before_copy) {
-    const meshedit::Mesh input = meshedit::bench::mesh_of(in);
+                     const std::function<void()>& before_copy, bool attributes) {
+    meshedit::Mesh input = meshedit::bench::mesh_of(in);
+    if (attributes) {
+        // The same torus, numbered alike, carrying texture coordinates (two seam loops) and
+        // RGBA colours: the cost of carrying them against loop_1m_1level.
+        input = meshedit::test::uv_torus(1000, 500);
+        meshedit::test::add_colors(input);
+    }
     meshedit::Mesh mesh;
     Outcome out;
     out.ms = time_runs(
@@ -298,6 +308,12 @@ int main(int argc, char** argv) {
         print_result(job_name, impl, {0.0}, {{"skipped", 1}});
         return 1;
     }
+    if (job->attributes && impl != "meshedit") {
+        std::printf("NOTE %s %s: MeshEdit only (the anchors carry no attributes here)\n",
+                    job_name.c_str(), impl.c_str());
+        print_result(job_name, impl, {0.0}, {{"skipped", 1}});
+        return 0;
+    }
     const double faces_in = static_cast<double>(input.triangles.size());
     double faces_expected = faces_in;
     for (int k = 0; k < job->levels; ++k) {
@@ -308,7 +324,7 @@ int main(int argc, char** argv) {
         job->name, impl, levels, faces_in, faces_expected,
         [&](const std::function<void()>& before_copy) {
             if (impl == "meshedit") {
-                return run_meshedit(input, levels, runs, before_copy);
+                return run_meshedit(input, levels, runs, before_copy, job->attributes);
             }
             if (impl == "openmesh") {
                 return run_openmesh(input, levels, runs, before_copy);

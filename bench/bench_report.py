@@ -25,6 +25,12 @@ JOB_TITLES = {
     "halfedge build), numpy alone (the body as structured arrays, no mesh), Open3D",
     "loop_1m_1level": "Loop subdivision, 1 level, 1M-face torus (→ 4M faces)",
     "cc_1m_1level": "Catmull-Clark, 1 level, a closed torus of 1M quads (→ 4M quads)",
+    "loop_1m_attrs_1level": "Loop, 1 level, the same 1M-face torus carrying texture coordinates "
+    "(two seam loops, face-varying, OpenSubdiv's default keep-corners rule) and RGBA colours: "
+    "the cost of the attributes against `loop_1m_1level` (target ≤ 1.5×); MeshEdit only",
+    "cc_1m_attrs_1level": "Catmull-Clark, 1 level, the same 1M-quad torus carrying texture "
+    "coordinates and RGBA colours: the cost against `cc_1m_1level` (target ≤ 1.5×); MeshEdit "
+    "only",
     **{f"cc_100k_levels_{k}": f"Catmull-Clark, {k} level(s), a closed torus of 99,825 faces "
        "(one quad in ten cut into two triangles)" for k in range(1, 4)},
     "qem_torus_1m_to_100k": "QEM simplification of the 1M-triangle torus to 100,000 faces; "

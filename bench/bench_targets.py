@@ -73,6 +73,33 @@ def qem_target_rows(jobs):
     return rows
 
 
+def carry_target_rows(jobs):
+    """Issue 32: carrying texture coordinates and colours costs at most 1.5× the
+    attribute-free time of the same operation on the same mesh (MeshEdit against itself)."""
+    rows = []
+    for label, plain, carried in (
+            ("QEM 1M → 100k carrying UVs and colours", "qem_torus_1m_to_100k",
+             "qem_torus_attrs_1m_to_100k"),
+            ("Loop 1 level of 1M carrying UVs and colours", "loop_1m_1level",
+             "loop_1m_attrs_1level"),
+            ("Catmull-Clark 1 level of 1M carrying UVs and colours", "cc_1m_1level",
+             "cc_1m_attrs_1level")):
+        for suffix in ("", "_warm"):
+            if plain + suffix not in jobs and carried + suffix not in jobs:
+                continue
+            a = ok_results(jobs.get(plain + suffix, [])).get("meshedit", {})
+            b = ok_results(jobs.get(carried + suffix, [])).get("meshedit", {})
+            name = label + (" (warm)" if suffix else "")
+            if a.get("median_ms", 0) <= 0 or "median_ms" not in b:
+                rows.append((name, "≤ 1.5 × without", "not measured", "n/a"))
+                continue
+            r = b["median_ms"] / a["median_ms"]
+            rows.append((name, "≤ 1.5 × without",
+                         f"{r:.2f}× ({b['median_ms']:.0f} vs {a['median_ms']:.0f} ms)",
+                         "yes" if r <= 1.5 else "no"))
+    return rows
+
+
 def remesh_target_rows(jobs):
     """Issue 17's remeshing target: ≥ 3× faster than CGAL with min angle, edge-length spread
     and Hausdorff distance no worse."""
@@ -263,6 +290,7 @@ def targets_table(jobs):
     rows += subdivision_target_rows(jobs, "Catmull-Clark", "cc_1m_1level", "cc_100k_levels_{}",
                                     range(1, 4), "1M quads → 4M", "100k mixed faces")
     rows += qem_target_rows(jobs)
+    rows += carry_target_rows(jobs)
     rows += remesh_target_rows(jobs)
     rows += smooth_target_rows(jobs)
     rows += fill_target_rows(jobs)

@@ -47,7 +47,7 @@ DEFAULT_CONFIGS = {
         + [f"loop_100k_levels_{k}" for k in range(1, 5)]
         + [f"loop_real_{name}_levels_{k}" for name in ("bunny00", "armadillo") for k in range(1, 4)]
         for impl in ("meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full")
-    ],
+    ] + [("loop_1m_attrs_1level", "meshedit")],
     "bench_ops": [
         (job, impl)
         for job in ("flips_1e6", "splits_1e6", "normals_6p4m")
@@ -91,7 +91,7 @@ DEFAULT_CONFIGS = {
         (job, impl)
         for job in ["cc_1m_1level"] + [f"cc_100k_levels_{k}" for k in range(1, 4)]
         for impl in ("meshedit", "openmesh", "cgal", "opensubdiv_min", "opensubdiv_full")
-    ],
+    ] + [("cc_1m_attrs_1level", "meshedit")],
 }
 PROGRAMS = ["bench_bandwidth", "bench_loop", "bench_catmark", "bench_simplify", "bench_remesh",
             "bench_smooth", "bench_fill", "bench_ops", "bench_io_draw", "bench_build", "bench_local_ops", "bench_editor",
@@ -100,8 +100,9 @@ PROGRAMS = ["bench_bandwidth", "bench_loop", "bench_catmark", "bench_simplify", 
 # implementation reusing its memory across repetitions, so algorithm cost shows apart from
 # page-fault cost. Reported under the job's name + "_warm"; the targets are checked on both.
 WARM = "+warm"
-WARM_JOBS = (["loop_1m_1level"] + [f"loop_100k_levels_{k}" for k in range(1, 5)] +
-             ["cc_1m_1level"] + [f"cc_100k_levels_{k}" for k in range(1, 4)] +
+WARM_JOBS = (["loop_1m_1level", "loop_1m_attrs_1level"] +
+             [f"loop_100k_levels_{k}" for k in range(1, 5)] +
+             ["cc_1m_1level", "cc_1m_attrs_1level"] + [f"cc_100k_levels_{k}" for k in range(1, 4)] +
              ["flips_1e6", "splits_1e6", "normals_6p4m", "editor_loop_1m"])
 
 # Untimed preparation (input generation) run once before a program's configurations.

@@ -6,28 +6,30 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/shapes.h"
 
 namespace meshedit::test {
 
-// A torus whose UV is (angle around the axis, angle around the tube) / 2π: one chart cut
-// open along two loops (seams where the angles wrap), the UV an affine function of the angles.
-inline Mesh uv_torus(int m, int n) {
-    Mesh mesh = shapes::torus(m, n);
+// Texture coordinates (angle around the axis, angle around the tube) / 2π on a torus of major
+// radius 1 about the z axis (any faces): one chart cut open along two loops (seams where the
+// angles wrap), the UV an affine function of the angles.
+inline void add_angle_uvs(Mesh& mesh) {
     auto uv = mesh.add_property<Halfedge, Vec2>(kTexCoordProperty);
+    std::vector<Vec2> corner;
+    std::vector<Halfedge> hs;
     for (Face f : mesh.faces()) {
-        Vec2 corner[3];
-        Halfedge hs[3];
-        int i = 0;
+        corner.clear();
+        hs.clear();
         for (Halfedge h : mesh.halfedges(f)) {
             const Vec3& p = mesh.position(mesh.to_vertex(h));
             const double rho = std::hypot(p.x, p.y);
             const double u = std::atan2(p.y, p.x) / (2 * std::numbers::pi);
             const double v = std::atan2(p.z, rho - 1.0) / (2 * std::numbers::pi);
-            corner[i] = {u < -1e-9 ? u + 1.0 : u, v < -1e-9 ? v + 1.0 : v};
-            hs[i++] = h;
+            corner.push_back({u < -1e-9 ? u + 1.0 : u, v < -1e-9 ? v + 1.0 : v});
+            hs.push_back(h);
         }
         // A face across the wrap takes the far side's values on its near corners.
         for (const bool along_u : {true, false}) {
@@ -43,10 +45,16 @@ inline Mesh uv_torus(int m, int n) {
                 }
             }
         }
-        for (int k = 0; k < 3; ++k) {
+        for (std::size_t k = 0; k < hs.size(); ++k) {
             uv[hs[k]] = corner[k];
         }
     }
+}
+
+// shapes::torus(m, n) with add_angle_uvs().
+inline Mesh uv_torus(int m, int n) {
+    Mesh mesh = shapes::torus(m, n);
+    add_angle_uvs(mesh);
     return mesh;
 }
 
