@@ -32,11 +32,11 @@
 #include "meshedit/overlay/overlay.h"
 #include "meshedit/overlay/shading.h"
 #include "meshedit/render/environment.h"
-#include "meshedit/repair/problems.h"
 #include "meshedit/render/labels.h"
 #include "meshedit/render/render_target.h"
 #include "meshedit/render/scene.h"
 #include "meshedit/render/shader_program.h"
+#include "meshedit/repair/problems.h"
 #include "options.h"
 
 namespace {
@@ -60,7 +60,10 @@ double median(std::vector<double> v) {
 
 // Runs --ops on `mesh`; with --op-diagram, the last step separately, returning what it
 // rewired (the changes listed under the picture).
-std::optional<OpDiagram> run_ops(Mesh& mesh, const Options& options, ElementRef& result) {
+// Runs --ops; `result` is what the last step selected, `carried` the selection the list
+// carries at its end (the select verbs'), as elements of the mesh.
+std::optional<OpDiagram> run_ops(Mesh& mesh, const Options& options, ElementRef& result,
+                                 std::vector<ElementRef>& carried) {
     if (options.op_diagram && (!options.select.empty() || options.stencil)) {
         throw UsageError("--op-diagram draws no mesh: --select and --stencil do not apply");
     }
@@ -77,7 +80,11 @@ std::optional<OpDiagram> run_ops(Mesh& mesh, const Options& options, ElementRef&
         }
     }
     if (!options.op_diagram) {
-        result = ops::apply_steps(mesh, steps);
+        const ops::StepsRun run = ops::run_steps(mesh, steps, ops::OnRefusal::Stop);
+        result = run.last;
+        for (const std::uint32_t i : run.selection.indices) {
+            carried.push_back({run.selection.kind, i});
+        }
         return std::nullopt;
     }
     if (steps.empty() || !ops::draws_diagram(steps.back())) {
@@ -141,6 +148,7 @@ int run(const Options& options) {
     SceneContent scene;
     std::optional<ProblemReport> problems;
     std::optional<OpDiagram> diagram;
+    std::vector<ElementRef> carried;  // --select sel: the selection --ops ends with
     if (is_curve) {
         if (!options.select.empty() || !options.ops.empty()) {
             throw UsageError("--select and --ops need a mesh or .bez file, not a curve");
@@ -157,7 +165,7 @@ int run(const Options& options) {
         lap("load");
         ElementRef result;
         if (!options.ops.empty()) {
-            diagram = run_ops(mesh, options, result);
+            diagram = run_ops(mesh, options, result, carried);
             lap("ops");
         } else if (options.op_diagram) {
             throw UsageError("--op-diagram draws the last step of --ops: give --ops");
@@ -187,6 +195,15 @@ int run(const Options& options) {
                 throw UsageError("--select result: the last op of --ops selects nothing");
             }
             scene.selected = result;
+        } else if (options.select == "sel") {
+            if (carried.empty()) {
+                throw UsageError(
+                    "--select sel: --ops selects nothing (select:R, select_loop:A-B, "
+                    "… choose a selection)");
+            }
+            scene.selected = carried.back();  // active, as the viewer draws it
+            carried.pop_back();
+            scene.also_selected = carried;
         } else if (!options.select.empty()) {
             scene.selected = parse_selection(mesh, options.select);
         }

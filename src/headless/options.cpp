@@ -185,9 +185,10 @@ int parse_options(int argc, char** argv, Options& o) {
         ->type_name("y|z|file")
         ->check(CLI::IsMember({"y", "z", "file"}));
     app.add_option("--select", o.select,
-                   "highlight a vertex, the edge A-B, the halfedge A->B, a face, or what the "
-                   "last step of --ops made (result)")
-        ->option_text("vI|A-B|hA-B|fI|result");
+                   "highlight a vertex, the edge A-B, the halfedge A->B, a face, what the "
+                   "last step of --ops made (result), or the selection --ops carries at its "
+                   "end (sel: what its select verbs chose)")
+        ->option_text("vI|A-B|hA-B|fI|result|sel");
     app.add_option_function<std::string>(
            "--stencil",
            [&o](const std::string& v) {
@@ -361,7 +362,7 @@ int parse_options(int argc, char** argv, Options& o) {
 ElementRef parse_selection(const Mesh& mesh, const std::string& spec) {
     const std::optional<ops::ElementName> name = ops::parse_element_name(spec);
     if (!name) {
-        throw UsageError("--select wants vI, A-B, hA-B, fI or result, got '" + spec + "'");
+        throw UsageError("--select wants vI, A-B, hA-B, fI, result or sel, got '" + spec + "'");
     }
     const auto index = [&](std::uint32_t i, std::size_t size, const char* what) {
         if (i >= size) {

@@ -269,6 +269,17 @@ const std::vector<GoldenCase>& golden_cases() {
         // (magenta dots where it cut), leaving holes (yellow loops) and small parts (brown);
         // degtri_sliding's four zero-area triangles along one line (cyan dots and sides) and
         // its hole; beam, a closed box whose faces all point inward (blue edges).
+        // Selections as the session records them and `--select sel` draws them: what a box
+        // over the middle of a 5 x 5 grid selects (its session step), and the edge loop
+        // around the quad ball's equator (Alt+click), on round across valence-4 vertices.
+        {"region_box_selected",
+         "tests/golden/data/grid5.obj",
+         {"--ops", "select:f6..8+f11..13+f16..18", "--select", "sel", "--flat", "--wireframe",
+          "--up", "z", "--camera", "30,45"}},
+        {"region_loop_selected",
+         "dae/quadball.dae",
+         {"--ops", "select_loop:7-12", "--select", "sel", "--flat", "--wireframe", "--camera",
+          "35,10"}},
         // A plateau modelled as in Blender: the middle 3 x 3 quads of a 5 x 5 grid extruded as
         // one region by 0.6, then inset as one region by 0.3 (Alt+I): a ring of 12 quads, 0.3
         // wide all round (even at the corners), on top of the walls.
