@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 #include "collada_detail.h"
@@ -182,12 +183,14 @@ private:
         std::vector<Input> all;
         const Input* normal() const { return first("NORMAL"); }
         // The first of the lowest set: a file's main texture coordinates or colours.
-        const Input* first(std::string_view semantic) const { return lowest(semantic, 0); }
-        // The first input of the lowest set above `above` (0: any set).
-        const Input* lowest(std::string_view semantic, std::uint64_t above, bool any = true) const {
+        const Input* first(std::string_view semantic) const {
+            return lowest(semantic, std::nullopt);
+        }
+        // The first input of the lowest set (of any set, or only of those above `above`).
+        const Input* lowest(std::string_view semantic, std::optional<std::uint64_t> above) const {
             const Input* found = nullptr;
             for (const Input& input : all) {
-                if (input.semantic == semantic && (any || input.set > above) &&
+                if (input.semantic == semantic && (!above || input.set > *above) &&
                     (!found || input.set < found->set)) {
                     found = &input;
                 }
@@ -197,7 +200,7 @@ private:
         // MeshEdit's texture coordinate set k (0, 1): the lowest TEXCOORD set, and the next.
         const Input* texcoord(std::size_t k) const {
             const Input* first_set = first("TEXCOORD");
-            return k == 0 || !first_set ? first_set : lowest("TEXCOORD", first_set->set, false);
+            return k == 0 || !first_set ? first_set : lowest("TEXCOORD", first_set->set);
         }
     };
 
