@@ -92,6 +92,50 @@ TEST(RemeshAttributes, SeamsStayAndCornersAreProjectedInTheirChart) {
     }
 }
 
+// The second texture coordinate set alone box-maps the cube (the first is seamless, an affine
+// function of the position): its seams alone keep the cube sharp, and each set's corners are
+// projected in their own chart.
+TEST(RemeshAttributes, SecondSetSeamsHoldAndItsCornersAreProjected) {
+    Mesh cube = test::flat_sided_cube();
+    auto uv0 = cube.add_property<Halfedge, Vec2>(kTexCoordProperty);
+    auto uv1 = cube.add_property<Halfedge, Vec2>(kTexCoord1Property);
+    const auto seamless = [](const Vec3& p) { return Vec2{p.x + 0.5 * p.z, p.y - p.z}; };
+    for (const Face f : cube.faces()) {
+        const Vec3 n = face_normal(cube, f);
+        for (const Halfedge h : cube.halfedges(f)) {
+            uv0[h] = seamless(cube.position(cube.to_vertex(h)));
+            uv1[h] = box_uv(cube.position(cube.to_vertex(h)), n);
+        }
+    }
+    Mesh out = cube;
+    const RemeshReport report = remesh(out, length(0.1));
+    ASSERT_FALSE(validate(out));
+    EXPECT_GT(report.splits + report.collapses, 100u);
+    const auto out0 = out.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const auto out1 = out.get_property<Halfedge, Vec2>(kTexCoord1Property);
+    ASSERT_TRUE(out0 && out1);
+    const double s = 1.0 / std::sqrt(3.0);
+    for (const Vertex v : out.vertices()) {
+        const Vec3& p = out.position(v);
+        int on_planes = 0;
+        for (const double c : {p.x, p.y, p.z}) {
+            on_planes += std::abs(std::abs(c) - s) < 1e-12;
+        }
+        ASSERT_GE(on_planes, 1) << "vertex " << v.idx() << " left the cube: the seams did not hold";
+    }
+    for (const Face f : out.faces()) {
+        const Vec3 n = face_normal(out, f);
+        for (const Halfedge h : out.halfedges(f)) {
+            const Vec3& p = out.position(out.to_vertex(h));
+            const Vec2 want0 = seamless(p), want1 = box_uv(p, n);
+            ASSERT_NEAR(out0[h].x, want0.x, 1e-12) << "face " << f.idx();
+            ASSERT_NEAR(out0[h].y, want0.y, 1e-12) << "face " << f.idx();
+            ASSERT_NEAR(out1[h].x, want1.x, 1e-12) << "face " << f.idx();
+            ASSERT_NEAR(out1[h].y, want1.y, 1e-12) << "face " << f.idx();
+        }
+    }
+}
+
 // A torus (no seam in its colours) remeshed finer: every vertex ends on the input surface, so
 // an affine colour is exact there; carried alone, the smoothing steps left it behind.
 TEST(RemeshAttributes, VertexColoursFollowTheSurface) {
