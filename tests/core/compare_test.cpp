@@ -235,11 +235,19 @@ void decorate(Mesh& mesh) {
     }
 }
 
-TEST(Compare, AttributesOfARenumberedCopyAreTheSameAndAChangeIsFound) {
+// A decorated torus and a renumbered decorated copy.
+struct DecoratedPair {
     Mesh a = shapes::torus(12, 8);
     Mesh b = renumbered(a, 7);
-    decorate(a);
-    decorate(b);
+    DecoratedPair() {
+        decorate(a);
+        decorate(b);
+    }
+};
+
+TEST(Compare, AttributesOfARenumberedCopyAreTheSameAndAChangeIsFound) {
+    DecoratedPair pair;
+    Mesh &a = pair.a, &b = pair.b;
     const TopologyMatch match = match_topology(a, b);
     ASSERT_TRUE(match.isomorphic);
     std::vector<AttributeDifference> d = compare_attributes(a, b, match);
@@ -278,10 +286,8 @@ TEST(Compare, AttributesOfARenumberedCopyAreTheSameAndAChangeIsFound) {
 
 // The second set: compared on its own, per corner, after the first; one side's alone is said.
 TEST(Compare, TheSecondTextureCoordinateSetIsComparedOnItsOwn) {
-    Mesh a = shapes::torus(12, 8);
-    Mesh b = renumbered(a, 7);
-    decorate(a);
-    decorate(b);
+    DecoratedPair pair;
+    Mesh &a = pair.a, &b = pair.b;
     const TopologyMatch match = match_topology(a, b);
     ASSERT_TRUE(match.isomorphic);
     const auto add_second = [](Mesh& mesh) {
