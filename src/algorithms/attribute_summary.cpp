@@ -33,14 +33,17 @@ bool is_material_border(const Mesh& mesh, Edge e, const FaceProperty<std::uint32
 AttributeSummary summarize_attributes(const Mesh& mesh) {
     AttributeSummary s;
     const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const auto uv1 = mesh.get_property<Halfedge, Vec2>(kTexCoord1Property);
     const auto material = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
     s.texcoords = static_cast<bool>(uv);
+    s.second_texcoords = static_cast<bool>(uv1);
     s.corner_normals = mesh.has_property<Halfedge>(kCornerNormalProperty);
     s.vertex_colours = mesh.has_property<Vertex>(kColorProperty);
     s.face_colours = mesh.has_property<Face>(kFaceColorProperty);
     s.face_materials = material && !mesh.materials().empty();
     for (const Edge e : mesh.edges()) {
         s.uv_seam_edges += uv && is_uv_seam(mesh, e, uv) ? 1 : 0;
+        s.second_uv_seam_edges += uv1 && is_uv_seam(mesh, e, uv1) ? 1 : 0;
         s.material_borders += s.face_materials && is_material_border(mesh, e, material) ? 1 : 0;
     }
     for (const Material& m : mesh.materials()) {
@@ -59,6 +62,10 @@ std::vector<std::pair<std::string, std::string>> attribute_rows(const Mesh& mesh
     rows.emplace_back(
         "texture coordinates",
         a.texcoords ? "per corner, " + std::to_string(a.uv_seam_edges) + " seam edges" : "none");
+    if (a.second_texcoords) {
+        rows.emplace_back("second texture coordinate set",
+                          "per corner, " + std::to_string(a.second_uv_seam_edges) + " seam edges");
+    }
     rows.emplace_back("corner normals", a.corner_normals ? "per corner (from the file)" : "none");
     rows.emplace_back("colours", a.vertex_colours
                                      ? (a.face_colours ? "per vertex and per face" : "per vertex")

@@ -41,6 +41,9 @@ AttributeDifference compare_one(const Mesh& a, const Mesh& b, const char* proper
                                 std::string name, const std::vector<std::uint32_t>& to) {
     AttributeDifference d;
     d.name = std::move(name);
+    d.elements = std::is_same_v<H, Halfedge> ? "corners"
+                 : std::is_same_v<H, Vertex> ? "vertices"
+                                             : "faces";
     const auto pa = a.get_property<H, T>(property);
     const auto pb = b.get_property<H, T>(property);
     d.in_a = static_cast<bool>(pa);
@@ -124,6 +127,8 @@ std::vector<AttributeDifference> compare_attributes(const Mesh& a, const Mesh& b
     }
     std::vector<AttributeDifference> all = {
         compare_one<Halfedge, Vec2>(a, b, kTexCoordProperty, "texture coordinates", match.halfedge),
+        compare_one<Halfedge, Vec2>(a, b, kTexCoord1Property, "second texture coordinate set",
+                                    match.halfedge),
         compare_one<Halfedge, Vec3>(a, b, kCornerNormalProperty, "corner normals", match.halfedge),
         compare_one<Vertex, Vec4>(a, b, kColorProperty, "vertex colours", match.vertex),
         compare_one<Face, Vec4>(a, b, kFaceColorProperty, "face colours", match.face),

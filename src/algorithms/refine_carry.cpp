@@ -83,10 +83,21 @@ Halfedge corner_at(std::span<const Halfedge> corners, const Mesh& base, Vertex v
     return Halfedge();
 }
 
-// A texture coordinate or corner normal array, refined as face-varying values: true if done.
+// Whether `a` is one of the texture coordinate sets (kTexCoordSets).
+bool is_texcoord_set(const BasePropertyArray& a) {
+    for (const char* name : kTexCoordSets) {
+        if (a.name() == name && a.type() == typeid(Vec2)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// A texture coordinate set or corner normal array, refined as face-varying values: true if
+// done.
 bool refine_corner_values(const Mesh& base, const Mesh& refined, FaceVaryingRules rules,
                           const BasePropertyArray& old, BasePropertyArray& out) {
-    if (old.name() == kTexCoordProperty && old.type() == typeid(Vec2)) {
+    if (is_texcoord_set(old)) {
         refine_face_varying<Vec2>(base, refined, rules,
                                   static_cast<const PropertyArray<Vec2>&>(old).vector(),
                                   static_cast<PropertyArray<Vec2>&>(out).vector());

@@ -36,7 +36,8 @@ bool has_attributes(const Mesh& mesh);
 /// exactly the positions' weights; other vertex attributes keep their values on old vertices and
 /// derive new points from the edge's ends or the face's corners; edges halves copy their edge and
 /// the edges inside faces are new; each face copies the face it is a part of. Texture coordinates
-/// (`h:texcoord`, Vec2) are face-varying values refined by `rules` (face_varying.h); corner
+/// (each set of kTexCoordSets, Vec2) are face-varying values refined by `rules`
+/// (face_varying.h), each with its own seams; corner
 /// normals (`h:normal`, Vec3) the same way but always linearly; any other corner attribute
 /// copies the old face's corner at the same vertex, or blends the old corners at an edge's
 /// ends (an edge point) or at all the face's corners (a face point).

@@ -16,9 +16,6 @@
 namespace meshedit::remeshing {
 namespace {
 
-// The face-varying Vec2 attributes (texture coordinate sets) a remesh projects.
-constexpr std::string_view kCornerVec2[] = {kTexCoordProperty};
-
 double distance2(const Vec3& a, const Vec3& b) {
     return dot(a - b, a - b);
 }
@@ -51,7 +48,7 @@ class Projector {
 public:
     Projector(Mesh& mesh, const Mesh& source, const TriangleTree& tree)
         : mesh_(mesh), source_(source), tree_(tree), seams_(mesh), source_seams_(source) {
-        for (const std::string_view name : kCornerVec2) {
+        for (const std::string_view name : kTexCoordSets) {
             const auto to = mesh.get_property<Halfedge, Vec2>(name);
             const auto from = source.get_property<Halfedge, Vec2>(name);
             if (to && from) {
@@ -273,7 +270,7 @@ private:
 }  // namespace
 
 AttributeSeams::AttributeSeams(const Mesh& mesh) : mesh_(mesh) {
-    for (const std::string_view name : kCornerVec2) {
+    for (const std::string_view name : kTexCoordSets) {
         if (const auto p = mesh.get_property<Halfedge, Vec2>(name)) {
             vec2_.push_back(p);
         }
@@ -302,7 +299,7 @@ bool AttributeSeams::is_seam(Edge e) const {
 }
 
 bool has_projected_attributes(const Mesh& mesh) {
-    for (const std::string_view name : kCornerVec2) {
+    for (const std::string_view name : kTexCoordSets) {
         if (mesh.get_property<Halfedge, Vec2>(name)) {
             return true;
         }

@@ -55,21 +55,35 @@ void field(const Vec3& p0, const Vec3& e1, const Vec3& e2, double a11, double a1
 AttributeSimplifier::AttributeSimplifier(Mesh& mesh, double diagonal)
     : mesh_(mesh),
       uv_scale_(kUvWeight),
-      uv_weight_(uv_scale_ * diagonal),
       color_weight_(kColorWeight * diagonal),
-      uv_(mesh.get_property<Halfedge, Vec2>(kTexCoordProperty)),
       color_(mesh.get_property<Vertex, Vec4>(kColorProperty)),
-      material_(mesh.get_property<Face, std::uint32_t>(kMaterialProperty)) {}
+      material_(mesh.get_property<Face, std::uint32_t>(kMaterialProperty)) {
+    for (std::size_t k = 0; k < kSets; ++k) {
+        uv_weight_[k] = uv_scale_ * diagonal;
+        uv_[k] = mesh.get_property<Halfedge, Vec2>(kTexCoordSets[k]);
+    }
+}
 
 bool AttributeSimplifier::applies(const Mesh& mesh) {
     return mesh.get_property<Halfedge, Vec2>(kTexCoordProperty) ||
+           mesh.get_property<Halfedge, Vec2>(kTexCoord1Property) ||
            mesh.get_property<Vertex, Vec4>(kColorProperty) ||
            mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
 }
 
+AttributeSimplifier::Uvs AttributeSimplifier::uvs(Halfedge h) const {
+    Uvs out{};
+    for (std::size_t k = 0; k < kSets; ++k) {
+        out[k] = uv_[k] ? uv_[k][h] : Vec2{};
+    }
+    return out;
+}
+
 void AttributeSimplifier::gather(memory::Array<Quadric>& position) {
-    if (uv_) {
-        uvq_.assign(mesh_.vertices_size(), UvQuadric{});
+    for (std::size_t k = 0; k < kSets; ++k) {
+        if (uv_[k]) {
+            uvq_[k].assign(mesh_.vertices_size(), UvQuadric{});
+        }
     }
     if (color_) {
         colorq_.assign(mesh_.vertices_size(), ColorQuadric{});
@@ -92,25 +106,31 @@ void AttributeSimplifier::gather(memory::Array<Quadric>& position) {
             }
         }
     }
-    if (!uv_ && !color_) {
+    if (!any_uv() && !color_) {
         return;
     }
     seam_.assign(mesh_.vertices_size(), 0);
-    if (uv_) {
+    if (any_uv()) {
         for (Vertex v : mesh_.vertices()) {
             seam_[v.idx()] = on_seam(v);
         }
+    }
+    for (std::size_t k = 0; k < kSets; ++k) {
+        if (!uv_[k]) {
+            continue;
+        }
         // A UV difference weighs as the distance it spans on the surface (the root of the
         // ratio of the surface's area to the texture's): scale-free, and the same for a
-        // small textured part in a large scene.
+        // small textured part in a large scene. Each set by its own texture's area.
+        const HalfedgeProperty<Vec2>& uv = uv_[k];
         double surface = 0.0, texture = 0.0;
         for (Face f : mesh_.faces()) {
             const Halfedge h = mesh_.halfedge(f);
             surface += norm(face_area_vector(mesh_, f));
-            texture += std::abs(uv_area(uv_[h], uv_[mesh_.next(h)], uv_[mesh_.prev(h)]));
+            texture += std::abs(uv_area(uv[h], uv[mesh_.next(h)], uv[mesh_.prev(h)]));
         }
         if (surface > 0.0 && texture > 0.0) {
-            uv_weight_ = uv_scale_ * std::sqrt(surface / texture);
+            uv_weight_[k] = uv_scale_ * std::sqrt(surface / texture);
         }
     }
     for (Face f : mesh_.faces()) {
@@ -133,19 +153,24 @@ void AttributeSimplifier::gather(memory::Array<Quadric>& position) {
                 field(p0, e1, e2, a11, a12, a22, inv_det, value, g[j], d[j]);
             }
         };
-        if (uv_) {
+        for (std::size_t k = 0; k < kSets; ++k) {
+            if (!uv_[k]) {
+                continue;
+            }
+            const HalfedgeProperty<Vec2>& uv = uv_[k];
+            const double weight = uv_weight_[k];
             Vec3 g[2];
             double d[2];
-            fields(g, d, 2, [&](int i, int j) { return uv_weight_ * channel(uv_[h[i]], j); });
+            fields(g, d, 2, [&](int i, int j) { return weight * channel(uv[h[i]], j); });
             for (int i = 0; i < 3; ++i) {
                 if (seam_[v[i].idx()] == 0) {
-                    uvq_[v[i].idx()].add_face(area, g, d);
+                    uvq_[k][v[i].idx()].add_face(area, g, d);
                     continue;
                 }
                 // A seam vertex keeps its corners: moving it slides the texture, by the
                 // field's change from its place (g·p + d − its corner's value).
                 for (int j = 0; j < 2; ++j) {
-                    position[v[i].idx()].add_plane(g[j], d[j] - uv_weight_ * channel(uv_[h[i]], j),
+                    position[v[i].idx()].add_plane(g[j], d[j] - weight * channel(uv[h[i]], j),
                                                    area);
                 }
             }
@@ -175,8 +200,10 @@ bool AttributeSimplifier::on_seam(Vertex v) const {
 }
 
 void AttributeSimplifier::reduce_into(Vertex a, Vertex b, Quadric& q) const {
-    if (uv_) {
-        UvQuadric::reduce_into(uvq_[a.idx()], uvq_[b.idx()], q);
+    for (std::size_t k = 0; k < kSets; ++k) {
+        if (uv_[k]) {
+            UvQuadric::reduce_into(uvq_[k][a.idx()], uvq_[k][b.idx()], q);
+        }
     }
     if (color_) {
         ColorQuadric::reduce_into(colorq_[a.idx()], colorq_[b.idx()], q, color_channels_);
@@ -195,7 +222,7 @@ Halfedge AttributeSimplifier::corner(Face f, Vertex v) const {
 // Gives `value` to every corner of y = to_vertex(start) reachable from start's face without
 // crossing a seam or the boundary (start's own face is the collapse's and not planned).
 // False when a corner so reached was planned another value: the collapse would mix charts.
-bool AttributeSimplifier::spread_run(Halfedge start, const Vec2& value, Face f0, Face f1) {
+bool AttributeSimplifier::spread_run(Halfedge start, const Uvs& value, Face f0, Face f1) {
     queue_.assign(1, start);
     while (!queue_.empty()) {
         const Halfedge h = queue_.back();
@@ -211,8 +238,10 @@ bool AttributeSimplifier::spread_run(Halfedge start, const Vec2& value, Face f0,
             const auto planned = std::find_if(corners_.begin(), corners_.end(),
                                               [f](const auto& c) { return c.face == f; });
             if (planned != corners_.end()) {
-                if (!(planned->uv == value)) {
-                    return false;
+                for (std::size_t k = 0; k < kSets; ++k) {
+                    if (!(planned->uv[k] == value[k])) {
+                        return false;
+                    }
                 }
                 continue;
             }
@@ -240,7 +269,7 @@ CornerPlan AttributeSimplifier::plan(Edge e, const Vec3& p, Vertex at) {
             planned_color_ = color_[at.is_valid() ? at : a];
         }
     }
-    if (!uv_) {
+    if (!any_uv()) {
         return CornerPlan::Ok;
     }
     const Face f0 = mesh_.face(e, 0), f1 = mesh_.face(e, 1);
@@ -279,33 +308,44 @@ CornerPlan AttributeSimplifier::plan(Edge e, const Vec3& p, Vertex at) {
 }
 
 CornerPlan AttributeSimplifier::plan_free(Vertex a, Vertex b, Face f0, Face f1, const Vec3& p) {
-    // No seam at either end: one chart, one value for every corner; the quadric's best, else
-    // the first of the ends' values and their mean that turns no UV triangle over.
-    Vec2 tries[4];
-    int n = 0;
-    UvQuadric q = uvq_[a.idx()];
-    q.add(uvq_[b.idx()]);
-    if (double s[2]; q.optimum(p, s)) {
-        tries[n++] = Vec2{s[0] / uv_weight_, s[1] / uv_weight_};
-    }
-    const Face f = f0.is_valid() ? f0 : f1;
-    const Vec2 ua = uv_[corner(f, a)], ub = uv_[corner(f, b)];
-    tries[n++] = ua, tries[n++] = ub, tries[n++] = (ua + ub) * 0.5;
-    for (int i = 0; i < n; ++i) {
-        corners_.clear();
-        for (const Vertex v : {a, b}) {
-            for (Halfedge h : mesh_.halfedges(v)) {
-                const Face g = mesh_.face(h);
-                if (g.is_valid() && g != f0 && g != f1) {
-                    corners_.push_back({g, mesh_.prev(h), tries[i]});
-                }
+    // No seam at either end: one chart, one value for every corner, in each set; the set's
+    // quadric's best, else the first of the ends' values and their mean that turns no UV
+    // triangle of that set over.
+    corners_.clear();
+    for (const Vertex v : {a, b}) {
+        for (Halfedge h : mesh_.halfedges(v)) {
+            const Face g = mesh_.face(h);
+            if (g.is_valid() && g != f0 && g != f1) {
+                corners_.push_back({g, mesh_.prev(h), Uvs{}});
             }
         }
-        if (!turns_over()) {
-            return CornerPlan::Ok;
+    }
+    const Face f = f0.is_valid() ? f0 : f1;
+    for (std::size_t k = 0; k < kSets; ++k) {
+        if (!uv_[k]) {
+            continue;
+        }
+        Vec2 tries[4];
+        int n = 0;
+        UvQuadric q = uvq_[k][a.idx()];
+        q.add(uvq_[k][b.idx()]);
+        if (double s[2]; q.optimum(p, s)) {
+            tries[n++] = Vec2{s[0] / uv_weight_[k], s[1] / uv_weight_[k]};
+        }
+        const Vec2 ua = uv_[k][corner(f, a)], ub = uv_[k][corner(f, b)];
+        tries[n++] = ua, tries[n++] = ub, tries[n++] = (ua + ub) * 0.5;
+        bool found = false;
+        for (int i = 0; i < n && !found; ++i) {
+            for (PlannedCorner& c : corners_) {
+                c.uv[k] = tries[i];
+            }
+            found = !turns_over(k);
+        }
+        if (!found) {
+            return CornerPlan::UvFlip;
         }
     }
-    return CornerPlan::UvFlip;
+    return CornerPlan::Ok;
 }
 
 CornerPlan AttributeSimplifier::plan_along(Vertex a, Vertex b, Face f0, Face f1, double t) {
@@ -314,7 +354,11 @@ CornerPlan AttributeSimplifier::plan_along(Vertex a, Vertex b, Face f0, Face f1,
         if (!f.is_valid()) {
             continue;
         }
-        const Vec2 value = uv_[corner(f, a)] * (1.0 - t) + uv_[corner(f, b)] * t;
+        Uvs value = uvs(corner(f, a));
+        const Uvs at_b = uvs(corner(f, b));
+        for (std::size_t k = 0; k < kSets; ++k) {
+            value[k] = value[k] * (1.0 - t) + at_b[k] * t;
+        }
         if (!spread_run(corner(f, a), value, f0, f1) || !spread_run(corner(f, b), value, f0, f1)) {
             return CornerPlan::Seam;
         }
@@ -330,19 +374,19 @@ CornerPlan AttributeSimplifier::plan_kept(Vertex x, Vertex y, Face f0, Face f1) 
     for (Halfedge h : mesh_.halfedges(x)) {
         const Face f = mesh_.face(h);
         if (f.is_valid() && f != f0 && f != f1) {
-            corners_.push_back({f, mesh_.prev(h), uv_[mesh_.prev(h)]});
+            corners_.push_back({f, mesh_.prev(h), uvs(mesh_.prev(h))});
         }
     }
     const std::size_t from_x = corners_.size();
     for (const Face f : {f0, f1}) {
-        if (f.is_valid() && !spread_run(corner(f, y), uv_[corner(f, x)], f0, f1)) {
+        if (f.is_valid() && !spread_run(corner(f, y), uvs(corner(f, x)), f0, f1)) {
             return CornerPlan::Seam;
         }
     }
     if (corners_.size() - from_x != faces_beside(y, f0, f1)) {
         return CornerPlan::Seam;  // y has a chart beside neither face
     }
-    kept_uv_ = uv_[corner(f0.is_valid() ? f0 : f1, x)];
+    kept_uv_ = uvs(corner(f0.is_valid() ? f0 : f1, x));
     return turns_over() ? CornerPlan::UvFlip : CornerPlan::Ok;
 }
 
@@ -355,17 +399,30 @@ std::size_t AttributeSimplifier::faces_beside(Vertex v, Face f0, Face f1) const 
     return n;
 }
 
-// Whether a planned corner turns its UV triangle over (or flattens one that was not flat).
+// Whether a planned corner turns its UV triangle over in any set.
 bool AttributeSimplifier::turns_over() const {
+    for (std::size_t k = 0; k < kSets; ++k) {
+        if (uv_[k] && turns_over(k)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// Whether a planned corner turns its UV triangle of `set` over (or flattens one that was not
+// flat).
+bool AttributeSimplifier::turns_over(std::size_t set) const {
+    const HalfedgeProperty<Vec2>& uv = uv_[set];
     for (const PlannedCorner& c : corners_) {
-        const Vec2& u1 = uv_[mesh_.next(c.corner)];
-        const Vec2& u2 = uv_[mesh_.prev(c.corner)];
-        const double before = uv_area(uv_[c.corner], u1, u2);
-        const double after = uv_area(c.uv, u1, u2);
+        const Vec2& u1 = uv[mesh_.next(c.corner)];
+        const Vec2& u2 = uv[mesh_.prev(c.corner)];
+        const Vec2& to = c.uv[set];
+        const double before = uv_area(uv[c.corner], u1, u2);
+        const double after = uv_area(to, u1, u2);
         // Turned over, beyond rounding: the 3D guard lets a triangle become a sliver, whose
         // UV area is then ±1e-19 (it has no side to keep).
-        const double size = std::max({norm2(u1 - uv_[c.corner]), norm2(u2 - uv_[c.corner]),
-                                      norm2(c.uv - u1), norm2(c.uv - u2), norm2(u2 - u1)});
+        const double size = std::max({norm2(u1 - uv[c.corner]), norm2(u2 - uv[c.corner]),
+                                      norm2(to - u1), norm2(to - u2), norm2(u2 - u1)});
         if (before * after < 0.0 && std::abs(before) > 1e-10 * size &&
             std::abs(after) > 1e-10 * size) {
             return true;
@@ -382,11 +439,9 @@ void AttributeSimplifier::apply(Vertex a, Vertex b, Vertex s, Quadric& position)
         mesh_.touch(s);
         color_[s] = planned_color_;
     }
-    if (!uv_) {
+    if (!any_uv()) {
         return;
     }
-    UvQuadric q = uvq_[a.idx()];
-    q.add(uvq_[b.idx()]);
     // The faces keep their indices through collapse(); the halfedge at a corner may not.
     for (Halfedge h : mesh_.halfedges(s)) {
         const Face f = mesh_.face(h);
@@ -398,20 +453,31 @@ void AttributeSimplifier::apply(Vertex a, Vertex b, Vertex s, Quadric& position)
         if (planned != corners_.end()) {
             const Halfedge at_s = mesh_.prev(h);
             mesh_.touch(at_s);
-            uv_[at_s] = planned->uv;
+            for (std::size_t k = 0; k < kSets; ++k) {
+                if (uv_[k]) {
+                    uv_[k][at_s] = planned->uv[k];
+                }
+            }
         }
     }
     // Both ends off seams: so is s (its merged edges join corners of one chart). Else see;
     // no other vertex changes (each merged edge keeps both sides' values).
     seam_[s.idx()] = !planned_free_ && on_seam(s);
-    if (seam_[s.idx()] != 0) {
-        // The free end's faces joined a seam vertex at the kept corner's value: their error
-        // is now the position's (as gather() does for seam vertices).
-        const double kept[2] = {uv_weight_ * kept_uv_.x, uv_weight_ * kept_uv_.y};
-        q.fix_into(position, kept);
-        q = UvQuadric{};
+    for (std::size_t k = 0; k < kSets; ++k) {
+        if (!uv_[k]) {
+            continue;
+        }
+        UvQuadric q = uvq_[k][a.idx()];
+        q.add(uvq_[k][b.idx()]);
+        if (seam_[s.idx()] != 0) {
+            // The free end's faces joined a seam vertex at the kept corner's value: their
+            // error is now the position's (as gather() does for seam vertices).
+            const double kept[2] = {uv_weight_[k] * kept_uv_[k].x, uv_weight_[k] * kept_uv_[k].y};
+            q.fix_into(position, kept);
+            q = UvQuadric{};
+        }
+        uvq_[k][s.idx()] = q;
     }
-    uvq_[s.idx()] = q;
 }
 
 }  // namespace meshedit::qem

@@ -1,8 +1,9 @@
 #pragma once
 // Private to meshedit_algorithms: the attribute side of QEM simplification
 // (SimplifyAttributes::Aware, docs/simplify.md "Attributes"). Hoppe's memory-efficient
-// attribute quadrics (1999) for texture coordinates and vertex colours, seams found from the
-// corners, and the corner values a collapse leaves.
+// attribute quadrics (1999) for texture coordinates (each set of kTexCoordSets, with a quadric
+// of its own) and vertex colours, seams found from the corners (a seam of either set is a
+// seam), and the corner values a collapse leaves (every set by the same plan).
 //
 // Each face adds, per attribute channel j, the squared difference between the value s_j at
 // the survivor and the face's own linear field f_j(p) = g_j·p + d_j, weighted by its area.
@@ -15,7 +16,9 @@
 // group: its corners belong to charts whose fields do not agree, and it never moves off its
 // place (the crease rule of simplify.cpp pins it).
 
+#include <array>
 #include <cstdint>
+#include <iterator>
 #include <optional>
 #include <vector>
 
@@ -131,7 +134,12 @@ public:
         if (material_ && material_[mesh_.face(h)] != material_[mesh_.face(t)]) {
             return true;
         }
-        return uv_ && (!(uv_[h] == uv_[mesh_.prev(t)]) || !(uv_[mesh_.prev(h)] == uv_[t]));
+        for (const HalfedgeProperty<Vec2>& uv : uv_) {
+            if (uv && (!(uv[h] == uv[mesh_.prev(t)]) || !(uv[mesh_.prev(h)] == uv[t]))) {
+                return true;
+            }
+        }
+        return false;
     }
     /// An interior edge between faces of two materials.
     bool is_material_border(Edge e) const {
@@ -156,24 +164,31 @@ public:
     void apply(Vertex a, Vertex b, Vertex s, Quadric& position);
 
     /// Bytes per vertex it holds (for the simplifier's budget).
-    static double bytes_per_vertex() { return sizeof(UvQuadric) + sizeof(ColorQuadric); }
+    static double bytes_per_vertex() { return kSets * sizeof(UvQuadric) + sizeof(ColorQuadric); }
 
 private:
+    static constexpr std::size_t kSets = std::size(kTexCoordSets);
+    using Uvs = std::array<Vec2, kSets>;  // a corner's value in each set (absent sets: 0)
+
+    bool any_uv() const { return uv_[0] || uv_[1]; }
     bool on_seam(Vertex v) const;
     Halfedge corner(Face f, Vertex v) const;
+    Uvs uvs(Halfedge h) const;
     CornerPlan plan_free(Vertex a, Vertex b, Face f0, Face f1, const Vec3& p);
     CornerPlan plan_along(Vertex a, Vertex b, Face f0, Face f1, double t);
     CornerPlan plan_kept(Vertex x, Vertex y, Face f0, Face f1);
     std::size_t faces_beside(Vertex v, Face f0, Face f1) const;
     bool turns_over() const;
-    bool spread_run(Halfedge start, const Vec2& value, Face f0, Face f1);
+    bool turns_over(std::size_t set) const;
+    bool spread_run(Halfedge start, const Uvs& value, Face f0, Face f1);
 
     Mesh& mesh_;
-    double uv_scale_, uv_weight_, color_weight_;
-    HalfedgeProperty<Vec2> uv_;
+    double uv_scale_, color_weight_;
+    std::array<double, kSets> uv_weight_;
+    std::array<HalfedgeProperty<Vec2>, kSets> uv_;  // per set of kTexCoordSets, if the mesh has it
     VertexProperty<Vec4> color_;
     FaceProperty<std::uint32_t> material_;
-    memory::Array<UvQuadric> uvq_;
+    std::array<memory::Array<UvQuadric>, kSets> uvq_;
     memory::Array<ColorQuadric> colorq_;
     Vec4 color_low_, color_high_;
     int color_channels_ = 4;  // the last non-constant colour channel + 1 (alpha often is)
@@ -182,14 +197,14 @@ private:
     struct PlannedCorner {
         Face face;
         Halfedge corner;  ///< before the collapse
-        Vec2 uv;
+        Uvs uv;
     };
     std::vector<std::uint8_t> seam_;  // per vertex: on a seam (kept up to date by apply())
     bool planned_free_ = false;       // the plan had no seam at either end
     std::vector<PlannedCorner> corners_;
     std::vector<Halfedge> queue_;
     Vec4 planned_color_;
-    Vec2 kept_uv_;  // plan_kept(): the value the other end's faces took
+    Uvs kept_uv_;  // plan_kept(): the value the other end's faces took
 };
 
 }  // namespace meshedit::qem

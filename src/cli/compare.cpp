@@ -67,11 +67,7 @@ std::string attribute_text(const AttributeDifference& x) {
     if (x.in_a != x.in_b) {
         return x.in_a ? "only in A" : "only in B";
     }
-    const std::string of =
-        std::to_string(x.compared) + " " +
-        (x.name == "texture coordinates" || x.name == "corner normals" ? "corners"
-         : x.name == "vertex colours"                                  ? "vertices"
-                                                                       : "faces");
+    const std::string of = std::to_string(x.compared) + " " + x.elements;
     if (x.differing == 0) {
         return "the same (" + of + ")";
     }

@@ -220,6 +220,8 @@ Json attributes_json(const Mesh& mesh, const AttributeSummary& a) {
     }
     return {{"texcoords", a.texcoords},
             {"uv_seam_edges", a.uv_seam_edges},
+            {"second_texcoords", a.second_texcoords},
+            {"second_uv_seam_edges", a.second_uv_seam_edges},
             {"corner_normals", a.corner_normals},
             {"vertex_colours", a.vertex_colours},
             {"face_colours", a.face_colours},

@@ -75,9 +75,10 @@ struct GeometryData {
     std::vector<Vec3> normals;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> creases;
     std::vector<std::string> notices;
-    /// Per corner (as `indices`), when every primitive has the input (else empty): the first
-    /// TEXCOORD set's (S, T), the NORMAL input's normal.
-    std::vector<Vec2> corner_texcoords;
+    /// Per corner (as `indices`), when every primitive has the input (else empty): the
+    /// (S, T) of the lowest TEXCOORD set and of the next (MeshEdit's second set), the NORMAL
+    /// input's normal.
+    std::vector<Vec2> corner_texcoords[2];
     std::vector<Vec3> corner_normals;
     /// Per position, when every primitive has a COLOR input (else empty): a position's first
     /// corner's colour (RGB, alpha 1; or RGBA).

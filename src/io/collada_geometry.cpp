@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 #include "collada_detail.h"
@@ -157,6 +158,9 @@ void check_finite_positions(const Document& doc, pugi::xml_node source,
     }
 }
 
+// MeshEdit's two texture coordinate sets, as messages name them.
+constexpr const char* kSetNames[2] = {"texture coordinates", "second texture coordinate set"};
+
 class GeometryReader {
 public:
     GeometryReader(const Document& doc, pugi::xml_node geometry) : doc_(doc), geometry_(geometry) {}
@@ -180,13 +184,23 @@ private:
         const Input* normal() const { return first("NORMAL"); }
         // The first of the lowest set: a file's main texture coordinates or colours.
         const Input* first(std::string_view semantic) const {
+            return lowest(semantic, std::nullopt);
+        }
+        // The first input of the lowest set (of any set, or only of those above `above`).
+        const Input* lowest(std::string_view semantic, std::optional<std::uint64_t> above) const {
             const Input* found = nullptr;
             for (const Input& input : all) {
-                if (input.semantic == semantic && (!found || input.set < found->set)) {
+                if (input.semantic == semantic && (!above || input.set > *above) &&
+                    (!found || input.set < found->set)) {
                     found = &input;
                 }
             }
             return found;
+        }
+        // MeshEdit's texture coordinate set k (0, 1): the lowest TEXCOORD set, and the next.
+        const Input* texcoord(std::size_t k) const {
+            const Input* first_set = first("TEXCOORD");
+            return k == 0 || !first_set ? first_set : lowest("TEXCOORD", first_set->set);
         }
     };
 
@@ -214,12 +228,15 @@ private:
     GeometryData g_;
     std::unordered_map<const void*, std::vector<Vec3>> cache_;
     std::unordered_map<const void*, std::vector<double>> tuple_cache_;
-    bool texcoords_ok_ = true, corner_normals_ok_ = true, colors_ok_ = true;
-    bool other_sets_said_ = false;  // a second texture coordinate set's notice given
+    // Per texture coordinate set (MeshEdit's two): every corner so far has one; some
+    // primitive had the input.
+    bool texcoords_ok_[2] = {true, true}, any_uv_[2] = {false, false};
+    bool corner_normals_ok_ = true, colors_ok_ = true;
+    bool other_sets_said_ = false;  // a third texture coordinate set's notice given
     std::vector<std::uint8_t> colour_seen_;
     std::size_t colour_seams_ = 0;  // positions whose corners' colours differ
     std::string attribute_problem_;
-    bool any_uv_ = false, any_colour_ = false;  // some primitive had the input
+    bool any_colour_ = false;  // some primitive had the input
     // Per-position normal agreement across corners: 0 unseen, 1 set.
     std::vector<std::uint8_t> normal_seen_;
     std::vector<Vec3> corner_normals_;
@@ -364,13 +381,15 @@ GeometryReader::Inputs GeometryReader::read_inputs(pugi::xml_node primitive) {
     if (!has_vertex) {
         doc_.fail(primitive, "no <input semantic=\"VERTEX\">");
     }
-    // One texture coordinate set is kept: the others are said, once per geometry.
-    const Input* kept = inputs.first("TEXCOORD");
+    // Two texture coordinate sets are kept: the others are said, once per geometry.
+    const Input* kept[2] = {inputs.texcoord(0), inputs.texcoord(1)};
     for (const Input& input : inputs.all) {
-        if (input.semantic == "TEXCOORD" && &input != kept && !other_sets_said_) {
+        if (input.semantic == "TEXCOORD" && &input != kept[0] && &input != kept[1] &&
+            !other_sets_said_) {
             g_.notices.push_back("texture coordinate set " + str(input.set) + " of " +
-                                 doc_.where(geometry_) + " not kept (MeshEdit keeps one set, " +
-                                 str(kept->set) + ")");
+                                 doc_.where(geometry_) + " not kept (MeshEdit keeps two sets, " +
+                                 str(kept[0]->set) +
+                                 (kept[1] ? " and " + str(kept[1]->set) : std::string()) + ")");
             other_sets_said_ = true;
         }
     }
@@ -578,21 +597,23 @@ void GeometryReader::add_polygons(pugi::xml_node p, std::vector<std::uint32_t>&&
 // that attribute for the whole geometry; a value that is not a number drops it with a notice.
 void GeometryReader::add_corner_attributes(pugi::xml_node p, const Inputs& inputs,
                                            const std::uint32_t* corner) {
-    const Input* uv = inputs.first("TEXCOORD");
     const Input* normal = inputs.normal();
     const Input* colour = inputs.first("COLOR");
     const std::string where = doc_.where(p);
-    if (texcoords_ok_ && uv) {
-        const double* t = uv->tuples->data() + 2 * std::size_t{corner[uv->offset]};
-        if (!std::isfinite(t[0]) || !std::isfinite(t[1])) {
-            texcoords_ok_ = false;
-            attribute_problem_ +=
-                "; texture coordinates not kept: " + where + " names one " + "that is not a number";
+    for (std::size_t k = 0; k < 2; ++k) {
+        const Input* uv = inputs.texcoord(k);
+        if (texcoords_ok_[k] && uv) {
+            const double* t = uv->tuples->data() + 2 * std::size_t{corner[uv->offset]};
+            if (!std::isfinite(t[0]) || !std::isfinite(t[1])) {
+                texcoords_ok_[k] = false;
+                attribute_problem_ += "; " + std::string(kSetNames[k]) + " not kept: " + where +
+                                      " names one that is not a number";
+            }
+            g_.corner_texcoords[k].push_back({t[0], t[1]});
         }
-        g_.corner_texcoords.push_back({t[0], t[1]});
+        texcoords_ok_[k] = texcoords_ok_[k] && uv;
+        any_uv_[k] = any_uv_[k] || uv;
     }
-    texcoords_ok_ = texcoords_ok_ && uv;
-    any_uv_ = any_uv_ || uv;
     any_colour_ = any_colour_ || colour;
     if (corner_normals_ok_ && normal && !vertex_normals_) {
         g_.corner_normals.push_back((*normal->vec)[corner[normal->offset]]);
@@ -627,20 +648,23 @@ void GeometryReader::add_corner_attributes(pugi::xml_node p, const Inputs& input
 void GeometryReader::drop_out_of_range(pugi::xml_node p, const Inputs& inputs, const Input& input,
                                        std::uint32_t index) {
     const bool uv = input.semantic == "TEXCOORD";
-    bool& ok = uv ? texcoords_ok_ : colors_ok_;
-    if (!ok || inputs.first(input.semantic) != &input) {
+    const std::size_t k = uv && inputs.texcoord(1) == &input ? 1 : 0;
+    bool& ok = uv ? texcoords_ok_[k] : colors_ok_;
+    if (!ok || (uv ? inputs.texcoord(k) : inputs.first(input.semantic)) != &input) {
         return;
     }
     ok = false;
-    attribute_problem_ += std::string("; ") + (uv ? "texture coordinates" : "vertex colours") +
+    attribute_problem_ += std::string("; ") + (uv ? kSetNames[k] : "vertex colours") +
                           " not kept: " + doc_.where(p) + " names " + std::string(input.semantic) +
                           " index " + str(index) + " of " + str(input.limit) + " entries";
 }
 
 void GeometryReader::finish_attributes() {
     const bool any_face = g_.face_offsets.size() > 1;
-    if (!texcoords_ok_ || !any_face) {
-        g_.corner_texcoords.clear();
+    for (std::size_t k = 0; k < 2; ++k) {
+        if (!texcoords_ok_[k] || !any_face) {
+            g_.corner_texcoords[k].clear();
+        }
     }
     if (!corner_normals_ok_ || !any_face) {
         g_.corner_normals.clear();
@@ -653,9 +677,12 @@ void GeometryReader::finish_attributes() {
                              "vertex's first corner");
     }
     // Some primitives with the input and some without: said, never dropped without a word.
-    if (any_uv_ && !texcoords_ok_ && attribute_problem_.find("texture") == std::string::npos) {
-        attribute_problem_ += "; texture coordinates not kept: some primitives of " +
-                              doc_.where(geometry_) + " have no TEXCOORD input";
+    for (std::size_t k = 0; k < 2; ++k) {
+        const std::string said = "; " + std::string(kSetNames[k]);
+        if (any_uv_[k] && !texcoords_ok_[k] && attribute_problem_.find(said) == std::string::npos) {
+            attribute_problem_ += said + " not kept: some primitives of " + doc_.where(geometry_) +
+                                  " have no " + (k == 0 ? "TEXCOORD input" : "second TEXCOORD set");
+        }
     }
     if (any_colour_ && !colors_ok_ && attribute_problem_.find("colours") == std::string::npos) {
         attribute_problem_ += "; vertex colours not kept: some primitives of " +

@@ -151,12 +151,17 @@ public:
         if (!all_have_normals_) {
             out_.normals.clear();
         }
-        const bool texcoords =
-            all_have_texcoords_ && texcoords_.size() == out_.soup.positions.size();
-        if (texcoords) {
-            out_.corner_texcoords.reserve(out_.soup.indices.size());
-            for (const std::uint32_t v : out_.soup.indices) {
-                out_.corner_texcoords.push_back(texcoords_[v]);
+        // TEXCOORD_0 and TEXCOORD_1, each kept when every primitive has it.
+        std::vector<Vec2>* corner_sets[kTexcoordSets] = {&out_.corner_texcoords,
+                                                         &out_.corner_texcoords1};
+        bool texcoords = false;
+        for (std::size_t set = 0; set < kTexcoordSets; ++set) {
+            if (all_have_texcoords_[set] && texcoords_[set].size() == out_.soup.positions.size()) {
+                texcoords = true;
+                corner_sets[set]->reserve(out_.soup.indices.size());
+                for (const std::uint32_t v : out_.soup.indices) {
+                    corner_sets[set]->push_back(texcoords_[set][v]);
+                }
             }
         }
         if (all_have_colours_ && colours_.size() == out_.soup.positions.size()) {
@@ -296,24 +301,30 @@ private:
 
     void add_texcoords(const tinygltf::Primitive& prim, const std::string& where,
                        std::size_t n_vertices) {
-        if (prim.attributes.count("TEXCOORD_1") != 0 && !std::exchange(other_sets_said_, true)) {
-            out_.notices.push_back(where + ": TEXCOORD_1 not kept (MeshEdit keeps TEXCOORD_0)");
+        if (prim.attributes.count("TEXCOORD_2") != 0 && !std::exchange(other_sets_said_, true)) {
+            out_.notices.push_back(where +
+                                   ": TEXCOORD_2 and later not kept (MeshEdit keeps TEXCOORD_0 "
+                                   "and TEXCOORD_1)");
         }
-        const auto it = prim.attributes.find("TEXCOORD_0");
-        if (!all_have_texcoords_ || it == prim.attributes.end()) {
-            all_have_texcoords_ = false;
-            return;
-        }
-        const std::vector<double> uv =
-            read_components(it->second, where, "TEXCOORD_0", TINYGLTF_TYPE_VEC2, 2);
-        if (uv.size() != 2 * n_vertices) {
-            throw IoError(file_, where,
-                          "TEXCOORD_0 has " + std::to_string(uv.size() / 2) +
-                              " elements, POSITION " + std::to_string(n_vertices));
-        }
-        for (std::size_t i = 0; i < n_vertices; ++i) {
-            // glTF's v runs down, MeshEdit's (OBJ's) up: exact in double for a float in [0, 1].
-            texcoords_.push_back(Vec2{uv[2 * i], 1.0 - uv[2 * i + 1]});
+        for (std::size_t set = 0; set < kTexcoordSets; ++set) {
+            const std::string name = "TEXCOORD_" + std::to_string(set);
+            const auto it = prim.attributes.find(name);
+            if (!all_have_texcoords_[set] || it == prim.attributes.end()) {
+                all_have_texcoords_[set] = false;
+                continue;
+            }
+            const std::vector<double> uv =
+                read_components(it->second, where, name.c_str(), TINYGLTF_TYPE_VEC2, 2);
+            if (uv.size() != 2 * n_vertices) {
+                throw IoError(file_, where,
+                              name + " has " + std::to_string(uv.size() / 2) +
+                                  " elements, POSITION " + std::to_string(n_vertices));
+            }
+            for (std::size_t i = 0; i < n_vertices; ++i) {
+                // glTF's v runs down, MeshEdit's (OBJ's) up: exact in double for a float in
+                // [0, 1].
+                texcoords_[set].push_back(Vec2{uv[2 * i], 1.0 - uv[2 * i + 1]});
+            }
         }
     }
 
@@ -664,12 +675,14 @@ private:
     std::string file_;
     std::filesystem::path folder_;  // where texture paths start
     MeshSoup out_;
-    std::vector<Vec2> texcoords_;       // per soup vertex, while every primitive has them
+    static constexpr std::size_t kTexcoordSets = 2;  // TEXCOORD_0 and TEXCOORD_1
+    // Per set, per soup vertex, while every primitive has them.
+    std::array<std::vector<Vec2>, kTexcoordSets> texcoords_;
     std::vector<std::int64_t> origin_;  // per soup vertex: the mesh vertex it copies, or -1
     std::vector<int> face_material_;    // per soup face: the file's material index, or -1
     gltf_images::Embedded embedded_;    // embedded images' bytes, by image index
-    bool all_have_texcoords_ = true;
-    bool other_sets_said_ = false;  // TEXCOORD_1's notice given
+    std::array<bool, kTexcoordSets> all_have_texcoords_ = {true, true};
+    bool other_sets_said_ = false;  // TEXCOORD_2's notice given
     std::vector<Vec4> colours_;     // COLOR_0 per soup vertex, while every primitive has it
     bool all_have_colours_ = true;
     bool all_have_normals_ = true;

@@ -1,19 +1,21 @@
 // Writing glTF 2.0 (gltf.h) through tinygltf: one mesh, one indexed TRIANGLES primitive per
 // material. A vertex is written once per distinct combination of its corners' texture
-// coordinate and normal (glTF's attributes are per vertex), so seams stay seams; its colour
-// is COLOR_0; polygons
+// coordinates (TEXCOORD_0 and TEXCOORD_1) and normal (glTF's attributes are per vertex), so
+// seams stay seams; its colour is COLOR_0; polygons
 // are fanned from their first corner. A .glb embeds the materials' texture images; a .gltf
 // names them by a path relative to itself.
 
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <map>
 #include <sstream>
+#include <string>
 #include <tuple>
 
 #include "gltf_images.h"
@@ -118,9 +120,12 @@ private:
     // (vertex, texture coordinate, normal). Vertex v keeps number v (its first corner's
     // values), so a mesh without seams is written vertex for vertex; copies at seams follow.
     void number_vertices() {
-        uv_ = mesh_.get_property<Halfedge, Vec2>(kTexCoordProperty);
+        for (std::size_t set = 0; set < kSets; ++set) {
+            uv_[set] = mesh_.get_property<Halfedge, Vec2>(kTexCoordSets[set]);
+        }
         normal_ = mesh_.get_property<Halfedge, Vec3>(kCornerNormalProperty);
-        using Key = std::tuple<std::uint32_t, double, double, double, double, double>;
+        using Key =
+            std::tuple<std::uint32_t, double, double, double, double, double, double, double>;
         std::map<Key, std::uint32_t> seen;
         const std::size_t nv = mesh_.vertices_size();
         vertices_.resize(nv);
@@ -131,9 +136,11 @@ private:
         corner_vertex_.assign(mesh_.halfedges_size(), 0);
         for (const Face f : mesh_.faces()) {
             for (const Halfedge h : mesh_.halfedges(f)) {
-                const Corner c{mesh_.to_vertex(h), uv_ ? uv_[h] : Vec2{},
+                const Corner c{mesh_.to_vertex(h),
+                               {uv_[0] ? uv_[0][h] : Vec2{}, uv_[1] ? uv_[1][h] : Vec2{}},
                                normal_ ? normal_[h] : Vec3{}};
-                const Key key{c.vertex.idx(), c.uv.x, c.uv.y, c.normal.x, c.normal.y, c.normal.z};
+                const Key key{c.vertex.idx(), c.uv[0].x,  c.uv[0].y,  c.uv[1].x,
+                              c.uv[1].y,      c.normal.x, c.normal.y, c.normal.z};
                 std::uint32_t index = c.vertex.idx();
                 if (!claimed[index]) {
                     claimed[index] = true;
@@ -180,13 +187,16 @@ private:
                          TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertices_.size());
         model_.accessors.back().minValues = lo;
         model_.accessors.back().maxValues = hi;
-        if (uv_) {
+        for (std::size_t set = 0; set < kSets; ++set) {
+            if (!uv_[set]) {
+                continue;
+            }
             std::vector<float> uv;
             for (const Corner& c : vertices_) {
-                uv.insert(uv.end(), {static_cast<float>(c.uv.x),
-                                     static_cast<float>(1.0 - c.uv.y)});  // v down
+                uv.insert(uv.end(), {static_cast<float>(c.uv[set].x),
+                                     static_cast<float>(1.0 - c.uv[set].y)});  // v down
             }
-            attributes["TEXCOORD_0"] =
+            attributes["TEXCOORD_" + std::to_string(set)] =
                 add_accessor(add_view(uv, TINYGLTF_TARGET_ARRAY_BUFFER),
                              TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, vertices_.size());
         }
@@ -373,11 +383,12 @@ private:
     fs::path path_;
     IoFlags flags_;
     bool binary_;
-    HalfedgeProperty<Vec2> uv_;
+    static constexpr std::size_t kSets = std::size(kTexCoordSets);  // TEXCOORD_0, TEXCOORD_1
+    std::array<HalfedgeProperty<Vec2>, kSets> uv_;
     HalfedgeProperty<Vec3> normal_;
     struct Corner {
         Vertex vertex;
-        Vec2 uv;
+        std::array<Vec2, kSets> uv;
         Vec3 normal;
     };
     std::vector<Corner> vertices_;              // per glTF vertex

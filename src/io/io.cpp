@@ -33,16 +33,17 @@ void write_off_ignoring_flags(const Mesh& mesh, const fs::path& path, const IoFl
 
 // Each row: extension, name, reader, writer, then what the format keeps: polygons, every
 // double, creases, corner attributes (UVs, the file's normals, materials), PLY properties,
-// vertex colours, per-vertex UVs and normals.
+// vertex colours, per-vertex UVs and normals, a second UV set.
 constexpr MeshFormat kFormats[] = {
-    {".dae", "COLLADA", read_collada, write_collada, true, true, true, true, false, true, true},
-    {".gltf", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
-    {".glb", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true},
-    {".obj", "OBJ", read_obj, write_obj, true, true, false, true, false, true, true},
-    {".off", "OFF", read_off, write_off_ignoring_flags, true, true, false, false, false, true,
+    {".dae", "COLLADA", read_collada, write_collada, true, true, true, true, false, true, true,
      true},
-    {".ply", "PLY", read_ply, write_ply, true, true, false, false, true, true, true},
-    {".stl", "STL", read_stl, write_stl, false, false, false, false, false, false, false},
+    {".gltf", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true, true},
+    {".glb", "glTF", read_gltf, write_gltf, false, false, false, true, false, true, true, true},
+    {".obj", "OBJ", read_obj, write_obj, true, true, false, true, false, true, true, false},
+    {".off", "OFF", read_off, write_off_ignoring_flags, true, true, false, false, false, true, true,
+     false},
+    {".ply", "PLY", read_ply, write_ply, true, true, false, false, true, true, true, false},
+    {".stl", "STL", read_stl, write_stl, false, false, false, false, false, false, false, false},
 };
 
 // True when every corner of each vertex holds the same value of the halfedge property (one
@@ -231,6 +232,11 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
                              " material(s) and which faces use them (" + name +
                              " has no materials; " + writers + " keep them)");
         }
+    }
+    if (!format->second_texcoords && mesh.has_property<Halfedge>(kTexCoord1Property)) {
+        unkept.push_back("the second texture coordinate set (" + name + " has one set at most; " +
+                         names_of_formats(std::mem_fn(&MeshFormat::second_texcoords)) +
+                         " keep it)");
     }
     // An image a glTF file embedded: glTF writes it back (PNG and JPEG, the kinds it holds);
     // the other formats only name texture files.

@@ -51,6 +51,7 @@ MeshSoup soup_from_mesh(const Mesh& mesh, std::vector<std::string>* unkept) {
         soup.positions.push_back(dense.position(v));
     }
     const auto uv = dense.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const auto uv1 = dense.get_property<Halfedge, Vec2>(kTexCoord1Property);
     const auto normal = dense.get_property<Halfedge, Vec3>(kCornerNormalProperty);
     const auto material = dense.get_property<Face, std::uint32_t>(kMaterialProperty);
     const auto face_color = dense.get_property<Face, Vec4>(kFaceColorProperty);
@@ -69,6 +70,9 @@ MeshSoup soup_from_mesh(const Mesh& mesh, std::vector<std::string>* unkept) {
             const Halfedge in = dense.prev(h);
             if (uv) {
                 out.corner_texcoords.push_back(uv[in]);
+            }
+            if (uv1) {
+                out.corner_texcoords1.push_back(uv1[in]);
             }
             if (normal) {
                 out.corner_normals.push_back(normal[in]);
@@ -106,8 +110,8 @@ MeshSoup soup_from_mesh(const Mesh& mesh, std::vector<std::string>* unkept) {
             face_kept.insert(p.name);
         }
         add_unkept(dense.property_names<Vertex>(), vertex_kept, *unkept);
-        add_unkept(dense.property_names<Halfedge>(), {kTexCoordProperty, kCornerNormalProperty},
-                   *unkept);
+        add_unkept(dense.property_names<Halfedge>(),
+                   {kTexCoordProperty, kTexCoord1Property, kCornerNormalProperty}, *unkept);
         add_unkept(dense.property_names<Edge>(), {kCreaseProperty}, *unkept);
         add_unkept(dense.property_names<Face>(), face_kept, *unkept);
     }

@@ -148,8 +148,10 @@ private:
     double planned_bytes_ = 0.0;
     std::size_t skipped_transforms_ = 0;
     bool normals_ok_ = true;
-    bool texcoords_ok_ = true, corner_normals_ok_ = true, colors_ok_ = true;
-    bool any_uv_ = false, any_colour_ = false;                       // some geometry had them
+    // Per texture coordinate set: every geometry so far has it; some geometry had it.
+    bool texcoords_ok_[2] = {true, true}, any_uv_[2] = {false, false};
+    bool corner_normals_ok_ = true, colors_ok_ = true;
+    bool any_colour_ = false;                                        // some geometry had them
     std::unordered_map<const void*, std::uint32_t> material_index_;  // by <material>
     std::uint32_t no_material_ = std::numeric_limits<std::uint32_t>::max();
     bool any_material_ = false;
@@ -392,9 +394,11 @@ void SceneReader::append(const Instance& instance, collada::GeometryData& g, boo
 void SceneReader::append_attributes(const Instance& instance, const collada::GeometryData& g,
                                     bool mirror) {
     const Mat4& t = instance.transform;
-    any_uv_ = any_uv_ || !g.corner_texcoords.empty();
+    for (std::size_t set = 0; set < 2; ++set) {
+        any_uv_[set] = any_uv_[set] || !g.corner_texcoords[set].empty();
+        texcoords_ok_[set] = texcoords_ok_[set] && !g.corner_texcoords[set].empty();
+    }
     any_colour_ = any_colour_ || !g.colors.empty();
-    texcoords_ok_ = texcoords_ok_ && !g.corner_texcoords.empty();
     corner_normals_ok_ = corner_normals_ok_ && !g.corner_normals.empty();
     colors_ok_ = colors_ok_ && !g.colors.empty();
     if (colors_ok_) {
@@ -409,8 +413,11 @@ void SceneReader::append_attributes(const Instance& instance, const collada::Geo
         const std::uint32_t end = g.face_offsets[f + 1];
         for (std::uint32_t i = begin; i < end; ++i) {
             const std::uint32_t k = (!mirror || i == begin) ? i : begin + (end - i);
-            if (texcoords_ok_) {
-                out_.corner_texcoords.push_back(g.corner_texcoords[k]);
+            if (texcoords_ok_[0]) {
+                out_.corner_texcoords.push_back(g.corner_texcoords[0][k]);
+            }
+            if (texcoords_ok_[1]) {
+                out_.corner_texcoords1.push_back(g.corner_texcoords[1][k]);
             }
             if (corner_normals_ok_) {
                 out_.corner_normals.push_back(t.is_identity() ? g.corner_normals[k]
@@ -513,18 +520,25 @@ MeshSoup SceneReader::read() {
         out_.corner_normals.clear();
     }
     // Geometries with texture coordinates or colours beside some without: said in a line.
-    if (!texcoords_ok_ && any_uv_) {
-        out_.notices.push_back(
-            "texture coordinates not kept: some instanced geometries have "
-            "none; the mesh loads without them");
+    for (const std::size_t set : {0, 1}) {
+        if (!texcoords_ok_[set] && any_uv_[set]) {
+            out_.notices.push_back(
+                std::string(set == 0 ? "texture coordinates"
+                                     : "the second texture coordinate set") +
+                " not kept: some instanced geometries have none; the mesh loads without " +
+                (set == 0 ? "them" : "it"));
+        }
     }
     if (!colors_ok_ && any_colour_) {
         out_.notices.push_back(
             "vertex colours not kept: some instanced geometries have none; "
             "the mesh loads without them");
     }
-    if (!texcoords_ok_) {
+    if (!texcoords_ok_[0]) {
         out_.corner_texcoords.clear();
+    }
+    if (!texcoords_ok_[1]) {
+        out_.corner_texcoords1.clear();
     }
     if (!colors_ok_) {
         out_.colors.clear();

@@ -45,14 +45,16 @@ void attach(const MeshSoup& soup, const BuildReport& report, Mesh& mesh) {
     }
     const bool face_colors = soup.face_colors.size() == s.n_faces() && !soup.face_colors.empty();
     const bool texcoords = soup.corner_texcoords.size() == s.indices.size();
+    const bool texcoords1 = soup.corner_texcoords1.size() == s.indices.size();
     const bool corner_normals = soup.corner_normals.size() == s.indices.size();
     const bool vertex_normals =
         !corner_normals && !soup.normals.empty() && soup.normals.size() == s.positions.size();
     const bool materials = soup.face_materials.size() == s.n_faces();
-    if (!texcoords && !corner_normals && !vertex_normals && !materials && !face_colors && !colors) {
+    if (!texcoords && !texcoords1 && !corner_normals && !vertex_normals && !materials &&
+        !face_colors && !colors) {
         return;
     }
-    HalfedgeProperty<Vec2> uv;
+    HalfedgeProperty<Vec2> uv, uv1;
     HalfedgeProperty<Vec3> normal;
     FaceProperty<std::uint32_t> material;
     FaceProperty<Vec4> face_color;
@@ -61,6 +63,9 @@ void attach(const MeshSoup& soup, const BuildReport& report, Mesh& mesh) {
     }
     if (texcoords) {
         uv = mesh.property<Halfedge, Vec2>(kTexCoordProperty);
+    }
+    if (texcoords1) {
+        uv1 = mesh.property<Halfedge, Vec2>(kTexCoord1Property);
     }
     if (corner_normals || vertex_normals) {
         normal = mesh.property<Halfedge, Vec3>(kCornerNormalProperty);
@@ -98,6 +103,9 @@ void attach(const MeshSoup& soup, const BuildReport& report, Mesh& mesh) {
             }
             if (texcoords) {
                 uv[h] = soup.corner_texcoords[c];
+            }
+            if (texcoords1) {
+                uv1[h] = soup.corner_texcoords1[c];
             }
             if (corner_normals) {
                 normal[h] = soup.corner_normals[c];

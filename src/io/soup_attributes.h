@@ -10,7 +10,8 @@
 namespace meshedit::soup_attributes {
 
 /// Keeps `soup`'s texture coordinates and normals (per corner, or per vertex: the seamless
-/// case) as kTexCoordProperty / kCornerNormalProperty, and its materials as kMaterialProperty
+/// case) as kTexCoordProperty / kCornerNormalProperty, its second texture coordinate set as
+/// kTexCoord1Property, and its materials as kMaterialProperty
 /// and Mesh::materials(), on `mesh` built from it by build_mesh() with `report` (which keeps
 /// each kept face's corners in order, halfedge(f) leaving corner 0, and drops the faces it
 /// lists).

@@ -1,6 +1,6 @@
 // COLLADA 1.4.1 writer: one <geometry> with positions, normals (the file's per corner, else
-// computed per vertex if asked), texture coordinates per corner, vertex colours, a <polylist>
-// per run of faces of one material (so faces keep their order), the materials' libraries
+// computed per vertex if asked), texture coordinates per corner (both sets), vertex colours, a
+// <polylist> per run of faces of one material (so faces keep their order), the materials' libraries
 // (collada_material.cpp) and MeshEdit's crease <extra>, written atomically.
 
 #include <charconv>
@@ -90,12 +90,14 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags,
     // the halfedge arriving there.
     const auto corner_normal = mesh.get_property<Halfedge, Vec3>(kCornerNormalProperty);
     const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const auto uv1 = mesh.get_property<Halfedge, Vec2>(kTexCoord1Property);
     const auto colour = mesh.get_property<Vertex, Vec4>(kColorProperty);
     const auto material = mesh.get_property<Face, std::uint32_t>(kMaterialProperty);
     const std::vector<Material>& materials = mesh.materials();
     const bool use_materials = material && !materials.empty();
-    if (corner_normal || uv) {
-        std::vector<double> n, t;
+    const bool corners = corner_normal || uv || uv1;
+    if (corners) {
+        std::vector<double> n, t, t1;
         for (const Face f : mesh.faces()) {
             for (const Halfedge h : mesh.halfedges(f)) {
                 const Halfedge in = mesh.prev(h);
@@ -106,6 +108,9 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags,
                 if (uv) {
                     t.insert(t.end(), {uv[in].x, uv[in].y});
                 }
+                if (uv1) {
+                    t1.insert(t1.end(), {uv1[in].x, uv1[in].y});
+                }
             }
         }
         if (corner_normal) {
@@ -113,6 +118,9 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags,
         }
         if (uv) {
             append_source(out, "mesh-map-0", t, "ST");
+        }
+        if (uv1) {
+            append_source(out, "mesh-map-1", t1, "ST");
         }
     }
     if (colour) {
@@ -134,7 +142,7 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags,
         "          <input semantic=\"POSITION\" source=\"#mesh-positions\"/>\n"
         "        </vertices>\n";
     // One <polylist> per run of faces of one material; corner c's own index is c.
-    const std::uint64_t stride = 1 + (corner_normal || uv ? 1 : 0);
+    const std::uint64_t stride = 1 + (corners ? 1 : 0);
     for (std::size_t first = 0; first < soup.n_faces();) {
         const auto material_of = [&](std::size_t f) {
             return use_materials ? material[Face(static_cast<std::uint32_t>(f))] : 0u;
@@ -163,6 +171,11 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags,
             out +=
                 "          <input semantic=\"TEXCOORD\" source=\"#mesh-map-0\" offset=\"1\" "
                 "set=\"0\"/>\n";
+        }
+        if (uv1) {  // the second set: its own source, the corner's index like the first's
+            out +=
+                "          <input semantic=\"TEXCOORD\" source=\"#mesh-map-1\" offset=\"1\" "
+                "set=\"1\"/>\n";
         }
         if (colour) {
             out += "          <input semantic=\"COLOR\" source=\"#mesh-colors\" offset=\"0\"/>\n";

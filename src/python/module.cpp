@@ -318,9 +318,17 @@ PYBIND11_MODULE(_meshedit, m) {
         .def("faces", [](const PyMesh& self) { return faces_of(self.mesh); })
         .def(
             "texcoords",
-            [](const PyMesh& self) { return corner_values<Vec2>(self.mesh, kTexCoordProperty); },
+            [](const PyMesh& self, int set) {
+                if (set < 0 || set >= static_cast<int>(std::size(kTexCoordSets))) {
+                    throw py::value_error("texcoords(set): set is 0 or 1, not " +
+                                          std::to_string(set));
+                }
+                return corner_values<Vec2>(self.mesh, kTexCoordSets[set]);
+            },
+            py::arg("set") = 0,
             "Texture coordinates per face corner, (corners, 2) float64 in the order of faces() "
-            "flattened, or None when the mesh has none (OBJ vt, glTF TEXCOORD_0).")
+            "flattened, or None when the mesh has none: set 0 (OBJ vt, glTF TEXCOORD_0) or set 1, "
+            "the second set (glTF TEXCOORD_1, COLLADA's second TEXCOORD set).")
         .def(
             "corner_normals",
             [](const PyMesh& self) {

@@ -69,6 +69,7 @@ void keep_faces(MeshSoup& soup, const std::vector<bool>& keep) {
         }
     }
     keep_if(soup.corner_texcoords, keep_corner);
+    keep_if(soup.corner_texcoords1, keep_corner);
     keep_if(soup.corner_normals, keep_corner);
     keep_if(soup.face_materials, keep);
     keep_if(soup.face_colors, keep);
@@ -94,6 +95,7 @@ void keep_faces(MeshSoup& soup, const std::vector<bool>& keep) {
 void keep_corners(MeshSoup& soup, const std::vector<bool>& keep) {
     PolygonSoup& s = soup.soup;
     keep_if(soup.corner_texcoords, keep);
+    keep_if(soup.corner_texcoords1, keep);
     keep_if(soup.corner_normals, keep);
     std::size_t out = 0;
     std::uint32_t begin = 0;
@@ -171,6 +173,7 @@ void reverse_face(MeshSoup& soup, std::size_t f) {
     };
     reverse(soup.soup.indices);
     reverse(soup.corner_texcoords);
+    reverse(soup.corner_texcoords1);
     reverse(soup.corner_normals);
 }
 

@@ -235,11 +235,19 @@ void decorate(Mesh& mesh) {
     }
 }
 
-TEST(Compare, AttributesOfARenumberedCopyAreTheSameAndAChangeIsFound) {
+// A decorated torus and a renumbered decorated copy.
+struct DecoratedPair {
     Mesh a = shapes::torus(12, 8);
     Mesh b = renumbered(a, 7);
-    decorate(a);
-    decorate(b);
+    DecoratedPair() {
+        decorate(a);
+        decorate(b);
+    }
+};
+
+TEST(Compare, AttributesOfARenumberedCopyAreTheSameAndAChangeIsFound) {
+    DecoratedPair pair;
+    Mesh &a = pair.a, &b = pair.b;
     const TopologyMatch match = match_topology(a, b);
     ASSERT_TRUE(match.isomorphic);
     std::vector<AttributeDifference> d = compare_attributes(a, b, match);
@@ -274,6 +282,41 @@ TEST(Compare, AttributesOfARenumberedCopyAreTheSameAndAChangeIsFound) {
     d = compare_attributes(a, b, match);
     EXPECT_TRUE(d[1].in_a);
     EXPECT_FALSE(d[1].in_b);
+}
+
+// The second set: compared on its own, per corner, after the first; one side's alone is said.
+TEST(Compare, TheSecondTextureCoordinateSetIsComparedOnItsOwn) {
+    DecoratedPair pair;
+    Mesh &a = pair.a, &b = pair.b;
+    const TopologyMatch match = match_topology(a, b);
+    ASSERT_TRUE(match.isomorphic);
+    const auto add_second = [](Mesh& mesh) {
+        auto uv1 = mesh.add_property<Halfedge, Vec2>(kTexCoord1Property);
+        for (const Halfedge h : mesh.halfedges()) {
+            const Vec3 p = mesh.position(mesh.to_vertex(h));
+            uv1[h] = Vec2{p.z, 2 * p.x};
+        }
+        return uv1;
+    };
+    add_second(a);
+    std::vector<AttributeDifference> d = compare_attributes(a, b, match);
+    ASSERT_EQ(d.size(), 4u);
+    EXPECT_EQ(d[1].name, "second texture coordinate set");
+    EXPECT_TRUE(d[1].in_a);
+    EXPECT_FALSE(d[1].in_b);
+    auto uv1 = add_second(b);
+    d = compare_attributes(a, b, match);
+    ASSERT_EQ(d.size(), 4u);
+    EXPECT_EQ(d[1].differing, 0u);
+    EXPECT_EQ(d[1].compared, d[0].compared);
+    EXPECT_STREQ(d[1].elements, "corners");
+    const Halfedge moved = b.halfedge(Face(4));
+    uv1[moved].y -= 0.5;
+    d = compare_attributes(a, b, match);
+    EXPECT_EQ(d[0].differing, 0u);
+    EXPECT_EQ(d[1].differing, 1u);
+    EXPECT_NEAR(d[1].max, 0.5, 1e-12);
+    EXPECT_EQ(match.halfedge[d[1].first_a.index], moved.idx());
 }
 
 }  // namespace

@@ -73,11 +73,12 @@ std::map<std::pair<int, int>, double>& largest() {
 }
 
 // Refines `mesh` `levels` times with MeshEdit and with Far and compares every corner's
-// texture coordinate and every vertex's colour at every level.
-void expect_fvar_equal(Mesh mesh, Scheme scheme, UvInterpolation uv, int levels) {
-    SCOPED_TRACE(std::string("uv ") + std::string(uv_interpolation_name(uv)));
+// texture coordinate of the set `set` (kTexCoordSets) and every vertex's colour at every level.
+void expect_fvar_equal(Mesh mesh, Scheme scheme, UvInterpolation uv, int levels,
+                       const char* set = kTexCoordProperty) {
+    SCOPED_TRACE(std::string("uv ") + std::string(uv_interpolation_name(uv)) + " " + set);
     mesh.garbage_collection();
-    auto tex = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    auto tex = mesh.get_property<Halfedge, Vec2>(set);
     ASSERT_TRUE(tex);
     auto colour = mesh.property<Vertex, Vec3>("v:colour", Vec3{});
     for (Vertex v : mesh.vertices()) {
@@ -185,7 +186,7 @@ void expect_fvar_equal(Mesh mesh, Scheme scheme, UvInterpolation uv, int levels)
                                           mesh.vertices_size()));
 
         const std::map<Cycle, int> osd_faces = test::faces_by_cycle(child);
-        tex = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+        tex = mesh.get_property<Halfedge, Vec2>(set);
         colour = mesh.get_property<Vertex, Vec3>("v:colour");
         ASSERT_TRUE(tex && colour);
         fmap.assign(mesh.faces_size(), -1);
@@ -275,8 +276,8 @@ std::vector<double> face_angles(const Mesh& mesh, Face f, Vec3 c) {
 
 // Cylindrical map about the z axis: u = angle / 2π, v = z. A seam where u wraps, and the
 // vertices on the axis are junctions of all their faces' values.
-void cylindrical_uvs(Mesh& mesh) {
-    auto tex = mesh.property<Halfedge, Vec2>(kTexCoordProperty, Vec2{});
+void cylindrical_uvs(Mesh& mesh, const char* set = kTexCoordProperty) {
+    auto tex = mesh.property<Halfedge, Vec2>(set, Vec2{});
     for (Face f : mesh.faces()) {
         const std::vector<double> a = face_angles(mesh, f, {});
         std::size_t i = 0;
@@ -305,8 +306,8 @@ void slit_uvs(Mesh& mesh, Vec3 c) {
 
 // A box map: each face projected along its normal's largest axis into that axis's own chart
 // (and the sign's), so charts meet at seams and a chart of one face has corner values.
-void box_uvs(Mesh& mesh) {
-    auto tex = mesh.property<Halfedge, Vec2>(kTexCoordProperty, Vec2{});
+void box_uvs(Mesh& mesh, const char* set = kTexCoordProperty) {
+    auto tex = mesh.property<Halfedge, Vec2>(set, Vec2{});
     for (Face f : mesh.faces()) {
         std::vector<Vec3> p;
         for (Vertex v : mesh.vertices(f)) {
@@ -412,6 +413,26 @@ TEST(OpenSubdivFaceVarying, LoopTetrahedronAndTorus) {
 TEST(OpenSubdivFaceVarying, BilinearIsLinearForEveryOption) {
     expect_all_options(boxed(test::quad_cube()), Scheme::Linear);
     expect_all_options(slit_grid(false), Scheme::Linear);
+}
+
+// Two sets on one mesh, each with its own seams (a box map and a cylindrical map, in either
+// order): each set is refined as Far refines its own channel, whatever the other holds.
+TEST(OpenSubdivFaceVarying, SecondSetRefinesLikeTheFirst) {
+    Mesh quads = test::quad_cube();
+    test::mark_crease(quads, 0, 1);
+    Mesh triangles = test::creased_cube();
+    for (const bool box_first : {true, false}) {
+        for (Mesh* mesh : {&quads, &triangles}) {
+            box_uvs(*mesh, kTexCoordSets[box_first ? 0 : 1]);
+            cylindrical_uvs(*mesh, kTexCoordSets[box_first ? 1 : 0]);
+        }
+        for (const UvInterpolation uv : kOptions) {
+            for (const char* set : kTexCoordSets) {
+                expect_fvar_equal(quads, Scheme::CatmullClark, uv, 2, set);
+                expect_fvar_equal(triangles, Scheme::Loop, uv, 2, set);
+            }
+        }
+    }
 }
 
 // A course mesh from dae/ with a cylindrical map.

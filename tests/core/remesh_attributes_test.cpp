@@ -43,6 +43,25 @@ Vec4 affine_color(const Vec3& p) {
     return {0.5 + 0.1 * p.x, 0.5 - 0.2 * p.y, 0.25 + 0.3 * p.z, 1.0};
 }
 
+// `cube` remeshed to edges of 0.1: valid, and with enough splits and collapses to mean it.
+Mesh remeshed(const Mesh& cube) {
+    Mesh out = cube;
+    const RemeshReport report = remesh(out, length(0.1));
+    EXPECT_FALSE(validate(out));
+    EXPECT_GT(report.splits + report.collapses, 100u);
+    return out;
+}
+
+// How many of the flat-sided cube's planes p lies on (0: it left the cube).
+int cube_planes(const Vec3& p) {
+    const double s = 1.0 / std::sqrt(3.0);
+    int on_planes = 0;
+    for (const double c : {p.x, p.y, p.z}) {
+        on_planes += std::abs(std::abs(c) - s) < 1e-12;
+    }
+    return on_planes;
+}
+
 // A box-mapped cube: every cube edge is a seam (the faces' charts meet there) and no edge is
 // creased, so only the seams keep the cube sharp; every corner's texture coordinates come
 // out as its face's box map of its vertex, to rounding.
@@ -59,21 +78,14 @@ TEST(RemeshAttributes, SeamsStayAndCornersAreProjectedInTheirChart) {
     for (const Vertex v : cube.vertices()) {
         color[v] = affine_color(cube.position(v));
     }
-    Mesh out = cube;
-    const RemeshReport report = remesh(out, length(0.1));
-    ASSERT_FALSE(validate(out));
-    EXPECT_GT(report.splits + report.collapses, 100u);
+    const Mesh out = remeshed(cube);
     const auto out_uv = out.get_property<Halfedge, Vec2>(kTexCoordProperty);
     const auto out_color = out.get_property<Vertex, Vec4>(kColorProperty);
     ASSERT_TRUE(out_uv && out_color);
-    const double s = 1.0 / std::sqrt(3.0);
     int corners = 0;
     for (const Vertex v : out.vertices()) {
         const Vec3& p = out.position(v);
-        int on_planes = 0;
-        for (const double c : {p.x, p.y, p.z}) {
-            on_planes += std::abs(std::abs(c) - s) < 1e-12;
-        }
+        const int on_planes = cube_planes(p);
         ASSERT_GE(on_planes, 1) << "vertex " << v.idx() << " left the cube: the seams did not hold";
         corners += on_planes == 3;
         const Vec4 want = affine_color(p), got = out_color[v];
@@ -88,6 +100,42 @@ TEST(RemeshAttributes, SeamsStayAndCornersAreProjectedInTheirChart) {
             const Vec2 want = box_uv(out.position(out.to_vertex(h)), n);
             ASSERT_NEAR(out_uv[h].x, want.x, 1e-12) << "face " << f.idx();
             ASSERT_NEAR(out_uv[h].y, want.y, 1e-12) << "face " << f.idx();
+        }
+    }
+}
+
+// The second texture coordinate set alone box-maps the cube (the first is seamless, an affine
+// function of the position): its seams alone keep the cube sharp, and each set's corners are
+// projected in their own chart.
+TEST(RemeshAttributes, SecondSetSeamsHoldAndItsCornersAreProjected) {
+    Mesh cube = test::flat_sided_cube();
+    auto uv0 = cube.add_property<Halfedge, Vec2>(kTexCoordProperty);
+    auto uv1 = cube.add_property<Halfedge, Vec2>(kTexCoord1Property);
+    const auto seamless = [](const Vec3& p) { return Vec2{p.x + 0.5 * p.z, p.y - p.z}; };
+    for (const Face f : cube.faces()) {
+        const Vec3 n = face_normal(cube, f);
+        for (const Halfedge h : cube.halfedges(f)) {
+            uv0[h] = seamless(cube.position(cube.to_vertex(h)));
+            uv1[h] = box_uv(cube.position(cube.to_vertex(h)), n);
+        }
+    }
+    const Mesh out = remeshed(cube);
+    const auto out0 = out.get_property<Halfedge, Vec2>(kTexCoordProperty);
+    const auto out1 = out.get_property<Halfedge, Vec2>(kTexCoord1Property);
+    ASSERT_TRUE(out0 && out1);
+    for (const Vertex v : out.vertices()) {
+        ASSERT_GE(cube_planes(out.position(v)), 1)
+            << "vertex " << v.idx() << " left the cube: the seams did not hold";
+    }
+    for (const Face f : out.faces()) {
+        const Vec3 n = face_normal(out, f);
+        for (const Halfedge h : out.halfedges(f)) {
+            const Vec3& p = out.position(out.to_vertex(h));
+            const Vec2 want0 = seamless(p), want1 = box_uv(p, n);
+            ASSERT_NEAR(out0[h].x, want0.x, 1e-12) << "face " << f.idx();
+            ASSERT_NEAR(out0[h].y, want0.y, 1e-12) << "face " << f.idx();
+            ASSERT_NEAR(out1[h].x, want1.x, 1e-12) << "face " << f.idx();
+            ASSERT_NEAR(out1[h].y, want1.y, 1e-12) << "face " << f.idx();
         }
     }
 }

@@ -23,21 +23,22 @@
 namespace meshedit {
 namespace {
 
-double uv_area(const Mesh& mesh, Face f) {
-    const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+// Each helper reads the texture coordinate set `set` (kTexCoordSets).
+double uv_area(const Mesh& mesh, Face f, const char* set = kTexCoordProperty) {
+    const auto uv = mesh.get_property<Halfedge, Vec2>(set);
     const Halfedge h = mesh.halfedge(f);
     const Vec2 a = uv[h], b = uv[mesh.next(h)], c = uv[mesh.prev(h)];
     return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
-bool corners_differ(const Mesh& mesh, Edge e) {
-    const auto uv = mesh.get_property<Halfedge, Vec2>(kTexCoordProperty);
+bool corners_differ(const Mesh& mesh, Edge e, const char* set = kTexCoordProperty) {
+    const auto uv = mesh.get_property<Halfedge, Vec2>(set);
     const Halfedge h = mesh.halfedge(e, 0), t = mesh.halfedge(e, 1);
     return !(uv[h] == uv[mesh.prev(t)]) || !(uv[mesh.prev(h)] == uv[t]);
 }
 
 // Each face's chart: faces joined across edges whose corners agree at both ends.
-std::vector<int> charts(const Mesh& mesh) {
+std::vector<int> charts(const Mesh& mesh, const char* set = kTexCoordProperty) {
     std::vector<int> chart(mesh.faces_size(), -1);
     int next = 0;
     for (Face start : mesh.faces()) {
@@ -51,7 +52,8 @@ std::vector<int> charts(const Mesh& mesh) {
             stack.pop_back();
             for (Halfedge h : mesh.halfedges(f)) {
                 const Face g = mesh.face(mesh.twin(h));
-                if (g.is_valid() && chart[g.idx()] < 0 && !corners_differ(mesh, Mesh::edge(h))) {
+                if (g.is_valid() && chart[g.idx()] < 0 &&
+                    !corners_differ(mesh, Mesh::edge(h), set)) {
                     chart[g.idx()] = next;
                     stack.push_back(g);
                 }
@@ -69,19 +71,19 @@ struct Breaks {
 };
 
 // What `after` (simplified from `before`; faces keep their indices) broke.
-Breaks breaks(const Mesh& before, const Mesh& after) {
+Breaks breaks(const Mesh& before, const Mesh& after, const char* set = kTexCoordProperty) {
     Breaks b;
-    if (before.get_property<Halfedge, Vec2>(kTexCoordProperty)) {
-        const std::vector<int> chart = charts(before);
+    if (before.get_property<Halfedge, Vec2>(set)) {
+        const std::vector<int> chart = charts(before, set);
         for (Face f : after.faces()) {
-            const double was = uv_area(before, f), now = uv_area(after, f);
+            const double was = uv_area(before, f, set), now = uv_area(after, f, set);
             // Turned over beyond rounding (a sliver may come out at ±1e-19).
             b.flipped += was * now < 0.0 && std::abs(now) > 1e-9 * std::abs(was);
         }
         for (Edge e : after.edges()) {
             if (!after.is_boundary(e) &&
                 chart[after.face(e, 0).idx()] != chart[after.face(e, 1).idx()]) {
-                b.mixed += !corners_differ(after, e);
+                b.mixed += !corners_differ(after, e, set);
             }
         }
     }
@@ -168,29 +170,76 @@ TEST(SimplifyAttributes, TorusSeamsHoldAndNoUvTriangleTurns) {
 }
 
 // UV = an affine function of position on a flat grid: the aware result keeps it exactly
-// (each new corner at the quadric's best value, not a copy of an end's).
+// (each new corner at the quadric's best value, not a copy of an end's); in the second set
+// too, another affine function, alone and beside the first.
 TEST(SimplifyAttributes, AffineUvStaysAffine) {
-    Mesh grid = shapes::grid(30, 30);
-    auto uv = grid.add_property<Halfedge, Vec2>(kTexCoordProperty);
-    const auto affine = [](const Vec3& p) {
+    const auto affine0 = [](const Vec3& p) {
         return Vec2{0.3 * p.x + 0.1 * p.y + 0.2, -0.2 * p.x + 0.5 * p.y};
     };
-    for (Halfedge h : grid.halfedges()) {
-        if (grid.face(h).is_valid()) {
-            uv[h] = affine(grid.position(grid.to_vertex(h)));
+    const auto affine1 = [](const Vec3& p) {
+        return Vec2{-0.7 * p.y + 3.0, 0.4 * p.x + 0.05 * p.y};
+    };
+    for (const bool first_set : {true, false}) {
+        SCOPED_TRACE(first_set ? "both sets" : "the second set alone");
+        Mesh grid = shapes::grid(30, 30);
+        auto uv0 = first_set ? grid.add_property<Halfedge, Vec2>(kTexCoordProperty)
+                             : HalfedgeProperty<Vec2>();
+        auto uv1 = grid.add_property<Halfedge, Vec2>(kTexCoord1Property);
+        for (Halfedge h : grid.halfedges()) {
+            if (grid.face(h).is_valid()) {
+                if (uv0) {
+                    uv0[h] = affine0(grid.position(grid.to_vertex(h)));
+                }
+                uv1[h] = affine1(grid.position(grid.to_vertex(h)));
+            }
+        }
+        const Mesh out = simplified(grid, 0.1, SimplifyAttributes::Aware);
+        EXPECT_LE(out.n_faces(), grid.n_faces() / 10 + 1);
+        for (const auto& [set, affine] :
+             {std::pair<const char*, Vec2 (*)(const Vec3&)>{kTexCoordProperty, +affine0},
+              std::pair<const char*, Vec2 (*)(const Vec3&)>{kTexCoord1Property, +affine1}}) {
+            const auto out_uv = out.get_property<Halfedge, Vec2>(set);
+            if (!out_uv) {
+                EXPECT_FALSE(first_set && set == kTexCoordProperty);
+                continue;
+            }
+            double worst = 0;
+            for (Halfedge h : out.halfedges()) {
+                if (out.face(h).is_valid()) {
+                    const Vec2 want = affine(out.position(out.to_vertex(h)));
+                    worst = std::max(
+                        {worst, std::abs(out_uv[h].x - want.x), std::abs(out_uv[h].y - want.y)});
+                }
+            }
+            EXPECT_LT(worst, 1e-9) << set;
         }
     }
-    const Mesh out = simplified(grid, 0.1, SimplifyAttributes::Aware);
-    const auto out_uv = out.get_property<Halfedge, Vec2>(kTexCoordProperty);
-    double worst = 0;
-    for (Halfedge h : out.halfedges()) {
-        if (out.face(h).is_valid()) {
-            const Vec2 want = affine(out.position(out.to_vertex(h)));
-            worst =
-                std::max({worst, std::abs(out_uv[h].x - want.x), std::abs(out_uv[h].y - want.y)});
+}
+
+// A second set whose seams lie elsewhere (the torus's angles less 0.31 of a turn): the
+// aware result turns no triangle over and mixes no charts in either set, and both sets' seams
+// stay loops.
+TEST(SimplifyAttributes, SecondSetSeamsHoldLikeTheFirst) {
+    Mesh torus = test::uv_torus(60, 30);
+    test::add_angle_uvs(torus, kTexCoord1Property, 0.31);  // no vertex on its seams
+    const Mesh aware = simplified(torus, 0.1, SimplifyAttributes::Aware);
+    EXPECT_LE(aware.n_faces(), 400u);
+    for (const char* set : kTexCoordSets) {
+        SCOPED_TRACE(set);
+        ASSERT_GT(std::count_if(torus.edges().begin(), torus.edges().end(),
+                                [&](Edge e) { return corners_differ(torus, e, set); }),
+                  0);
+        const Breaks b = breaks(torus, aware, set);
+        EXPECT_EQ(b.flipped, 0u);
+        EXPECT_EQ(b.mixed, 0u);
+        for (Vertex v : aware.vertices()) {
+            int seams = 0;
+            for (Edge e : aware.edges(v)) {
+                seams += corners_differ(aware, e, set);
+            }
+            EXPECT_TRUE(seams == 0 || seams == 2 || seams == 4) << "vertex " << v.idx();
         }
     }
-    EXPECT_LT(worst, 1e-9);
 }
 
 // Material borders are held as seams (no collapse across one) and by the boundary's penalty

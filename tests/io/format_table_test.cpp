@@ -17,8 +17,13 @@
 namespace meshedit {
 namespace {
 
+// The second set's value at vertex v: one a float holds, so every format keeps it exactly.
+Vec2 second_uv(Vertex v) {
+    return Vec2{v.idx() / 4.0, 1 - v.idx() / 8.0};
+}
+
 // A quad beside a triangle; vertex 4 has a coordinate no float holds; the edge they share
-// is creased; every corner has a texture coordinate.
+// is creased; every corner has a texture coordinate in each of the two sets.
 Mesh everything_a_format_may_drop() {
     PolygonSoup soup;
     soup.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0.1, 0}};
@@ -28,10 +33,12 @@ Mesh everything_a_format_may_drop() {
     auto crease = mesh.property<Edge, std::uint8_t>(kCreaseProperty, 0);
     crease[mesh.find_edge(Vertex(1), Vertex(2))] = 1;
     auto uv = mesh.property<Halfedge, Vec2>(kTexCoordProperty, Vec2{0, 0});
+    auto uv1 = mesh.property<Halfedge, Vec2>(kTexCoord1Property, Vec2{0, 0});
     for (const Halfedge h : mesh.halfedges()) {
         if (!mesh.is_boundary(h)) {
             const Vec3& p = mesh.position(mesh.to_vertex(h));
             uv[h] = Vec2{p.x / 2, p.y};
+            uv1[h] = second_uv(mesh.to_vertex(h));
         }
     }
     auto color = mesh.property<Vertex, Vec4>(kColorProperty);
@@ -82,6 +89,16 @@ TEST(FormatTable, EachRowIsTrueOfItsWriterAndReader) {
         EXPECT_EQ(back.mesh.has_property<Halfedge>(kTexCoordProperty), uvs);
         EXPECT_EQ(mentions(notes, "texture coordinates"), !uvs);
 
+        EXPECT_EQ(back.mesh.has_property<Halfedge>(kTexCoord1Property), format.second_texcoords);
+        EXPECT_EQ(mentions(notes, "the second texture coordinate set ("), !format.second_texcoords);
+        if (const auto b = back.mesh.get_property<Halfedge, Vec2>(kTexCoord1Property)) {
+            for (const Face f : back.mesh.faces()) {
+                for (const Halfedge h : back.mesh.halfedges(f)) {
+                    ASSERT_TRUE(b[h] == second_uv(back.mesh.to_vertex(h))) << "corner " << h.idx();
+                }
+            }
+        }
+
         EXPECT_EQ(back.mesh.has_property<Vertex>(kColorProperty), format.colors);
         EXPECT_EQ(mentions(notes, "vertex colours"), !format.colors);
     }
@@ -106,14 +123,15 @@ TEST(FormatTable, DocsTableIsGenerated) {
     std::string table =
         "| extension | format | polygons | every double | creases | texture coordinates, the "
         "file's normals, materials | PLY properties | vertex colours | UVs and normals one per "
-        "vertex |\n|---|---|---|---|---|---|---|---|---|\n";
+        "vertex | a second UV set |\n|---|---|---|---|---|---|---|---|---|---|\n";
     for (const MeshFormat& format : mesh_formats()) {
         table += std::string("| `") + format.extension + "` | " + format.name + " | " +
                  (format.polygons ? "yes" : "fanned into triangles") + " | " +
                  (format.doubles ? "yes" : "32-bit floats") + " | " + yes_no(format.creases) +
                  " | " + yes_no(format.corner_attributes) + " | " + yes_no(format.ply_properties) +
                  " | " + yes_no(format.colors) + " | " +
-                 yes_no(format.corner_attributes || format.vertex_attributes) + " |\n";
+                 yes_no(format.corner_attributes || format.vertex_attributes) + " | " +
+                 yes_no(format.second_texcoords) + " |\n";
     }
     EXPECT_TRUE(test::block_is_generated(MESHEDIT_SOURCE_DIR "/docs/cli.md", "formats", table));
 }

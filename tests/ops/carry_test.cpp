@@ -1,12 +1,13 @@
 // The attribute carry (Mesh::carry(), docs/halfedge.md "What every operation carries"): user
 // properties on vertices, edges, halfedges and faces follow every verb of the table as each
 // operation states; a vertex property that is an affine function of the position stays that
-// function through every operation that places vertices at affine combinations; the
-// recorder's self-check catches an operation that makes an element without saying where its
-// attributes come from.
+// function through every operation that places vertices at affine combinations; the second
+// texture coordinate set is carried by the very rule of the first; the recorder's self-check
+// catches an operation that makes an element without saying where its attributes come from.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
@@ -16,6 +17,7 @@
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/mesh_change.h"
+#include "meshedit/core/normals.h"
 #include "meshedit/core/quad_subdivision.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
@@ -38,8 +40,16 @@ double affine(const Vec3& p) {
     return 2.0 * p.x - 3.0 * p.y + 0.5 * p.z + 1.0;
 }
 
+// The second texture coordinate set is this linear function of the first on every corner:
+// a carry that treats both sets alike (the same sources and weights, seams where the first
+// has them, defaults alike) keeps it so, up to rounding.
+Vec2 second_of(const Vec2& uv) {
+    return {0.5 * uv.x - 0.25 * uv.y, 0.1 * uv.x + 2.0 * uv.y};
+}
+
 // The properties a library user might register: blended (a number and a vector), labels
-// (integers: the heaviest source), a corner value and a face material.
+// (integers: the heaviest source), a corner value and a face material; and both texture
+// coordinate sets.
 struct Registered {
     VertexProperty<double> value;
     VertexProperty<Vec3> copy;
@@ -47,6 +57,7 @@ struct Registered {
     EdgeProperty<std::int32_t> edge_label;
     HalfedgeProperty<double> corner;
     FaceProperty<std::uint16_t> material;
+    HalfedgeProperty<Vec2> uv0, uv1;
 };
 
 // The registered properties of `mesh`, looked up again (a whole-mesh verb that works on a copy
@@ -57,7 +68,26 @@ Registered registered(const Mesh& mesh) {
             mesh.get_property<Vertex, std::int32_t>("v:label"),
             mesh.get_property<Edge, std::int32_t>("e:label"),
             mesh.get_property<Halfedge, double>("h:corner"),
-            mesh.get_property<Face, std::uint16_t>("f:material")};
+            mesh.get_property<Face, std::uint16_t>("f:material"),
+            mesh.get_property<Halfedge, Vec2>(kTexCoordProperty),
+            mesh.get_property<Halfedge, Vec2>(kTexCoord1Property)};
+}
+
+// The first set: a box map, each face in the chart of its normal's largest axis and sign,
+// each chart its own affine function of the position (so charts meet at seams); a boundary
+// halfedge takes its twin's chart. The second set: second_of() of the first.
+void box_mapped_sets(const Mesh& mesh, HalfedgeProperty<Vec2>& uv0, HalfedgeProperty<Vec2>& uv1) {
+    for (const Halfedge h : mesh.halfedges()) {
+        const Face f = mesh.face(mesh.is_boundary(h) ? mesh.twin(h) : h);
+        const Vec3 n = face_area_vector(mesh, f);
+        const double a[3] = {std::abs(n.x), std::abs(n.y), std::abs(n.z)};
+        const int axis = static_cast<int>(std::max_element(a, a + 3) - a);
+        const int chart = 2 * axis + (n[axis] < 0 ? 1 : 0);
+        const Vec3& p = mesh.position(mesh.to_vertex(h));
+        const double s = p[(axis + 1) % 3], t = p[(axis + 2) % 3];
+        uv0[h] = {0.31 * s + 1.13 * chart + 0.07 * t, 0.29 * t + 0.17 * chart * chart};
+        uv1[h] = second_of(uv0[h]);
+    }
 }
 
 Registered register_properties(Mesh& mesh) {
@@ -66,7 +96,10 @@ Registered register_properties(Mesh& mesh) {
                  mesh.add_property<Vertex, std::int32_t>("v:label", -1),
                  mesh.add_property<Edge, std::int32_t>("e:label", -1),
                  mesh.add_property<Halfedge, double>("h:corner"),
-                 mesh.add_property<Face, std::uint16_t>("f:material", 999)};
+                 mesh.add_property<Face, std::uint16_t>("f:material", 999),
+                 mesh.add_property<Halfedge, Vec2>(kTexCoordProperty),
+                 mesh.add_property<Halfedge, Vec2>(kTexCoord1Property)};
+    box_mapped_sets(mesh, r.uv0, r.uv1);
     for (const Vertex v : mesh.vertices()) {
         r.value[v] = affine(mesh.position(v));
         r.copy[v] = mesh.position(v);
@@ -159,6 +192,14 @@ void expect_carried(const Mesh& mesh, const Registered& r, std::size_t labels, b
     }
     for (const Face f : mesh.faces()) {
         ASSERT_TRUE(r.material[f] < 7 || r.material[f] == 999) << what << " face " << f.idx();
+        for (const Halfedge h : mesh.halfedges(f)) {
+            const Vec2 want = second_of(r.uv0[h]), got = r.uv1[h];
+            const double scale = 1.0 + std::abs(want.x) + std::abs(want.y);
+            ASSERT_TRUE(std::abs(got.x - want.x) <= 1e-9 * scale &&
+                        std::abs(got.y - want.y) <= 1e-9 * scale)
+                << what << ": the second set at corner " << h.idx() << " is (" << got.x << ", "
+                << got.y << "), the first's rule gives (" << want.x << ", " << want.y << ")";
+        }
     }
 }
 
@@ -180,7 +221,8 @@ TEST(Carry, EveryVerbCarriesUserPropertiesOnSevenMeshes) {
                 ++verb_ran;
                 ASSERT_TRUE(test::is_valid(mesh)) << step.text;
                 const Registered r = registered(mesh);
-                ASSERT_TRUE(r.value && r.copy && r.label && r.edge_label && r.corner && r.material)
+                ASSERT_TRUE(r.value && r.copy && r.label && r.edge_label && r.corner &&
+                            r.material && r.uv0 && r.uv1)
                     << step.text << " lost a property";
                 expect_carried(mesh, r, labels, !places_off_affine(verb.name), step.text);
             }

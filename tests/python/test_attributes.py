@@ -1,5 +1,8 @@
 # Texture coordinates, normals and materials as a notebook user reads them (attributes.h).
+import os
+
 import numpy as np
+import pytest
 
 import meshedit
 
@@ -47,4 +50,19 @@ def test_corner_attributes_follow_faces_and_edits(tmp_path):
 def test_meshes_without_attributes_answer_none():
     mesh = meshedit.Mesh.from_arrays(np.eye(3), np.array([[0, 1, 2]]))
     assert mesh.texcoords() is None and mesh.face_materials() is None
+    assert mesh.texcoords(1) is None
     assert mesh.materials() == []
+
+
+CUBE_2UVS = "/usr/share/assimp/models/Collada/cube_with_2UVs.DAE"
+
+
+def test_second_texture_coordinate_set_reads_as_set_1():
+    if not os.path.exists(CUBE_2UVS):
+        pytest.skip(CUBE_2UVS + " is absent (Debian package assimp-testmodels)")
+    mesh = meshedit.read(CUBE_2UVS)
+    first, second = mesh.texcoords(), mesh.texcoords(1)
+    assert first.shape == second.shape == (36, 2)
+    assert not np.array_equal(first, second)
+    with pytest.raises(ValueError):
+        mesh.texcoords(2)

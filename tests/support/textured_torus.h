@@ -13,11 +13,13 @@
 
 namespace meshedit::test {
 
-// Texture coordinates (angle around the axis, angle around the tube) / 2π on a torus of major
-// radius 1 about the z axis (any faces): one chart cut open along two loops (seams where the
-// angles wrap), the UV an affine function of the angles.
-inline void add_angle_uvs(Mesh& mesh) {
-    auto uv = mesh.add_property<Halfedge, Vec2>(kTexCoordProperty);
+// Texture coordinates (angle around the axis, angle around the tube) / 2π, each less `turn` (a
+// share of a turn, to move the seams), as the set `name`, on a torus of major radius 1 about
+// the z axis (any faces): one chart cut open along two loops (seams where the angles wrap),
+// the UV an affine function of the angles.
+inline void add_angle_uvs(Mesh& mesh, const char* name = kTexCoordProperty, double turn = 0.0) {
+    auto uv = mesh.add_property<Halfedge, Vec2>(name);
+    const auto wrap = [](double x) { return x - std::floor(x); };
     std::vector<Vec2> corner;
     std::vector<Halfedge> hs;
     for (Face f : mesh.faces()) {
@@ -26,9 +28,10 @@ inline void add_angle_uvs(Mesh& mesh) {
         for (Halfedge h : mesh.halfedges(f)) {
             const Vec3& p = mesh.position(mesh.to_vertex(h));
             const double rho = std::hypot(p.x, p.y);
-            const double u = std::atan2(p.y, p.x) / (2 * std::numbers::pi);
-            const double v = std::atan2(p.z, rho - 1.0) / (2 * std::numbers::pi);
-            corner.push_back({u < -1e-9 ? u + 1.0 : u, v < -1e-9 ? v + 1.0 : v});
+            const double u = std::atan2(p.y, p.x) / (2 * std::numbers::pi) - turn;
+            const double v = std::atan2(p.z, rho - 1.0) / (2 * std::numbers::pi) - turn;
+            corner.push_back(turn == 0.0 ? Vec2{u < -1e-9 ? u + 1.0 : u, v < -1e-9 ? v + 1.0 : v}
+                                         : Vec2{wrap(u), wrap(v)});
             hs.push_back(h);
         }
         // A face across the wrap takes the far side's values on its near corners.

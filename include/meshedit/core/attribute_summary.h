@@ -22,13 +22,15 @@ bool is_uv_seam(const Mesh& mesh, Edge e, const HalfedgeProperty<Vec2>& uv);
 bool is_material_border(const Mesh& mesh, Edge e, const FaceProperty<std::uint32_t>& material);
 
 struct AttributeSummary {
-    bool texcoords = false;            ///< h:texcoord
-    std::size_t uv_seam_edges = 0;     ///< is_uv_seam() edges
-    bool corner_normals = false;       ///< h:normal (split normals a file gave)
-    bool vertex_colours = false;       ///< v:color
-    bool face_colours = false;         ///< f:color
-    bool face_materials = false;       ///< f:material with Mesh::materials()
-    std::size_t material_borders = 0;  ///< is_material_border() edges
+    bool texcoords = false;                ///< h:texcoord
+    std::size_t uv_seam_edges = 0;         ///< is_uv_seam() edges
+    bool second_texcoords = false;         ///< h:texcoord1
+    std::size_t second_uv_seam_edges = 0;  ///< is_uv_seam() edges of h:texcoord1
+    bool corner_normals = false;           ///< h:normal (split normals a file gave)
+    bool vertex_colours = false;           ///< v:color
+    bool face_colours = false;             ///< f:color
+    bool face_materials = false;           ///< f:material with Mesh::materials()
+    std::size_t material_borders = 0;      ///< is_material_border() edges
     std::size_t textured_materials = 0;
     std::size_t missing_textures = 0;  ///< texture paths that name no file
 };
@@ -36,8 +38,9 @@ struct AttributeSummary {
 AttributeSummary summarize_attributes(const Mesh& mesh);
 
 /// The summary as rows of (name, value) for `meshedit info` and the viewer's info panel:
-/// texture coordinates, corner normals, colours, materials, then one row per material
-/// (name, colour, opacity, texture path, "(missing)" when it names no file).
+/// texture coordinates (and the second set, when the mesh has one), corner normals, colours,
+/// materials, then one row per material (name, colour, opacity, texture path, "(missing)" when it
+/// names no file).
 std::vector<std::pair<std::string, std::string>> attribute_rows(const Mesh& mesh,
                                                                 const AttributeSummary& a);
 

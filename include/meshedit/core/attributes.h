@@ -20,6 +20,13 @@ inline constexpr const char* kCreaseProperty = "e:crease";
 /// Halfedge property (Vec2): the texture coordinate of the corner of face(h) at to_vertex(h)
 /// (face-varying: a seam is where two corners of a vertex differ). OBJ `vt`, glTF TEXCOORD_0.
 inline constexpr const char* kTexCoordProperty = "h:texcoord";
+/// Halfedge property (Vec2): the second texture coordinate set (a lightmap's, say), face-varying
+/// like the first and carried, refined, simplified and compared by the same rules, with seams
+/// of its own. glTF TEXCOORD_1, COLLADA's `<input semantic="TEXCOORD" set="1">`; OBJ, OFF,
+/// PLY and STL have none. The renderer and the viewer show the first set only.
+inline constexpr const char* kTexCoord1Property = "h:texcoord1";
+/// The texture coordinate sets, in order: what treats texture coordinates treats each of them.
+inline constexpr const char* kTexCoordSets[] = {kTexCoordProperty, kTexCoord1Property};
 /// Halfedge property (Vec3): the normal a file gave the corner of face(h) at to_vertex(h)
 /// (split normals; per-vertex normals are the seamless case). OBJ `vn`, glTF NORMAL.
 inline constexpr const char* kCornerNormalProperty = "h:normal";

@@ -65,12 +65,13 @@ struct AttributeDifference {
     std::string name;  ///< "texture coordinates", "corner normals", "vertex colours", …
     bool in_a = false, in_b = false;  ///< which mesh has it
     std::size_t compared = 0;         ///< corners, vertices or faces compared (both have it)
+    const char* elements = "faces";   ///< what `compared` counts: "corners", "vertices", "faces"
     std::size_t differing = 0;        ///< of those, whose values are not equal
     double max = 0.0;                 ///< the largest component difference (0 for materials)
     ElementRef first_a;               ///< A's first differing element
 };
 
-/// Texture coordinates (per corner), corner normals, vertex and face colours and face
+/// Texture coordinates (per corner, each set), corner normals, vertex and face colours and face
 /// materials (compared by name, colour, opacity and texture) of A against B's matched
 /// elements; each attribute either mesh has, in that order. Empty unless `match` is
 /// isomorphic.

@@ -50,9 +50,11 @@ struct MeshSoup {
     /// marks them in the "e:crease" edge property.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> creases;
     /// Per corner (one per entry of soup.indices) when the file has them, else empty: texture
-    /// coordinates and normals (read_mesh() keeps them as kTexCoordProperty and
+    /// coordinates, the second texture coordinate set (glTF TEXCOORD_1, COLLADA's TEXCOORD set
+    /// 1) and normals (read_mesh() keeps them as kTexCoordProperty, kTexCoord1Property and
     /// kCornerNormalProperty, attributes.h).
     std::vector<Vec2> corner_texcoords;
+    std::vector<Vec2> corner_texcoords1;
     std::vector<Vec3> corner_normals;
     /// Per vertex / per face RGBA colours (0–1) when the file has them, else empty
     /// (read_mesh() keeps them as kColorProperty and kFaceColorProperty).
@@ -95,6 +97,7 @@ struct MeshFormat {
     bool colors;             ///< vertex colours (kColorProperty)
     /// Texture coordinates and normals one per vertex (the seamless case of corner attributes)
     bool vertex_attributes;
+    bool second_texcoords;  ///< a second texture coordinate set (kTexCoord1Property)
 };
 
 /// Every mesh format, in the order messages list them (.dae, .gltf, .glb, .obj, .off, .ply,
@@ -133,10 +136,10 @@ LoadedMesh build_loaded_mesh(MeshSoup soup, const std::string& name);
 
 /// The soup a file would hold of `mesh` (a compacted copy when it has deleted elements), so
 /// that build_loaded_mesh() of it gives the mesh back: positions, each face's corners from
-/// where halfedge(f) leaves, and what build_loaded_mesh() keeps of a soup (texture coordinates
-/// and normals per corner, materials, the PLY properties `v:ply:*` and `f:ply:*`, crease
-/// marks). The edits that work on soups (the repair verbs, repair.h) go through it. Every other
-/// property is named in `unkept` ("the property v:weight"), when given.
+/// where halfedge(f) leaves, and what build_loaded_mesh() keeps of a soup (both texture
+/// coordinate sets and normals per corner, materials, the PLY properties `v:ply:*` and `f:ply:*`,
+/// crease marks). The edits that work on soups (the repair verbs, repair.h) go through it. Every
+/// other property is named in `unkept` ("the property v:weight"), when given.
 MeshSoup soup_from_mesh(const Mesh& mesh, std::vector<std::string>* unkept = nullptr);
 
 /// What a file of that extension (".obj") cannot keep of `mesh`, one phrase each ("12 crease
