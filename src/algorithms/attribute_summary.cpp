@@ -12,17 +12,6 @@
 
 namespace meshedit {
 
-bool is_uv_seam(const Mesh& mesh, Edge e, const HalfedgeProperty<Vec2>& uv) {
-    const Halfedge h = mesh.halfedge(e, 0);
-    const Halfedge t = mesh.halfedge(e, 1);
-    if (mesh.is_boundary(h) || mesh.is_boundary(t)) {
-        return false;
-    }
-    // h's face has the corner at to(h) on h and the one at from(h) on prev(h); t's face the
-    // same two vertices on prev(t) and t.
-    return !(uv[h] == uv[mesh.prev(t)]) || !(uv[mesh.prev(h)] == uv[t]);
-}
-
 bool is_material_border(const Mesh& mesh, Edge e, const FaceProperty<std::uint32_t>& material) {
     const Halfedge h = mesh.halfedge(e, 0);
     const Halfedge t = mesh.halfedge(e, 1);

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <utility>
 
+#include "meshedit/core/attribute_summary.h"
 #include "meshedit/core/attributes.h"
 
 namespace meshedit::remeshing {
@@ -280,22 +281,15 @@ AttributeSeams::AttributeSeams(const Mesh& mesh) : mesh_(mesh) {
 }
 
 bool AttributeSeams::is_seam(Edge e) const {
-    if (!any() || mesh_.is_boundary(e)) {
-        return false;
-    }
-    // h runs a -> b, t b -> a: in h's face the corners at b and a are h and prev(h) (a
-    // corner is named by the halfedge pointing at it), in t's face prev(t) and t.
-    const Halfedge h = mesh_.halfedge(e, 0), t = Mesh::twin(h);
-    if (material_ && material_[mesh_.face(h)] != material_[mesh_.face(t)]) {
+    if (material_ && is_material_border(mesh_, e, material_)) {
         return true;
     }
-    const Halfedge hp = mesh_.prev(h), tp = mesh_.prev(t);  // at a in h's face, at b in t's
     for (const auto& p : vec2_) {
-        if (!(p[h] == p[tp]) || !(p[hp] == p[t])) {
+        if (corners_differ(mesh_, e, p)) {
             return true;
         }
     }
-    return normal_ && (!(normal_[h] == normal_[tp]) || !(normal_[hp] == normal_[t]));
+    return normal_ && corners_differ(mesh_, e, normal_);
 }
 
 bool has_projected_attributes(const Mesh& mesh) {

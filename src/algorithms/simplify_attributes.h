@@ -22,6 +22,7 @@
 #include <optional>
 #include <vector>
 
+#include "meshedit/core/attribute_summary.h"
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/memory.h"
 #include "meshedit/core/mesh.h"
@@ -127,15 +128,11 @@ public:
     /// An interior edge whose faces give either end different texture coordinates, or whose
     /// faces have different materials.
     bool is_seam(Edge e) const {
-        if (mesh_.is_boundary(e)) {
-            return false;
-        }
-        const Halfedge h = mesh_.halfedge(e, 0), t = mesh_.halfedge(e, 1);
-        if (material_ && material_[mesh_.face(h)] != material_[mesh_.face(t)]) {
+        if (is_material_border(e)) {
             return true;
         }
         for (const HalfedgeProperty<Vec2>& uv : uv_) {
-            if (uv && (!(uv[h] == uv[mesh_.prev(t)]) || !(uv[mesh_.prev(h)] == uv[t]))) {
+            if (uv && is_uv_seam(mesh_, e, uv)) {
                 return true;
             }
         }
@@ -143,8 +140,7 @@ public:
     }
     /// An interior edge between faces of two materials.
     bool is_material_border(Edge e) const {
-        return material_ && !mesh_.is_boundary(e) &&
-               material_[mesh_.face(e, 0)] != material_[mesh_.face(e, 1)];
+        return material_ && meshedit::is_material_border(mesh_, e, material_);
     }
 
     /// Adds the attribute quadrics of a and b, each at its best values, to q.

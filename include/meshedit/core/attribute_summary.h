@@ -14,9 +14,25 @@
 
 namespace meshedit {
 
-/// Whether edge e is a UV seam: an interior edge whose two faces give one of its ends
-/// different texture coordinates. A boundary edge is not a seam.
-bool is_uv_seam(const Mesh& mesh, Edge e, const HalfedgeProperty<Vec2>& uv);
+/// Whether edge e is a seam of the corner values `corner` (texture coordinates, split
+/// normals): an interior edge whose two faces give one of its ends different values. A
+/// boundary edge is not a seam.
+template <class T>
+bool corners_differ(const Mesh& mesh, Edge e, const HalfedgeProperty<T>& corner) {
+    const Halfedge h = mesh.halfedge(e, 0);
+    const Halfedge t = mesh.halfedge(e, 1);
+    if (mesh.is_boundary(h) || mesh.is_boundary(t)) {
+        return false;
+    }
+    // h's face has the corner at to(h) on h and the one at from(h) on prev(h); t's face the
+    // same two vertices on prev(t) and t.
+    return !(corner[h] == corner[mesh.prev(t)]) || !(corner[mesh.prev(h)] == corner[t]);
+}
+
+/// Whether edge e is a UV seam (corners_differ() of its texture coordinates).
+inline bool is_uv_seam(const Mesh& mesh, Edge e, const HalfedgeProperty<Vec2>& uv) {
+    return corners_differ(mesh, e, uv);
+}
 
 /// Whether edge e separates faces of two materials.
 bool is_material_border(const Mesh& mesh, Edge e, const FaceProperty<std::uint32_t>& material);
