@@ -209,6 +209,9 @@ private:
         }
         if (i < 0) {
             const std::int64_t resolved = static_cast<std::int64_t>(count) + i;
+            if (resolved < 0 && std::string_view(what) != "vertex") {
+                return kMissing;  // finish() drops the attribute and says so
+            }
             if (resolved < 0) {
                 fail("face " + std::to_string(face_ + 1) + " refers to a " + what +
                      " that does not exist (relative index " + std::string(t) + ", " +
@@ -257,28 +260,45 @@ private:
         ++face_;
     }
 
+    // A face naming a missing element: "face 1 refers to a normal that does not exist (the
+    // file has …)".
+    std::string missing_text(std::size_t face, const char* what) const {
+        return "face " + std::to_string(face + 1) + " refers to a " + what +
+               " that does not exist (the file has " + std::to_string(out_.soup.positions.size()) +
+               " vertices, " + std::to_string(normals_.size()) + " normals and " +
+               std::to_string(texcoords_.size()) + " texture coordinates)";
+    }
+
     void finish() {
         const std::size_t nv = out_.soup.positions.size();
+        // A missing vertex leaves no face to build: the file is refused. A missing normal or
+        // texture coordinate drops that attribute alone; the mesh loads without it, said so.
+        std::string lost_n, lost_t;
         for (const auto& [face, line] : pending_) {
             for (std::uint32_t c = out_.soup.face_offsets[face];
                  c < out_.soup.face_offsets[face + 1]; ++c) {
+                if (out_.soup.indices[c] >= nv) {
+                    throw IoError(file_, where_line(line), missing_text(face, "vertex"));
+                }
                 const std::int64_t n = corner_normals_[c];
                 const std::int64_t t = corner_texcoords_[c];
-                const char* missing =
-                    out_.soup.indices[c] >= nv                                     ? "vertex"
-                    : (n >= 0 && static_cast<std::size_t>(n) >= normals_.size())   ? "normal"
-                    : (t >= 0 && static_cast<std::size_t>(t) >= texcoords_.size()) ? "texture "
-                                                                                     "coordinate"
-                                                                                   : nullptr;
-                if (missing != nullptr) {
-                    throw IoError(file_, where_line(line),
-                                  "face " + std::to_string(face + 1) + " refers to a " + missing +
-                                      " that does not exist (the file has " + std::to_string(nv) +
-                                      " vertices, " + std::to_string(normals_.size()) +
-                                      " normals and " + std::to_string(texcoords_.size()) +
-                                      " texture coordinates)");
+                if (lost_n.empty() && n >= 0 && static_cast<std::size_t>(n) >= normals_.size()) {
+                    lost_n = file_ + ": " + where_line(line) + ": " + missing_text(face, "normal");
+                }
+                if (lost_t.empty() && t >= 0 && static_cast<std::size_t>(t) >= texcoords_.size()) {
+                    lost_t = file_ + ": " + where_line(line) + ": " +
+                             missing_text(face, "texture coordinate");
                 }
             }
+        }
+        if (!lost_n.empty()) {
+            std::fill(corner_normals_.begin(), corner_normals_.end(), -1);
+            out_.notices.push_back("normals not kept: " + lost_n + "; the mesh loads without them");
+        }
+        if (!lost_t.empty()) {
+            std::fill(corner_texcoords_.begin(), corner_texcoords_.end(), -1);
+            out_.notices.push_back("texture coordinates not kept: " + lost_t +
+                                   "; the mesh loads without them");
         }
         // Per-vertex normals exist when every corner of a vertex names the same `vn`.
         std::vector<std::int64_t> normal_of(nv, -1);
@@ -354,6 +374,8 @@ private:
     std::size_t points_and_lines_ = 0;
     std::size_t line_ = 0;
     std::size_t face_ = 0;
+    // A relative vt or vn index before the first one: missing (finish() drops the attribute).
+    static constexpr std::int64_t kMissing = std::int64_t{1} << 62;
     struct Pending {
         std::size_t face;
         std::size_t line;

@@ -293,10 +293,15 @@ TEST(ObjAttributes, MissingLibraryAndBadIndicesAreNamed) {
     EXPECT_EQ(piped.notices[0],
               "material library 'quad.mtl' is not a regular file: material names kept, colours and "
               "textures not");
+    const MeshSoup no_uv = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2 2/1 3/1\n", "t.obj");
+    EXPECT_EQ(no_uv.soup.n_faces(), 1u);
+    EXPECT_TRUE(no_uv.corner_texcoords.empty());
     EXPECT_EQ(
-        test::io_error_of([] { parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2 2/1 3/1\n", "t.obj"); }),
-        "t.obj: line 4: face 1 refers to a texture coordinate that does not exist (the "
-        "file has 3 vertices, 0 normals and 0 texture coordinates)");
+        no_uv.notices,
+        std::vector<std::string>{
+            "texture coordinates not kept: t.obj: line 4: face 1 refers to a texture coordinate "
+            "that does not exist (the file has 3 vertices, 0 normals and 0 texture "
+            "coordinates); the mesh loads without them"});
     EXPECT_EQ(test::io_error_of([] { parse_obj("vt nan 0\n", "n.obj"); }),
               "n.obj: line 1: texture coordinate 1 is not finite (NaN or infinity)");
 }

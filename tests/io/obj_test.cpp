@@ -154,8 +154,20 @@ TEST(Obj, IndicesAreCheckedWithTheirLine) {
                     "-4, 3 so far)");
     EXPECT_CONTAINS(io_error_of([&] { parse_obj(tri + "f 1 2 0\n", "z.obj"); }),
                     "z.obj: line 4: face 1 uses vertex index 0; OBJ indices start at 1");
-    EXPECT_CONTAINS(io_error_of([&] { parse_obj(tri + "vn 0 0 1\nf 1//1 2//2 3//1\n", "n.obj"); }),
-                    "n.obj: line 5: face 1 refers to a normal that does not exist");
+    // A missing normal or texture coordinate drops that attribute, said in one line; the
+    // mesh loads.
+    const MeshSoup normals = parse_obj(tri + "vn 0 0 1\nf 1//1 2//2 3//1\n", "n.obj");
+    EXPECT_EQ(normals.soup.n_faces(), 1u);
+    EXPECT_TRUE(normals.corner_normals.empty());
+    ASSERT_EQ(normals.notices.size(), 1u);
+    EXPECT_EQ(
+        normals.notices[0],
+        "normals not kept: n.obj: line 5: face 1 refers to a normal that does not exist (the file "
+        "has 3 vertices, 1 normals and 0 texture coordinates); the mesh loads without them");
+    const MeshSoup relative = parse_obj(tri + "vt 0 0\nf 1/1 2/-2 3/1\n", "t.obj");
+    EXPECT_TRUE(relative.corner_texcoords.empty());
+    ASSERT_EQ(relative.notices.size(), 1u);
+    EXPECT_CONTAINS(relative.notices[0], "texture coordinates not kept: t.obj: line 5: face 1");
     // A face may name a vertex defined after it.
     EXPECT_EQ(parse_obj("f 1 2 3\n" + tri, "late.obj").soup.n_faces(), 1u);
 }
