@@ -189,15 +189,25 @@ def selection_target_rows(jobs, not_measured):
                               ("select_ring_1m", "edge ring, 1M quads (1000 edges)", 1.0),
                               ("select_linked_1m", "select linked, 1M triangles", 50.0),
                               ("select_box_1m", "box select through, 1M triangles", 16.0),
-                              ("select_box_visible_1m", "box select of what shows, 1M triangles",
-                               16.0)):
+                              ("select_box_visible_1m",
+                               "box select of what shows, 1M triangles (the release; the "
+                               "view's points kept from the press)", 16.0),
+                              ("select_lasso_visible_1m",
+                               "lasso select of what shows, 1M triangles (the release)", 16.0)):
         x = ok_results(jobs.get(job, [])).get("meshedit", {})
         if "p99_ms" not in x:
             rows.append((label, f"p99 ≤ {limit:g} ms", not_measured(job, "not run"), "n/a"))
             continue
-        rows.append((label, f"p99 ≤ {limit:g} ms",
-                     f"p99 {x['p99_ms']:.3f} ms, p50 {x['median_ms']:.3f} ms",
+        measured = f"p99 {x['p99_ms']:.3f} ms, p50 {x['median_ms']:.3f} ms"
+        if "view_build_ms" in x:
+            measured += f"; the press builds the view's points in {x['view_build_ms']:.1f} ms"
+        rows.append((label, f"p99 ≤ {limit:g} ms", measured,
                      "yes" if x["p99_ms"] <= limit else "no"))
+    cold = ok_results(jobs.get("select_box_visible_1m_cold", [])).get("meshedit", {})
+    if "p99_ms" in cold:
+        rows.append(("box select of what shows, 1M triangles, first region in a new view "
+                     "(build and query)", "reported", f"p99 {cold['p99_ms']:.3f} ms, "
+                     f"p50 {cold['median_ms']:.3f} ms", "n/a"))
     return rows
 
 

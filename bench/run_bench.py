@@ -86,7 +86,8 @@ DEFAULT_CONFIGS = {
                      ("editor_simplify_1m", "core"), ("editor_simplify_1m", "viewer")],
     "bench_selection": [(job, "meshedit") for job in (
         "select_loop_1m", "select_ring_1m", "select_linked_1m", "select_grow_1m",
-        "select_box_1m", "select_box_visible_1m")],
+        "select_box_1m", "select_box_visible_1m", "select_box_visible_1m_cold",
+        "select_lasso_visible_1m")],
     "bench_catmark": [
         (job, impl)
         for job in ["cc_1m_1level"] + [f"cc_100k_levels_{k}" for k in range(1, 4)]

@@ -3,9 +3,11 @@
 #include "meshedit/overlay/region_pick.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <thread>
 
@@ -168,60 +170,91 @@ public:
         thread_local std::vector<std::vector<Pixel>> cache;
         cache.resize(std::max<std::size_t>(cache.size(), std::max(1u, thread_count())));
         std::vector<std::vector<Pixel>>& parts = cache;  // this thread's, named in the workers
-        ranges_ =
-            in_ranges(mesh.faces_size(), [&](std::size_t first, std::size_t last, unsigned k) {
-                std::vector<Pixel>& buffer = parts[k];
-                buffer.assign(size, Pixel{});
-                std::vector<std::uint32_t> ids;
-                for (std::size_t i = first; i < last; ++i) {
-                    const Face f(static_cast<std::uint32_t>(i));
-                    if (mesh.is_deleted(f)) {
+        ranges_ = in_ranges(mesh.faces_size(), [&](std::size_t first, std::size_t last,
+                                                   unsigned k) {
+            std::vector<Pixel>& buffer = parts[k];
+            buffer.assign(size, Pixel{});
+            std::vector<std::uint32_t> ids;
+            for (std::size_t i = first; i < last; ++i) {
+                const Face f(static_cast<std::uint32_t>(i));
+                if (mesh.is_deleted(f)) {
+                    continue;
+                }
+                const Halfedge h0 = mesh.halfedge(f), h1 = mesh.next(h0), h2 = mesh.next(h1);
+                if (mesh.next(h2) == h0) {
+                    // A triangle, most faces of a big mesh: the steps below without
+                    // the walk and the list (the same arithmetic, in the same order).
+                    const std::uint32_t a = mesh.to_vertex(h0).idx(), b = mesh.to_vertex(h1).idx(),
+                                        c = mesh.to_vertex(h2).idx();
+                    if ((p.code[a] & p.code[b] & p.code[c] & kFar) != 0) {
                         continue;
                     }
-                    ids.clear();
-                    std::uint8_t all = 0xff;
-                    for (const Halfedge h : mesh.halfedges(f)) {
-                        ids.push_back(mesh.to_vertex(h).idx());
-                        all &= p.code[ids.back()];
-                    }
-                    if ((all & kFar) != 0) {
-                        continue;  // beyond the window: no pixel of it to draw
-                    }
                     FaceSeen seen;
-                    glm::vec3 start{}, previous{};
-                    for (const std::uint32_t v : ids) {
-                        seen.placed = seen.placed && p.placed[v] != 0;
-                        const glm::vec3& q = p.screen[v];
-                        // A fan (start, previous, q); a face across the eye's plane hides
-                        // nothing we can place: not drawn from there on.
-                        if (seen.corners == 0.0f) {
-                            start = q;
-                        } else if (seen.corners >= 2.0f && seen.placed) {
-                            seen.area += (previous.x - start.x) * (q.y - start.y) -
-                                         (q.x - start.x) * (previous.y - start.y);
-                            draw(buffer, f, start, previous, q, cull);
+                    seen.corners = 3.0f;
+                    seen.placed = (p.placed[a] & p.placed[b] & p.placed[c]) != 0;
+                    if (seen.placed) {
+                        const glm::vec3 &sa = p.screen[a], &sb = p.screen[b], &sc = p.screen[c];
+                        seen.area = (sb.x - sa.x) * (sc.y - sa.y) - (sc.x - sa.x) * (sb.y - sa.y);
+                        draw(buffer, f, sa, sb, sc, seen.area, cull);
+                        if (cull && seen.area >= 0.0f) {
+                            continue;
                         }
-                        previous = q;
-                        seen.corners += 1.0f;
                     }
-                    if (cull && seen.placed && seen.area >= 0.0f) {
-                        continue;  // turned away where that hides it: nothing to look at
-                    }
-                    for (const std::uint32_t v : ids) {
-                        seen.clip += p.clip[v];
-                    }
+                    seen.clip = p.clip[a] + p.clip[b] + p.clip[c];
                     look(k, f, seen);
+                    continue;
+                }
+                ids.clear();
+                std::uint8_t all = 0xff;
+                for (const Halfedge h : mesh.halfedges(f)) {
+                    ids.push_back(mesh.to_vertex(h).idx());
+                    all &= p.code[ids.back()];
+                }
+                if ((all & kFar) != 0) {
+                    continue;  // beyond the window: no pixel of it to draw
+                }
+                FaceSeen seen;
+                glm::vec3 start{}, previous{};
+                for (const std::uint32_t v : ids) {
+                    seen.placed = seen.placed && p.placed[v] != 0;
+                    const glm::vec3& q = p.screen[v];
+                    // A fan (start, previous, q); a face across the eye's plane hides
+                    // nothing we can place: not drawn from there on.
+                    if (seen.corners == 0.0f) {
+                        start = q;
+                    } else if (seen.corners >= 2.0f && seen.placed) {
+                        seen.area += (previous.x - start.x) * (q.y - start.y) -
+                                     (q.x - start.x) * (previous.y - start.y);
+                        draw(buffer, f, start, previous, q,
+                             (previous.x - start.x) * (q.y - start.y) -
+                                 (q.x - start.x) * (previous.y - start.y),
+                             cull);
+                    }
+                    previous = q;
+                    seen.corners += 1.0f;
+                }
+                if (cull && seen.placed && seen.area >= 0.0f) {
+                    continue;  // turned away where that hides it: nothing to look at
+                }
+                for (const std::uint32_t v : ids) {
+                    seen.clip += p.clip[v];
+                }
+                look(k, f, seen);
+            }
+        });
+        pixels_ = parts[0].data();
+        if (ranges_ > 1) {  // the merge too by ranges (of pixels), in the same order of buffers
+            in_ranges(size, [&](std::size_t first, std::size_t last, unsigned) {
+                for (unsigned k = 1; k < ranges_; ++k) {
+                    for (std::size_t i = first; i < last; ++i) {
+                        if (parts[k][i].face != kEmpty &&
+                            (pixels_[i].face == kEmpty ||
+                             depth_at(parts[k][i], i) < depth_at(pixels_[i], i))) {
+                            pixels_[i] = parts[k][i];
+                        }
+                    }
                 }
             });
-        pixels_ = parts[0].data();
-        for (unsigned k = 1; k < ranges_; ++k) {
-            for (std::size_t i = 0; i < size; ++i) {
-                if (parts[k][i].face != kEmpty &&
-                    (pixels_[i].face == kEmpty ||
-                     depth_at(parts[k][i], i) < depth_at(pixels_[i], i))) {
-                    pixels_[i] = parts[k][i];
-                }
-            }
         }
     }
 
@@ -259,9 +292,9 @@ private:
         return px.z0 + px.gx * x + px.gy * y;
     }
 
+    // Draws triangle (a, b, c) of face f, whose signed area on the screen is `area`.
     void draw(std::vector<Pixel>& pixels, Face f, const glm::vec3& a, const glm::vec3& b,
-              const glm::vec3& c, bool cull) const {
-        const float area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+              const glm::vec3& c, float area, bool cull) const {
         // Pixels run down the screen: a counter-clockwise (front) triangle has area < 0.
         if (area == 0.0f || !std::isfinite(area) || (cull && area > 0.0f)) {
             return;
@@ -305,20 +338,23 @@ private:
     Pixel* pixels_ = nullptr;  // the first thread's buffer, the others merged into it
 };
 
-// What a region selects: `in_region(pixel)` says whether a projected point lies inside;
-// [lo, hi] bounds the region; `box`: the region is that box (a face whose corners are all
-// inside it has its centre inside too).
-template <class InRegion>
-std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, int width,
-                                        int height, ElementRef::Kind kind, Reach reach,
-                                        glm::vec2 lo, glm::vec2 hi, bool box,
-                                        const InRegion& in_region) {
-    const bool need_points = reach != Reach::Through || kind != ElementRef::Kind::Face;
+// The points of what a region selects, in increasing index order, as make(index, at): face
+// centres (`faces`) or vertices, at their pixel. `in_region(pixel)` says whether a projected
+// point lies inside; [lo, hi] bounds the region; `box`: the region is that box (a face whose
+// corners are all inside it has its centre inside too, and is made with `at` left at zero).
+// `tile` > 0: faces that the view shows come in the order of the tiles of that many pixels
+// (row by row) that hold their centre, not of their index: the depth buffer is then read a
+// tile at a time rather than all over.
+template <class T, class InRegion, class Make>
+std::vector<T> points_inside(const Mesh& mesh, const Camera& camera, int width, int height,
+                             bool faces, Reach reach, glm::vec2 lo, glm::vec2 hi, bool box,
+                             const InRegion& in_region, const Make& make, int tile = 0) {
+    const bool need_points = reach != Reach::Through || !faces;
     const Projected p =
         project_all(mesh, camera, width, height, need_points, need_points || !box, lo, hi);
     const bool cull = reach == Reach::VisibleFrontOnly;
     std::optional<DepthBuffer> depth;
-    if (reach != Reach::Through && kind == ElementRef::Kind::Face) {
+    if (reach != Reach::Through && faces) {
         // The faces whose centre is inside and which turn toward the eye where that counts,
         // found while the depth buffer is drawn; then those the buffer shows.
         struct Candidate {
@@ -339,27 +375,70 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
                 candidates[k].push_back({s, f});
             }
         });
-        std::vector<ElementRef> out;
+        std::vector<T> out;
         std::size_t most = 0;
         for (unsigned k = 0; k < depth->ranges(); ++k) {
             most += candidates[k].size();
         }
         out.reserve(most);
-        for (unsigned k = 0; k < depth->ranges(); ++k) {
-            for (const Candidate& c : candidates[k]) {
+        const auto keep_shown = [&](const std::vector<Candidate>& list) {
+            for (const Candidate& c : list) {
                 if (depth->shows(c.s, [&](Face g) { return g == c.f; })) {
-                    out.push_back(ElementRef::face(c.f));
+                    out.push_back(make(c.f.idx(), glm::vec2(c.s)));
                 }
             }
+        };
+        if (tile <= 0) {
+            for (unsigned k = 0; k < depth->ranges(); ++k) {
+                keep_shown(candidates[k]);
+            }
+            return out;
+        }
+        // By tile: a counting sort of the candidates (their centres lie in [lo, hi]).
+        const int tiles_x = std::max(1, (width + tile - 1) / tile);
+        const int tiles_y = std::max(1, (height + tile - 1) / tile);
+        const auto tile_of = [&](const glm::vec3& s) {
+            const int x = std::clamp(static_cast<int>(s.x) / tile, 0, tiles_x - 1);
+            const int y = std::clamp(static_cast<int>(s.y) / tile, 0, tiles_y - 1);
+            return static_cast<std::size_t>(y) * tiles_x + x;
+        };
+        std::vector<std::uint32_t> next(static_cast<std::size_t>(tiles_x) * tiles_y + 1, 0);
+        for (unsigned k = 0; k < depth->ranges(); ++k) {
+            for (const Candidate& c : candidates[k]) {
+                ++next[tile_of(c.s) + 1];
+            }
+        }
+        std::partial_sum(next.begin(), next.end(), next.begin());
+        thread_local std::vector<Candidate> sorted;  // kept, as above
+        sorted.resize(most);
+        for (unsigned k = 0; k < depth->ranges(); ++k) {
+            for (const Candidate& c : candidates[k]) {
+                sorted[next[tile_of(c.s)]++] = c;
+            }
+        }
+        // The tests by ranges of the sorted list too (the buffer is only read now).
+        std::vector<std::vector<T>> shown_parts(std::max(1u, thread_count()));
+        const std::vector<Candidate>& list = sorted;  // this thread's, named in the workers
+        const unsigned ran = in_ranges(most, [&](std::size_t first, std::size_t last, unsigned k) {
+            std::vector<T>& part = k == 0 ? out : shown_parts[k];
+            for (std::size_t i = first; i < last; ++i) {
+                const Candidate& c = list[i];
+                if (depth->shows(c.s, [&](Face g) { return g == c.f; })) {
+                    part.push_back(make(c.f.idx(), glm::vec2(c.s)));
+                }
+            }
+        });
+        for (unsigned k = 1; k < ran; ++k) {
+            out.insert(out.end(), shown_parts[k].begin(), shown_parts[k].end());
         }
         return out;
     }
     if (reach != Reach::Through) {
         depth.emplace(mesh, p, lo, hi, cull, [](unsigned, Face, const FaceSeen&) {});
     }
-    std::vector<ElementRef> out;
-    if (kind == ElementRef::Kind::Face) {
-        std::vector<std::vector<ElementRef>> parts(std::max(1u, thread_count()));
+    std::vector<T> out;
+    if (faces) {
+        std::vector<std::vector<T>> parts(std::max(1u, thread_count()));
         const unsigned ran =
             in_ranges(mesh.faces_size(), [&](std::size_t first, std::size_t last, unsigned k) {
                 parts[k].reserve(last - first);  // address space only: no copies as it grows
@@ -373,7 +452,7 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
                         continue;  // every corner beyond one side: so is the centre
                     }
                     if (box && (code >> 8 & kNotInside) == 0) {
-                        parts[k].push_back(ElementRef::face(f));  // every corner inside
+                        parts[k].push_back(make(f.idx(), glm::vec2(0.0f)));  // every corner in
                         continue;
                     }
                     glm::vec4 sum(0.0f);
@@ -384,7 +463,7 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
                     }
                     glm::vec3 s;
                     if (p.to_screen(sum / n, s) && in_region(glm::vec2(s))) {
-                        parts[k].push_back(ElementRef::face(f));
+                        parts[k].push_back(make(f.idx(), glm::vec2(s)));
                     }
                 }
             });
@@ -396,7 +475,6 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
         }
         return out;
     }
-    std::vector<bool> in(mesh.vertices_size(), false);
     for (const Vertex v : mesh.vertices()) {
         const glm::vec3& s = p.screen[v.idx()];
         if (p.placed[v.idx()] == 0 || !in_region(glm::vec2(s))) {
@@ -417,19 +495,76 @@ std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, 
         if (depth && !depth->shows(s, around_v)) {
             continue;
         }
-        in[v.idx()] = true;
-        if (kind == ElementRef::Kind::Vertex) {
-            out.push_back(ElementRef::vertex(v));
-        }
+        out.push_back(make(v.idx(), glm::vec2(s)));
     }
-    if (kind == ElementRef::Kind::Edge || kind == ElementRef::Kind::Halfedge) {
-        for (const Edge e : mesh.edges()) {
-            if (in[mesh.vertex(e, 0).idx()] && in[mesh.vertex(e, 1).idx()]) {
-                out.push_back(ElementRef::edge(e));
-            }
+    return out;
+}
+
+// The edges both of whose ends are `in` (Blender's edge mode: an edge is inside when its
+// ends are), in increasing index order.
+template <class In>
+std::vector<ElementRef> edges_between(const Mesh& mesh, const In& in) {
+    std::vector<ElementRef> out;
+    for (const Edge e : mesh.edges()) {
+        if (in(mesh.vertex(e, 0).idx()) && in(mesh.vertex(e, 1).idx())) {
+            out.push_back(ElementRef::edge(e));
         }
     }
     return out;
+}
+
+template <class InRegion>
+std::vector<ElementRef> elements_inside(const Mesh& mesh, const Camera& camera, int width,
+                                        int height, ElementRef::Kind kind, Reach reach,
+                                        glm::vec2 lo, glm::vec2 hi, bool box,
+                                        const InRegion& in_region) {
+    const bool faces = kind == ElementRef::Kind::Face;
+    const auto make = [faces](std::uint32_t i, glm::vec2) {
+        return faces ? ElementRef::face(Face(i)) : ElementRef::vertex(Vertex(i));
+    };
+    std::vector<ElementRef> points = points_inside<ElementRef>(mesh, camera, width, height, faces,
+                                                               reach, lo, hi, box, in_region, make);
+    if (faces || kind == ElementRef::Kind::Vertex) {
+        return points;
+    }
+    std::vector<bool> in(mesh.vertices_size(), false);
+    for (const ElementRef& v : points) {
+        in[v.index] = true;
+    }
+    return edges_between(mesh, [&](std::uint32_t v) { return in[v]; });
+}
+
+// Even-odd: a ray to the right of q crosses the outline an odd number of times.
+bool in_outline(const std::vector<glm::vec2>& outline, glm::vec2 q) {
+    bool odd = false;
+    for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+        const glm::vec2 &a = outline[i], &b = outline[j];
+        if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
+            odd = !odd;
+        }
+    }
+    return odd;
+}
+
+bool in_circle(glm::vec2 centre, float radius, glm::vec2 q) {
+    const glm::vec2 d = q - centre;
+    return glm::dot(d, d) <= radius * radius;
+}
+
+glm::vec2 lower(const std::vector<glm::vec2>& outline) {
+    glm::vec2 lo = outline[0];
+    for (const glm::vec2& p : outline) {
+        lo = glm::min(lo, p);
+    }
+    return lo;
+}
+
+glm::vec2 upper(const std::vector<glm::vec2>& outline) {
+    glm::vec2 hi = outline[0];
+    for (const glm::vec2& p : outline) {
+        hi = glm::max(hi, p);
+    }
+    return hi;
 }
 
 }  // namespace
@@ -449,26 +584,12 @@ std::vector<ElementRef> elements_in_lasso(const Mesh& mesh, const Camera& camera
     if (outline.size() < 3) {
         return {};
     }
-    glm::vec2 lo = outline[0], hi = outline[0];
-    for (const glm::vec2& p : outline) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    // Even-odd: a ray to the right of q crosses the outline an odd number of times.
-    const auto in_outline = [&](const glm::vec2& q) {
-        if (q.x < lo.x || q.x > hi.x || q.y < lo.y || q.y > hi.y) {
-            return false;
-        }
-        bool odd = false;
-        for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
-            const glm::vec2 &a = outline[i], &b = outline[j];
-            if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
-                odd = !odd;
-            }
-        }
-        return odd;
-    };
-    return elements_inside(mesh, camera, width, height, kind, reach, lo, hi, false, in_outline);
+    const glm::vec2 lo = lower(outline), hi = upper(outline);
+    return elements_inside(mesh, camera, width, height, kind, reach, lo, hi, false,
+                           [&](const glm::vec2& q) {
+                               return q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y &&
+                                      in_outline(outline, q);
+                           });
 }
 
 std::vector<ElementRef> elements_in_circle(const Mesh& mesh, const Camera& camera, glm::vec2 centre,
@@ -476,10 +597,215 @@ std::vector<ElementRef> elements_in_circle(const Mesh& mesh, const Camera& camer
                                            ElementRef::Kind kind, Reach reach) {
     const glm::vec2 r(radius, radius);
     return elements_inside(mesh, camera, width, height, kind, reach, centre - r, centre + r, false,
-                           [&](const glm::vec2& q) {
-                               const glm::vec2 d = q - centre;
-                               return glm::dot(d, d) <= radius * radius;
-                           });
+                           [&](const glm::vec2& q) { return in_circle(centre, radius, q); });
+}
+
+// ShownPoints -----------------------------------------------------------------------------
+
+ShownPoints::ShownPoints(const Mesh& mesh, const Camera& camera, int width, int height,
+                         ElementRef::Kind kind, Reach reach)
+    : width_(std::max(width, 1)),
+      height_(std::max(height, 1)),
+      tiles_x_((width_ + kTile - 1) / kTile),
+      tiles_y_((height_ + kTile - 1) / kTile),
+      kind_(kind == ElementRef::Kind::Halfedge ? ElementRef::Kind::Edge : kind),
+      reach_(reach) {
+    const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+    view_projection_ = camera.projection(aspect) * camera.view();
+    const bool faces = kind_ == ElementRef::Kind::Face;
+    elements_ = faces ? mesh.faces_size() : mesh.vertices_size();
+    // Every point in the image: what any region in this view could select.
+    const glm::vec2 lo(0.0f), hi(static_cast<float>(width_), static_cast<float>(height_));
+    const std::vector<Point> found = points_inside<Point>(
+        mesh, camera, width_, height_, faces, reach, lo, hi, false,
+        [&](const glm::vec2& q) {
+            return q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
+        },
+        [](std::uint32_t i, glm::vec2 at) {
+            return Point{at, i};
+        },
+        kTile);
+    // Into tiles by a counting sort; a tile holds the points of its closed square.
+    const auto tile_of = [&](glm::vec2 at) {
+        const int x = std::min(tiles_x_ - 1, static_cast<int>(at.x) / kTile);
+        const int y = std::min(tiles_y_ - 1, static_cast<int>(at.y) / kTile);
+        return static_cast<std::size_t>(y) * tiles_x_ + x;
+    };
+    starts_.assign(static_cast<std::size_t>(tiles_x_) * tiles_y_ + 1, 0);
+    for (const Point& q : found) {
+        ++starts_[tile_of(q.at) + 1];
+    }
+    for (std::size_t t = 1; t < starts_.size(); ++t) {
+        starts_[t] += starts_[t - 1];
+    }
+    points_.resize(found.size());
+    std::vector<std::uint32_t> next(starts_.begin(), starts_.end() - 1);
+    for (const Point& q : found) {
+        points_[next[tile_of(q.at)]++] = q;
+    }
+}
+
+bool ShownPoints::fits(const Camera& camera, int width, int height, ElementRef::Kind kind,
+                       Reach reach) const {
+    if (std::max(width, 1) != width_ || std::max(height, 1) != height_ || reach != reach_ ||
+        (kind == ElementRef::Kind::Halfedge ? ElementRef::Kind::Edge : kind) != kind_) {
+        return false;
+    }
+    const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+    return camera.projection(aspect) * camera.view() == view_projection_;
+}
+
+template <class Classify, class Inside>
+std::vector<ElementRef> ShownPoints::select(const Mesh& mesh, glm::vec2 lo, glm::vec2 hi,
+                                            const Classify& classify, const Inside& inside) const {
+    std::vector<std::uint64_t> bits((elements_ + 63) / 64, 0);
+    const auto take = [&](std::uint32_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); };
+    // The tiles [lo, hi] touches, one more on each side (a point on a tile's right side
+    // belongs to the next tile; the classifiers decide exactly).
+    if (std::isfinite(lo.x) && std::isfinite(lo.y) && std::isfinite(hi.x) && std::isfinite(hi.y)) {
+        const glm::vec2 most(static_cast<float>(width_ + kTile),
+                             static_cast<float>(height_ + kTile));
+        const glm::vec2 first = glm::clamp(lo, glm::vec2(0.0f), most) / static_cast<float>(kTile);
+        const glm::vec2 last = glm::clamp(hi, glm::vec2(0.0f), most) / static_cast<float>(kTile);
+        const int tx0 = std::max(0, static_cast<int>(first.x) - 1);
+        const int ty0 = std::max(0, static_cast<int>(first.y) - 1);
+        const int tx1 = std::min(tiles_x_ - 1, static_cast<int>(last.x) + 1);
+        const int ty1 = std::min(tiles_y_ - 1, static_cast<int>(last.y) + 1);
+        for (int ty = ty0; ty <= ty1; ++ty) {
+            for (int tx = tx0; tx <= tx1; ++tx) {
+                const std::size_t t = static_cast<std::size_t>(ty) * tiles_x_ + tx;
+                if (starts_[t] == starts_[t + 1]) {
+                    continue;
+                }
+                const glm::vec2 a(static_cast<float>(tx * kTile), static_cast<float>(ty * kTile));
+                const Cover cover = classify(a, a + static_cast<float>(kTile));
+                for (std::uint32_t i = starts_[t]; i < starts_[t + 1] && cover != Cover::Outside;
+                     ++i) {
+                    if (cover == Cover::Inside || inside(points_[i].at)) {
+                        take(points_[i].index);
+                    }
+                }
+            }
+        }
+    }
+    const auto has = [&](std::uint32_t i) { return (bits[i >> 6] >> (i & 63) & 1) != 0; };
+    if (kind_ == ElementRef::Kind::Edge) {
+        return edges_between(mesh, has);
+    }
+    std::vector<ElementRef> out;
+    for (std::size_t w = 0; w < bits.size(); ++w) {
+        for (std::uint64_t word = bits[w]; word != 0; word &= word - 1) {
+            const auto i = static_cast<std::uint32_t>(w * 64 + std::countr_zero(word));
+            out.push_back(kind_ == ElementRef::Kind::Face ? ElementRef::face(Face(i))
+                                                          : ElementRef::vertex(Vertex(i)));
+        }
+    }
+    return out;
+}
+
+std::vector<ElementRef> ShownPoints::in_box(const Mesh& mesh, glm::vec2 a, glm::vec2 b) const {
+    const glm::vec2 lo = glm::min(a, b), hi = glm::max(a, b);
+    return select(
+        mesh, lo, hi,
+        [&](glm::vec2 ta, glm::vec2 tb) {
+            if (tb.x < lo.x || ta.x > hi.x || tb.y < lo.y || ta.y > hi.y) {
+                return Cover::Outside;
+            }
+            return ta.x >= lo.x && tb.x <= hi.x && ta.y >= lo.y && tb.y <= hi.y ? Cover::Inside
+                                                                                : Cover::Mixed;
+        },
+        [&](glm::vec2 q) { return q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y; });
+}
+
+std::vector<ElementRef> ShownPoints::in_lasso(const Mesh& mesh,
+                                              const std::vector<glm::vec2>& outline) const {
+    if (outline.size() < 3) {
+        return {};
+    }
+    const glm::vec2 lo = lower(outline), hi = upper(outline);
+    // Tiles an edge of the outline comes within a pixel of are decided point by point; every
+    // other tile lies wholly on one side, which its centre tells.
+    std::vector<std::uint8_t> crossed(static_cast<std::size_t>(tiles_x_) * tiles_y_, 0);
+    const float size = static_cast<float>(kTile);
+    const auto column = [&](float x) {
+        return std::clamp(static_cast<int>(std::floor(x / size)), 0, tiles_x_ - 1);
+    };
+    for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+        const glm::vec2 p = outline[j], q = outline[i];
+        // Row by row of tiles: the part of the edge within a pixel of the row's band, and
+        // the tiles within a pixel of that part.
+        const float top = std::min(p.y, q.y) - 1.0f, bottom = std::max(p.y, q.y) + 1.0f;
+        const int row0 = std::clamp(static_cast<int>(std::floor(top / size)), 0, tiles_y_ - 1);
+        const int row1 = std::clamp(static_cast<int>(std::floor(bottom / size)), 0, tiles_y_ - 1);
+        for (int ty = row0; ty <= row1; ++ty) {
+            float left = std::min(p.x, q.x), right = std::max(p.x, q.x);
+            if (std::abs(q.y - p.y) > 1e-3f) {
+                const auto x_at = [&](float y) {
+                    const float t = std::clamp((y - p.y) / (q.y - p.y), 0.0f, 1.0f);
+                    return p.x + t * (q.x - p.x);
+                };
+                const float a = x_at(static_cast<float>(ty) * size - 1.0f);
+                const float b = x_at(static_cast<float>(ty + 1) * size + 1.0f);
+                left = std::min(a, b);
+                right = std::max(a, b);
+            }
+            for (int tx = column(left - 1.0f); tx <= column(right + 1.0f); ++tx) {
+                crossed[static_cast<std::size_t>(ty) * tiles_x_ + tx] = 1;
+            }
+        }
+    }
+    // The edges that can cross a point's rightward ray: those spanning its row of tiles in y
+    // (the parity is the same as over every edge, each edge tested the same way).
+    std::vector<std::vector<std::uint32_t>> spanning(static_cast<std::size_t>(tiles_y_));
+    for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+        const float top = std::min(outline[i].y, outline[j].y) / size;
+        const float bottom = std::max(outline[i].y, outline[j].y) / size;
+        for (int ty = std::clamp(static_cast<int>(std::floor(top)), 0, tiles_y_ - 1);
+             ty <= std::clamp(static_cast<int>(std::floor(bottom)), 0, tiles_y_ - 1); ++ty) {
+            spanning[static_cast<std::size_t>(ty)].push_back(static_cast<std::uint32_t>(i));
+        }
+    }
+    const auto inside = [&](glm::vec2 q) {
+        if (q.x < lo.x || q.x > hi.x || q.y < lo.y || q.y > hi.y) {
+            return false;
+        }
+        const int row = std::clamp(static_cast<int>(q.y) / kTile, 0, tiles_y_ - 1);
+        bool odd = false;
+        for (const std::uint32_t i : spanning[static_cast<std::size_t>(row)]) {
+            const glm::vec2 &a = outline[i], &b = outline[i == 0 ? outline.size() - 1 : i - 1];
+            if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
+                odd = !odd;
+            }
+        }
+        return odd;
+    };
+    return select(
+        mesh, lo, hi,
+        [&](glm::vec2 ta, glm::vec2 tb) {
+            const int tx = static_cast<int>(ta.x) / kTile, ty = static_cast<int>(ta.y) / kTile;
+            if (crossed[static_cast<std::size_t>(ty) * tiles_x_ + tx] != 0) {
+                return Cover::Mixed;
+            }
+            return in_outline(outline, (ta + tb) * 0.5f) ? Cover::Inside : Cover::Outside;
+        },
+        inside);
+}
+
+std::vector<ElementRef> ShownPoints::in_circle(const Mesh& mesh, glm::vec2 centre,
+                                               float radius) const {
+    const glm::vec2 r(radius, radius);
+    return select(
+        mesh, centre - r, centre + r,
+        [&](glm::vec2 ta, glm::vec2 tb) {
+            // A hundredth of a pixel clear of the circle: rounding cannot move a point across.
+            const glm::vec2 nearest = glm::clamp(centre, ta, tb) - centre;
+            if (glm::length(nearest) > radius + 0.01f) {
+                return Cover::Outside;
+            }
+            const glm::vec2 farthest = glm::max(glm::abs(ta - centre), glm::abs(tb - centre));
+            return glm::length(farthest) < radius - 0.01f ? Cover::Inside : Cover::Mixed;
+        },
+        [&](glm::vec2 q) { return meshedit::in_circle(centre, radius, q); });
 }
 
 }  // namespace meshedit

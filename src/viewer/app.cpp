@@ -520,6 +520,9 @@ void App::apply(const Outcome& outcome) {
     }
     const unsigned c = outcome.changes;
     const bool mesh_changed = (c & (kTopology | kGeometry | kDocument)) != 0;
+    if (mesh_changed) {
+        shown_.reset();  // what the view showed of the old mesh
+    }
     if (!follow_mesh_change(outcome)) {  // not a recorded change: upload, rebuild the tree lazily
         DisplayData::Change change;
         change.mesh = mesh_changed;
@@ -551,6 +554,9 @@ void App::apply(const Outcome& outcome) {
     }
     if (c & kBoxSelect) {
         drag_ = DragMode::BoxArmed;
+        if (mesh_mode() && scene_->has_mesh()) {
+            shown_points(visible_reach());  // while the pointer goes to the first corner
+        }
     }
     if (c & kBrushSelect) {
         drag_ = DragMode::BrushArmed;

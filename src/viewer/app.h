@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -148,6 +149,12 @@ private:
     bool brush_through_ = false;    ///< the drag began with Alt
     glm::vec2 box_from_{0.0f};      ///< where the box's drag began, framebuffer pixels
     std::vector<glm::vec2> lasso_;  ///< the lasso's outline so far, framebuffer pixels
+    /// What the view shows, kept from a region's press to its release and for later regions
+    /// in the same view; dropped when the mesh changes (apply()).
+    std::optional<ShownPoints> shown_;
+    std::uint64_t shown_revision_ = 0;  ///< the document's revision shown_ was built from
+    /// shown_, built again unless it fits the camera, image, selection kind and `reach`.
+    const ShownPoints& shown_points(Reach reach);
 
     void draw_scene(int width, int height);
     void draw_frame();

@@ -29,6 +29,7 @@ bool App::region_mouse_button(int button, int action, int mods) {
             editor_.begin_selection_stroke();  // one undo step per drag
             brush_removes_ = (mods & GLFW_MOD_SHIFT) != 0;
             brush_through_ = (mods & GLFW_MOD_ALT) != 0;
+            shown_points(brush_through_ ? Reach::Through : visible_reach());
             paint_brush();
         } else if (action == GLFW_RELEASE && button == GLFW_MOUSE_BUTTON_LEFT) {
             drag_ = DragMode::BrushArmed;
@@ -42,6 +43,7 @@ bool App::region_mouse_button(int button, int action, int mods) {
         ctrl && mesh_mode()) {
         drag_ = DragMode::Lasso;
         lasso_ = {cursor_pixels()};
+        shown_points(visible_reach());  // now, not at the release
         return true;
     }
     if (drag_ == DragMode::Lasso) {
@@ -68,6 +70,7 @@ bool App::region_mouse_button(int button, int action, int mods) {
     if (action == GLFW_PRESS && drag_ == DragMode::BoxArmed) {
         box_from_ = cursor_pixels();
         drag_ = DragMode::Box;
+        shown_points(visible_reach());  // now, not at the release
     } else if (action == GLFW_RELEASE && drag_ == DragMode::Box) {
         drag_ = DragMode::None;
         finish_region((mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0);
@@ -112,13 +115,20 @@ void App::finish_region(bool add, bool through) {
     const auto start = std::chrono::steady_clock::now();
     const glm::ivec2 size = framebuffer_size();
     const Mesh& mesh = editor_.mesh();
-    const Reach reach = through ? Reach::Through : visible_reach();
     const bool lasso = !lasso_.empty();
-    const std::vector<ElementRef> inside =
-        lasso
-            ? elements_in_lasso(mesh, camera_, lasso_, size.x, size.y, editor_.region_kind(), reach)
-            : elements_in_box(mesh, camera_, ScreenBox{box_from_, cursor_pixels(), size.x, size.y},
-                              editor_.region_kind(), reach);
+    std::vector<ElementRef> inside;
+    if (through) {  // one pass over the mesh, as fast as a query: nothing kept
+        const ElementRef::Kind kind = editor_.region_kind();
+        inside =
+            lasso ? elements_in_lasso(mesh, camera_, lasso_, size.x, size.y, kind, Reach::Through)
+                  : elements_in_box(mesh, camera_,
+                                    ScreenBox{box_from_, cursor_pixels(), size.x, size.y}, kind,
+                                    Reach::Through);
+    } else {
+        const ShownPoints& shown = shown_points(visible_reach());
+        inside =
+            lasso ? shown.in_lasso(mesh, lasso_) : shown.in_box(mesh, box_from_, cursor_pixels());
+    }
     // The info panel's "pick" time: a region is a pick of many elements.
     last_pick_ms_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -135,15 +145,26 @@ void App::paint_brush() {
     if (!mesh_mode() || !scene_->has_mesh()) {
         return;
     }
-    const glm::ivec2 size = framebuffer_size();
-    const std::vector<ElementRef> under = elements_in_circle(
-        editor_.mesh(), camera_, cursor_pixels(), brush_radius_, size.x, size.y,
-        editor_.region_kind(), brush_through_ ? Reach::Through : visible_reach());
+    const std::vector<ElementRef> under =
+        shown_points(brush_through_ ? Reach::Through : visible_reach())
+            .in_circle(editor_.mesh(), cursor_pixels(), brush_radius_);
     if (under.empty()) {
         return;
     }
     apply(brush_removes_ ? editor_.deselect_elements(under, "brush")
                          : editor_.select_elements(under, true, "brush"));
+}
+
+const ShownPoints& App::shown_points(Reach reach) {
+    const glm::ivec2 size = framebuffer_size();
+    const ElementRef::Kind kind = editor_.region_kind();
+    const std::uint64_t revision = editor_.document().revision;
+    if (!shown_ || shown_revision_ != revision ||
+        !shown_->fits(camera_, size.x, size.y, kind, reach)) {
+        shown_.emplace(editor_.mesh(), camera_, size.x, size.y, kind, reach);
+        shown_revision_ = revision;
+    }
+    return *shown_;
 }
 
 }  // namespace meshedit::viewer

@@ -7,6 +7,8 @@
 
 #include <fstream>
 
+#include "meshedit/ops/ops.h"
+#include "meshedit/overlay/region_pick.h"
 #include "view_pixels.h"
 #include "viewer_fixture.h"
 
@@ -16,6 +18,7 @@ namespace {
 constexpr int kWidth = 1000;
 constexpr int kHeight = 700;
 constexpr int kN = 5;  // quads a side: vertex (i, j) is j (kN + 1) + i, quad (i, j) is j kN + i
+const std::vector<std::uint32_t> kMiddle = {6, 7, 8, 11, 12, 13, 16, 17, 18};  // the middle 3 x 3
 
 void write_grid(const fs::path& path) {
     std::ofstream out(path);
@@ -126,9 +129,8 @@ TEST_F(RegionE2E, BoxSelectExtrudeAndSubdivideTheRegion) {
     const auto [original, doc] = grid_files();
     const Mesh input = load(doc);
     const View view(input, kWidth, kHeight);
-    const std::vector<std::uint32_t> nine = {6, 7, 8, 11, 12, 13, 16, 17, 18};
-    const Rect box = around(view, input, nine, 4);
-    ASSERT_EQ(faces_in(view, input, box), nine) << "the opening view skews the grid too much";
+    const Rect box = around(view, input, kMiddle, 4);
+    ASSERT_EQ(faces_in(view, input, box), kMiddle) << "the opening view skews the grid too much";
 
     std::optional<ViewerWindow> opened;
     auto viewer = open_grid(doc, opened);
@@ -182,6 +184,52 @@ TEST_F(RegionE2E, LassoDeleteAndAltClickLoopDissolve) {
     window.key("Delete");
     ASSERT_TRUE(window.wait_title("F 16 *", false, 20s, &title)) << title << "\n" << viewer->err();
     expect_replay_equals_saved(*viewer, window, original, doc);
+}
+
+// What a view shows is kept from one region to the next while the view stays, and dropped
+// when the mesh changes: a box over the middle 3 x 3 and Shift+W (new faces, at new
+// indices), Esc and the same box again: the session's last step selects the faces of the
+// subdivided grid whose centres the box holds (kept points would hold the old nine).
+TEST_F(RegionE2E, ARegionAfterAnEditSeesTheEditedMesh) {
+    const auto [original, doc] = grid_files();
+    const Mesh input = load(doc);
+    const View view(input, kWidth, kHeight);
+    const Rect middle = around(view, input, kMiddle, 4);
+    ASSERT_EQ(faces_in(view, input, middle), kMiddle);
+
+    std::optional<ViewerWindow> opened;
+    auto viewer = open_grid(doc, opened);
+    ASSERT_TRUE(opened && opened->ok());
+    const ViewerWindow& window = *opened;
+    std::string title;
+    window.key("b");
+    window.drag(middle.x0, middle.y0, middle.x1, middle.y1, 1);
+    window.key("shift+w");
+    ASSERT_TRUE(window.wait_title(" *", false, 20s, &title)) << title << "\n" << viewer->err();
+    window.key("ctrl+s");
+    ASSERT_TRUE(window.wait_title(" *", true, 20s, &title)) << title;
+    const Mesh subdivided = load(doc);
+    // What the box takes of the subdivided grid by region_pick's rule.
+    const std::vector<ElementRef> expected =
+        elements_in_box(subdivided, view.camera,
+                        ScreenBox{{float(middle.x0), float(middle.y0)},
+                                  {float(middle.x1), float(middle.y1)},
+                                  kWidth,
+                                  kHeight},
+                        ElementRef::Kind::Face, Reach::Visible);
+    ASSERT_GT(expected.size(), kMiddle.size());
+    window.key("Escape");  // a box takes the selection's kind: none is faces
+    window.key("b");
+    window.drag(middle.x0, middle.y0, middle.x1, middle.y1, 1);
+    const fs::path session = work_ / (doc.stem().string() + ".ops");
+    ASSERT_NO_FATAL_FAILURE(answer_prompt(window, "ctrl+shift+e", std::nullopt));
+    ASSERT_TRUE(wait_until([&] { return fs::exists(session); }, 20s)) << viewer->err();
+    const std::string text = read_file(session);
+    const std::string last = text.substr(text.rfind("select:"));
+    EXPECT_EQ(last.substr(0, last.find_first_of(",\n")),
+              ops::select_step_text(subdivided, expected));
+    window.key("ctrl+q");
+    expect_exit(*viewer, 0);
 }
 
 // The red line of a boundary edge is pickable from the line itself (issue 40): a click a

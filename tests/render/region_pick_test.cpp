@@ -201,5 +201,67 @@ TEST(LassoSelect, SelectsInsideTheOutline) {
                     .empty());  // fewer than 3 points: no outline
 }
 
+// The view's kept points (ShownPoints) answer every region as the fresh pass over the mesh
+// does: boxes on and off the 16-pixel tiles' sides, out of the image, a concave lasso of
+// many points and circles, in each kind and reach, on a torus whose faces are a few pixels.
+TEST(ShownPoints, AnswerAsTheFreshRegionsDo) {
+    const Mesh torus = shapes::torus(240, 120);
+    Camera camera;
+    camera.azimuth_deg = 30.0f;
+    camera.elevation_deg = 35.0f;
+    const int w = 640, h = 400;
+    camera.frame_mesh(torus, float(w) / float(h));
+    const std::vector<std::pair<glm::vec2, glm::vec2>> boxes = {
+        {{160, 96}, {480, 304}},  // on the tiles' sides
+        {{197.3f, 57.9f}, {402.6f, 251.1f}},
+        {{300, 100}, {303, 103}},  // a few pixels
+        {{-50, -50}, {250, 900}},  // past the image
+        {{0, 0}, {640, 400}}};
+    // A star of 40 points round the middle: concave, its edges at every angle.
+    std::vector<glm::vec2> star;
+    for (int i = 0; i < 40; ++i) {
+        const float angle = 6.2831853f * float(i) / 40.0f;
+        const float r = i % 2 == 0 ? 190.0f : 80.0f;
+        star.push_back({320.0f + r * std::cos(angle), 200.0f + r * 0.9f * std::sin(angle)});
+    }
+    std::size_t total = 0;
+    for (const Reach reach : {Reach::Visible, Reach::VisibleFrontOnly, Reach::Through}) {
+        for (const ElementRef::Kind kind :
+             {ElementRef::Kind::Face, ElementRef::Kind::Vertex, ElementRef::Kind::Edge}) {
+            const ShownPoints shown(torus, camera, w, h, kind, reach);
+            EXPECT_TRUE(shown.fits(camera, w, h, kind, reach));
+            const std::string what =
+                std::to_string(int(reach)) + " kind " + std::to_string(int(kind));
+            for (const auto& [a, b] : boxes) {
+                const auto fresh =
+                    elements_in_box(torus, camera, ScreenBox{a, b, w, h}, kind, reach);
+                EXPECT_EQ(shown.in_box(torus, a, b), fresh) << what << " box " << a.x << "," << a.y;
+                total += fresh.size();
+            }
+            const auto fresh_star = elements_in_lasso(torus, camera, star, w, h, kind, reach);
+            EXPECT_EQ(shown.in_lasso(torus, star), fresh_star) << what;
+            total += fresh_star.size();
+            for (const float radius : {3.0f, 40.0f, 150.0f}) {
+                const glm::vec2 centre(333.3f, 190.0f);
+                const auto fresh =
+                    elements_in_circle(torus, camera, centre, radius, w, h, kind, reach);
+                EXPECT_EQ(shown.in_circle(torus, centre, radius), fresh) << what << " " << radius;
+                total += fresh.size();
+            }
+        }
+    }
+    EXPECT_GT(total, 200000u);  // the regions hold elements: not a comparison of empty lists
+    // Kept for one view: another camera, image, kind or reach is not this one.
+    const ShownPoints faces(torus, camera, w, h, ElementRef::Kind::Face, Reach::Visible);
+    Camera turned = camera;
+    turned.azimuth_deg += 1.0f;
+    EXPECT_FALSE(faces.fits(turned, w, h, ElementRef::Kind::Face, Reach::Visible));
+    EXPECT_FALSE(faces.fits(camera, w + 1, h, ElementRef::Kind::Face, Reach::Visible));
+    EXPECT_FALSE(faces.fits(camera, w, h, ElementRef::Kind::Vertex, Reach::Visible));
+    EXPECT_FALSE(faces.fits(camera, w, h, ElementRef::Kind::Face, Reach::Through));
+    const ShownPoints edges(torus, camera, w, h, ElementRef::Kind::Edge, Reach::Visible);
+    EXPECT_TRUE(edges.fits(camera, w, h, ElementRef::Kind::Halfedge, Reach::Visible));
+}
+
 }  // namespace
 }  // namespace meshedit
