@@ -91,9 +91,11 @@ void add_halfedge_arrow(const Mesh& m, Halfedge h, const Color& color, const Ove
                               style.arrowhead_length_px, style.arrowhead_half_width_px});
 }
 
+// `diagonal`: the mesh's bounding-box diagonal (measured once by the caller: it walks
+// every vertex).
 void add_face_tint(const Mesh& m, Face f, const Color& color, const OverlayStyle& style,
-                   OverlayBatch& out) {
-    const Vec3 lift = face_normal(m, f) * (kFaceOffset * m.bounds().diagonal());
+                   double diagonal, OverlayBatch& out) {
+    const Vec3 lift = face_normal(m, f) * (kFaceOffset * diagonal);
     Color tint = color;
     tint[3] = style.face_tint_alpha;
 
@@ -228,8 +230,11 @@ void add_loop_phase_marks(const Mesh& mesh, const OverlayStyle& style, OverlayBa
     }
 }
 
-void add_element_highlight(const Mesh& mesh, ElementRef element, const Color& color,
-                           const OverlayStyle& style, OverlayBatch& out) {
+namespace {
+
+// add_element_highlight() with the mesh's diagonal given (faces' tints are lifted by it).
+void highlight(const Mesh& mesh, ElementRef element, const Color& color, const OverlayStyle& style,
+               double diagonal, OverlayBatch& out) {
     // The viewer may pass a stale reference (an element deleted or collected by an edit).
     if (!is_live(mesh, element)) {
         return;
@@ -252,8 +257,30 @@ void add_element_highlight(const Mesh& mesh, ElementRef element, const Color& co
             add_halfedge_arrow(mesh, Halfedge(element.index), color, style, out);
             return;
         case ElementRef::Kind::Face:
-            add_face_tint(mesh, Face(element.index), color, style, out);
+            add_face_tint(mesh, Face(element.index), color, style, diagonal, out);
             return;
+    }
+}
+
+}  // namespace
+
+void add_element_highlight(const Mesh& mesh, ElementRef element, const Color& color,
+                           const OverlayStyle& style, OverlayBatch& out) {
+    const bool face = element.kind == ElementRef::Kind::Face && is_live(mesh, element);
+    highlight(mesh, element, color, style, face ? mesh.bounds().diagonal() : 0.0, out);
+}
+
+void add_element_highlights(const Mesh& mesh, std::span<const ElementRef> elements,
+                            const Color& color, const OverlayStyle& style, OverlayBatch& out) {
+    double diagonal = 0.0;
+    for (const ElementRef& e : elements) {
+        if (e.kind == ElementRef::Kind::Face) {
+            diagonal = mesh.bounds().diagonal();
+            break;
+        }
+    }
+    for (const ElementRef& e : elements) {
+        highlight(mesh, e, color, style, diagonal, out);
     }
 }
 

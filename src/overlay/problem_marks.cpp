@@ -77,11 +77,14 @@ void add_problem_marks(const Mesh& mesh, const ProblemReport& report, const Over
                     }
                 }
                 break;
-            case ProblemKind::SmallPart:
+            case ProblemKind::SmallPart: {
+                std::vector<ElementRef> faces;
                 for (const Face f : part_of(mesh, Face(p.where.index))) {
-                    add_element_highlight(mesh, ElementRef::face(f), color, style, out);
+                    faces.push_back(ElementRef::face(f));
                 }
+                add_element_highlights(mesh, faces, color, style, out);
                 break;
+            }
             case ProblemKind::SelfIntersection:
                 add_element_highlight(mesh, p.where, color, style, out);
                 break;

@@ -20,9 +20,7 @@ void add_scene_marks(const SceneContent& scene, const OverlayStyle& style, Overl
         if (scene.hovered != scene.selected) {
             add_element_highlight(mesh, scene.hovered, style.hovered, style, out);
         }
-        for (const ElementRef& e : scene.also_selected) {
-            add_element_highlight(mesh, e, style.selected, style, out);
-        }
+        add_element_highlights(mesh, scene.also_selected, style.selected, style, out);
         add_element_highlight(mesh, scene.selected, style.selected, style, out);
         if (scene.stencil) {
             const ElementRef element = scene.hovered.is_none() ? scene.selected : scene.hovered;

@@ -339,6 +339,32 @@ TEST(ElementHighlight, CubeFaceTintIsOffsetOutward) {
     EXPECT_NEAR(out.triangles[0].c.x, x, kTol);
 }
 
+// Many elements at once (a region's selection) draw what each alone draws, in order: the
+// faces' tints lifted by the same diagonal, measured once.
+TEST(ElementHighlight, ManyAtOnceEqualEachAlone) {
+    const Mesh mesh = shapes::cube();
+    const std::vector<ElementRef> refs{ElementRef::face(Face(0)), ElementRef::vertex(Vertex(3)),
+                                       ElementRef::face(Face(5)), ElementRef::edge(Edge(2)),
+                                       ElementRef::face(Face(7))};
+    const OverlayStyle style;
+    OverlayBatch alone, together;
+    for (const ElementRef& e : refs) {
+        add_element_highlight(mesh, e, kRed, style, alone);
+    }
+    add_element_highlights(mesh, refs, kRed, style, together);
+    ASSERT_EQ(together.triangles.size(), alone.triangles.size());
+    ASSERT_EQ(together.triangles.size(), 3u);
+    for (std::size_t i = 0; i < alone.triangles.size(); ++i) {
+        EXPECT_EQ(together.triangles[i].a, alone.triangles[i].a);
+        EXPECT_EQ(together.triangles[i].b, alone.triangles[i].b);
+        EXPECT_EQ(together.triangles[i].c, alone.triangles[i].c);
+    }
+    ASSERT_EQ(together.points.size(), 1u);
+    EXPECT_EQ(together.points[0].p, alone.points[0].p);
+    ASSERT_EQ(together.lines.size(), 1u);
+    EXPECT_EQ(together.lines[0].a, alone.lines[0].a);
+}
+
 TEST(ElementHighlight, InvalidHandlesAddNothing) {
     Mesh mesh = test::two_triangles();
     const OverlayStyle style;

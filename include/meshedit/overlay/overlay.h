@@ -183,6 +183,10 @@ std::string weight_label(double weight);
 /// along the normal so it wins the depth test).
 void add_element_highlight(const Mesh& mesh, ElementRef element, const Color& color,
                            const OverlayStyle& style, OverlayBatch& out);
+/// The same for many elements (a region's selection): the mesh's size, which lifts the faces'
+/// tints, is measured once, not once per face.
+void add_element_highlights(const Mesh& mesh, std::span<const ElementRef> elements,
+                            const Color& color, const OverlayStyle& style, OverlayBatch& out);
 
 /// A Bezier curve at parameter `t`: the control polygon (level 0) and de Casteljau levels
 /// 1 … `max_level` (each in its style colour, with its points), the evaluated point B(t)
