@@ -90,6 +90,15 @@ JOB_TITLES = {
     "editor_edits_scan_1m": "The same on bunny00 Loop-subdivided twice (1,206,530 triangles)",
     "editor_loop_1m": "Loop on the 1M torus: `core` loop_subdivide(), `viewer` the L key "
     "through viewer::Editor plus the upload of the new buffers (target: ≤ 2× core + upload)",
+    "select_box_1m": "Box select through the mesh (Alt): the middle quarter of a 1280×800 view "
+    "of the 1000 × 500 torus (1M triangles), elements_in_box(), one pass over the mesh",
+    "select_box_visible_1m": "Box select of what the view shows, the release as the window pays "
+    "it: the view's points (ShownPoints) built once, when B arms the box (`view_build_ms`), "
+    "then in_box() over the middle quarter, each repetition",
+    "select_box_visible_1m_cold": "The first region in a new view: ShownPoints built and "
+    "in_box() read, each repetition",
+    "select_lasso_visible_1m": "Lasso select of what the view shows, the release: a 64-point "
+    "star over the middle quarter, in_lasso() on the view's points built once",
     "editor_simplify_1m": "D on bunny00 Loop-subdivided twice (1,206,530 triangles) to half: "
     "`core` simplify() and the garbage collection on a copy, `viewer` the D key as the window "
     "runs it, in the background (the worker's copy, the result put in as an undo step; no GPU; "
