@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "meshedit/core/local_ops.h"
+#include "meshedit/core/topology.h"
 #include "meshedit/repair/repair.h"
 #include "soup_edit.h"
 
@@ -216,44 +217,66 @@ namespace repair_detail {
 // through the mesh's setters. \return how many parts; their faces are added to `faces`.
 std::size_t turn_closed_parts_outward(Mesh& mesh, const std::vector<Face>& filled,
                                       std::size_t& faces) {
-    std::vector<bool> seen(mesh.faces_size(), false);
+    // The parts by vertex components (a union-find over the edges, in index order: a walk
+    // from face to face took 80 ms on a 1.2M-face scan, its reads all over memory). A closed
+    // part is one component either way: where two face-parts share a vertex, each has a
+    // border there.
+    const std::vector<std::uint32_t> root = component_roots(mesh);
+    struct Part {
+        Vec3 origin;  // of the volume: the first filled face's first corner, as flip's tests
+        double volume = 0.0;
+        bool open = false;
+        std::size_t faces = 0;
+    };
+    std::vector<Part> touched;
+    std::vector<std::int32_t> slot(mesh.vertices_size(), -1);  // by root: its Part
+    const auto part_of = [&](Face f) { return slot[root[mesh.to_vertex(mesh.halfedge(f)).idx()]]; };
+    for (const Face seed : filled) {
+        const std::uint32_t r = root[mesh.to_vertex(mesh.halfedge(seed)).idx()];
+        if (slot[r] < 0) {
+            slot[r] = static_cast<std::int32_t>(touched.size());
+            touched.push_back({mesh.position(mesh.to_vertex(mesh.halfedge(seed)))});
+        }
+    }
+    for (const Halfedge h : mesh.halfedges()) {
+        if (mesh.is_boundary(h)) {
+            if (const std::int32_t k = slot[root[mesh.to_vertex(h).idx()]]; k >= 0) {
+                touched[static_cast<std::size_t>(k)].open = true;
+            }
+        }
+    }
+    if (std::all_of(touched.begin(), touched.end(), [](const Part& p) { return p.open; })) {
+        return 0;
+    }
+    // Each face a fan from its first corner, from_vertex of its halfedge.
+    for (const Face f : mesh.faces()) {
+        const std::int32_t k = part_of(f);
+        if (k < 0 || touched[static_cast<std::size_t>(k)].open) {
+            continue;
+        }
+        Part& part = touched[static_cast<std::size_t>(k)];
+        ++part.faces;
+        const Halfedge h0 = mesh.halfedge(f);
+        const Vec3 p0 = mesh.position(mesh.from_vertex(h0)) - part.origin;
+        for (Halfedge h = h0; mesh.next(mesh.next(h)) != h0; h = mesh.next(h)) {
+            part.volume +=
+                dot(p0, cross(mesh.position(mesh.to_vertex(h)) - part.origin,
+                              mesh.position(mesh.to_vertex(mesh.next(h))) - part.origin));
+        }
+    }
     std::vector<Halfedge> turn;  // the halfedges of the parts to turn over
     std::size_t parts = 0;
-    for (const Face seed : filled) {
-        if (seen[seed.idx()]) {
-            continue;
-        }
-        std::vector<Face> part{seed};
-        seen[seed.idx()] = true;
-        bool closed = true;
-        for (std::size_t i = 0; i < part.size(); ++i) {
-            for (const Halfedge h : mesh.halfedges(part[i])) {
-                const Face g = mesh.face(Mesh::twin(h));
-                if (!g.is_valid()) {
-                    closed = false;
-                } else if (!seen[g.idx()]) {
-                    seen[g.idx()] = true;
-                    part.push_back(g);
-                }
-            }
-        }
-        if (!closed) {
-            continue;
-        }
-        const Vec3 origin = mesh.position(mesh.to_vertex(mesh.halfedge(seed)));
-        double volume = 0.0;
-        for (const Face f : part) {
-            const Halfedge h0 = mesh.halfedge(f);
-            const Vec3 p0 = mesh.position(mesh.from_vertex(h0)) - origin;
-            for (Halfedge h = h0; mesh.next(h) != mesh.prev(h0); h = mesh.next(h)) {
-                volume += dot(p0, cross(mesh.position(mesh.to_vertex(h)) - origin,
-                                        mesh.position(mesh.to_vertex(mesh.next(h))) - origin));
-            }
-        }
-        if (volume < 0.0) {
+    for (const Part& part : touched) {
+        if (!part.open && part.volume < 0.0) {
             ++parts;
-            faces += part.size();
-            for (const Face f : part) {
+            faces += part.faces;
+        }
+    }
+    if (parts > 0) {
+        for (const Face f : mesh.faces()) {
+            const std::int32_t k = part_of(f);
+            if (k >= 0 && !touched[static_cast<std::size_t>(k)].open &&
+                touched[static_cast<std::size_t>(k)].volume < 0.0) {
                 for (const Halfedge h : mesh.halfedges(f)) {
                     turn.push_back(h);
                 }

@@ -140,6 +140,50 @@ TEST(FillFair, APartTheFillClosesInsideOutIsTurnedOutward) {
     EXPECT_TRUE(test::identical(mesh, filled));
 }
 
+// The part is found by its vertices (a union-find over the edges), not walked face by face:
+// two inward spheres, each with a small cap and one of them with a large one too, filled up
+// to the small caps' size: the sphere that closes turns, the one left open keeps its faces
+// (another part, the same for each; none crosses to the other).
+TEST(FillFair, OnlyThePartTheFillClosesIsTurned) {
+    const auto capped = [](double large_cap) {
+        return without(shapes::icosphere(3),
+                       [&](const Vec3& c) { return c.z > 0.9 || c.z < -large_cap; });
+    };
+    Mesh both = capped(2.0);  // only the small cap
+    const Mesh open_one = capped(0.5);
+    const PolygonSoup a = to_polygon_soup(both), b = to_polygon_soup(open_one);
+    PolygonSoup soup = a;
+    for (const Vec3& p : b.positions) {
+        soup.positions.push_back(p + Vec3{5.0, 0.0, 0.0});
+    }
+    for (std::size_t f = 0; f < b.n_faces(); ++f) {
+        std::vector<std::uint32_t> corners;
+        for (std::uint32_t i = b.face_offsets[f]; i < b.face_offsets[f + 1]; ++i) {
+            corners.push_back(static_cast<std::uint32_t>(a.positions.size()) + b.indices[i]);
+        }
+        soup.add_face_range(corners);
+    }
+    both = build_mesh(soup);
+    flip_orientation(both);
+    const std::size_t small = count_boundary_loops(both);
+    ASSERT_EQ(small, 3u);
+    Mesh mesh = both;
+    FairFillOptions options;
+    options.max_edges = 30;  // the small caps, not the large one
+    const RepairResult r = fill_holes_fair(mesh, options);
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(r.count, 2u);
+    EXPECT_EQ(count_boundary_loops(mesh), 1u);
+    EXPECT_NE(r.sentence.find("so that 1 part the fills closed faces outward"), std::string::npos)
+        << r.sentence;
+    // The open sphere's old faces (x > 2.5) kept their corners' order; the closed one's turned.
+    for (const Face f : both.faces()) {
+        const bool open_part = mesh.position(mesh.to_vertex(mesh.halfedge(f))).x > 2.5;
+        const Vec3 before = face_area_vector(both, f), after = face_area_vector(mesh, f);
+        EXPECT_EQ(dot(before, after) > 0.0, open_part) << "face " << f.idx();
+    }
+}
+
 TEST(FillFair, WithoutRefiningOrFairingItIsTheTriangulationAlone) {
     Mesh mesh = without(shapes::icosphere(3), [](const Vec3& c) { return c.z > 0.7; });
     const std::size_t vertices = mesh.vertices_size();
