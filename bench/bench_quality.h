@@ -105,6 +105,47 @@ inline double min_angle_deg(const Surface& s) {
     return smallest;
 }
 
+/// Of the vertices inside the surface (not on its border), the share with valence 6, in %,
+/// and how many have valence 4 or less: what isotropic remeshing's flips aim at.
+struct Valences {
+    double six_pct = 0.0;
+    std::size_t four_or_less = 0;
+};
+inline Valences interior_valences(const Surface& s) {
+    std::vector<std::uint32_t> valence(s.points.size(), 0);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> once, twice;
+    for (const auto& t : s.triangles) {
+        for (int i = 0; i < 3; ++i) {
+            const std::uint32_t a = t[i], b = t[(i + 1) % 3];
+            const std::pair<std::uint32_t, std::uint32_t> e{std::min(a, b), std::max(a, b)};
+            if (!once.insert(e).second) {
+                twice.insert(e);
+            } else {
+                ++valence[a];
+                ++valence[b];
+            }
+        }
+    }
+    std::vector<bool> border(s.points.size(), false);
+    for (const auto& e : once) {
+        if (twice.count(e) == 0) {
+            border[e.first] = border[e.second] = true;
+        }
+    }
+    std::size_t inside = 0, six = 0;
+    Valences out;
+    for (std::size_t v = 0; v < valence.size(); ++v) {
+        if (valence[v] == 0 || border[v]) {
+            continue;
+        }
+        ++inside;
+        six += valence[v] == 6 ? 1 : 0;
+        out.four_or_less += valence[v] <= 4 ? 1 : 0;
+    }
+    out.six_pct = inside > 0 ? 100.0 * static_cast<double>(six) / static_cast<double>(inside) : 0.0;
+    return out;
+}
+
 /// The standard deviation of the edge lengths over their mean (each edge once).
 inline double edge_length_spread(const Surface& s) {
     std::set<std::pair<std::uint32_t, std::uint32_t>> edges;

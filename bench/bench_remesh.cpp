@@ -4,8 +4,13 @@
 //     bench_remesh --job remesh_armadillo_208k --impl cgal [--runs 5] [--data DIR]
 //     bench_remesh --list
 //
-// Job: remesh_armadillo_208k (armadillo.off from libcgal-demo, 52,000 triangles,
-// Loop-subdivided once: 208,000), target length = the input's mean edge length, 3 iterations.
+// Jobs, target length = the input's mean edge length, 3 iterations:
+//   remesh_armadillo_208k  armadillo.off from libcgal-demo, 52,000 triangles, Loop-subdivided
+//                          once: 208,000;
+//   remesh_bunny_70k       bunny00.off from libcgal-demo as it is (72,027 triangles, a scan
+//                          with holes);
+//   remesh_torus_80k       the 200 × 200 torus of shapes::torus (80,000 triangles, every
+//                          vertex of valence 6 before).
 // Impls (the timed body is the remeshing only; input copies are untimed):
 //   meshedit   remesh() on a copy of the halfedge Mesh (its TriangleTree of the input is built
 //              inside, so timed);
@@ -13,7 +18,8 @@
 //              Surface_mesh<Simple_cartesian<double>::Point_3> (its AABB tree of the input,
 //              built inside, timed too).
 // Quality (bench_quality.h): min_angle_deg, length_spread (stddev / mean of the edge
-// lengths), hausdorff_pct (sampled, symmetric, % of the input's bounding-box diagonal).
+// lengths), hausdorff_pct (sampled, symmetric, % of the input's bounding-box diagonal),
+// valence6_pct (the share of inner vertices of valence 6) and valence4_or_less (how many).
 
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 
@@ -27,6 +33,7 @@
 #include "bench_util.h"
 #include "meshedit/core/build.h"
 #include "meshedit/core/remesh.h"
+#include "meshedit/core/shapes.h"
 #include "meshedit/core/subdivision.h"
 
 namespace {
@@ -36,7 +43,7 @@ namespace fs = std::filesystem;
 using mb::Surface;
 using meshedit::Vec3;
 
-const char* const kJob = "remesh_armadillo_208k";
+const char* const kJobs[] = {"remesh_armadillo_208k", "remesh_bunny_70k", "remesh_torus_80k"};
 constexpr int kIterations = 3;
 
 double mean_length(const Surface& s) {
@@ -89,7 +96,7 @@ Outcome run_cgal(const Surface& in, double length, int runs) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::string jobs[] = {kJob};
+    const std::string jobs[] = {kJobs[0], kJobs[1], kJobs[2]};
     const std::string impls[] = {"meshedit", "cgal"};
     mb::JobArgs args;
     if (const std::optional<int> done = mb::read_command_line(argc, argv, jobs, impls, args)) {
@@ -100,12 +107,20 @@ int main(int argc, char** argv) {
     const int runs = args.runs;
     const fs::path& data_dir = args.data;
     return mb::run_or_skip(job, impl, [&] {
-        meshedit::Mesh armadillo = meshedit::build_mesh(mb::real_mesh("armadillo", data_dir));
-        meshedit::loop_subdivide(armadillo);
-        const Surface input = mb::surface_of(armadillo);
+        meshedit::Mesh scan;
+        if (job == "remesh_armadillo_208k") {
+            scan = meshedit::build_mesh(mb::real_mesh("armadillo", data_dir));
+            meshedit::loop_subdivide(scan);
+        } else if (job == "remesh_bunny_70k") {
+            scan = meshedit::build_mesh(mb::real_mesh("bunny00", data_dir));
+        } else {
+            scan = meshedit::shapes::torus(200, 200);
+        }
+        const Surface input = mb::surface_of(scan);
         const double length = mean_length(input);
         const Outcome out =
             impl == "meshedit" ? run_meshedit(input, length, runs) : run_cgal(input, length, runs);
+        const mb::Valences valences = mb::interior_valences(out.result);
         mb::print_result(job, impl, out.ms,
                          {{"faces_in", static_cast<double>(input.triangles.size())},
                           {"faces_out", static_cast<double>(out.result.triangles.size())},
@@ -113,6 +128,8 @@ int main(int argc, char** argv) {
                           {"min_angle_deg", mb::min_angle_deg(out.result)},
                           {"length_spread", mb::edge_length_spread(out.result)},
                           {"hausdorff_pct", mb::hausdorff_percent(input, out.result)},
+                          {"valence6_pct", valences.six_pct},
+                          {"valence4_or_less", static_cast<double>(valences.four_or_less)},
                           {"peak_rss_mb", mb::peak_rss_mb()}});
     });
 }

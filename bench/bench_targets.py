@@ -118,7 +118,25 @@ def remesh_target_rows(jobs):
                 f"{cgal.get('min_angle_deg', 0):.2f}°; spread {me.get('length_spread', 0):.3f} "
                 f"vs {cgal.get('length_spread', 0):.3f}; Hausdorff "
                 f"{me.get('hausdorff_pct', 0):.4f}% vs {cgal.get('hausdorff_pct', 0):.4f}%")
-    return [(label, target, measured, "yes" if all(checks) else "no")]
+    rows = [(label, target, measured, "yes" if all(checks) else "no")]
+    # Issue 38: the share of inner vertices of valence 6 at least CGAL's, on each input.
+    for job, what in (("remesh_armadillo_208k", "208k-face armadillo"),
+                      ("remesh_bunny_70k", "72k-face bunny scan"),
+                      ("remesh_torus_80k", "80k-face torus")):
+        res = ok_results(jobs.get(job, []))
+        me, cgal = res.get("meshedit"), res.get("cgal")
+        label = f"isotropic remeshing, valence-6 share of inner vertices, {what}"
+        target = "≥ CGAL's (same input and target length)"
+        if me is None or cgal is None or "valence6_pct" not in me:
+            rows.append((label, target, f"not measured ({job})", "n/a"))
+            continue
+        rows.append((label, target,
+                     f"{me['valence6_pct']:.1f}% vs {cgal.get('valence6_pct', 0):.1f}%; valence "
+                     f"≤ 4: {me.get('valence4_or_less', 0):.0f} vs "
+                     f"{cgal.get('valence4_or_less', 0):.0f}; Hausdorff "
+                     f"{me.get('hausdorff_pct', 0):.4f}% vs {cgal.get('hausdorff_pct', 0):.4f}%",
+                     "yes" if me["valence6_pct"] >= cgal.get("valence6_pct", 101) else "no"))
+    return rows
 
 
 def smooth_target_rows(jobs):
