@@ -160,14 +160,20 @@ TriangleTree::Hit TriangleTree::closest(const Vec3& p, std::uint32_t hint) const
             closest_point_on_triangle(p, points_[tri[0]], points_[tri[1]], points_[tri[2]]);
         best = {q, length_squared(p - q), hint};
     }
-    std::uint32_t stack[64];
+    // Each node with its box's distance, measured once, when its parent is opened.
+    struct Pending {
+        std::uint32_t node;
+        double distance_squared;
+    };
+    Pending stack[64];
     int top = 0;
-    stack[top++] = 0;
+    stack[top++] = {0, box_distance_squared(p, nodes_[0].min, nodes_[0].max)};
     while (top > 0) {
-        const Node& node = nodes_[stack[--top]];
-        if (box_distance_squared(p, node.min, node.max) >= best.distance_squared) {
+        const Pending next = stack[--top];
+        if (next.distance_squared >= best.distance_squared) {
             continue;
         }
+        const Node& node = nodes_[next.node];
         if (node.count > 0) {
             for (std::uint32_t i = node.a; i < node.a + node.count; ++i) {
                 const auto& tri = triangles_[order_[i]];
@@ -186,11 +192,11 @@ TriangleTree::Hit TriangleTree::closest(const Vec3& p, std::uint32_t hint) const
         const double db = box_distance_squared(p, nodes_[b].min, nodes_[b].max);
         // Push the farther first so the nearer is searched first.
         if (da <= db) {
-            stack[top++] = b;
-            stack[top++] = a;
+            stack[top++] = {b, db};
+            stack[top++] = {a, da};
         } else {
-            stack[top++] = a;
-            stack[top++] = b;
+            stack[top++] = {a, da};
+            stack[top++] = {b, db};
         }
     }
     return best;
