@@ -40,8 +40,8 @@ JOB_TITLES = {
     "Loop-subdivided once (208,000 triangles), L = its mean edge length, 3 iterations; "
     "`min_angle_deg`, `length_spread` (stddev / mean of the edge lengths) and `hausdorff_pct` "
     "by the same code for both",
-    "remesh_bunny_70k": "The same on bunny00 (CGAL's demo data) as it is: 72,027 triangles, "
-    "a scan with holes; `valence6_pct`: the share of inner vertices of valence 6, "
+    "remesh_bunny_75k": "The same on bunny00 (CGAL's demo data) as it is: 75,408 triangles, "
+    "closed; `valence6_pct`: the share of inner vertices of valence 6, "
     "`valence4_or_less`: how many have 4 or fewer",
     "remesh_torus_80k": "The same on the 200 × 200 torus (80,000 triangles, every vertex of "
     "valence 6 before)",

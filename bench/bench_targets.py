@@ -121,7 +121,7 @@ def remesh_target_rows(jobs):
     rows = [(label, target, measured, "yes" if all(checks) else "no")]
     # Issue 38: the share of inner vertices of valence 6 at least CGAL's, on each input.
     for job, what in (("remesh_armadillo_208k", "208k-face armadillo"),
-                      ("remesh_bunny_70k", "72k-face bunny scan"),
+                      ("remesh_bunny_75k", "75k-face bunny scan"),
                       ("remesh_torus_80k", "80k-face torus")):
         res = ok_results(jobs.get(job, []))
         me, cgal = res.get("meshedit"), res.get("cgal")
