@@ -609,7 +609,7 @@ ShownPoints::ShownPoints(const Mesh& mesh, const Camera& camera, int width, int 
     elements_ = faces ? mesh.faces_size() : mesh.vertices_size();
     // Every point in the image: what any region in this view could select.
     const glm::vec2 lo(0.0f), hi(static_cast<float>(width_), static_cast<float>(height_));
-    const std::vector<Point> found = points_inside<Point>(
+    std::vector<Point> found = points_inside<Point>(
         mesh, camera, width_, height_, faces, reach, lo, hi, false,
         [&](const glm::vec2& q) {
             return q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
@@ -625,11 +625,20 @@ ShownPoints::ShownPoints(const Mesh& mesh, const Camera& camera, int width, int 
         return static_cast<std::size_t>(y) * tiles_x_ + x;
     };
     starts_.assign(static_cast<std::size_t>(tiles_x_) * tiles_y_ + 1, 0);
+    bool in_order = true;  // the faces the view shows come by tile already (points_inside())
+    std::size_t last = 0;
     for (const Point& q : found) {
-        ++starts_[tile_of(q.at) + 1];
+        const std::size_t t = tile_of(q.at);
+        in_order = in_order && t >= last;
+        last = t;
+        ++starts_[t + 1];
     }
     for (std::size_t t = 1; t < starts_.size(); ++t) {
         starts_[t] += starts_[t - 1];
+    }
+    if (in_order) {
+        points_ = std::move(found);
+        return;
     }
     points_.resize(found.size());
     std::vector<std::uint32_t> next(starts_.begin(), starts_.end() - 1);
