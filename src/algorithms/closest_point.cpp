@@ -17,15 +17,24 @@ namespace {
 
 constexpr std::uint32_t kLeafSize = 4;
 
-double box_distance_squared(const Vec3& p, const Vec3& lo, const Vec3& hi) {
-    const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x});
-    const double dy = std::max({lo.y - p.y, 0.0, p.y - hi.y});
-    const double dz = std::max({lo.z - p.z, 0.0, p.z - hi.z});
+// Inlined: a query measures two boxes at every node it opens.
+inline double box_distance_squared(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+    const double dx = std::max(std::max(lo.x - p.x, 0.0), p.x - hi.x);
+    const double dy = std::max(std::max(lo.y - p.y, 0.0), p.y - hi.y);
+    const double dz = std::max(std::max(lo.z - p.z, 0.0), p.z - hi.z);
     return dx * dx + dy * dy + dz * dz;
 }
 
 double length_squared(const Vec3& v) {
     return dot(v, v);
+}
+
+// Component by component.
+Vec3 lower(const Vec3& a, const Vec3& b) {
+    return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+}
+Vec3 upper(const Vec3& a, const Vec3& b) {
+    return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
 }
 
 }  // namespace
@@ -109,33 +118,39 @@ void TriangleTree::build() {
     nodes_.clear();
     nodes_.reserve(2 * triangles_.size() / kLeafSize + 2);
     if (!triangles_.empty()) {
-        build_range(0, static_cast<std::uint32_t>(triangles_.size()), centre);
+        nodes_.emplace_back();
+        build_range(0, 0, static_cast<std::uint32_t>(triangles_.size()), centre);
+    }
+    // The leaves' corners in the leaves' order: a query reads them in a row, not through two
+    // indices into the points.
+    corners_.resize(triangles_.size());
+    for (std::size_t i = 0; i < order_.size(); ++i) {
+        const auto& tri = triangles_[order_[i]];
+        corners_[i] = {points_[tri[0]], points_[tri[1]], points_[tri[2]]};
     }
 }
 
-// Builds the node of order_[begin, end) (and its subtree) and returns its index.
-std::uint32_t TriangleTree::build_range(std::uint32_t begin, std::uint32_t end,
-                                        std::vector<Vec3>& centre) {
-    const auto self = static_cast<std::uint32_t>(nodes_.size());
-    nodes_.emplace_back();
+// Fills node `self` with order_[begin, end) and builds its subtree. A node's box is the union
+// of its children's (the same box as over its triangles, without reading them again).
+void TriangleTree::build_range(std::uint32_t self, std::uint32_t begin, std::uint32_t end,
+                               std::vector<Vec3>& centre) {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     Vec3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
-    Vec3 clo = lo, chi = hi;
-    for (std::uint32_t i = begin; i < end; ++i) {
-        for (const std::uint32_t v : triangles_[order_[i]]) {
-            const Vec3& p = points_[v];
-            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-        }
-        const Vec3& c = centre[order_[i]];
-        clo = {std::min(clo.x, c.x), std::min(clo.y, c.y), std::min(clo.z, c.z)};
-        chi = {std::max(chi.x, c.x), std::max(chi.y, c.y), std::max(chi.z, c.z)};
-    }
     if (end - begin <= kLeafSize) {
-        nodes_[self] = {lo, hi, begin, 0, end - begin};
-        return self;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            for (const std::uint32_t v : triangles_[order_[i]]) {
+                lo = lower(lo, points_[v]);
+                hi = upper(hi, points_[v]);
+            }
+        }
+        nodes_[self] = {lo, hi, begin, end - begin};
+        return;
     }
-    const Vec3 extent = chi - clo;
+    for (std::uint32_t i = begin; i < end; ++i) {
+        lo = lower(lo, centre[order_[i]]);
+        hi = upper(hi, centre[order_[i]]);
+    }
+    const Vec3 extent = hi - lo;
     const int axis =
         extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const auto key = [&](std::uint32_t t) {
@@ -145,10 +160,15 @@ std::uint32_t TriangleTree::build_range(std::uint32_t begin, std::uint32_t end,
     const std::uint32_t mid = begin + (end - begin) / 2;
     std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                      [&](std::uint32_t x, std::uint32_t y) { return key(x) < key(y); });
-    const std::uint32_t left = build_range(begin, mid, centre);
-    const std::uint32_t right = build_range(mid, end, centre);
-    nodes_[self] = {lo, hi, left, right, 0};
-    return self;
+    // The two children side by side, so a query that opens this node reads one stretch.
+    const auto first = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    nodes_.emplace_back();
+    build_range(first, begin, mid, centre);
+    build_range(first + 1, mid, end, centre);
+    const Node& left = nodes_[first];
+    const Node& right = nodes_[first + 1];
+    nodes_[self] = {lower(left.min, right.min), upper(left.max, right.max), first, 0};
 }
 
 TriangleTree::Hit TriangleTree::closest(const Vec3& p, std::uint32_t hint) const {
@@ -160,7 +180,8 @@ TriangleTree::Hit TriangleTree::closest(const Vec3& p, std::uint32_t hint) const
             closest_point_on_triangle(p, points_[tri[0]], points_[tri[1]], points_[tri[2]]);
         best = {q, length_squared(p - q), hint};
     }
-    // Each node with its box's distance, measured once, when its parent is opened.
+    // The nodes still to open, each with its box's distance, measured when its parent was
+    // opened. The walk goes on into the nearer child at once and keeps the farther here.
     struct Pending {
         std::uint32_t node;
         double distance_squared;
@@ -169,34 +190,29 @@ TriangleTree::Hit TriangleTree::closest(const Vec3& p, std::uint32_t hint) const
     int top = 0;
     stack[top++] = {0, box_distance_squared(p, nodes_[0].min, nodes_[0].max)};
     while (top > 0) {
-        const Pending next = stack[--top];
-        if (next.distance_squared >= best.distance_squared) {
-            continue;
-        }
-        const Node& node = nodes_[next.node];
-        if (node.count > 0) {
-            for (std::uint32_t i = node.a; i < node.a + node.count; ++i) {
-                const auto& tri = triangles_[order_[i]];
-                const Vec3 q =
-                    closest_point_on_triangle(p, points_[tri[0]], points_[tri[1]], points_[tri[2]]);
-                const double d = length_squared(p - q);
-                if (d < best.distance_squared) {
-                    best = {q, d, order_[i]};
+        Pending next = stack[--top];
+        while (next.distance_squared < best.distance_squared) {
+            const Node& node = nodes_[next.node];
+            if (node.count > 0) {
+                for (std::uint32_t i = node.a; i < node.a + node.count; ++i) {
+                    const auto& tri = corners_[i];
+                    const Vec3 q = closest_point_on_triangle(p, tri[0], tri[1], tri[2]);
+                    const double d = length_squared(p - q);
+                    if (d < best.distance_squared) {
+                        best = {q, d, order_[i]};
+                    }
                 }
+                break;
             }
-            continue;
-        }
-        const std::uint32_t a = node.a;
-        const std::uint32_t b = node.b;
-        const double da = box_distance_squared(p, nodes_[a].min, nodes_[a].max);
-        const double db = box_distance_squared(p, nodes_[b].min, nodes_[b].max);
-        // Push the farther first so the nearer is searched first.
-        if (da <= db) {
-            stack[top++] = {b, db};
-            stack[top++] = {a, da};
-        } else {
-            stack[top++] = {a, da};
-            stack[top++] = {b, db};
+            const std::uint32_t a = node.a;
+            const double da = box_distance_squared(p, nodes_[a].min, nodes_[a].max);
+            const double db = box_distance_squared(p, nodes_[a + 1].min, nodes_[a + 1].max);
+            const Pending near = da <= db ? Pending{a, da} : Pending{a + 1, db};
+            const Pending far = da <= db ? Pending{a + 1, db} : Pending{a, da};
+            if (far.distance_squared < best.distance_squared) {
+                stack[top++] = far;
+            }
+            next = near;
         }
     }
     return best;

@@ -45,6 +45,10 @@ TEST(TriangleTree, AgreesWithBruteForce) {
         const Vec3 q = closest_point_on_triangle(p, tree.points()[t[0]], tree.points()[t[1]],
                                                  tree.points()[t[2]]);
         EXPECT_EQ(q, hit.point);
+        // Any hint, near or far, only bounds the search: the answer is the same.
+        const auto hint = static_cast<std::uint32_t>((i * 7919) % tree.triangles().size());
+        EXPECT_DOUBLE_EQ(tree.closest(p, hint).distance_squared, brute) << i;
+        EXPECT_DOUBLE_EQ(tree.closest(p, hit.triangle).distance_squared, brute) << i;
     }
 }
 

@@ -41,17 +41,19 @@ public:
 private:
     struct Node {
         Vec3 min, max;
-        std::uint32_t a = 0;      ///< leaf: first of `count` triangles in order_; inner: left child
-        std::uint32_t b = 0;      ///< inner: right child
+        std::uint32_t a = 0;      ///< leaf: first of `count` triangles in order_; inner: left
+                                  ///< child (the right one is a + 1)
         std::uint32_t count = 0;  ///< 0 for an inner node
     };
     void build();
-    std::uint32_t build_range(std::uint32_t begin, std::uint32_t end, std::vector<Vec3>& centre);
+    void build_range(std::uint32_t self, std::uint32_t begin, std::uint32_t end,
+                     std::vector<Vec3>& centre);
 
     std::vector<Vec3> points_;
     std::vector<std::array<std::uint32_t, 3>> triangles_;
-    std::vector<std::uint32_t> order_;  // triangle indices, grouped by leaf
-    std::vector<Node> nodes_;           // nodes_[0] is the root
+    std::vector<std::uint32_t> order_;          // triangle indices, grouped by leaf
+    std::vector<std::array<Vec3, 3>> corners_;  // order_'s triangles' corners, in its order
+    std::vector<Node> nodes_;                   // nodes_[0] is the root
 };
 
 }  // namespace meshedit
