@@ -312,48 +312,54 @@ private:
     // Each new corner takes the value of what it stands on: an old vertex's corner, the
     // edge point on its face's side, or its face's point.
     void write(const Mesh& refined, memory::Array<T>& out) const {
-        const std::size_t nv = m_.vertices_size(), ne = m_.edges_size();
-        out.assign(refined.halfedges_size(), T{});
-        std::vector<Halfedge> corner;  // Quad: the old halfedge at each new face's old vertex
-        if (rules_.scheme != Scheme::Loop) {
-            corner.reserve(refined.faces_size());
-            for (const Face f : m_.faces()) {
-                for (const Halfedge h : m_.halfedges(f)) {
-                    corner.push_back(h);
-                }
+        if (rules_.scheme == Scheme::Loop) {
+            write_loop(refined, out);
+        } else {
+            write_quads(refined, out);
+        }
+    }
+
+    // Loop's layout (subdivision.cpp) names every new corner by formula, without reading the
+    // refined mesh: old halfedge h (in face f) becomes 2h, ending at h's edge point in f, and
+    // 2h + 1, ending at from_vertex(h) in twin(h)'s face; the inner halfedges 2I_i and
+    // 2I_i + 1 of face f end at the edge points of h_i and h_i+1 in f.
+    void write_loop(const Mesh& refined, memory::Array<T>& out) const {
+        const std::size_t nh = m_.halfedges_size(), ne = m_.edges_size();
+        out.resize_for_overwrite(refined.halfedges_size());
+        for (std::size_t h = 0; h < nh; ++h) {
+            const Halfedge x(static_cast<std::uint32_t>(h));
+            out[2 * h] = m_.is_boundary(x) ? T{} : edge_[h];
+            out[2 * h + 1] = m_.is_boundary(Mesh::twin(x)) ? T{} : vertex_[h ^ 1];
+        }
+        for (std::size_t f = 0; f < m_.faces_size(); ++f) {
+            const Halfedge h0 = m_.halfedge(Face(static_cast<std::uint32_t>(f)));
+            const Halfedge hs[3] = {h0, m_.next(h0), m_.next(m_.next(h0))};
+            for (std::size_t i = 0; i < 3; ++i) {
+                const std::size_t a = 2 * (2 * ne + 3 * f + i);
+                out[a] = edge_[hs[i].idx()];
+                out[a + 1] = edge_[hs[i == 2 ? 0 : i + 1].idx()];
             }
         }
-        for (const Face c : refined.faces()) {
-            Halfedge parts[3];
-            std::size_t n_parts = 0;
-            if (rules_.scheme == Scheme::Loop) {
-                for (const Halfedge h : m_.halfedges(Face(c.idx() / 4))) {
-                    parts[n_parts++] = h;
-                }
-            } else {
-                parts[0] = corner[c.idx()];
-                parts[1] = m_.next(parts[0]);
-                n_parts = 2;
-            }
-            for (const Halfedge x : refined.halfedges(c)) {
-                const std::uint32_t head = refined.to_vertex(x).idx();
-                T value = rules_.scheme == Scheme::Loop ? T{} : face_[m_.face(parts[0]).idx()];
-                if (head < nv) {
-                    for (std::size_t i = 0; i < n_parts; ++i) {
-                        if (m_.to_vertex(parts[i]).idx() == head) {
-                            value = vertex_[parts[i].idx()];
-                            break;
-                        }
-                    }
-                } else if (head < nv + ne) {
-                    for (std::size_t i = 0; i < n_parts; ++i) {
-                        if (Mesh::edge(parts[i]).idx() == head - nv) {
-                            value = edge_[parts[i].idx()];
-                            break;
-                        }
-                    }
-                }
-                out[x.idx()] = value;
+    }
+
+    // The quads' layout (quad_subdivision.cpp) likewise: old halfedge h (in face f) becomes
+    // 2h, ending at h's edge point in f, and 2h + 1 as for Loop; the corners are numbered
+    // face by face from halfedge(f), and the inner halfedge 2(2E + corner(h)) ends at f's
+    // face point, its twin at h's edge point in f.
+    void write_quads(const Mesh& refined, memory::Array<T>& out) const {
+        const std::size_t nh = m_.halfedges_size(), ne = m_.edges_size();
+        out.resize_for_overwrite(refined.halfedges_size());
+        for (std::size_t h = 0; h < nh; ++h) {
+            const Halfedge x(static_cast<std::uint32_t>(h));
+            out[2 * h] = m_.is_boundary(x) ? T{} : edge_[h];
+            out[2 * h + 1] = m_.is_boundary(Mesh::twin(x)) ? T{} : vertex_[h ^ 1];
+        }
+        std::size_t corner = 0;
+        for (const Face f : m_.faces()) {
+            for (const Halfedge h : m_.halfedges(f)) {
+                const std::size_t inner = 2 * (2 * ne + corner++);
+                out[inner] = face_[f.idx()];
+                out[inner + 1] = edge_[h.idx()];
             }
         }
     }
@@ -364,7 +370,7 @@ private:
     const memory::Array<T>& uv_;
     const EdgeProperty<std::uint8_t> crease_;
     const loop_rules::WeightTable weight_;
-    std::vector<T> face_, edge_, vertex_;
+    memory::Array<T> face_, edge_, vertex_;  // big: in huge pages (memory.h)
     std::vector<std::uint8_t> seam_;
     // Scratch of vertex().
     std::vector<Halfedge> ring_;

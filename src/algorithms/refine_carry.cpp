@@ -134,12 +134,14 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
                      const std::function<void(Mesh&, ChannelGroups&)>& refine) {
     const Layout layout = rules.scheme == Scheme::Loop ? Layout::Loop : Layout::Quad;
     // The arrays stay the same objects (a user's Property handles stay valid): the old
-    // values are copied aside, the refinement sizes the arrays, then they are derived.
+    // values are set aside, the refinement sizes the arrays, then they are derived. Vertex
+    // arrays are copied (old vertices keep their values in place); the others are taken
+    // without a copy, so the old connectivity below is copied without them too.
     const std::array<std::vector<BasePropertyArray*>, 4> now = attributes(mesh);
     std::array<Arrays, 4> old;
     for (int k = 0; k < 4; ++k) {
         for (BasePropertyArray* a : now[k]) {
-            old[k].push_back(a->clone());
+            old[k].push_back(k == 0 ? a->clone() : a->take_values());
         }
     }
     Mesh base = mesh;

@@ -68,6 +68,10 @@ public:
     /// Keeps the elements `kept[0], kept[1], …` (strictly increasing) as `0, 1, …`.
     virtual void compact(const std::vector<std::uint32_t>& kept) = 0;
     virtual std::unique_ptr<BasePropertyArray> clone() const = 0;
+    /// A new array of the same name, type and default holding this one's values, which is
+    /// left empty: a clone without copying, for a pass that rebuilds this array from the old
+    /// values (the whole-mesh refinements' carry).
+    virtual std::unique_ptr<BasePropertyArray> take_values() = 0;
     virtual const std::type_info& type() const = 0;
     virtual std::size_t bytes() const = 0;
     /// Bytes of one element, and its raw copy out of and back into the array (for recorded
@@ -131,6 +135,12 @@ public:
     }
     std::unique_ptr<BasePropertyArray> clone() const override {
         return std::make_unique<PropertyArray<T>>(*this);
+    }
+    std::unique_ptr<BasePropertyArray> take_values() override {
+        auto out = std::make_unique<PropertyArray<T>>(name(), default_);
+        out->carry_ = carry_;
+        out->data_.swap(data_);
+        return out;
     }
     const std::type_info& type() const override { return typeid(T); }
     std::size_t bytes() const override { return data_.capacity() * sizeof(T); }
