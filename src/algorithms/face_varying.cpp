@@ -42,20 +42,23 @@ Switches switches(const FaceVaryingRules& rules) {
 template <class T>
 class Refiner {
 public:
-    Refiner(const Mesh& m, const FaceVaryingRules& rules, const memory::Array<T>& uv)
+    Refiner(const Mesh& m, const FaceVaryingRules& rules, const memory::Array<T>& uv,
+            FaceVaryingLevel<T>& level)
         : m_(m),
           rules_(rules),
           s_(switches(rules)),
           uv_(uv),
           crease_(loop_rules::crease_property(m)),
-          weight_(rules.weights) {}
+          weight_(rules.weights),
+          face_(level.face),
+          edge_(level.edge),
+          vertex_(level.vertex) {}
 
-    void run(const Mesh& refined, memory::Array<T>& out) {
+    void run() {
         face_values();
         seams();
         edge_values();
         vertex_values();
-        write(refined, out);
     }
 
 private:
@@ -309,68 +312,13 @@ private:
         }
     }
 
-    // Each new corner takes the value of what it stands on: an old vertex's corner, the
-    // edge point on its face's side, or its face's point.
-    void write(const Mesh& refined, memory::Array<T>& out) const {
-        if (rules_.scheme == Scheme::Loop) {
-            write_loop(refined, out);
-        } else {
-            write_quads(refined, out);
-        }
-    }
-
-    // Loop's layout (subdivision.cpp) names every new corner by formula, without reading the
-    // refined mesh: old halfedge h (in face f) becomes 2h, ending at h's edge point in f, and
-    // 2h + 1, ending at from_vertex(h) in twin(h)'s face; the inner halfedges 2I_i and
-    // 2I_i + 1 of face f end at the edge points of h_i and h_i+1 in f.
-    void write_loop(const Mesh& refined, memory::Array<T>& out) const {
-        const std::size_t nh = m_.halfedges_size(), ne = m_.edges_size();
-        out.resize_for_overwrite(refined.halfedges_size());
-        for (std::size_t h = 0; h < nh; ++h) {
-            const Halfedge x(static_cast<std::uint32_t>(h));
-            out[2 * h] = m_.is_boundary(x) ? T{} : edge_[h];
-            out[2 * h + 1] = m_.is_boundary(Mesh::twin(x)) ? T{} : vertex_[h ^ 1];
-        }
-        for (std::size_t f = 0; f < m_.faces_size(); ++f) {
-            const Halfedge h0 = m_.halfedge(Face(static_cast<std::uint32_t>(f)));
-            const Halfedge hs[3] = {h0, m_.next(h0), m_.next(m_.next(h0))};
-            for (std::size_t i = 0; i < 3; ++i) {
-                const std::size_t a = 2 * (2 * ne + 3 * f + i);
-                out[a] = edge_[hs[i].idx()];
-                out[a + 1] = edge_[hs[i == 2 ? 0 : i + 1].idx()];
-            }
-        }
-    }
-
-    // The quads' layout (quad_subdivision.cpp) likewise: old halfedge h (in face f) becomes
-    // 2h, ending at h's edge point in f, and 2h + 1 as for Loop; the corners are numbered
-    // face by face from halfedge(f), and the inner halfedge 2(2E + corner(h)) ends at f's
-    // face point, its twin at h's edge point in f.
-    void write_quads(const Mesh& refined, memory::Array<T>& out) const {
-        const std::size_t nh = m_.halfedges_size(), ne = m_.edges_size();
-        out.resize_for_overwrite(refined.halfedges_size());
-        for (std::size_t h = 0; h < nh; ++h) {
-            const Halfedge x(static_cast<std::uint32_t>(h));
-            out[2 * h] = m_.is_boundary(x) ? T{} : edge_[h];
-            out[2 * h + 1] = m_.is_boundary(Mesh::twin(x)) ? T{} : vertex_[h ^ 1];
-        }
-        std::size_t corner = 0;
-        for (const Face f : m_.faces()) {
-            for (const Halfedge h : m_.halfedges(f)) {
-                const std::size_t inner = 2 * (2 * ne + corner++);
-                out[inner] = face_[f.idx()];
-                out[inner + 1] = edge_[h.idx()];
-            }
-        }
-    }
-
     const Mesh& m_;
     const FaceVaryingRules& rules_;
     const Switches s_;
     const memory::Array<T>& uv_;
     const EdgeProperty<std::uint8_t> crease_;
     const loop_rules::WeightTable weight_;
-    memory::Array<T> face_, edge_, vertex_;  // big: in huge pages (memory.h)
+    memory::Array<T>&face_, &edge_, &vertex_;  // the level's
     std::vector<std::uint8_t> seam_;
     // Scratch of vertex().
     std::vector<Halfedge> ring_;
@@ -382,14 +330,68 @@ private:
 }  // namespace
 
 template <class T>
-void refine_face_varying(const Mesh& base, const Mesh& refined, const FaceVaryingRules& rules,
-                         const memory::Array<T>& old, memory::Array<T>& out) {
-    Refiner<T>(base, rules, old).run(refined, out);
+FaceVaryingLevel<T> prepare_face_varying(const Mesh& base, const FaceVaryingRules& rules,
+                                         const memory::Array<T>& old) {
+    FaceVaryingLevel<T> level;
+    level.scheme = rules.scheme;
+    level.edges = base.edges_size();
+    Refiner<T>(base, rules, old, level).run();
+    level.boundary.resize(base.halfedges_size());
+    for (std::size_t h = 0; h < base.halfedges_size(); ++h) {
+        level.boundary[h] = base.is_boundary(Halfedge(static_cast<std::uint32_t>(h))) ? 1 : 0;
+    }
+    level.corner_start.reserve(base.faces_size() + 1);
+    level.corners.reserve(base.halfedges_size());
+    for (std::uint32_t f = 0; f < base.faces_size(); ++f) {
+        level.corner_start.push_back(static_cast<std::uint32_t>(level.corners.size()));
+        for (const Halfedge h : base.halfedges(Face(f))) {
+            level.corners.push_back(h.idx());
+        }
+    }
+    level.corner_start.push_back(static_cast<std::uint32_t>(level.corners.size()));
+    return level;
 }
 
-template void refine_face_varying<Vec2>(const Mesh&, const Mesh&, const FaceVaryingRules&,
-                                        const memory::Array<Vec2>&, memory::Array<Vec2>&);
-template void refine_face_varying<Vec3>(const Mesh&, const Mesh&, const FaceVaryingRules&,
-                                        const memory::Array<Vec3>&, memory::Array<Vec3>&);
+// Each new corner takes the value of what it stands on, named by the layouts' formulas
+// (subdivision.cpp, quad_subdivision.cpp) without reading the refined mesh: old halfedge h
+// (in face f) becomes 2h, ending at h's edge point in f, and 2h + 1, ending at from_vertex(h)
+// in twin(h)'s face. Loop's inner halfedges 2I_i and 2I_i + 1 of face f (I_i = 2E + 3f + i)
+// end at the edge points of h_i and h_i+1 in f; the quads' corners are numbered face by face
+// from halfedge(f), and the inner halfedge 2(2E + corner(h)) ends at f's face point, its
+// twin at h's edge point in f.
+template <class T>
+void write_face_varying(const FaceVaryingLevel<T>& level, std::size_t refined_halfedges,
+                        memory::Array<T>& out) {
+    const std::size_t nh = level.boundary.size(), ne = level.edges;
+    out.resize_for_overwrite(refined_halfedges);
+    for (std::size_t h = 0; h < nh; ++h) {
+        out[2 * h] = level.boundary[h] != 0 ? T{} : level.edge[h];
+        out[2 * h + 1] = level.boundary[h ^ 1] != 0 ? T{} : level.vertex[h ^ 1];
+    }
+    const std::size_t nf = level.corner_start.size() - 1;
+    for (std::size_t f = 0; f < nf; ++f) {
+        const std::uint32_t first = level.corner_start[f], end = level.corner_start[f + 1];
+        for (std::uint32_t c = first; c < end; ++c) {
+            const std::uint32_t h = level.corners[c];
+            if (level.scheme == Scheme::Loop) {
+                const std::size_t a = 2 * (2 * ne + c);  // c = 3f + i
+                out[a] = level.edge[h];
+                out[a + 1] = level.edge[level.corners[c + 1 == end ? first : c + 1]];
+            } else {
+                const std::size_t inner = 2 * (2 * ne + c);
+                out[inner] = level.face[f];
+                out[inner + 1] = level.edge[h];
+            }
+        }
+    }
+}
+
+#define MESHEDIT_FACE_VARYING(T)                                                               \
+    template FaceVaryingLevel<T> prepare_face_varying<T>(const Mesh&, const FaceVaryingRules&, \
+                                                         const memory::Array<T>&);             \
+    template void write_face_varying<T>(const FaceVaryingLevel<T>&, std::size_t, memory::Array<T>&);
+MESHEDIT_FACE_VARYING(Vec2)
+MESHEDIT_FACE_VARYING(Vec3)
+#undef MESHEDIT_FACE_VARYING
 
 }  // namespace meshedit::refine

@@ -3,6 +3,9 @@
 // level of Loop, Catmull-Clark or linear subdivision as face-varying values, by the rules of
 // OpenSubdiv's face-varying channels (docs/subdivision.md, "Face-varying interpolation").
 
+#include <cstddef>
+#include <cstdint>
+
 #include "meshedit/core/math.h"
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/pod_array.h"
@@ -19,9 +22,24 @@ struct FaceVaryingRules {
     UvInterpolation uv = UvInterpolation::CornersOnly;
 };
 
-/// The corner values of `refined`, made by one level of `rules.scheme` from `base` (collected;
-/// for Loop all triangles) in the layouts of subdivision.cpp and quad_subdivision.h, from
-/// `old` (one value per halfedge of `base`; those of boundary halfedges are not read).
+/// One level's corner values made from the old level, before the refinement replaces it:
+/// the values at the old corners, edge points and face points, and the few facts about the
+/// old connectivity that writing them into the new corners needs.
+template <class T>
+struct FaceVaryingLevel {
+    Scheme scheme = Scheme::CatmullClark;
+    std::size_t edges = 0;    ///< the old level's edge count
+    memory::Array<T> face;    ///< per old face: its face point's value (quads)
+    memory::Array<T> edge;    ///< per old interior halfedge: its edge point's, its side
+    memory::Array<T> vertex;  ///< per old interior halfedge: its head's new value
+    memory::Array<std::uint8_t> boundary;       ///< per old halfedge
+    memory::Array<std::uint32_t> corners;       ///< old faces' halfedges, from halfedge(f)
+    memory::Array<std::uint32_t> corner_start;  ///< face f's are [start[f], start[f + 1])
+};
+
+/// The values one level of `rules.scheme` makes from `base` (collected; for Loop all
+/// triangles) and `old` (one value per halfedge of `base`; those of boundary halfedges are
+/// not read).
 ///
 /// The values of a vertex are its corners' distinct values; an edge whose faces give either
 /// end different values is a seam, a boundary of the value charts. A vertex on no seam (and,
@@ -30,9 +48,14 @@ struct FaceVaryingRules {
 /// of faces sharing it (3/4 · value + 1/8 · the values at their far ends), as `rules.uv` says.
 /// Edge points on seams, boundaries and creases are midpoints of their own face's values.
 /// Every output value is computed once, so corners that share a value share its bits.
-/// \return one value per halfedge of `refined` (boundary halfedges get T{}).
 template <class T>
-void refine_face_varying(const Mesh& base, const Mesh& refined, const FaceVaryingRules& rules,
-                         const memory::Array<T>& old, memory::Array<T>& out);
+FaceVaryingLevel<T> prepare_face_varying(const Mesh& base, const FaceVaryingRules& rules,
+                                         const memory::Array<T>& old);
+
+/// The values of the refined mesh's `refined_halfedges` corners, in the layouts of
+/// subdivision.cpp and quad_subdivision.h (boundary halfedges get T{}).
+template <class T>
+void write_face_varying(const FaceVaryingLevel<T>& level, std::size_t refined_halfedges,
+                        memory::Array<T>& out);
 
 }  // namespace meshedit::refine

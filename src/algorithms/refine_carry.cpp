@@ -4,10 +4,12 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <typeinfo>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "mesh/mesh_arrays.h"
@@ -93,23 +95,34 @@ bool is_texcoord_set(const BasePropertyArray& a) {
     return false;
 }
 
-// A texture coordinate set or corner normal array, refined as face-varying values: true if
-// done.
-bool refine_corner_values(const Mesh& base, const Mesh& refined, FaceVaryingRules rules,
-                          const BasePropertyArray& old, BasePropertyArray& out) {
+// A texture coordinate set or corner normal array's values for the next level, made from
+// the old level before the refinement replaces it (empty for any other corner array).
+using Prepared = std::variant<std::monostate, FaceVaryingLevel<Vec2>, FaceVaryingLevel<Vec3>>;
+
+Prepared prepare_corner_values(const Mesh& base, FaceVaryingRules rules,
+                               const BasePropertyArray& old) {
     if (is_texcoord_set(old)) {
-        refine_face_varying<Vec2>(base, refined, rules,
-                                  static_cast<const PropertyArray<Vec2>&>(old).vector(),
-                                  static_cast<PropertyArray<Vec2>&>(out).vector());
-        return true;
+        return prepare_face_varying<Vec2>(base, rules,
+                                          static_cast<const PropertyArray<Vec2>&>(old).vector());
     }
     if (old.name() == kCornerNormalProperty && old.type() == typeid(Vec3)) {
         // A corner normal's seams are hard edges: they stay where they are, and smoothing
         // a normal field by a parametrization's rules means nothing; linear keeps both.
         rules.uv = UvInterpolation::All;
-        refine_face_varying<Vec3>(base, refined, rules,
-                                  static_cast<const PropertyArray<Vec3>&>(old).vector(),
-                                  static_cast<PropertyArray<Vec3>&>(out).vector());
+        return prepare_face_varying<Vec3>(base, rules,
+                                          static_cast<const PropertyArray<Vec3>&>(old).vector());
+    }
+    return std::monostate{};
+}
+
+// Writes what prepare_corner_values() made: true if there was anything.
+bool write_corner_values(const Prepared& prepared, std::size_t halfedges, BasePropertyArray& out) {
+    if (const auto* uv = std::get_if<FaceVaryingLevel<Vec2>>(&prepared)) {
+        write_face_varying(*uv, halfedges, static_cast<PropertyArray<Vec2>&>(out).vector());
+        return true;
+    }
+    if (const auto* normal = std::get_if<FaceVaryingLevel<Vec3>>(&prepared)) {
+        write_face_varying(*normal, halfedges, static_cast<PropertyArray<Vec3>&>(out).vector());
         return true;
     }
     return false;
@@ -144,15 +157,67 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
             old[k].push_back(k == 0 ? a->clone() : a->take_values());
         }
     }
-    Mesh base = mesh;
-    const std::array<std::vector<BasePropertyArray*>, 4> copies = attributes(base);
-    for (int k = 0; k < 4; ++k) {
-        for (const BasePropertyArray* a : copies[k]) {
-            MeshArrays::container(base, k).remove(a);
+    // Texture coordinates and corner normals: the next level's values, from this one.
+    std::vector<Prepared> prepared;
+    for (const auto& a : old[1]) {
+        prepared.push_back(prepare_corner_values(mesh, rules, *a));
+    }
+    // The old connectivity is copied only for attributes that read it after the refinement:
+    // vertex attributes that do not blend and corner attributes that are not face-varying.
+    bool needs_base = false;
+    for (const auto& a : old[0]) {
+        needs_base = needs_base || !(a->carry() == Carry::Blend && a->channels() > 0);
+    }
+    for (const Prepared& p : prepared) {
+        needs_base = needs_base || std::holds_alternative<std::monostate>(p);
+    }
+    std::optional<Mesh> kept;
+    if (needs_base) {
+        kept.emplace(mesh);
+        const std::array<std::vector<BasePropertyArray*>, 4> copies = attributes(*kept);
+        for (int k = 0; k < 4; ++k) {
+            for (const BasePropertyArray* a : copies[k]) {
+                MeshArrays::container(*kept, k).remove(a);
+            }
         }
     }
-    const std::size_t nv = base.vertices_size();
-    const std::size_t ne = base.edges_size();
+    const Mesh& base = needs_base ? *kept : mesh;  // mesh: read only before refine()
+    const std::size_t nv = mesh.vertices_size();
+    const std::size_t ne = mesh.edges_size();
+    const std::size_t nf = mesh.faces_size();
+    // The old faces' corners (face f's are corner_list[corner_start[f] .. [f + 1])) and the
+    // parents of the new faces, where something reads them.
+    const bool needs_corners = needs_base || (!old[3].empty() && layout == Layout::Quad);
+    std::vector<std::uint32_t> corner_start(needs_corners ? nf + 1 : 0, 0);
+    std::vector<Halfedge> corner_list;
+    for (std::uint32_t f = 0; needs_corners && f < nf; ++f) {
+        corner_start[f] = static_cast<std::uint32_t>(corner_list.size());
+        if (!mesh.is_deleted(Face(f))) {
+            for (const Halfedge h : mesh.halfedges(Face(f))) {
+                corner_list.push_back(h);
+            }
+        }
+    }
+    if (needs_corners) {
+        corner_start[nf] = static_cast<std::uint32_t>(corner_list.size());
+    }
+    const auto corners_of = [&](std::uint32_t f) {
+        return std::span<const Halfedge>(corner_list.data() + corner_start[f],
+                                         corner_start[f + 1] - corner_start[f]);
+    };
+    std::vector<std::uint32_t> parent;
+    if (!old[3].empty() || needs_base) {
+        parent.resize(layout == Layout::Loop ? 4 * nf : corner_list.size());
+        for (std::uint32_t c = 0; c < parent.size(); ++c) {
+            parent[c] = layout == Layout::Loop ? c / 4 : 0;
+        }
+        for (std::uint32_t f = 0; layout == Layout::Quad && f < nf; ++f) {
+            for (std::uint32_t c = corner_start[f]; c < corner_start[f + 1]; ++c) {
+                parent[c] = f;
+            }
+        }
+    }
+
     // The blending vertex attributes go through the refinement with the positions.
     ChannelGroups groups;
     std::vector<std::size_t> first_group(old[0].size(), 0);
@@ -165,31 +230,6 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
     refine(mesh, groups);
     groups.in.clear();
 
-    // Parents of the new faces, and the old faces' corners.
-    std::vector<std::uint32_t> parent(mesh.faces_size());
-    // Face f's corners are corner_list[corner_start[f] .. corner_start[f + 1]).
-    std::vector<std::uint32_t> corner_start(base.faces_size() + 1, 0);
-    std::vector<Halfedge> corner_list;
-    corner_list.reserve(base.halfedges_size());
-    for (std::uint32_t f = 0; f < base.faces_size(); ++f) {
-        corner_start[f] = static_cast<std::uint32_t>(corner_list.size());
-        if (!base.is_deleted(Face(f))) {
-            for (const Halfedge h : base.halfedges(Face(f))) {
-                corner_list.push_back(h);
-            }
-        }
-    }
-    corner_start[base.faces_size()] = static_cast<std::uint32_t>(corner_list.size());
-    const auto corners_of = [&](std::uint32_t f) {
-        return std::span<const Halfedge>(corner_list.data() + corner_start[f],
-                                         corner_start[f + 1] - corner_start[f]);
-    };
-    for (std::uint32_t f = 0, c = 0; f < base.faces_size(); ++f) {
-        const std::size_t parts = layout == Layout::Loop ? 4 : corners_of(f).size();
-        for (std::size_t i = 0; i < parts && c < parent.size(); ++i) {
-            parent[c++] = f;
-        }
-    }
     std::vector<std::uint32_t> from;
     std::vector<double> weight;
     const auto all_corners = [&](auto pick, std::uint32_t f) {
@@ -235,14 +275,14 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
         BasePropertyArray* out = now[3][i];
         reset(*out, mesh.faces_size());
         const double one = 1.0;
-        for (std::uint32_t c = 0; c < mesh.faces_size(); ++c) {
+        for (std::uint32_t c = 0; c < mesh.faces_size() && c < parent.size(); ++c) {
             out->derive_from(*a, c, &parent[c], &one, 1);
         }
     }
     for (std::size_t i = 0; i < old[1].size(); ++i) {
         const BasePropertyArray* a = old[1][i].get();
         BasePropertyArray* out = now[1][i];
-        if (refine_corner_values(base, mesh, rules, *a, *out)) {
+        if (write_corner_values(prepared[i], mesh.halfedges_size(), *out)) {
             continue;
         }
         reset(*out, mesh.halfedges_size());
