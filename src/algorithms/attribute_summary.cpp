@@ -78,7 +78,8 @@ std::vector<std::pair<std::string, std::string>> attribute_rows(const Mesh& mesh
         if (!m.base_colour_texture.empty()) {
             std::error_code ec;
             value += " texture " + m.base_colour_texture +
-                     (std::filesystem::exists(m.base_colour_texture, ec) ? "" : " (missing)");
+                     (std::filesystem::exists(m.base_colour_texture, ec) ? "" : " (missing)") +
+                     (m.base_colour_texcoord != 0 ? " on the second texture coordinate set" : "");
         }
         rows.emplace_back("material " + std::to_string(i), value);
     }

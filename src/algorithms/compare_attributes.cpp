@@ -109,7 +109,8 @@ AttributeDifference compare_materials(const Mesh& a, const Mesh& b,
                               ? x == y
                               : x->name == y->name && x->base_colour == y->base_colour &&
                                     x->opacity == y->opacity &&
-                                    x->base_colour_texture == y->base_colour_texture;
+                                    x->base_colour_texture == y->base_colour_texture &&
+                                    x->base_colour_texcoord == y->base_colour_texcoord;
         if (!same && d.differing++ == 0) {
             d.first_a = ElementRef::face(f);
         }

@@ -215,6 +215,7 @@ Json attributes_json(const Mesh& mesh, const AttributeSummary& a) {
             std::error_code ec;
             j["texture"] = m.base_colour_texture;
             j["texture_found"] = std::filesystem::exists(m.base_colour_texture, ec);
+            j["texture_texcoord_set"] = m.base_colour_texcoord;
         }
         materials.push_back(std::move(j));
     }

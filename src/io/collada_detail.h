@@ -6,6 +6,7 @@
 #include <pugixml.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -86,6 +87,9 @@ struct GeometryData {
     /// Per face, its primitive's material symbol (an index into `symbols`; "" for none).
     std::vector<std::uint32_t> face_symbols;
     std::vector<std::string> symbols;
+    /// The `set` number of the input that is MeshEdit's second texture coordinate set (the
+    /// first primitive's that has one): a material bound to it draws with that set.
+    std::optional<std::uint64_t> second_texcoord_set;
 };
 
 /// Reads `<geometry>` `geometry`. \throws IoError naming the element.

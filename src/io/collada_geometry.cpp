@@ -383,6 +383,9 @@ GeometryReader::Inputs GeometryReader::read_inputs(pugi::xml_node primitive) {
     }
     // Two texture coordinate sets are kept: the others are said, once per geometry.
     const Input* kept[2] = {inputs.texcoord(0), inputs.texcoord(1)};
+    if (kept[1] && !g_.second_texcoord_set) {
+        g_.second_texcoord_set = kept[1]->set;
+    }
     for (const Input& input : inputs.all) {
         if (input.semantic == "TEXCOORD" && &input != kept[0] && &input != kept[1] &&
             !other_sets_said_) {

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <string_view>
+#include <utility>
 
 #include "io_util.h"
 #include "meshedit/core/number_text.h"
@@ -56,14 +57,9 @@ void append_numbers(std::string& out, std::initializer_list<double> values) {
     }
 }
 
-}  // namespace
-
-Material read_material(const Document& doc, pugi::xml_node node) {
-    Material m;
-    const pugi::xml_attribute name = node.attribute("name");
-    m.name = name ? name.value() : node.attribute("id").value();
-    m.has_base_colour = false;
-    m.has_opacity = false;
+// The profile_COMMON of `<material>` `node`'s effect, and its technique's shading element
+// (lambert, phong, blinn or constant).
+std::pair<pugi::xml_node, pugi::xml_node> shading_of(const Document& doc, pugi::xml_node node) {
     const pugi::xml_attribute url = node.child("instance_effect").attribute("url");
     const std::string_view u = url.value();
     const pugi::xml_node effect =
@@ -71,11 +67,31 @@ Material read_material(const Document& doc, pugi::xml_node node) {
     const pugi::xml_node profile = effect.child("profile_COMMON");
     pugi::xml_node shading;
     for (pugi::xml_node child : profile.child("technique").children()) {
-        shading = child;  // lambert, phong, blinn or constant: one of them
+        shading = child;
         if (child.child("diffuse") || child.child("emission")) {
             break;
         }
     }
+    return {profile, shading};
+}
+
+}  // namespace
+
+std::string diffuse_texcoord(const Document& doc, pugi::xml_node node) {
+    return shading_of(doc, node)
+        .second.child("diffuse")
+        .child("texture")
+        .attribute("texcoord")
+        .value();
+}
+
+Material read_material(const Document& doc, pugi::xml_node node) {
+    Material m;
+    const pugi::xml_attribute name = node.attribute("name");
+    m.name = name ? name.value() : node.attribute("id").value();
+    m.has_base_colour = false;
+    m.has_opacity = false;
+    const auto [profile, shading] = shading_of(doc, node);
     const pugi::xml_node diffuse = shading.child("diffuse");
     if (const pugi::xml_node colour = diffuse.child("color")) {
         const std::vector<double> c = parse_doubles(doc, colour);
@@ -142,6 +158,7 @@ std::string materials_text(const std::vector<Material>& materials,
                      n + "\">\n          <sampler2D>\n            <source>surface-" + n +
                      "</source>\n          </sampler2D>\n        </newparam>\n";
             diffuse = "<texture texture=\"sampler-" + n + "\" texcoord=\"UVMap\"/>";
+            // write_collada.cpp binds UVMap to the input set of m.base_colour_texcoord.
         } else if (m.has_base_colour) {
             diffuse = "<color>";
             append_numbers(diffuse, {m.base_colour.x, m.base_colour.y, m.base_colour.z, 1.0});

@@ -19,6 +19,10 @@ namespace meshedit::collada {
 /// false, no texture).
 Material read_material(const Document& doc, pugi::xml_node node);
 
+/// The `texcoord` semantic of that diffuse `<texture>` ("" for none): an instance's
+/// `<bind_vertex_input>` maps it to an input set.
+std::string diffuse_texcoord(const Document& doc, pugi::xml_node node);
+
 /// The libraries for `materials`, material i as id "material-i" (effect "effect-i", image
 /// "image-i"), each escaped for XML; a texture path relative to `folder`, the output's.
 std::string materials_text(const std::vector<Material>& materials,

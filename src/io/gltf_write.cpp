@@ -263,6 +263,8 @@ private:
             model_.textures.push_back(texture);
             g.pbrMetallicRoughness.baseColorTexture.index =
                 static_cast<int>(model_.textures.size() - 1);
+            g.pbrMetallicRoughness.baseColorTexture.texCoord =
+                static_cast<int>(m.base_colour_texcoord);
         }
         model_.materials.push_back(std::move(g));
         return static_cast<int>(model_.materials.size() - 1);

@@ -238,6 +238,15 @@ std::vector<std::string> unkept_by_format(const Mesh& mesh, const std::string& e
                          names_of_formats(std::mem_fn(&MeshFormat::second_texcoords)) +
                          " keep it)");
     }
+    for (const Material& m : mesh.materials()) {
+        if (format->corner_attributes && !format->second_texcoords && m.base_colour_texcoord != 0 &&
+            !m.base_colour_texture.empty()) {
+            unkept.push_back(
+                "material '" + m.name + "''s texture on the second texture coordinate set (" +
+                name + " has one set; " +
+                names_of_formats(std::mem_fn(&MeshFormat::second_texcoords)) + " keep it)");
+        }
+    }
     // An image a glTF file embedded: glTF writes it back (PNG and JPEG, the kinds it holds);
     // the other formats only name texture files.
     for (const Material& m : mesh.materials()) {

@@ -137,7 +137,8 @@ private:
     void instance_controller(pugi::xml_node at, const Mat4& transform);
     void append(const Instance& instance, collada::GeometryData& g, bool last_use);
     void append_attributes(const Instance& instance, const collada::GeometryData& g, bool mirror);
-    std::uint32_t material_for(pugi::xml_node at, const std::string& symbol);
+    std::uint32_t material_for(pugi::xml_node at, const std::string& symbol,
+                               const collada::GeometryData* g = nullptr);
 
     const Document& doc_;
     MeshSoup out_;
@@ -406,7 +407,7 @@ void SceneReader::append_attributes(const Instance& instance, const collada::Geo
     }
     std::vector<std::uint32_t> material(g.symbols.size());
     for (std::size_t s = 0; s < g.symbols.size(); ++s) {
-        material[s] = material_for(instance.at, g.symbols[s]);
+        material[s] = material_for(instance.at, g.symbols[s], &g);
     }
     for (std::size_t f = 0; f + 1 < g.face_offsets.size(); ++f) {
         const std::uint32_t begin = g.face_offsets[f];
@@ -431,13 +432,15 @@ void SceneReader::append_attributes(const Instance& instance, const collada::Geo
 
 // The index in out_.materials of what `symbol` is bound to at the instancing element `at`
 // (or, unbound, of the <material> whose id it is); an unnamed material for none.
-std::uint32_t SceneReader::material_for(pugi::xml_node at, const std::string& symbol) {
-    pugi::xml_node target;
+std::uint32_t SceneReader::material_for(pugi::xml_node at, const std::string& symbol,
+                                        const collada::GeometryData* g) {
+    pugi::xml_node target, binding;
     for (pugi::xml_node bound :
          at.child("bind_material").child("technique_common").children("instance_material")) {
         const std::string_view url = bound.attribute("target").value();
         if (symbol == bound.attribute("symbol").value() && url.size() > 1 && url[0] == '#') {
             target = doc_.find_id(url.substr(1));
+            binding = bound;
             break;
         }
     }
@@ -458,7 +461,18 @@ std::uint32_t SceneReader::material_for(pugi::xml_node at, const std::string& sy
     const auto [it, fresh] = material_index_.emplace(
         target.internal_object(), static_cast<std::uint32_t>(out_.materials.size()));
     if (fresh) {
-        out_.materials.push_back(collada::read_material(doc_, target));
+        Material m = collada::read_material(doc_, target);
+        // The texture's texcoord names a semantic the binding maps to an input set: the
+        // geometry's second set's number makes it MeshEdit's second set.
+        const std::string semantic = collada::diffuse_texcoord(doc_, target);
+        for (pugi::xml_node input : binding.children("bind_vertex_input")) {
+            if (!semantic.empty() && semantic == input.attribute("semantic").value() && g &&
+                g->second_texcoord_set &&
+                input.attribute("input_set").as_ullong(~0ull) == *g->second_texcoord_set) {
+                m.base_colour_texcoord = 1;
+            }
+        }
+        out_.materials.push_back(std::move(m));
     }
     return it->second;
 }

@@ -236,7 +236,9 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags,
             const std::string m = "material-" + std::to_string(i);
             out += "              <instance_material symbol=\"" + m + "\" target=\"#" + m +
                    "\">\n                <bind_vertex_input semantic=\"UVMap\" "
-                   "input_semantic=\"TEXCOORD\" input_set=\"0\"/>\n"
+                   "input_semantic=\"TEXCOORD\" input_set=\"" +
+                   std::to_string(materials[i].base_colour_texcoord) +
+                   "\"/>\n"
                    "              </instance_material>\n";
         }
         out +=

@@ -362,11 +362,13 @@ PYBIND11_MODULE(_meshedit, m) {
                         py::make_tuple(material.base_colour.x, material.base_colour.y,
                                        material.base_colour.z, material.opacity);
                     d["texture"] = material.base_colour_texture;
+                    d["texcoord_set"] = material.base_colour_texcoord;
                     out.append(d);
                 }
                 return out;
             },
-            "The materials: name, base colour (r, g, b, opacity) and base-colour texture path.")
+            "The materials: name, base colour (r, g, b, opacity), base-colour texture path and the "
+            "texture coordinate set it reads (0 or 1).")
         .def("edges", [](const PyMesh& self) { return edges_of(self.mesh); })
         .def("creases", [](const PyMesh& self) { return creases_of(self.mesh); })
         .def(

@@ -118,8 +118,8 @@ SurfaceColor MeshRenderer::shown_color(SurfaceColor wanted) const {
 }
 
 void MeshRenderer::fill_surface(const Mesh& mesh) {
-    const auto& [uv, vertex_colour, face_colour, material] = surface_sources(mesh);
-    has_texcoords_ = static_cast<bool>(uv);
+    const auto& [uv, vertex_colour, face_colour, material, uv1] = surface_sources(mesh);
+    has_texcoords_ = uv || uv1;
     has_colours_ = vertex_colour || face_colour;
     has_materials_ = material && !mesh.materials().empty();
     several_material_colours_ = false;
@@ -154,12 +154,15 @@ MeshRenderer::SurfaceSources MeshRenderer::surface_sources(const Mesh& mesh) {
     return {mesh.get_property<Halfedge, Vec2>(kTexCoordProperty),
             mesh.get_property<Vertex, Vec4>(kColorProperty),
             mesh.get_property<Face, Vec4>(kFaceColorProperty),
-            mesh.get_property<Face, std::uint32_t>(kMaterialProperty)};
+            mesh.get_property<Face, std::uint32_t>(kMaterialProperty),
+            mesh.get_property<Halfedge, Vec2>(kTexCoord1Property)};
 }
 
 void MeshRenderer::write_surface_triangle(const Mesh& mesh, const SurfaceSources& sources,
                                           std::size_t t) {
-    const auto& [uv, vertex_colour, face_colour, material] = sources;
+    const auto& [uv0, vertex_colour, face_colour, material, uv1] = sources;
+    // The set the face's texture reads (its material's), else the one the mesh has.
+    bool second = !uv0;
     const std::uint32_t f = triangle_faces_[t];
     const bool live = f < mesh.faces_size() && !mesh.is_deleted(Face(f));
     std::uint8_t material_colour[4] = {0, 0, 0, 0};  // alpha 0: none, the base colour
@@ -175,12 +178,14 @@ void MeshRenderer::write_surface_triangle(const Mesh& mesh, const SurfaceSources
                 material_colour[3] = 255;
             }
             layer = m < material_layers_.size() ? material_layers_[m] : -1.0f;
+            second = second || (mat.base_colour_texcoord == 1 && uv1);
         }
     }
     for (std::size_t k = 0; k < 3; ++k) {
         SurfaceCorner& out = surface_[3 * t + k];
         const std::uint32_t v = triangle_corners_[3 * t + k];
         const Halfedge h(corner_halfedges_[3 * t + k]);
+        const HalfedgeProperty<Vec2>& uv = second ? uv1 : uv0;
         const Vec2 at = live && uv ? uv[h] : Vec2{};
         out.uv[0] = static_cast<float>(at.x);
         out.uv[1] = static_cast<float>(at.y);

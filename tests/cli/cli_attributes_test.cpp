@@ -196,6 +196,36 @@ TEST(CliAttributes, GltfTexcoord1ReadsAsTheSecondSet) {
         std::string::npos);
 }
 
+// A material whose texture reads the second texture coordinate set (glTF's
+// baseColorTexture.texCoord 1) keeps that through glTF, GLB and COLLADA (a bind_vertex_input
+// to the second set's number) and back; OBJ, with one set, says it drops it.
+TEST(CliAttributes, ATextureOnTheSecondSetStaysOnIt) {
+    TempDir tmp;
+    const std::filesystem::path square =
+        repo_root() / "tests/golden/data/second_uv_set_square.gltf";
+    const auto set_of = [](const std::filesystem::path& file) {
+        return info_json(file)["attributes"]["materials"][0]["texture_texcoord_set"];
+    };
+    EXPECT_EQ(set_of(square), 1);
+    for (const char* name : {"a.dae", "a.glb", "a.gltf"}) {
+        SCOPED_TRACE(name);
+        const RunResult r = run_meshedit({"convert", square.string(), (tmp / name).string()});
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_EQ(r.err.find("not kept"), std::string::npos) << r.err;
+        EXPECT_EQ(set_of(tmp / name), 1);
+        const RunResult back =
+            run_meshedit({"convert", (tmp / name).string(), (tmp / "back.gltf").string()});
+        ASSERT_EQ(back.exit_code, 0) << back.err;
+        EXPECT_EQ(set_of(tmp / "back.gltf"), 1);
+    }
+    const RunResult obj = run_meshedit({"convert", square.string(), (tmp / "a.obj").string()});
+    EXPECT_EQ(obj.exit_code, 0) << obj.err;
+    EXPECT_NE(obj.err.find("a.obj: not kept: material 'second_set''s texture on the second "
+                           "texture coordinate set (OBJ has one set; COLLADA and glTF keep it)"),
+              std::string::npos)
+        << obj.err;
+}
+
 // A texture path goes into the output relative to the output's folder, and reads back as the
 // same file.
 TEST(CliAttributes, TexturePathsAreWrittenRelativeToTheOutput) {

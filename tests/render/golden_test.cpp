@@ -203,6 +203,10 @@ const std::vector<GoldenCase>& golden_cases() {
         {"textured_box_glb",
          "assimp:glTF2/BoxTextured-glTF-Binary/BoxTextured.glb",
          {"--camera", "30,25"}},
+        // A material whose texture reads the second texture coordinate set (glTF's
+        // baseColorTexture.texCoord 1): the whole 8 × 8 checker; the first set would squeeze
+        // the square into one black cell.
+        {"textured_second_set", "tests/golden/data/second_uv_set_square.gltf", {}},
         {"vertex_colours", "assimp:Collada/kwxport_test_vcolors.dae", {"--color", "vertex"}},
         // QEM simplification (docs/simplify.md): the teapot (4,032 triangles) at 10% and 2.5%;
         // rims, spout tip and handle keep their shape, flat regions get the big triangles.

@@ -20,6 +20,10 @@ struct Material {
     /// naming a file; base_colour_texture is then only a name for it ("Texture.png"). glTF
     /// writes them back embedded; the formats that name files say they cannot keep them.
     std::string base_colour_texture_bytes;
+    /// Which texture coordinate set the texture reads: 0 the first (kTexCoordProperty), 1 the
+    /// second (kTexCoord1Property). glTF's baseColorTexture.texCoord; COLLADA's binding of the
+    /// texture's texcoord to an input set. A set the mesh lacks draws with the first.
+    unsigned base_colour_texcoord = 0;
     /// Whether the file said the colour and the opacity: an OBJ material whose .mtl is missing
     /// or has no Kd (d, Tr) line has neither, and is written back without them rather than
     /// with invented values.

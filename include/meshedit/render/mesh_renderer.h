@@ -163,6 +163,7 @@ private:
         VertexProperty<Vec4> vertex_colour;
         FaceProperty<Vec4> face_colour;
         FaceProperty<std::uint32_t> material;
+        HalfedgeProperty<Vec2> uv1;  ///< the second set, for materials whose texture reads it
     };
     static SurfaceSources surface_sources(const Mesh& mesh);
     void write_surface_triangle(const Mesh& mesh, const SurfaceSources& sources, std::size_t t);
