@@ -34,7 +34,7 @@ def test_corner_attributes_follow_faces_and_edits(tmp_path):
     assert mesh.corner_normals() is None
     assert list(mesh.face_materials()) == [0]
     assert mesh.materials() == [{"name": "paint", "base_colour": (1.0, 0.5, 0.0, 0.25),
-                                 "texture": ""}]
+                                 "texture": "", "texcoord_set": 0}]
     # A poke's centre blends the four corners: UV (0.5, 0.5) on the four new corners.
     mesh.poke(0)
     uv = mesh.texcoords()
