@@ -456,8 +456,17 @@ private:
             return;
         }
         for (std::size_t m = 0; m < model_.materials.size(); ++m) {
-            out_.materials.push_back(
-                gltf_images::read_material(model_, model_.materials[m], embedded_, folder_));
+            Material material =
+                gltf_images::read_material(model_, model_.materials[m], embedded_, folder_);
+            // MeshEdit keeps TEXCOORD_0 and TEXCOORD_1: a texture on a later set draws with
+            // the first, and the file is told so.
+            if (material.base_colour_texcoord > 1) {
+                out_.notices.push_back("material " + std::to_string(m) + "'s texture reads " +
+                                       "TEXCOORD_" + std::to_string(material.base_colour_texcoord) +
+                                       ", which is not kept: it is drawn with TEXCOORD_0");
+                material.base_colour_texcoord = 0;
+            }
+            out_.materials.push_back(std::move(material));
         }
         const auto none = static_cast<std::uint32_t>(out_.materials.size());
         bool used_none = false;

@@ -218,6 +218,16 @@ TEST(CliAttributes, ATextureOnTheSecondSetStaysOnIt) {
         ASSERT_EQ(back.exit_code, 0) << back.err;
         EXPECT_EQ(set_of(tmp / "back.gltf"), 1);
     }
+    // A texture on a set MeshEdit does not keep (TEXCOORD_3) is drawn with the first, said.
+    std::string text = read_file(square);
+    text.replace(text.find("\"texCoord\": 1"), 13, "\"texCoord\": 3");
+    std::ofstream(tmp / "third.gltf") << text;
+    const auto j = info_json(tmp / "third.gltf");
+    EXPECT_EQ(j["attributes"]["materials"][0]["texture_texcoord_set"], 0);
+    EXPECT_NE(j["notices"].dump().find("material 0's texture reads TEXCOORD_3, which is not "
+                                       "kept: it is drawn with TEXCOORD_0"),
+              std::string::npos)
+        << j["notices"].dump();
     const RunResult obj = run_meshedit({"convert", square.string(), (tmp / "a.obj").string()});
     EXPECT_EQ(obj.exit_code, 0) << obj.err;
     EXPECT_NE(obj.err.find("a.obj: not kept: material 'second_set''s texture on the second "
