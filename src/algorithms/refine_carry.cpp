@@ -2,11 +2,14 @@
 
 #include "refine_carry.h"
 
+#include <algorithm>
 #include <array>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
 #include <typeinfo>
 #include <utility>
 #include <variant>
@@ -45,13 +48,45 @@ void reset(BasePropertyArray& a, std::size_t n) {
     a.resize(n);
 }
 
+// PropertyArray<T>, const when A is.
+template <class T, class A>
+using TypedAs = std::conditional_t<std::is_const_v<A>, const PropertyArray<T>, PropertyArray<T>>;
+
+// The bytes of an array whose elements are doubles and nothing else (colours, Vec3s,
+// numbers), so their channels are copied in one pass rather than one channel at a time
+// through get_channel(); null for any other.
+template <class A>
+auto* doubles_of(A& a) {
+    using Byte = std::conditional_t<std::is_const_v<A>, const std::byte, std::byte>;
+    const auto bytes = [](auto& array) { return reinterpret_cast<Byte*>(array.vector().data()); };
+    if (a.type() == typeid(Vec4)) {
+        return bytes(static_cast<TypedAs<Vec4, A>&>(a));
+    }
+    if (a.type() == typeid(Vec3)) {
+        return bytes(static_cast<TypedAs<Vec3, A>&>(a));
+    }
+    if (a.type() == typeid(double)) {
+        return bytes(static_cast<TypedAs<double, A>&>(a));
+    }
+    return static_cast<Byte*>(nullptr);
+}
+
 // The groups of three channels of a blending vertex attribute (the last padded with 0).
 void add_groups(const BasePropertyArray& old, std::size_t nv, ChannelGroups& groups) {
+    const std::byte* raw = doubles_of(old);
+    const std::size_t size = old.element_bytes();
     std::vector<double> values;
     for (std::size_t c = 0; c < old.channels(); c += 3) {
         memory::Array<Vec3>& in = groups.in.emplace_back();
         in.assign(nv, Vec3{});
-        for (std::size_t j = 0; j < 3 && c + j < old.channels(); ++j) {
+        const std::size_t n = std::min<std::size_t>(3, old.channels() - c);
+        if (raw != nullptr) {
+            for (std::size_t v = 0; v < nv; ++v) {
+                std::memcpy(&in[v], raw + v * size + 8 * c, 8 * n);
+            }
+            continue;
+        }
+        for (std::size_t j = 0; j < n; ++j) {
             old.get_channel(c + j, values);
             for (std::size_t v = 0; v < nv; ++v) {
                 in[v][static_cast<int>(j)] = values[v];
@@ -62,10 +97,19 @@ void add_groups(const BasePropertyArray& old, std::size_t nv, ChannelGroups& gro
 
 // Writes the refined groups from `first` on into `out`'s channels.
 void take_groups(const ChannelGroups& groups, std::size_t first, BasePropertyArray& out) {
+    std::byte* raw = doubles_of(out);
+    const std::size_t size = out.element_bytes();
     std::vector<double> values;
     for (std::size_t c = 0, g = first; c < out.channels(); c += 3, ++g) {
         const memory::Array<Vec3>& refined = groups.out[g];
-        for (std::size_t j = 0; j < 3 && c + j < out.channels(); ++j) {
+        const std::size_t n = std::min<std::size_t>(3, out.channels() - c);
+        if (raw != nullptr) {
+            for (std::size_t v = 0; v < refined.size(); ++v) {
+                std::memcpy(raw + v * size + 8 * c, &refined[v], 8 * n);
+            }
+            continue;
+        }
+        for (std::size_t j = 0; j < n; ++j) {
             values.resize(refined.size());
             for (std::size_t v = 0; v < refined.size(); ++v) {
                 values[v] = refined[v][static_cast<int>(j)];
