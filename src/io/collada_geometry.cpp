@@ -233,6 +233,9 @@ private:
     bool texcoords_ok_[2] = {true, true}, any_uv_[2] = {false, false};
     bool corner_normals_ok_ = true, colors_ok_ = true;
     bool other_sets_said_ = false;  // a third texture coordinate set's notice given
+    // MeshEdit's <extra> says the file's one set is the mesh's second (a mesh without a first).
+    bool second_set_only_ = false;
+    std::optional<std::uint64_t> first_set_;  // the first primitive's lowest TEXCOORD set
     std::vector<std::uint8_t> colour_seen_;
     std::size_t colour_seams_ = 0;  // positions whose corners' colours differ
     std::string attribute_problem_;
@@ -314,6 +317,10 @@ GeometryData GeometryReader::read() {
     }
     read_creases(mesh);
     finish_attributes();
+    if (second_set_only_ && g_.corner_texcoords[1].empty()) {
+        std::swap(g_.corner_texcoords[0], g_.corner_texcoords[1]);
+        g_.second_texcoord_set = first_set_;
+    }
 
     if (!any_primitive) {
         normals_ok_ = vertex_normals_;
@@ -385,6 +392,9 @@ GeometryReader::Inputs GeometryReader::read_inputs(pugi::xml_node primitive) {
     const Input* kept[2] = {inputs.texcoord(0), inputs.texcoord(1)};
     if (kept[1] && !g_.second_texcoord_set) {
         g_.second_texcoord_set = kept[1]->set;
+    }
+    if (kept[0] && !first_set_) {
+        first_set_ = kept[0]->set;
     }
     for (const Input& input : inputs.all) {
         if (input.semantic == "TEXCOORD" && &input != kept[0] && &input != kept[1] &&
@@ -700,6 +710,7 @@ void GeometryReader::read_creases(pugi::xml_node mesh) {
     for (pugi::xml_node extra : mesh.children("extra")) {
         const pugi::xml_node technique =
             extra.find_child_by_attribute("technique", "profile", "MeshEdit");
+        second_set_only_ = second_set_only_ || technique.child("second_texcoord_set_only");
         const pugi::xml_node creases = technique.child("creases");
         if (!creases) {
             continue;

@@ -1,7 +1,8 @@
 // COLLADA 1.4.1 writer: one <geometry> with positions, normals (the file's per corner, else
 // computed per vertex if asked), texture coordinates per corner (both sets), vertex colours, a
 // <polylist> per run of faces of one material (so faces keep their order), the materials' libraries
-// (collada_material.cpp) and MeshEdit's crease <extra>, written atomically.
+// (collada_material.cpp) and MeshEdit's <extra>s (creases; a lone second texture coordinate set),
+// written atomically.
 
 #include <charconv>
 #include <cstdint>
@@ -196,6 +197,13 @@ std::string collada_text(const Mesh& mesh, const IoFlags& flags,
         }
         out += "</p>\n        </polylist>\n";
         first = last;
+    }
+    if (uv1 && !uv) {
+        // Its one set is the mesh's second: readers take the lowest set as the first, so
+        // MeshEdit says which it is.
+        out +=
+            "        <extra>\n          <technique profile=\"MeshEdit\">\n"
+            "            <second_texcoord_set_only/>\n          </technique>\n        </extra>\n";
     }
     if (const auto crease = mesh.get_property<Edge, std::uint8_t>(kCreaseProperty)) {
         std::string pairs;

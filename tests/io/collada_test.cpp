@@ -448,5 +448,35 @@ TEST_F(ColladaRoundTrip, DoublesRoundTripExactly) {
     round_trip(mesh);
 }
 
+// A mesh whose only texture coordinates are its second set: readers take a file's lowest
+// set as the first, so MeshEdit's <extra> says it is the second, and it reads back as such
+// (with the material bound to it), bit for bit.
+TEST_F(ColladaFiles, AMeshWithOnlyASecondSetReadsBackWithOnlyASecondSet) {
+    Mesh mesh = shapes::cube();
+    auto uv1 = mesh.add_property<Halfedge, Vec2>(kTexCoord1Property, Vec2{});
+    for (const Halfedge h : mesh.halfedges()) {
+        uv1[h] = mesh.is_boundary(h) ? Vec2{} : Vec2{0.125 * h.idx(), 1.0 / (1.0 + h.idx())};
+    }
+    const fs::path path = dir_ / "second.dae";
+    write_collada(mesh, path);
+    const MeshSoup soup = read_collada(path);
+    EXPECT_TRUE(soup.corner_texcoords.empty());
+    ASSERT_EQ(soup.corner_texcoords1.size(), soup.soup.indices.size());
+    // The soup's corner i of face f is the face's corner at vertex indices[i].
+    ASSERT_EQ(soup.soup.n_faces(), mesh.n_faces());
+    for (const Face f : mesh.faces()) {
+        for (std::uint32_t c = soup.soup.face_offsets[f.idx()];
+             c < soup.soup.face_offsets[f.idx() + 1]; ++c) {
+            Halfedge at;
+            for (const Halfedge h : mesh.halfedges(f)) {
+                at = mesh.to_vertex(h).idx() == soup.soup.indices[c] ? h : at;
+            }
+            ASSERT_TRUE(at.is_valid()) << c;
+            EXPECT_EQ(soup.corner_texcoords1[c].x, uv1[at].x) << c;
+            EXPECT_EQ(soup.corner_texcoords1[c].y, uv1[at].y) << c;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace meshedit
