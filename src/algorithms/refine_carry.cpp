@@ -271,7 +271,20 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
             add_groups(*old[0][i], nv, groups);
         }
     }
-    refine(mesh, groups);
+    try {
+        refine(mesh, groups);
+    } catch (...) {
+        // Refused before it began (a result too big to index): the mesh is as it was, so
+        // it gets its values back. Failed part way: the refinement cleared the mesh.
+        if (mesh.halfedges_size() == 2 * ne && mesh.faces_size() == nf) {
+            for (int k = 1; k < 4; ++k) {
+                for (std::size_t i = 0; i < now[k].size(); ++i) {
+                    now[k][i]->swap_values(*old[k][i]);
+                }
+            }
+        }
+        throw;
+    }
     groups.in.clear();
 
     std::vector<std::uint32_t> from;

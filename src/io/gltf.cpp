@@ -458,8 +458,7 @@ private:
         for (std::size_t m = 0; m < model_.materials.size(); ++m) {
             Material material =
                 gltf_images::read_material(model_, model_.materials[m], embedded_, folder_);
-            // MeshEdit keeps TEXCOORD_0 and TEXCOORD_1: a texture on a later set draws with
-            // the first, and the file is told so.
+            // Only TEXCOORD_0 and _1 are kept: a texture on a later set draws with the first.
             if (material.base_colour_texcoord > 1) {
                 out_.notices.push_back("material " + std::to_string(m) + "'s texture reads " +
                                        "TEXCOORD_" + std::to_string(material.base_colour_texcoord) +

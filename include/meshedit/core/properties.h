@@ -72,6 +72,8 @@ public:
     /// left empty: a clone without copying, for a pass that rebuilds this array from the old
     /// values (the whole-mesh refinements' carry).
     virtual std::unique_ptr<BasePropertyArray> take_values() = 0;
+    /// Exchanges the values with `other`, an array of the same type (take_values() undone).
+    virtual void swap_values(BasePropertyArray& other) = 0;
     virtual const std::type_info& type() const = 0;
     virtual std::size_t bytes() const = 0;
     /// Bytes of one element, and its raw copy out of and back into the array (for recorded
@@ -141,6 +143,10 @@ public:
         out->carry_ = carry_;
         out->data_.swap(data_);
         return out;
+    }
+    void swap_values(BasePropertyArray& other) override {
+        MESHEDIT_ASSERT(other.type() == typeid(T));
+        data_.swap(static_cast<PropertyArray<T>&>(other).data_);
     }
     const std::type_info& type() const override { return typeid(T); }
     std::size_t bytes() const override { return data_.capacity() * sizeof(T); }
