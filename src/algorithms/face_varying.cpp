@@ -318,7 +318,10 @@ private:
     const memory::Array<T>& uv_;
     const EdgeProperty<std::uint8_t> crease_;
     const loop_rules::WeightTable weight_;
-    memory::Array<T>&face_, &edge_, &vertex_;  // the level's
+    // The level's values, filled here.
+    memory::Array<T>& face_;
+    memory::Array<T>& edge_;
+    memory::Array<T>& vertex_;
     std::vector<std::uint8_t> seam_;
     // Scratch of vertex().
     std::vector<Halfedge> ring_;

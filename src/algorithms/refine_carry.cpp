@@ -9,7 +9,6 @@
 #include <optional>
 #include <span>
 #include <string_view>
-#include <type_traits>
 #include <typeinfo>
 #include <utility>
 #include <variant>
@@ -48,32 +47,9 @@ void reset(BasePropertyArray& a, std::size_t n) {
     a.resize(n);
 }
 
-// PropertyArray<T>, const when A is.
-template <class T, class A>
-using TypedAs = std::conditional_t<std::is_const_v<A>, const PropertyArray<T>, PropertyArray<T>>;
-
-// The bytes of an array whose elements are doubles and nothing else (colours, Vec3s,
-// numbers), so their channels are copied in one pass rather than one channel at a time
-// through get_channel(); null for any other.
-template <class A>
-auto* doubles_of(A& a) {
-    using Byte = std::conditional_t<std::is_const_v<A>, const std::byte, std::byte>;
-    const auto bytes = [](auto& array) { return reinterpret_cast<Byte*>(array.vector().data()); };
-    if (a.type() == typeid(Vec4)) {
-        return bytes(static_cast<TypedAs<Vec4, A>&>(a));
-    }
-    if (a.type() == typeid(Vec3)) {
-        return bytes(static_cast<TypedAs<Vec3, A>&>(a));
-    }
-    if (a.type() == typeid(double)) {
-        return bytes(static_cast<TypedAs<double, A>&>(a));
-    }
-    return static_cast<Byte*>(nullptr);
-}
-
 // The groups of three channels of a blending vertex attribute (the last padded with 0).
 void add_groups(const BasePropertyArray& old, std::size_t nv, ChannelGroups& groups) {
-    const std::byte* raw = doubles_of(old);
+    const std::byte* raw = old.channel_doubles();  // one copy for all channels
     const std::size_t size = old.element_bytes();
     std::vector<double> values;
     for (std::size_t c = 0; c < old.channels(); c += 3) {
@@ -97,7 +73,7 @@ void add_groups(const BasePropertyArray& old, std::size_t nv, ChannelGroups& gro
 
 // Writes the refined groups from `first` on into `out`'s channels.
 void take_groups(const ChannelGroups& groups, std::size_t first, BasePropertyArray& out) {
-    std::byte* raw = doubles_of(out);
+    std::byte* raw = out.channel_doubles();
     const std::size_t size = out.element_bytes();
     std::vector<double> values;
     for (std::size_t c = 0, g = first; c < out.channels(); c += 3, ++g) {
@@ -201,82 +177,80 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
             old[k].push_back(k == 0 ? a->clone() : a->take_values());
         }
     }
-    // Texture coordinates and corner normals: the next level's values, from this one.
-    std::vector<Prepared> prepared;
-    for (const auto& a : old[1]) {
-        prepared.push_back(prepare_corner_values(mesh, rules, *a));
-    }
-    // The old connectivity is copied only for attributes that read it after the refinement:
-    // vertex attributes that do not blend and corner attributes that are not face-varying.
-    bool needs_base = false;
-    for (const auto& a : old[0]) {
-        needs_base = needs_base || !(a->carry() == Carry::Blend && a->channels() > 0);
-    }
-    for (const Prepared& p : prepared) {
-        needs_base = needs_base || std::holds_alternative<std::monostate>(p);
-    }
-    std::optional<Mesh> kept;
-    if (needs_base) {
-        kept.emplace(mesh);
-        const std::array<std::vector<BasePropertyArray*>, 4> copies = attributes(*kept);
-        for (int k = 0; k < 4; ++k) {
-            for (const BasePropertyArray* a : copies[k]) {
-                MeshArrays::container(*kept, k).remove(a);
-            }
-        }
-    }
-    const Mesh& base = needs_base ? *kept : mesh;  // mesh: read only before refine()
     const std::size_t nv = mesh.vertices_size();
     const std::size_t ne = mesh.edges_size();
     const std::size_t nf = mesh.faces_size();
+    // Texture coordinates and corner normals: the next level's values, from this one.
+    std::vector<Prepared> prepared;
+    // The old connectivity, copied only for attributes that read it after the refinement:
+    // vertex attributes that do not blend and corner attributes that are not face-varying.
+    std::optional<Mesh> kept;
     // The old faces' corners (face f's are corner_list[corner_start[f] .. [f + 1])) and the
     // parents of the new faces, where something reads them.
-    const bool needs_corners = needs_base || (!old[3].empty() && layout == Layout::Quad);
-    std::vector<std::uint32_t> corner_start(needs_corners ? nf + 1 : 0, 0);
+    std::vector<std::uint32_t> corner_start;
     std::vector<Halfedge> corner_list;
-    for (std::uint32_t f = 0; needs_corners && f < nf; ++f) {
-        corner_start[f] = static_cast<std::uint32_t>(corner_list.size());
-        if (!mesh.is_deleted(Face(f))) {
-            for (const Halfedge h : mesh.halfedges(Face(f))) {
-                corner_list.push_back(h);
-            }
-        }
-    }
-    if (needs_corners) {
-        corner_start[nf] = static_cast<std::uint32_t>(corner_list.size());
-    }
-    const auto corners_of = [&](std::uint32_t f) {
-        return std::span<const Halfedge>(corner_list.data() + corner_start[f],
-                                         corner_start[f + 1] - corner_start[f]);
-    };
     std::vector<std::uint32_t> parent;
-    if (!old[3].empty() || needs_base) {
-        parent.resize(layout == Layout::Loop ? 4 * nf : corner_list.size());
-        for (std::uint32_t c = 0; c < parent.size(); ++c) {
-            parent[c] = layout == Layout::Loop ? c / 4 : 0;
-        }
-        for (std::uint32_t f = 0; layout == Layout::Quad && f < nf; ++f) {
-            for (std::uint32_t c = corner_start[f]; c < corner_start[f + 1]; ++c) {
-                parent[c] = f;
-            }
-        }
-    }
-
     // The blending vertex attributes go through the refinement with the positions.
     ChannelGroups groups;
     std::vector<std::size_t> first_group(old[0].size(), 0);
-    for (std::size_t i = 0; i < old[0].size(); ++i) {
-        if (old[0][i]->carry() == Carry::Blend && old[0][i]->channels() > 0) {
-            first_group[i] = groups.in.size();
-            add_groups(*old[0][i], nv, groups);
-        }
-    }
     try {
+        for (const auto& a : old[1]) {
+            prepared.push_back(prepare_corner_values(mesh, rules, *a));
+        }
+        bool needs_base = false;
+        for (const auto& a : old[0]) {
+            needs_base = needs_base || !(a->carry() == Carry::Blend && a->channels() > 0);
+        }
+        for (const Prepared& p : prepared) {
+            needs_base = needs_base || std::holds_alternative<std::monostate>(p);
+        }
+        if (needs_base) {
+            kept.emplace(mesh);
+            const std::array<std::vector<BasePropertyArray*>, 4> copies = attributes(*kept);
+            for (int k = 0; k < 4; ++k) {
+                for (const BasePropertyArray* a : copies[k]) {
+                    MeshArrays::container(*kept, k).remove(a);
+                }
+            }
+        }
+        if (needs_base || (!old[3].empty() && layout == Layout::Quad)) {
+            corner_start.assign(nf + 1, 0);
+            for (std::uint32_t f = 0; f < nf; ++f) {
+                corner_start[f] = static_cast<std::uint32_t>(corner_list.size());
+                if (!mesh.is_deleted(Face(f))) {
+                    for (const Halfedge h : mesh.halfedges(Face(f))) {
+                        corner_list.push_back(h);
+                    }
+                }
+            }
+            corner_start[nf] = static_cast<std::uint32_t>(corner_list.size());
+        }
+        if (!old[3].empty() || needs_base) {
+            if (layout == Layout::Loop) {
+                parent.resize(4 * nf);
+                for (std::uint32_t c = 0; c < parent.size(); ++c) {
+                    parent[c] = c / 4;  // face 4f + i is a part of old face f
+                }
+            } else {
+                parent.resize(corner_list.size());
+                for (std::uint32_t f = 0; f < nf; ++f) {
+                    std::fill(parent.begin() + corner_start[f],
+                              parent.begin() + corner_start[f + 1],
+                              f);  // one quad per corner
+                }
+            }
+        }
+        for (std::size_t i = 0; i < old[0].size(); ++i) {
+            if (old[0][i]->carry() == Carry::Blend && old[0][i]->channels() > 0) {
+                first_group[i] = groups.in.size();
+                add_groups(*old[0][i], nv, groups);
+            }
+        }
         refine(mesh, groups);
     } catch (...) {
-        // Refused before it began (a result too big to index): the mesh is as it was, so
-        // it gets its values back. Failed part way: the refinement cleared the mesh.
-        if (mesh.halfedges_size() == 2 * ne && mesh.faces_size() == nf) {
+        // Refused before it changed the mesh (no memory, a result too big to index): the
+        // mesh gets its values back. Failed part way: the refinement cleared the mesh.
+        if (mesh.edges_size() == ne && mesh.faces_size() == nf) {
             for (int k = 1; k < 4; ++k) {
                 for (std::size_t i = 0; i < now[k].size(); ++i) {
                     now[k][i]->swap_values(*old[k][i]);
@@ -285,6 +259,11 @@ void refine_carrying(Mesh& mesh, const FaceVaryingRules& rules,
         }
         throw;
     }
+    const Mesh& base = kept ? *kept : mesh;  // without a copy, only face-varying values read it
+    const auto corners_of = [&](std::uint32_t f) {
+        return std::span<const Halfedge>(corner_list.data() + corner_start[f],
+                                         corner_start[f + 1] - corner_start[f]);
+    };
     groups.in.clear();
 
     std::vector<std::uint32_t> from;

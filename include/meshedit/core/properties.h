@@ -98,6 +98,10 @@ public:
     virtual std::size_t channels() const = 0;
     virtual void get_channel(std::size_t c, std::vector<double>& out) const = 0;
     virtual void set_channel(std::size_t c, const std::vector<double>& in) = 0;
+    /// The elements' bytes when each is exactly its channels() doubles (double, Vec2, Vec3,
+    /// Vec4), so that a pass can move every channel in one copy; else null.
+    virtual const std::byte* channel_doubles() const = 0;
+    virtual std::byte* channel_doubles() = 0;
 
     const std::string& name() const { return name_; }
     Carry carry() const { return carry_; }
@@ -215,6 +219,18 @@ public:
             }
         }
     }
+    const std::byte* channel_doubles() const override {
+        if constexpr (kChannelDoubles) {
+            return reinterpret_cast<const std::byte*>(data_.data());
+        }
+        return nullptr;
+    }
+    std::byte* channel_doubles() override {
+        if constexpr (kChannelDoubles) {
+            return reinterpret_cast<std::byte*>(data_.data());
+        }
+        return nullptr;
+    }
     void set_channel(std::size_t c, const std::vector<double>& in) override {
         for (std::size_t i = 0; i < data_.size() && i < in.size(); ++i) {
             if constexpr (std::is_integral_v<T>) {
@@ -267,6 +283,11 @@ private:
             return sum;
         }
     }
+
+    // Whether each element is its channels as doubles (what get_channel() copies bytewise).
+    static constexpr bool kChannelDoubles =
+        std::is_same_v<T, double> ||
+        (!std::is_arithmetic_v<T> && Blendable<T> && sizeof(T) % sizeof(double) == 0);
 
     memory::Array<T> data_;  // big arrays in huge pages (memory.h)
     T default_;
