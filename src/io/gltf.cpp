@@ -458,12 +458,11 @@ private:
         for (std::size_t m = 0; m < model_.materials.size(); ++m) {
             Material material =
                 gltf_images::read_material(model_, model_.materials[m], embedded_, folder_);
-            // Only TEXCOORD_0 and _1 are kept: a texture on a later set draws with the first.
-            if (material.base_colour_texcoord > 1) {
+            const int set = model_.materials[m].pbrMetallicRoughness.baseColorTexture.texCoord;
+            if (set != 0 && set != 1) {  // only TEXCOORD_0 and _1 are kept
                 out_.notices.push_back("material " + std::to_string(m) + "'s texture reads " +
-                                       "TEXCOORD_" + std::to_string(material.base_colour_texcoord) +
+                                       "texCoord " + std::to_string(set) +
                                        ", which is not kept: it is drawn with TEXCOORD_0");
-                material.base_colour_texcoord = 0;
             }
             out_.materials.push_back(std::move(material));
         }

@@ -2,7 +2,6 @@
 
 #include "gltf_images.h"
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -78,8 +77,8 @@ Material read_material(const tinygltf::Model& model, const tinygltf::Material& g
         m.opacity = f[3];
     }
     const int t = g.pbrMetallicRoughness.baseColorTexture.index;
-    m.base_colour_texcoord =
-        static_cast<unsigned>(std::max(0, g.pbrMetallicRoughness.baseColorTexture.texCoord));
+    m.base_colour_texcoord =  // another set than 0 and 1: gltf.cpp says so and draws with 0
+        g.pbrMetallicRoughness.baseColorTexture.texCoord == 1 ? 1 : 0;
     if (t >= 0 && static_cast<std::size_t>(t) < model.textures.size()) {
         const int source = model.textures[static_cast<std::size_t>(t)].source;
         if (source >= 0 && static_cast<std::size_t>(source) < model.images.size()) {
