@@ -53,20 +53,8 @@ std::mutex g_kept_mutex;
 std::vector<Kept> g_kept;
 std::atomic<bool> g_reuse{false};
 
-}  // namespace
-
-void* map_big(std::size_t bytes) {
-    const std::size_t length = round_up(bytes, kPage);
-    if (g_reuse.load(std::memory_order_relaxed)) {
-        const std::lock_guard lock(g_kept_mutex);
-        for (std::size_t i = 0; i < g_kept.size(); ++i) {
-            if (g_kept[i].length == length) {
-                void* data = g_kept[i].data;
-                g_kept.erase(g_kept.begin() + static_cast<std::ptrdiff_t>(i));
-                return data;
-            }
-        }
-    }
+// A fresh mapping of `length` bytes (a multiple of kPage) at a 2 MiB boundary.
+void* map_aligned(std::size_t length) {
     // Map 2 MiB more than needed, then unmap the ends so that the buffer starts on a 2 MiB
     // boundary (the kernel places a mapping on any 4 KiB boundary).
     void* raw =
@@ -83,13 +71,56 @@ void* map_big(std::size_t bytes) {
     if (end > aligned + length) {
         ::munmap(reinterpret_cast<void*>(aligned + length), end - (aligned + length));
     }
-    void* data = reinterpret_cast<void*>(aligned);
-    // Only whole huge pages: the tail stays in small pages, so no memory is wasted on it.
-    const std::size_t whole = bytes / kHuge * kHuge;
-    if (whole > 0 && huge_pages_enabled()) {
-        ::madvise(data, whole, MADV_HUGEPAGE);
+    return reinterpret_cast<void*>(aligned);
+}
+
+// The hint on the whole mapping: the kernel backs only the 2 MiB pages that lie wholly
+// inside it with huge pages, so the tail keeps small ones and no memory is wasted on it. (A
+// hint on the whole pages alone would split the mapping in two, and mremap cannot grow a
+// range that spans two mappings: grow_big would fail and copy.)
+void advise_whole(void* data, std::size_t length) {
+    if (length >= kHuge && huge_pages_enabled()) {
+        ::madvise(data, length, MADV_HUGEPAGE);
     }
+}
+
+}  // namespace
+
+void* map_big(std::size_t bytes) {
+    const std::size_t length = round_up(bytes, kPage);
+    if (g_reuse.load(std::memory_order_relaxed)) {
+        const std::lock_guard lock(g_kept_mutex);
+        for (std::size_t i = 0; i < g_kept.size(); ++i) {
+            if (g_kept[i].length == length) {
+                void* data = g_kept[i].data;
+                g_kept.erase(g_kept.begin() + static_cast<std::ptrdiff_t>(i));
+                return data;
+            }
+        }
+    }
+    void* data = map_aligned(length);
+    advise_whole(data, length);
     return data;
+}
+
+void* grow_big(void* data, std::size_t bytes, std::size_t new_bytes) {
+    // Reusing kept buffers (the warm protocol) copies into memory written once already;
+    // moving would write fresh pages instead.
+    if (g_reuse.load(std::memory_order_relaxed) || new_bytes < bytes) {
+        return nullptr;
+    }
+    const std::size_t length = round_up(bytes, kPage);
+    const std::size_t new_length = round_up(new_bytes, kPage);
+    // Move the pages onto a fresh 2 MiB-aligned range (which mremap unmaps first), so that
+    // huge pages move whole and the grown buffer can have them too.
+    void* target = map_aligned(new_length);
+    void* moved = ::mremap(data, length, new_length, MREMAP_MAYMOVE | MREMAP_FIXED, target);
+    if (moved == MAP_FAILED) {
+        ::munmap(target, new_length);
+        return nullptr;
+    }
+    advise_whole(moved, new_length);
+    return moved;
 }
 
 void unmap_big(void* data, std::size_t bytes) noexcept {
@@ -134,6 +165,10 @@ void* map_big(std::size_t bytes) {
 
 void unmap_big(void* data, std::size_t /*bytes*/) noexcept {
     ::operator delete (data, std::align_val_t{kHuge});
+}
+
+void* grow_big(void* /*data*/, std::size_t /*bytes*/, std::size_t /*new_bytes*/) {
+    return nullptr;  // operator new's buffers cannot move: the caller copies
 }
 
 void advise_huge_pages(const void* /*data*/, std::size_t /*bytes*/) {}

@@ -54,6 +54,29 @@ TEST(Memory, ArraysGrowCopyAndShrinkAcrossTheThreshold) {
     EXPECT_EQ(a, memory::Array<std::uint32_t>(expected.begin(), expected.begin() + 10));
 }
 
+// A big buffer grows by moving its pages (grow_big), not by copying: the contents survive,
+// the new buffer starts on a 2 MiB boundary, and the old address is given up. Where the
+// system cannot move (AddressSanitizer's builds map nothing), it copies, with the same result.
+TEST(Memory, BigBuffersGrowWithTheirContents) {
+    memory::PodArray<std::uint64_t> a;
+    const std::size_t n = 3 * memory::kBigBytes / sizeof(std::uint64_t) + 7;
+    a.resize_for_overwrite(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        a[i] = i * 2654435761u;
+    }
+    a.shrink_to_fit();
+    ASSERT_EQ(a.capacity(), n);
+    a.push_back(42);  // doubles: a move of 6 MiB of pages
+    EXPECT_EQ(a.capacity(), 2 * n);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(a.data()) % kHuge, 0u);
+    for (std::size_t i = 0; i < n; ++i) {
+        ASSERT_EQ(a[i], i * 2654435761u) << i;
+    }
+    EXPECT_EQ(a[n], 42u);
+    a.resize(2 * n, 5);  // the grown part is writable to its end
+    EXPECT_EQ(a[2 * n - 1], 5u);
+}
+
 TEST(PodArray, BehavesAsAVector) {
     memory::PodArray<int> a{1, 2, 3};
     a.resize(5);  // value-initialised, as std::vector

@@ -9,7 +9,8 @@
 ///
 /// `Allocator<T>` therefore maps buffers of kBigBytes or more directly, 2 MiB-aligned, and
 /// asks for huge pages on every whole 2 MiB page of the buffer (the tail keeps small pages, so
-/// no memory is wasted); freeing unmaps them at once. Smaller buffers come from operator new.
+/// no memory is wasted); freeing unmaps them at once; growing moves their pages (mremap)
+/// instead of copying them. Smaller buffers come from operator new.
 /// pod_array.h builds the arrays that mesh properties are stored in on it.
 
 #include <algorithm>
@@ -29,6 +30,11 @@ inline constexpr std::size_t kBigBytes = std::size_t{2} << 20;
 void* map_big(std::size_t bytes);
 /// Returns what map_big(bytes) gave.
 void unmap_big(void* data, std::size_t bytes) noexcept;
+/// Grows a buffer that map_big(bytes) gave to `new_bytes` without copying it: the system
+/// moves its pages to a new address, which is returned (the old one is then invalid). Gives
+/// nullptr, and leaves the buffer as it was, where it cannot (no mremap, kept buffers being
+/// reused, a shrink, or the system refused): the caller then copies.
+void* grow_big(void* data, std::size_t bytes, std::size_t new_bytes);
 
 /// Whether map_big() asks for huge pages (default: yes). Off lets a benchmark measure what
 /// the hint is worth. Thread-safe.

@@ -163,6 +163,15 @@ private:
         }
     }
     void reallocate(size_type n) {
+        // A big buffer growing moves its pages instead of copying them: the first element
+        // added to a copied 1M-face mesh (a hole's fill) copied ~100 MB, most of the fill.
+        if (n > capacity_ && capacity_ * sizeof(T) >= kBigBytes) {
+            if (void* moved = grow_big(data_, capacity_ * sizeof(T), n * sizeof(T))) {
+                data_ = static_cast<T*>(moved);
+                capacity_ = n;
+                return;
+            }
+        }
         Allocator<T> allocator;
         T* fresh = allocator.allocate(n);
         if (size_ > 0) {
