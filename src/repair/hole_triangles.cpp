@@ -18,10 +18,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double angle_between_unit(const Vec3& a, const Vec3& b) {
-    return std::acos(std::clamp(dot(a, b), -1.0, 1.0));
-}
-
 Vec3 unit_or_zero(const Vec3& v) {
     const double l = norm(v);
     return l > 0.0 ? v / l : Vec3{};
@@ -54,17 +50,14 @@ HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
     // diagonal i–k; L the middle corner of its triangle on i–k.
     std::vector<Weight> w(n * n);
     std::vector<std::uint32_t> lambda(n * n, 0);
+    // The unit normal across i–k inside the patch: the outside face for a side, else the
+    // sub-solution's triangle on i–k, kept so that the O(n³) loop below reads it instead of
+    // making it again for every middle corner.
+    std::vector<Vec3> normal(n * n);
     for (std::size_t i = 0; i + 1 < n; ++i) {
         w[i * n + i + 1] = {0.0, 0.0};
+        normal[i * n + i + 1] = hole.outside_normals[i];  // across a side: the face outside
     }
-    const auto normal_of = [&](std::size_t i, std::size_t m, std::size_t k) {
-        return unit_or_zero(cross(p[m] - p[i], p[k] - p[i]));
-    };
-    // The normal across i–m (i < m) inside the patch: the outside face for a side, else the
-    // triangle the sub-solution put there.
-    const auto across = [&](std::size_t i, std::size_t m) {
-        return m == i + 1 ? hole.outside_normals[i] : normal_of(i, lambda[i * n + m], m);
-    };
     for (std::size_t len = 2; len < n; ++len) {
         for (std::size_t i = 0; i + len < n; ++i) {
             const std::size_t k = i + len;
@@ -73,11 +66,19 @@ HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
                 continue;  // i–k is an edge the mesh has already
             }
             Weight best;
+            double best_cos = -2.0;  // cos(best.angle), below any cosine while there is none
             std::uint32_t best_m = 0;
             for (std::size_t m = i + 1; m < k; ++m) {
                 const Weight& a = w[i * n + m];
                 const Weight& b = w[m * n + k];
                 if (a.angle == kInf || b.angle == kInf) {
+                    continue;
+                }
+                // The largest angle only grows as triangles join: a candidate already past
+                // the best cannot win, so it is dropped before its arccosines (which are
+                // most of this loop's time). Equal angles go on, to compare areas.
+                double angle = std::max(a.angle, b.angle);
+                if (angle > best.angle) {
                     continue;
                 }
                 const Vec3 c = cross(p[m] - p[i], p[k] - p[i]);
@@ -86,19 +87,40 @@ HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
                     continue;  // a flat triangle
                 }
                 const Vec3 nt = c / (2.0 * area);
-                double angle = std::max({a.angle, b.angle, angle_between_unit(nt, across(i, m)),
-                                         angle_between_unit(nt, across(m, k))});
-                if (side) {
-                    angle = std::max(angle, angle_between_unit(nt, hole.outside_normals[n - 1]));
+                bool loses = false;
+                const auto join = [&](const Vec3& q) {
+                    const double d = dot(nt, q);
+                    // A cosine clearly below the best's is an angle clearly above it (the
+                    // margin covers the rounding of cos and acos).
+                    if (d < best_cos - 1e-9) {
+                        loses = true;
+                        return;
+                    }
+                    angle = std::max(angle, std::acos(std::clamp(d, -1.0, 1.0)));
+                    loses = angle > best.angle;
+                };
+                join(normal[i * n + m]);
+                if (!loses) {
+                    join(normal[m * n + k]);
+                }
+                if (!loses && side) {
+                    join(hole.outside_normals[n - 1]);
+                }
+                if (loses) {
+                    continue;
                 }
                 const Weight total{angle, a.area + b.area + area};
                 if (total < best) {
                     best = total;
+                    best_cos = std::cos(best.angle);
                     best_m = static_cast<std::uint32_t>(m);
                 }
             }
             w[i * n + k] = best;
             lambda[i * n + k] = best_m;
+            if (best.angle != kInf) {
+                normal[i * n + k] = unit_or_zero(cross(p[best_m] - p[i], p[k] - p[i]));
+            }
         }
     }
     if (w[n - 1].angle == kInf) {
