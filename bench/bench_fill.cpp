@@ -1,4 +1,4 @@
-// Hole filling (issue 35): MeshEdit's fill_holes_fair() against CGAL's
+// Hole filling (issue 35): MeshEdit's fill_hole_fair() against CGAL's
 // Polygon_mesh_processing::triangulate_refine_and_fair_hole(), on holes cut out of real scans,
 // timed, with the patch measured against the surface that was cut away.
 //
@@ -13,9 +13,10 @@
 // over the faces' centroids, closed up so that its border is one simple loop; `hole_edges` is
 // what it came to). The same holed surface goes to both.
 // Impls (the timed body is the fill call alone; the copy of the holed input is untimed):
-//   meshedit   fill_holes_fair(mesh, {}) on the halfedge Mesh: its defaults, Liepa's density
-//              √2 and cotangent fairing (bi-Laplacian) of the new vertices; it finds the hole
-//              itself (a scan of the mesh's halfedges, inside the call);
+//   meshedit   fill_hole_fair(mesh, h, {}) on the halfedge Mesh: its defaults, Liepa's density
+//              √2 and cotangent fairing (bi-Laplacian) of the new vertices; h, a halfedge of
+//              the hole, found untimed, as for CGAL (fill_holes_fair(), which finds every hole
+//              itself and turns a part it closes outward, is the repair step's call);
 //   cgal       triangulate_refine_and_fair_hole(mesh, h, faces, vertices) on
 //              Surface_mesh<Simple_cartesian<double>::Point_3> with its defaults: Delaunay
 //              search space (2D constrained Delaunay when the hole is near planar), density
@@ -90,14 +91,21 @@ Surface patch_of(const Surface& s, std::size_t first) {
 
 Outcome run_meshedit(const Surface& in, int runs) {
     const meshedit::Mesh input = mb::mesh_of(in);
+    meshedit::Halfedge border;
+    for (const meshedit::Halfedge h : input.halfedges()) {
+        if (input.is_boundary(h)) {
+            border = h;
+            break;
+        }
+    }
     meshedit::Mesh mesh;
     meshedit::RepairResult result;
     Outcome out;
     out.ms = mb::time_runs(
         runs, [&] { mesh = input; },
-        [&] { result = meshedit::fill_holes_fair(mesh, meshedit::FairFillOptions{}); });
+        [&] { result = meshedit::fill_hole_fair(mesh, border, meshedit::FairFillOptions{}); });
     if (result.count != 1) {
-        throw std::runtime_error("fill_holes_fair filled " + std::to_string(result.count) +
+        throw std::runtime_error("fill_hole_fair filled " + std::to_string(result.count) +
                                  " holes: " + result.sentence);
     }
     out.faired = result.sentence.find("faired") != std::string::npos &&

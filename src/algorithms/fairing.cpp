@@ -8,9 +8,12 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "laplacian.h"
@@ -19,24 +22,27 @@
 namespace meshedit {
 namespace {
 
+// Sets over element indices. Hash sets, not arrays over the whole mesh: a small region of a
+// big mesh (a hole's patch in a scan) then costs its own size, not the mesh's.
+using IndexSet = std::unordered_set<std::uint32_t>;
+using LocalIndex = std::unordered_map<std::uint32_t, std::int64_t>;
+
 // The region's inner vertices: every face around them in the region, not on the boundary.
-std::vector<Vertex> inner_vertices(const Mesh& mesh, std::span<const Face> region,
-                                   std::vector<std::uint8_t>& in_region) {
-    in_region.assign(mesh.faces_size(), 0);
+std::vector<Vertex> inner_vertices(const Mesh& mesh, std::span<const Face> region) {
+    IndexSet in_region(region.size());
     for (const Face f : region) {
-        in_region[f.idx()] = 1;
+        in_region.insert(f.idx());
     }
-    std::vector<std::uint8_t> seen(mesh.vertices_size(), 0);
+    IndexSet seen(region.size());
     std::vector<Vertex> inner;
     for (const Face f : region) {
         for (const Vertex v : mesh.vertices(f)) {
-            if (seen[v.idx()] != 0) {
+            if (!seen.insert(v.idx()).second) {
                 continue;
             }
-            seen[v.idx()] = 1;
             bool all = !mesh.is_boundary(v);
             for (const Halfedge h : mesh.halfedges(v)) {
-                all = all && in_region[mesh.face(h).idx()] != 0;
+                all = all && in_region.contains(mesh.face(h).idx());
             }
             if (all) {
                 inner.push_back(v);
@@ -49,7 +55,7 @@ std::vector<Vertex> inner_vertices(const Mesh& mesh, std::span<const Face> regio
 
 // Whether every piece of `inner` (joined by edges) has a vertex outside it as a neighbour.
 bool every_piece_held(const Mesh& mesh, const std::vector<Vertex>& inner) {
-    std::vector<std::uint8_t> state(mesh.vertices_size(), 0);  // 1 inner, 2 visited
+    std::unordered_map<std::uint32_t, std::uint8_t> state(inner.size());  // 1 inner, 2 visited
     for (const Vertex v : inner) {
         state[v.idx()] = 1;
     }
@@ -65,10 +71,11 @@ bool every_piece_held(const Mesh& mesh, const std::vector<Vertex>& inner) {
             const Vertex v = stack.back();
             stack.pop_back();
             for (const Vertex w : mesh.vertices(v)) {
-                if (state[w.idx()] == 0) {
+                const auto it = state.find(w.idx());
+                if (it == state.end()) {
                     held = true;
-                } else if (state[w.idx()] == 1) {
-                    state[w.idx()] = 2;
+                } else if (it->second == 1) {
+                    it->second = 2;
                     stack.push_back(w);
                 }
             }
@@ -80,20 +87,57 @@ bool every_piece_held(const Mesh& mesh, const std::vector<Vertex>& inner) {
     return true;
 }
 
+// The vertices the solve reads: the free ones, then the first ring around them (the rows of
+// K), then the second ring, each ring in index order; `local` numbers them.
+struct Stencil {
+    std::vector<Vertex> order;
+    LocalIndex local;
+    std::size_t n_free = 0;
+    std::size_t n_rows = 0;
+};
+
+Stencil stencil_of(const Mesh& mesh, const std::vector<Vertex>& inner) {
+    Stencil st;
+    st.order = inner;
+    st.n_free = inner.size();
+    st.local.reserve(inner.size() * 3);
+    for (std::size_t i = 0; i < st.order.size(); ++i) {
+        st.local[st.order[i].idx()] = static_cast<std::int64_t>(i);
+    }
+    const auto add_ring = [&](std::size_t from, std::size_t to) {
+        std::vector<Vertex> ring;
+        for (std::size_t i = from; i < to; ++i) {
+            for (const Vertex w : mesh.vertices(st.order[i])) {
+                if (st.local.try_emplace(w.idx(), 0).second) {  // claimed; numbered below
+                    ring.push_back(w);
+                }
+            }
+        }
+        std::sort(ring.begin(), ring.end());
+        for (const Vertex w : ring) {
+            st.local[w.idx()] = static_cast<std::int64_t>(st.order.size());
+            st.order.push_back(w);
+        }
+        return st.order.size();
+    };
+    st.n_rows = add_ring(0, inner.size());  // free and first ring
+    add_ring(inner.size(), st.n_rows);      // the second ring
+    return st;
+}
+
 // Solves the free rows of K D⁻¹ K x = 0 for the first `n_free` vertices of `order` (then its
 // first ring up to `n_rows`, then the second ring; `local` numbers them). False when the
 // factorisation fails or the result is not finite (cotangent weights all clamped to 0 around a
 // vertex, a degenerate triangle): the caller tries uniform weights.
-bool solve(const Mesh& mesh, const std::vector<Vertex>& order,
-           const std::vector<std::int64_t>& local, std::size_t n_free, std::size_t n_rows,
-           SmoothWeights weights, Eigen::MatrixX3d& x) {
+bool solve(const Mesh& mesh, const std::vector<Vertex>& order, const LocalIndex& local,
+           std::size_t n_free, std::size_t n_rows, SmoothWeights weights, Eigen::MatrixX3d& x) {
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::VectorXd inverse_d(static_cast<Eigen::Index>(n_rows));
     for (std::size_t i = 0; i < n_rows; ++i) {
         double sum = 0.0;
         for (const Halfedge h : mesh.halfedges(order[i])) {
             const double wij = laplacian::edge_weight(mesh, Mesh::edge(h), weights);
-            entries.emplace_back(i, local[mesh.to_vertex(h).idx()], wij);
+            entries.emplace_back(i, local.at(mesh.to_vertex(h).idx()), wij);
             sum += wij;
         }
         entries.emplace_back(i, i, -sum);
@@ -125,8 +169,7 @@ bool solve(const Mesh& mesh, const std::vector<Vertex>& order,
 }  // namespace
 
 std::vector<Vertex> region_inner_vertices(const Mesh& mesh, std::span<const Face> region) {
-    std::vector<std::uint8_t> in_region;
-    return inner_vertices(mesh, region, in_region);
+    return inner_vertices(mesh, region);
 }
 
 OpStatus check_fair(const Mesh& mesh, std::span<const Face> region, const FairOptions& options) {
@@ -139,20 +182,34 @@ OpStatus check_fair(const Mesh& mesh, std::span<const Face> region, const FairOp
                                       " is not in the mesh");
         }
     }
-    if (const std::string why = laplacian::refuse_non_finite(mesh, "fair"); !why.empty()) {
-        return OpStatus::composed(why);
-    }
-    if (options.weights == SmoothWeights::Cotangent && !mesh.is_triangle_mesh()) {
-        return OpStatus::refused(
-            "cannot fair: cotangent weights need triangles (triangulate first: the "
-            "`triangulate` step, Ctrl+T in the viewer)");
-    }
-    std::vector<std::uint8_t> in_region;
-    const std::vector<Vertex> inner = inner_vertices(mesh, region, in_region);
+    const std::vector<Vertex> inner = inner_vertices(mesh, region);
     if (inner.empty()) {
         return OpStatus::refused(
             "cannot fair: the region has no inner vertex (every vertex of it is on its border "
             "or the mesh's boundary); select a larger region");
+    }
+    // Only what the solve reads must be finite and, for cotangent weights, triangles: a
+    // polygon or a NaN far from the region does not touch it.
+    const Stencil st = stencil_of(mesh, inner);
+    std::vector<Vertex> sorted = st.order;
+    std::sort(sorted.begin(), sorted.end());
+    for (const Vertex v : sorted) {
+        const Vec3& p = mesh.position(v);
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            return OpStatus::composed("cannot fair: vertex " + std::to_string(v.idx()) +
+                                      " has a position that is not a finite number");
+        }
+    }
+    if (options.weights == SmoothWeights::Cotangent) {
+        for (std::size_t i = 0; i < st.n_rows; ++i) {
+            for (const Face f : mesh.faces(st.order[i])) {
+                if (mesh.valence(f) != 3) {
+                    return OpStatus::refused(
+                        "cannot fair: cotangent weights need triangles around the region "
+                        "(triangulate first: the `triangulate` step, Ctrl+T in the viewer)");
+                }
+            }
+        }
     }
     if (!every_piece_held(mesh, inner)) {
         return OpStatus::refused(
@@ -164,33 +221,11 @@ OpStatus check_fair(const Mesh& mesh, std::span<const Face> region, const FairOp
 
 FairReport fair(Mesh& mesh, std::span<const Face> region, const FairOptions& options) {
     const auto begin = std::chrono::steady_clock::now();
-    std::vector<std::uint8_t> in_region;
-    const std::vector<Vertex> inner = inner_vertices(mesh, region, in_region);
-    // Local numbering: the free vertices, then the first ring around them, then the second.
-    std::vector<std::int64_t> local(mesh.vertices_size(), -1);
-    std::vector<Vertex> order(inner);
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        local[order[i].idx()] = static_cast<std::int64_t>(i);
-    }
-    const auto add_ring = [&](std::size_t from, std::size_t to) {
-        std::vector<Vertex> ring;
-        for (std::size_t i = from; i < to; ++i) {
-            for (const Vertex w : mesh.vertices(order[i])) {
-                if (local[w.idx()] < 0) {
-                    local[w.idx()] = 0;  // claimed; numbered below in index order
-                    ring.push_back(w);
-                }
-            }
-        }
-        std::sort(ring.begin(), ring.end());
-        for (const Vertex w : ring) {
-            local[w.idx()] = static_cast<std::int64_t>(order.size());
-            order.push_back(w);
-        }
-        return order.size();
-    };
-    const std::size_t n_rows = add_ring(0, inner.size());  // free and first ring
-    add_ring(inner.size(), n_rows);                        // the second ring
+    const std::vector<Vertex> inner = inner_vertices(mesh, region);
+    const Stencil st = stencil_of(mesh, inner);
+    const std::vector<Vertex>& order = st.order;
+    const LocalIndex& local = st.local;
+    const std::size_t n_rows = st.n_rows;
 
     Eigen::MatrixX3d x;
     if (!solve(mesh, order, local, inner.size(), n_rows, options.weights, x) &&

@@ -1,4 +1,4 @@
-// fill_holes_fair() (repair.h): Liepa's hole filling (2003), as CGAL's
+// fill_holes_fair() and fill_hole_fair() (repair.h): Liepa's hole filling (2003), as CGAL's
 // triangulate_refine_and_fair_hole and pmp's fill_hole + fair do it —
 //
 //   1. cover the hole with triangles (hole_triangles.h: minimum weight, or ears when large),
@@ -16,6 +16,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "hole_triangles.h"
@@ -75,8 +76,10 @@ double angle_at(const Vec3& a, const Vec3& b, const Vec3& c) {
 struct Filler {
     Mesh& mesh;
     const FairFillOptions& options;
-    std::vector<double> sigma;  // by vertex index: the edge length wanted there
-    double touching = 0.0;      // corners closer than this are one point to repair()
+    // By vertex index: the edge length wanted at a corner or new vertex of a patch (a map,
+    // not an array over the mesh, so that a small hole costs its own size).
+    std::unordered_map<std::uint32_t, double> sigma;
+    double touching = 0.0;  // corners closer than this are one point to repair()
 
     bool in_patch(Face f, std::size_t first) const { return f.is_valid() && f.idx() >= first; }
 
@@ -145,7 +148,6 @@ struct Filler {
                 if (!v) {
                     continue;
                 }
-                sigma.resize(mesh.vertices_size(), 0.0);
                 sigma[(*v).idx()] = sc;
                 ++poked;
                 if (++added >= kMaxNewVertices) {
@@ -207,18 +209,18 @@ std::optional<std::uint32_t> free_apex(const HoleLoop& hole) {
     return std::nullopt;
 }
 
-}  // namespace
-
-RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options) {
+// Fills the holes `loops` (each a boundary loop's halfedges in order); with `turn`, then
+// turns a part the fills closed outward.
+RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
+                        const std::vector<std::vector<Halfedge>>& loops, bool turn) {
     RepairResult result;
     Filler filler{mesh, options, {}, touching_distance(mesh)};
-    filler.sigma.assign(mesh.vertices_size(), 0.0);
     const std::size_t first_face = mesh.faces_size();
     std::size_t large = 0, triangles = 0, added = 0, filled_edges = 0;
     bool capped = false;
     const double touching = filler.touching;
     std::vector<std::string> why;  // of the holes left, in order
-    for (const std::vector<Halfedge>& sides : boundary_loops(mesh)) {
+    for (const std::vector<Halfedge>& sides : loops) {
         const std::size_t n = sides.size();
         if (options.max_edges > 0 && n > options.max_edges) {
             ++large;
@@ -296,8 +298,7 @@ RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options) {
                 region.push_back(Face(static_cast<std::uint32_t>(fi)));
             }
         }
-        FairOptions fo;
-        fo.weights = mesh.is_triangle_mesh() ? SmoothWeights::Cotangent : SmoothWeights::Uniform;
+        FairOptions fo;  // cotangent weights where the faces the solve reads are triangles
         if (!check_fair(mesh, region, fo)) {
             fo.weights = SmoothWeights::Uniform;  // polygons beside the holes
         }
@@ -317,7 +318,7 @@ RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options) {
     // A part the fills closed had no inside while it was open: inward half the time, and a
     // second repair then turned it (20 of 219 files were not idempotent with --fair).
     std::size_t turned_faces = 0;
-    const std::size_t turned = turn_closed_parts_outward(mesh, patches, turned_faces);
+    const std::size_t turned = turn ? turn_closed_parts_outward(mesh, patches, turned_faces) : 0;
     result.left = large + why.size();
     std::vector<std::string> parts;
     if (result.count > 0) {
@@ -354,6 +355,26 @@ RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options) {
         result.sentence += (i == 0 ? "" : "; ") + parts[i];
     }
     return result;
+}
+
+}  // namespace
+
+RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options) {
+    return fill_loops(mesh, options, boundary_loops(mesh), true);
+}
+
+RepairResult fill_hole_fair(Mesh& mesh, Halfedge h, const FairFillOptions& options) {
+    if (!mesh.is_valid(h) || mesh.is_deleted(Mesh::edge(h)) || !mesh.is_boundary(h)) {
+        RepairResult refused;
+        refused.sentence =
+            "cannot fill: halfedge " + std::to_string(h.idx()) + " is not on the border of a hole";
+        return refused;
+    }
+    std::vector<std::vector<Halfedge>> loop(1);
+    for (const Halfedge x : mesh.loop(h)) {
+        loop[0].push_back(x);
+    }
+    return fill_loops(mesh, options, loop, false);
 }
 
 }  // namespace meshedit

@@ -237,6 +237,21 @@ TEST(Smooth, TheSameBitsOnAnyNumberOfThreads) {
     EXPECT_TRUE(test::identical(one, two));
 }
 
+// The faces of a unit grid whose centroids lie inside [0.25, 0.75]².
+std::vector<Face> middle_faces(const Mesh& mesh) {
+    std::vector<Face> region;
+    for (const Face f : mesh.faces()) {
+        Vec3 c;
+        for (const Vertex v : mesh.vertices(f)) {
+            c += mesh.position(v) * (1.0 / 3.0);
+        }
+        if (c.x > 0.25 && c.x < 0.75 && c.y > 0.25 && c.y < 0.75) {
+            region.push_back(f);
+        }
+    }
+    return region;
+}
+
 // A 12 × 12 grid with a bump on the faces inside [0.25, 0.75]²: fairing puts every inner
 // vertex back in the plane z = 0 (the border and the rings around it are flat), and with
 // uniform weights back at its grid place too (a linear function is harmonic there).
@@ -244,16 +259,7 @@ TEST(Fair, ABumpOnAGridComesOutFlat) {
     for (const SmoothWeights weights : {SmoothWeights::Cotangent, SmoothWeights::Uniform}) {
         Mesh mesh = shapes::grid(12, 12);
         const Mesh flat = mesh;
-        std::vector<Face> region;
-        for (const Face f : mesh.faces()) {
-            Vec3 c;
-            for (const Vertex v : mesh.vertices(f)) {
-                c += mesh.position(v) * (1.0 / 3.0);
-            }
-            if (c.x > 0.25 && c.x < 0.75 && c.y > 0.25 && c.y < 0.75) {
-                region.push_back(f);
-            }
-        }
+        const std::vector<Face> region = middle_faces(mesh);
         for (const Vertex v : mesh.vertices()) {
             const Vec3 p = mesh.position(v);
             if (p.x > 0.3 && p.x < 0.7 && p.y > 0.3 && p.y < 0.7) {
@@ -272,6 +278,39 @@ TEST(Fair, ABumpOnAGridComesOutFlat) {
             if (weights == SmoothWeights::Uniform) {
                 EXPECT_NEAR(norm(mesh.position(v) - flat.position(v)), 0.0, 1e-9) << v.idx();
             }
+        }
+    }
+}
+
+// Fairing reads the region and two rings around it, nothing else: a NaN in a far corner of
+// the grid neither stops it nor changes what it computes (the check and the solve cost the
+// region's size, not the mesh's).
+TEST(Fair, ANaNFarFromTheRegionDoesNotTouchIt) {
+    Mesh mesh = shapes::grid(12, 12);
+    const std::vector<Face> region = middle_faces(mesh);
+    for (const Vertex v : mesh.vertices()) {
+        Vec3& p = mesh.position(v);
+        p.z = 0.2 * std::sin(p.x * 5.0 + p.y * 3.0);  // not flat, so fairing moves the inside
+    }
+    Mesh far = mesh;
+    Vertex corner;  // (0, 0): outside the region's two rings
+    for (const Vertex v : far.vertices()) {
+        if (norm(far.position(v) - Vec3{0.0, 0.0, far.position(v).z}) < 1e-12) {
+            corner = v;
+        }
+    }
+    ASSERT_TRUE(corner.is_valid());
+    far.position(corner).x = std::numeric_limits<double>::quiet_NaN();
+    const FairOptions options{SmoothWeights::Cotangent};
+    ASSERT_EQ(check_fair(mesh, region, options), "");
+    ASSERT_EQ(check_fair(far, region, options), "");
+    const FairReport a = fair(mesh, region, options);
+    const FairReport b = fair(far, region, options);
+    EXPECT_EQ(a.moved, 25u);
+    EXPECT_EQ(b.moved, 25u);
+    for (const Vertex v : mesh.vertices()) {
+        if (v != corner) {
+            EXPECT_EQ(mesh.position(v), far.position(v)) << v.idx();
         }
     }
 }

@@ -137,7 +137,9 @@ TEST(SmoothVerbs, RefusalsNameTheirReasonAndLeaveTheMesh) {
               std::string::npos);
     Mesh nan = shapes::icosphere(1);
     nan.position(Vertex(2)).z = std::numeric_limits<double>::quiet_NaN();
-    for (const char* step : {"smooth", "smooth_cotan", "taubin", "smooth_implicit", "fair:f0..5",
+    // fair reads only the region and two rings around it: here the region is every face, so
+    // the NaN is among what it reads (a NaN far away does not stop it: Fair.* tests).
+    for (const char* step : {"smooth", "smooth_cotan", "taubin", "smooth_implicit", "fair:f0..79",
                              "smooth_region:f0..79"}) {
         EXPECT_NE(refusal(nan, step).find("not a finite number"), std::string::npos) << step;
     }

@@ -1,4 +1,5 @@
-// Hole filling that refines and fairs (repair.h, fill_holes_fair()): a sphere's cap comes
+// Hole filling that refines and fairs (repair.h, fill_holes_fair() and fill_hole_fair() for
+// one hole): a sphere's cap comes
 // back round, a 1000-edge hole in a plane stays in the plane, the patch's edges match the
 // surface's, and holes it leaves are named with their reason.
 
@@ -292,6 +293,74 @@ TEST(FillFair, HolesOverTheLimitAreLeftAndNamed) {
     EXPECT_EQ(r.left, 1u);
     EXPECT_NE(r.sentence.find("left 1 hole of more than 5 edges"), std::string::npos) << r.sentence;
     EXPECT_TRUE(identical(before, mesh));
+}
+
+// fill_hole_fair() takes one hole by a halfedge of its border, as CGAL's and pmp's calls do:
+// on a sphere with two caps cut away it fills the one named, exactly as fill_holes_fair()
+// fills that hole alone, and leaves the other open; a halfedge that is not on a border is
+// refused, with the mesh untouched.
+TEST(FillFair, OneHoleByItsBorderHalfedge) {
+    const Mesh one_cap = without(shapes::icosphere(4), [](const Vec3& c) { return c.z > 0.7; });
+    const auto border_of = [](const Mesh& mesh, auto&& where) {
+        for (const Halfedge h : mesh.halfedges()) {
+            if (mesh.is_boundary(h) && where(mesh.position(mesh.to_vertex(h)))) {
+                return h;
+            }
+        }
+        return Halfedge();
+    };
+    const auto top = [](const Vec3& p) { return p.z > 0.5; };
+    Mesh by_all = one_cap, by_one = one_cap;
+    const RepairResult all = fill_holes_fair(by_all, {});
+    const RepairResult one = fill_hole_fair(by_one, border_of(by_one, top), {});
+    ASSERT_VALID(by_one);
+    EXPECT_EQ(one.count, 1u);
+    EXPECT_EQ(one.sentence, all.sentence);
+    EXPECT_TRUE(identical(by_all, by_one));
+
+    Mesh two_caps =
+        without(shapes::icosphere(4), [](const Vec3& c) { return c.z > 0.7 || c.z < -0.8; });
+    ASSERT_EQ(count_boundary_loops(two_caps), 2u);
+    const RepairResult r = fill_hole_fair(two_caps, border_of(two_caps, top), {});
+    ASSERT_VALID(two_caps);
+    EXPECT_EQ(r.count, 1u);
+    EXPECT_EQ(count_boundary_loops(two_caps), 1u);
+    for (const Halfedge h : two_caps.halfedges()) {
+        if (two_caps.is_boundary(h)) {
+            EXPECT_LT(two_caps.position(two_caps.to_vertex(h)).z, 0.0) << "the top is filled";
+        }
+    }
+
+    Mesh closed = shapes::icosphere(2);
+    const Mesh before = closed;
+    const RepairResult refused = fill_hole_fair(closed, Halfedge(0), {});
+    EXPECT_EQ(refused.count, 0u);
+    EXPECT_NE(refused.sentence.find("halfedge 0 is not on the border of a hole"), std::string::npos)
+        << refused.sentence;
+    EXPECT_TRUE(identical(before, closed));
+}
+
+// Unlike fill_holes_fair(), the one-hole fill leaves the orientation as the surface around
+// the hole has it: an inward sphere closed by it stays inward.
+TEST(FillFair, OneHoleKeepsTheSurfacesOrientation) {
+    Mesh mesh = without(shapes::icosphere(3), [](const Vec3& c) { return c.z > 0.7; });
+    flip_orientation(mesh);
+    Halfedge border;
+    for (const Halfedge h : mesh.halfedges()) {
+        if (mesh.is_boundary(h)) {
+            border = h;
+            break;
+        }
+    }
+    const RepairResult r = fill_hole_fair(mesh, border, {});
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(count_boundary_loops(mesh), 0u);
+    EXPECT_EQ(r.sentence.find("faces outward"), std::string::npos) << r.sentence;
+    double volume = 0.0;  // fanned from the origin, the sphere's centre
+    for (const Face f : mesh.faces()) {
+        volume += dot(face_area_vector(mesh, f), mesh.position(mesh.to_vertex(mesh.halfedge(f))));
+    }
+    EXPECT_LT(volume, 0.0);
 }
 
 }  // namespace
