@@ -22,11 +22,13 @@ inline std::uint32_t pack_normal(const Vec3& n) {
 }
 
 // Grows `buffer` (bound to `target`) to at least `bytes`, keeping its size otherwise, then
-// uploads `data`. Growth doubles, so a slowly growing mesh does not reallocate every edit.
+// uploads `data`. Growth doubles, so a slowly growing mesh does not reallocate every edit, and
+// a first upload leaves 1/16 room: otherwise the first split after loading grew the buffer
+// and sent it whole (1.8 s at 10M faces on llvmpipe, against 0.06 ms for an update in place).
 inline void upload_buffer(GLenum target, std::size_t& capacity, const void* data,
                           std::size_t bytes) {
     if (bytes > capacity) {
-        capacity = std::max(bytes, capacity * 2);
+        capacity = std::max(bytes + bytes / 16, capacity * 2);
         glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_STATIC_DRAW);
     }
     if (bytes > 0) {

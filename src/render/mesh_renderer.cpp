@@ -136,6 +136,10 @@ void MeshRenderer::update_geometry(const Mesh& mesh) {
 }
 
 void MeshRenderer::fill_geometry(const Mesh& mesh) {
+    // Room for the vertices edits add (as the GPU buffers have, mesh_gpu.h): growing this
+    // array after loading 10M faces copied it whole on the first split.
+    vertex_normals_.reserve(mesh.vertices_size() + mesh.vertices_size() / 16);
+    face_normals_.reserve(mesh.faces_size() + mesh.faces_size() / 16);
     compute_vertex_normals(mesh, vertex_normals_);
     normals_sizes_ = {mesh.vertices_size(), mesh.faces_size()};
     compute_face_normals(mesh, face_normals_);

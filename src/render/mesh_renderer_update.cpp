@@ -71,7 +71,7 @@ namespace {
 
 // Sends triangles [first, last) of a staging array (`per` elements of T each) to `buffer`.
 template <class T>
-void send(GLenum target, unsigned buffer, const std::vector<T>& data, std::size_t per,
+void send(GLenum target, unsigned buffer, const memory::PodArray<T>& data, std::size_t per,
           std::size_t first, std::size_t last) {
     glBindBuffer(target, buffer);
     glBufferSubData(target, static_cast<GLintptr>(first * per * sizeof(T)),

@@ -145,6 +145,9 @@ public:
         size_ += k;
         return data_ + size_ - k;
     }
+    iterator insert(const_iterator at, std::initializer_list<T> values) {
+        return insert(at, values.begin(), values.end());
+    }
     void swap(PodArray& other) noexcept {
         std::swap(data_, other.data_);
         std::swap(size_, other.size_);

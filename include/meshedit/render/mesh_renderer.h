@@ -22,6 +22,7 @@
 
 #include "meshedit/core/mesh.h"
 #include "meshedit/core/normals.h"
+#include "meshedit/core/pod_array.h"
 #include "meshedit/overlay/camera.h"
 #include "meshedit/overlay/colormap.h"
 #include "meshedit/overlay/overlay.h"
@@ -199,38 +200,39 @@ private:
                                        ///< update_geometry
     BoundingBox bounds_;               ///< of the live vertices (same)
 
-    // CPU staging, kept between uploads for their capacity.
-    std::vector<MeshGpuVertex> vertices_;
-    std::vector<std::uint32_t> pick_table_;  ///< 8 uints per triangle: f, v0..2, h0..2, 0
+    // CPU staging, kept between uploads for their capacity; big arrays grow by moving their
+    // pages (memory.h), not by a copy: the first split after loading 10M faces copied them all.
+    memory::Array<MeshGpuVertex> vertices_;
+    memory::Array<std::uint32_t> pick_table_;  ///< 8 uints per triangle: f, v0..2, h0..2, 0
     std::vector<Vec3> vertex_normals_;
     std::vector<Vec3> face_normals_;
-    std::vector<std::uint32_t> triangle_corners_;  ///< 3 vertex indices per triangle
+    memory::Array<std::uint32_t> triangle_corners_;  ///< 3 vertex indices per triangle
     /// The halfedge entering each corner in its face (names its corner normal).
-    std::vector<std::uint32_t> corner_halfedges_;
+    memory::Array<std::uint32_t> corner_halfedges_;
     std::vector<Vec3> corner_normals_;  ///< by halfedge, when some edge splits
     NormalSplit normal_split_;
-    unsigned color_vbo_ = 0;                    ///< RGBA8 per corner, attribute 4
-    std::size_t color_capacity_ = 0;            ///< bytes allocated in color_vbo_
-    std::vector<std::uint32_t> corner_colors_;  ///< staging, RGBA8 per corner
+    unsigned color_vbo_ = 0;                      ///< RGBA8 per corner, attribute 4
+    std::size_t color_capacity_ = 0;              ///< bytes allocated in color_vbo_
+    memory::Array<std::uint32_t> corner_colors_;  ///< staging, RGBA8 per corner
     bool has_field_ = false;
     unsigned side_color_vbo_ = 0;  ///< an edge field: 3 × RGBA8 per corner, attributes 5-7
     std::size_t side_color_capacity_ = 0;
-    std::vector<std::uint32_t> side_colors_;
+    memory::Array<std::uint32_t> side_colors_;
     bool has_edge_field_ = false;
     unsigned env_texture_ = 0;  ///< mode 7's environment, 0 until needed
     unsigned env_cube_ = 0;     ///< the same as a cube map (mode 7 samples it)
     std::filesystem::path user_shader_dir_;
     std::string user_shader_error_;
-    std::vector<std::uint32_t> triangle_faces_;  ///< face index per triangle
+    memory::Array<std::uint32_t> triangle_faces_;  ///< face index per triangle
     /// Each face's slot of triangles (first, count), by face index; count 0 for a deleted face.
-    std::vector<std::uint32_t> face_first_;
-    std::vector<std::uint32_t> face_slots_;
+    memory::Array<std::uint32_t> face_first_;
+    memory::Array<std::uint32_t> face_slots_;
     /// vertices_size() and faces_size() when vertex_normals_ were last brought up to date.
     std::pair<std::size_t, std::size_t> normals_sizes_{0, 0};
     bool split_normals_ = false;  ///< corner normals in use (some edge splits)
 
     // Surface colours (mesh_surface.cpp).
-    std::vector<SurfaceCorner> surface_;  ///< 3 per triangle; empty without surface data
+    memory::Array<SurfaceCorner> surface_;  ///< 3 per triangle; empty without surface data
     unsigned surface_vbo_ = 0;
     std::size_t surface_capacity_ = 0;
     bool has_texcoords_ = false;
