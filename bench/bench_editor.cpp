@@ -3,7 +3,8 @@
 // object the window drives) and its renderer (MeshRenderer in a headless EGL or OSMesa context)
 // headless.
 //
-//   bench_editor --job editor_edits_torus_1m|editor_edits_scan_1m [--impl all] [--runs N]
+//   bench_editor --job editor_edits_torus_1m|editor_edits_scan_1m|editor_edits_torus_10m
+//                [--impl all] [--runs N]      (the 10M torus: torus(2500, 2000), issue 38)
 //   bench_editor --job editor_loop_1m --impl core|viewer [--runs N]
 //   bench_editor --job editor_simplify_1m --impl core|viewer [--runs N]
 //   bench_editor --list
@@ -78,6 +79,9 @@ Mesh input_mesh(const std::string& job, const std::filesystem::path& data) {
         loop_subdivide(mesh);
         loop_subdivide(mesh);
         return mesh;
+    }
+    if (job == "editor_edits_torus_10m") {
+        return shapes::torus(2500, 2000);  // 5,000,000 vertices, 10,000,000 triangles
     }
     return shapes::torus(1000, 500);  // 500,000 vertices, 1,000,000 triangles
 }
@@ -359,7 +363,8 @@ int run_simplify(const std::string& impl, int runs, const std::filesystem::path&
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::string edit_jobs[] = {"editor_edits_torus_1m", "editor_edits_scan_1m"};
+    const std::string edit_jobs[] = {"editor_edits_torus_1m", "editor_edits_scan_1m",
+                                     "editor_edits_torus_10m"};
     if (argc == 2 && std::string(argv[1]) == "--list") {
         for (const auto& job : edit_jobs) {
             std::printf("%s all\n", job.c_str());

@@ -5,8 +5,10 @@
 //   bench_io_draw --job collada_load_1m_polylist  --impl meshedit|assimp [--runs N] [--data DIR]
 //   bench_io_draw --job ply_load_1m_binary        --impl meshedit|assimp [--runs N] [--data DIR]
 //   bench_io_draw --job stl_load_1m_binary        --impl meshedit|assimp [--runs N] [--data DIR]
+//   bench_io_draw --job ply_load_10m_binary       --impl meshedit|assimp [--runs N] [--data DIR]
+//   bench_io_draw --job first_frame_10m [--impl meshedit] [--runs N] [--size WxH] [--data DIR]
 //   bench_io_draw --job draw_1m_triangles [--impl all] [--runs N] [--size WxH] [--samples S]
-//   bench_io_draw --job pick_1m [--impl all] [--positions N] [--size WxH]
+//   bench_io_draw --job pick_1m|pick_10m [--impl all] [--positions N] [--size WxH]
 //   bench_io_draw --generate [--data DIR]     writes the COLLADA and PLY inputs (untimed,
 //                                             idempotent)
 //   bench_io_draw --list                      prints "JOB IMPL" per configuration
@@ -16,7 +18,9 @@
 // normal per face (NORMAL at offset 1, so every corner has two indices), and as a binary
 // little-endian PLY as scanners write it (float x y z, `list uchar int vertex_indices`,
 // ~18 MB), and as binary STL (each triangle its three corners and its normal, as every STL
-// file is: the loaders weld equal corners; ~50 MB). The draw job renders
+// file is: the loaders weld equal corners; ~50 MB); and torus(2500, 2000), 10M triangles, as
+// the same binary PLY (~190 MB) for ply_load_10m_binary and first_frame_10m (the read, the
+// GPU upload and one shaded 1280x800 frame: opening the file in the viewer). The draw job renders
 // the same torus at 1280x800 in one headless context (EGL, else OSMesa): N frames through
 // MeshRenderer::draw (smooth Blinn-Phong; back faces culled, as the torus is closed and outward)
 // and N through MeshRenderer::draw_bare (transform-only shader, same vertex buffer, back faces
@@ -71,6 +75,8 @@ constexpr int kTorusTube = 500;
 const char* const kTrianglesFile = "torus_1m_triangles.dae";
 const char* const kPolylistFile = "torus_1m_polylist.dae";
 const char* const kPlyFile = "torus_1m_binary.ply";
+// torus(2500, 2000): 5,000,000 vertices, 10,000,000 triangles (~190 MB; issue 38's 10M rows).
+const char* const kPly10mFile = "torus_10m_binary.ply";
 const char* const kStlFile = "torus_1m_binary.stl";
 
 /// A growing text buffer with fast number formatting (std::to_chars, shortest round trip).
@@ -270,6 +276,9 @@ void write_stl_torus(const Mesh& mesh, const fs::path& path) {
 /// Writes the missing inputs into `data`.
 void generate(const fs::path& data) {
     fs::create_directories(data);
+    if (!fs::exists(data / kPly10mFile)) {
+        write_ply_torus(shapes::torus(2500, 2000), data / kPly10mFile);
+    }
     const bool need_tri = !fs::exists(data / kTrianglesFile);
     const bool need_poly = !fs::exists(data / kPolylistFile);
     const bool need_ply = !fs::exists(data / kPlyFile);
@@ -296,6 +305,8 @@ void generate(const fs::path& data) {
 const char* input_of(const std::string& job) {
     return job == "collada_load_1m_triangles" ? kTrianglesFile
            : job == "ply_load_1m_binary"      ? kPlyFile
+           : job == "ply_load_10m_binary"     ? kPly10mFile
+           : job == "first_frame_10m"         ? kPly10mFile
            : job == "stl_load_1m_binary"      ? kStlFile
                                               : kPolylistFile;
 }
@@ -312,6 +323,7 @@ void bench_load(const std::string& job, const std::string& impl, int runs, const
     double faces_out = 0;
     double vertices_out = 0;
     double bytes_moved = 0;
+    double extra_rss_per_face = 0;
     std::vector<double> ms;
     if (impl == "meshedit") {
         std::optional<LoadedMesh> loaded;
@@ -322,6 +334,8 @@ void bench_load(const std::string& job, const std::string& impl, int runs, const
         // The compulsory traffic (the report's bandwidth section): the file's bytes read once,
         // the mesh's arrays written once.
         bytes_moved = static_cast<double>(fs::file_size(file) + loaded->mesh.bytes());
+        // The process's peak over the faces: what a face costs once loaded (and while loading).
+        extra_rss_per_face = bench::peak_rss_mb() * 1e6 / faces_out;
     } else if (impl == "assimp") {
         std::unique_ptr<Assimp::Importer> importer;
         const aiScene* scene = nullptr;
@@ -350,12 +364,62 @@ void bench_load(const std::string& job, const std::string& impl, int runs, const
     if (bytes_moved > 0) {
         extra["bytes_moved"] = bytes_moved;
     }
+    if (extra_rss_per_face > 0) {
+        extra["peak_rss_bytes_per_face"] = extra_rss_per_face;
+    }
     bench::print_result(job, impl, ms, extra);
 }
 
 double ms_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
+}
+
+/// What opening a file in the viewer costs until its first frame is on screen, headless: the
+/// read (parse and halfedge build), the upload of the GPU buffers and one shaded frame, with
+/// glFinish. The GL context is made once, before (a window's, not the file's, cost).
+void bench_first_frame(const std::string& job, const std::string& impl, int runs, int width,
+                       int height, const fs::path& data) {
+    if (impl != "meshedit") {
+        throw std::invalid_argument("unknown impl '" + impl + "' for " + job + " (meshedit)");
+    }
+    const fs::path file = data / input_of(job);
+    if (!fs::exists(file)) {
+        throw std::runtime_error(file.string() + " missing: run bench_io_draw --generate");
+    }
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const auto gl = headless::make_context({.width = width, .height = height});
+    const headless::GlContext& context = *gl;
+    RenderTarget target(width, height, 1);
+    target.bind();
+    BackgroundRenderer background;
+    std::optional<LoadedMesh> loaded;
+    std::optional<MeshRenderer> renderer;
+    double faces = 0;
+    const std::vector<double> ms = bench::time_runs(
+        runs,
+        [&] {
+            renderer.reset();
+            loaded.reset();
+        },
+        [&] {
+            loaded.emplace(read_mesh(file));
+            Camera camera;
+            camera.frame_mesh(loaded->mesh, aspect);
+            renderer.emplace();
+            renderer->upload(loaded->mesh);
+            background.draw(kBackgroundTop, kBackgroundBottom);
+            renderer->draw(camera, aspect, RenderOptions{});
+            context.finish();
+        });
+    faces = static_cast<double>(loaded->mesh.n_faces());
+    if (glGetError() != GL_NO_ERROR) {
+        throw std::runtime_error("GL error in the first frame");
+    }
+    bench::print_result(job, impl, ms,
+                        {{"faces", faces},
+                         {"peak_rss_mb", bench::peak_rss_mb()},
+                         {"peak_rss_bytes_per_face", bench::peak_rss_mb() * 1e6 / faces}});
 }
 
 void bench_draw(const std::string& job, const std::string& impl, int runs, int width, int height,
@@ -451,7 +515,8 @@ void bench_pick(const std::string& job, const std::string& impl, int positions, 
         throw std::invalid_argument("unknown impl '" + impl + "' for " + job +
                                     " (all, id_pass, bvh: one run measures both)");
     }
-    const Mesh mesh = shapes::torus(kTorusRing, kTorusTube);
+    const Mesh mesh =
+        job == "pick_10m" ? shapes::torus(2500, 2000) : shapes::torus(kTorusRing, kTorusTube);
     Camera camera;
     camera.azimuth_deg = 30.0f;
     camera.elevation_deg = 20.0f;
@@ -597,11 +662,14 @@ int main(int argc, char** argv) {
     try {
         const Args a = parse(argc, argv);
         if (a.list) {
-            for (const char* job : {"collada_load_1m_triangles", "collada_load_1m_polylist",
-                                    "ply_load_1m_binary", "stl_load_1m_binary"}) {
+            for (const char* job :
+                 {"collada_load_1m_triangles", "collada_load_1m_polylist", "ply_load_1m_binary",
+                  "stl_load_1m_binary", "ply_load_10m_binary"}) {
                 std::printf("%s meshedit\n%s assimp\n", job, job);
             }
-            std::printf("draw_1m_triangles all\npick_1m all\n");
+            std::printf(
+                "draw_1m_triangles all\npick_1m all\npick_10m all\n"
+                "first_frame_10m meshedit\n");
             return 0;
         }
         if (a.generate) {
@@ -609,18 +677,24 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (a.job == "collada_load_1m_triangles" || a.job == "collada_load_1m_polylist" ||
-            a.job == "ply_load_1m_binary" || a.job == "stl_load_1m_binary") {
+            a.job == "ply_load_1m_binary" || a.job == "stl_load_1m_binary" ||
+            a.job == "ply_load_10m_binary") {
             bench_load(a.job, a.impl, a.runs, a.data);
+        } else if (a.job == "first_frame_10m") {
+            bench_first_frame(a.job, a.impl.empty() ? "meshedit" : a.impl, a.runs, a.width,
+                              a.height, a.data);
         } else if (a.job == "draw_1m_triangles") {
             bench_draw(a.job, a.impl.empty() ? "all" : a.impl, a.runs, a.width, a.height,
                        a.samples);
-        } else if (a.job == "pick_1m") {
+        } else if (a.job == "pick_1m" || a.job == "pick_10m") {
             bench_pick(a.job, a.impl.empty() ? "all" : a.impl, a.positions, a.width, a.height);
         } else {
-            throw std::invalid_argument("unknown job '" + a.job +
-                                        "' (collada_load_1m_triangles, collada_load_1m_polylist, "
-                                        "ply_load_1m_binary, stl_load_1m_binary, "
-                                        "draw_1m_triangles, pick_1m; or --list, --generate)");
+            throw std::invalid_argument(
+                "unknown job '" + a.job +
+                "' (collada_load_1m_triangles, collada_load_1m_polylist, "
+                "ply_load_1m_binary, stl_load_1m_binary, "
+                "ply_load_10m_binary, draw_1m_triangles, pick_1m, pick_10m, "
+                "first_frame_10m; or --list, --generate)");
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_io_draw: %s\n", e.what());

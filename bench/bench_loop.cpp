@@ -7,6 +7,7 @@
 //
 // Jobs: loop_1m_1level (torus(1000, 500), 1M faces, one level), loop_1m_attrs_1level (MeshEdit
 // only: the same torus with texture coordinates and colours, the cost of carrying them),
+// loop_10m_1level (torus(2500, 2000), 10M faces → 40M: the memory a face takes at that size),
 // loop_100k_levels_K (torus(250, 200), 100k faces, K = 1..4 levels, cumulative time from the
 // input), loop_real_NAME_levels_K (NAME = bunny, armadillo from CGAL's demo data, K = 1..3). Impls:
 // meshedit, openmesh, cgal, opensubdiv_min, opensubdiv_full.
@@ -126,7 +127,8 @@ struct Job {
 
 std::vector<Job> all_jobs() {
     std::vector<Job> jobs{{"loop_1m_1level", "torus_1m", 1},
-                          {"loop_1m_attrs_1level", "torus_1m", 1, true}};
+                          {"loop_1m_attrs_1level", "torus_1m", 1, true},
+                          {"loop_10m_1level", "torus_10m", 1}};
     for (int k = 1; k <= 4; ++k) {
         jobs.push_back({"loop_100k_levels_" + std::to_string(k), "torus_100k", k});
     }
@@ -142,6 +144,9 @@ std::vector<Job> all_jobs() {
 Input load_input(const Job& job, const fs::path& data_dir) {
     if (job.input == "torus_1m") {
         return input_from_soup(meshedit::to_polygon_soup(meshedit::shapes::torus(1000, 500)));
+    }
+    if (job.input == "torus_10m") {  // 5,000,000 vertices, 10,000,000 triangles
+        return input_from_soup(meshedit::to_polygon_soup(meshedit::shapes::torus(2500, 2000)));
     }
     if (job.input == "torus_100k") {
         return input_from_soup(meshedit::to_polygon_soup(meshedit::shapes::torus(250, 200)));
