@@ -143,11 +143,12 @@ struct FairFillOptions {
 RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options);
 
 /// Fills the one hole whose border the boundary halfedge `h` lies on, as fill_holes_fair()
-/// fills each, reading only the hole and the faces around it: its time is the hole's, not the
-/// mesh's (as CGAL's triangulate_refine_and_fair_hole and pmp's fill_hole, which take a
-/// border halfedge too). Unlike fill_holes_fair() it leaves the rest of the mesh as it is, so
-/// a part the patch closes keeps the orientation of the surface around the hole. `h` not on a
-/// border: nothing changes, count is 0 and the sentence says why.
+/// fills each, without looking for the other holes (as CGAL's triangulate_refine_and_fair_hole
+/// and pmp's fill_hole, which take a border halfedge too). Besides the hole and the faces
+/// around it, it reads only the positions, once, for the bounding box that scales the distance
+/// under which two corners are one point (as repair's merge). Unlike fill_holes_fair() it leaves
+/// the rest of the mesh as it is, so a part the patch closes keeps the orientation of the surface
+/// around the hole. `h` not on a border: nothing changes, count is 0 and the sentence says why.
 /// \post validate(mesh) passes.
 RepairResult fill_hole_fair(Mesh& mesh, Halfedge h, const FairFillOptions& options);
 
