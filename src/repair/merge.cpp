@@ -80,22 +80,6 @@ private:
     std::size_t used_ = 0;
 };
 
-// `fraction` of the box's diagonal without overflow: scaled by the largest extent first, and
-// clamped to the largest double when the product is past it (a distance larger than the
-// mesh, which merges everything within reach).
-double fraction_of_diagonal(const BoundingBox& box, double fraction) {
-    if (box.is_empty() || fraction == 0.0) {
-        return 0.0;
-    }
-    const Vec3 extent = box.max * 0.5 - box.min * 0.5;  // half, so it cannot overflow
-    const double largest = std::max({extent.x, extent.y, extent.z});
-    if (largest == 0.0) {
-        return 0.0;
-    }
-    const double distance = fraction * largest * (2.0 * norm(extent / largest));
-    return std::min(distance, std::numeric_limits<double>::max());
-}
-
 // The same key for 0 and -0, so equal positions meet.
 Vec3 without_negative_zero(Vec3 p) {
     for (int i = 0; i < 3; ++i) {

@@ -32,17 +32,9 @@ struct Link {
 void link_faces(const PolygonSoup& s, std::vector<Link>& links, std::vector<bool>& open) {
     std::vector<Side> sides;
     sides.reserve(s.indices.size());
-    for (std::uint32_t f = 0; f < s.n_faces(); ++f) {
-        const std::uint32_t begin = s.face_offsets[f];
-        const std::uint32_t n = s.face_offsets[f + 1] - begin;
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const std::uint32_t a = s.indices[begin + i];
-            const std::uint32_t b = s.indices[begin + (i + 1) % n];
-            if (a != b) {
-                sides.push_back({std::min(a, b), std::max(a, b), f, a < b});
-            }
-        }
-    }
+    for_each_side(s, [&sides](std::uint32_t a, std::uint32_t b, std::uint32_t f, std::uint32_t) {
+        sides.push_back({std::min(a, b), std::max(a, b), f, a < b});
+    });
     std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
         return x.low != y.low     ? x.low < y.low
                : x.high != y.high ? x.high < y.high

@@ -33,6 +33,9 @@ RepairReport repair(MeshSoup& soup, const RepairOptions& options) {
     if (options.remove_duplicates) {
         add(remove_duplicate_faces(soup));
     }
+    if (options.merge && options.stitch) {
+        add(stitch_borders(soup, options.stitch_options, options.tolerance));
+    }
     if (options.orient) {
         add(orient_faces(soup));
     }

@@ -4,6 +4,7 @@
 #include "soup_edit.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "meshedit/core/number_text.h"
@@ -47,6 +48,36 @@ void renumber(std::vector<T>& values, const std::vector<std::uint32_t>& new_inde
 }
 
 }  // namespace
+
+// `fraction` of the box's diagonal without overflow: scaled by the largest extent first, and
+// clamped to the largest double when the product is past it (a distance larger than the
+// mesh, which merges everything within reach).
+double fraction_of_diagonal(const BoundingBox& box, double fraction) {
+    if (box.is_empty() || fraction == 0.0) {
+        return 0.0;
+    }
+    const Vec3 extent = box.max * 0.5 - box.min * 0.5;  // half, so it cannot overflow
+    const double largest = std::max({extent.x, extent.y, extent.z});
+    if (largest == 0.0) {
+        return 0.0;
+    }
+    const double distance = fraction * largest * (2.0 * norm(extent / largest));
+    return std::min(distance, std::numeric_limits<double>::max());
+}
+
+double merge_distance(const PolygonSoup& soup, const MergeTolerance& tolerance) {
+    if (!tolerance.relative) {
+        return tolerance.value;
+    }
+    const std::vector<bool> used = used_vertices(soup);
+    BoundingBox box;
+    for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+        if (used[v]) {
+            box.add(soup.positions[v]);
+        }
+    }
+    return fraction_of_diagonal(box, tolerance.value);
+}
 
 std::vector<bool> used_vertices(const PolygonSoup& soup) {
     std::vector<bool> used(soup.positions.size(), false);

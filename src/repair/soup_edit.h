@@ -16,6 +16,30 @@ namespace meshedit::repair_detail {
 /// A vertex that renumber_vertices() removes.
 inline constexpr std::uint32_t kGone = UINT32_MAX;
 
+/// `fraction` of the box's diagonal, clamped to the largest double (no overflow).
+double fraction_of_diagonal(const BoundingBox& box, double fraction);
+
+/// The merge distance `tolerance` names for the vertices faces use.
+double merge_distance(const PolygonSoup& soup, const MergeTolerance& tolerance);
+
+/// Calls fn(a, b, face, corner) for each side of each face, from its corner `corner` (an
+/// index into soup.indices) at vertex a to the next corner's vertex b; sides whose ends are
+/// one vertex are skipped.
+template <class Fn>
+void for_each_side(const PolygonSoup& soup, Fn&& fn) {
+    for (std::uint32_t f = 0; f < soup.n_faces(); ++f) {
+        const std::uint32_t begin = soup.face_offsets[f];
+        const std::uint32_t n = soup.face_offsets[f + 1] - begin;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t a = soup.indices[begin + i];
+            const std::uint32_t b = soup.indices[begin + (i + 1) % n];
+            if (a != b) {
+                fn(a, b, f, begin + i);
+            }
+        }
+    }
+}
+
 /// Which vertices some face uses.
 std::vector<bool> used_vertices(const PolygonSoup& soup);
 

@@ -2,8 +2,9 @@
 /// \file
 /// Repairing a mesh as a file holds it (a MeshSoup, io.h), before build_mesh() makes it a
 /// halfedge mesh: merging vertices by distance (which also stitches the coincident boundary
-/// edges of an unwelded soup), removing degenerate and duplicate faces, orienting faces
-/// coherently, removing small components; and, on the built mesh, filling small holes.
+/// edges of an unwelded soup), removing degenerate and duplicate faces, stitching
+/// T-junctions, orienting faces coherently, removing small components; and, on the built
+/// mesh, filling small holes.
 ///
 /// Each step returns what it changed (RepairResult: a count, the first few indices as they
 /// were before the step, and one sentence for the user) and keeps every attribute of the soup
@@ -91,6 +92,33 @@ RepairResult remove_degenerate_faces(MeshSoup& soup);
 /// the first is kept.
 RepairResult remove_duplicate_faces(MeshSoup& soup);
 
+/// How stitch_borders() finds T-junctions.
+struct StitchOptions {
+    /// A boundary vertex goes into a boundary edge when it is at most `ratio` times the edge's
+    /// length off it (0 < ratio < 0.5; relative to the edge, as the bulge of a curve between
+    /// two tessellations grows with the edge), at most a quarter of its distance from the
+    /// nearer end (a 14° turn) and farther than the merge distance from either end.
+    double ratio = 0.05;
+    /// Rounds of splitting and merging at most (each joins the pieces the last one made).
+    std::size_t max_rounds = 8;
+};
+
+/// Stitches T-junctions, the cracks between patches tessellated apart (a CAD export: the
+/// vertices of one side lie on the other side's edges, so the merge finds no partner): each
+/// boundary vertex lying on a boundary edge that runs against its own border (the other side
+/// of the crack) becomes a corner of that edge's face. A triangle split on one side becomes a
+/// fan from its third corner, another face a polygon with the new corners; the new corners
+/// take texture coordinates and normals interpolated along the edge, the new faces their
+/// face's material and values, and a crease along the edge runs through the new vertices.
+/// Then merge_vertices() joins the vertices that now share edges (the merge kept them apart
+/// while their faces touched only at a point) and remove_degenerate_faces() and
+/// remove_duplicate_faces() remove what the joins flattened; repeated while a round finds a
+/// T-junction, at most options.max_rounds times. `count` is the vertices put into edges,
+/// `left` what the last merge kept apart. No vertex moves or is added.
+/// \throws std::invalid_argument for a ratio outside (0, 0.5).
+RepairResult stitch_borders(MeshSoup& soup, const StitchOptions& options = {},
+                            const MergeTolerance& tolerance = {});
+
 /// Turns faces over so that every edge shared by exactly two faces is used once in each
 /// direction: faces joined across such edges form a part, walked breadth-first; each part
 /// keeps the winding most of its faces have. A closed part (every edge shared by exactly two
@@ -158,6 +186,9 @@ struct RepairOptions {
     MergeTolerance tolerance;
     bool remove_degenerate = true;
     bool remove_duplicates = true;
+    /// stitch_borders() after the merge and the removals (when merging).
+    bool stitch = true;
+    StitchOptions stitch_options;
     bool orient = true;
     /// remove_small_components(), when either bound is set.
     ComponentBounds components;
@@ -176,8 +207,8 @@ struct RepairReport {
     bool changed() const;
 };
 
-/// Merge (relative 1e-6), degenerate and duplicate removal, orientation, then small
-/// components when bounded, as `options` says. Running it again on its result changes
+/// Merge (relative 1e-6), degenerate and duplicate removal, T-junction stitching, orientation, then
+/// small components when bounded, as `options` says. Running it again on its result changes
 /// nothing. \throws std::invalid_argument for a bad merge tolerance.
 RepairReport repair(MeshSoup& soup, const RepairOptions& options = {});
 
