@@ -49,7 +49,8 @@ def counts(err):
     # What repair did, from its one line per step.
     got = []
     for word, pat in (('merged', r'merged (\d+) vertices'), ('degenerate', r'removed (\d+) degenerate'),
-                      ('duplicate', r'removed (\d+) duplicate'), ('turned', r'turned over (\d+)'),
+                      ('duplicate', r'removed (\d+) duplicate'),
+                      ('stitched', r'stitched (\d+) boundary'), ('turned', r'turned over (\d+)'),
                       ('small', r'removed (\d+) components?'), ('filled', r'filled (\d+)')):
         m = re.search(pat, err)
         if m:

@@ -32,6 +32,15 @@ void check_count(const CLI::Option* option, std::int64_t value) {
     }
 }
 
+// A share of an edge's length, as stitch_borders() takes it: more than 0, less than 0.5.
+void check_ratio(const CLI::Option* option, double value) {
+    if (option->count() > 0 && !(value > 0.0 && value < 0.5)) {
+        throw UsageError("repair: " + option->get_name() +
+                         " must be more than 0 and less than 0.5 (of an edge's length), not " +
+                         option->as<std::string>());
+    }
+}
+
 }  // namespace
 
 Command add_repair(CLI::App& meshedit) {
@@ -41,6 +50,8 @@ Command add_repair(CLI::App& meshedit) {
         double relative = MergeTolerance{}.value;
         bool no_merge = false;
         bool no_orient = false;
+        bool no_stitch = false;
+        double stitch_ratio = StitchOptions{}.ratio;
         std::int64_t min_faces = 0;
         std::int64_t fill_holes = 0;
         bool fair = false;
@@ -49,7 +60,8 @@ Command add_repair(CLI::App& meshedit) {
     };
     auto s = std::make_shared<Settings>();
     CLI::App* app = meshedit.add_subcommand(
-        "repair", "merge, clean and orient a mesh as read, then write it (small holes filled)");
+        "repair",
+        "merge, clean, stitch and orient a mesh as read, then write it (small holes filled)");
     app->add_option("IN", s->in, "the input mesh file")->required();
     app->add_option("OUT", s->out, "the output file")->required();
     add_strict_option(*app);
@@ -64,6 +76,16 @@ Command add_repair(CLI::App& meshedit) {
     distance->excludes(relative);
     auto* no_merge = app->add_flag("--no-merge", s->no_merge, "merge no vertices");
     no_merge->excludes(distance)->excludes(relative);
+    auto* no_stitch = app->add_flag("--no-stitch", s->no_stitch,
+                                    "leave T-junctions (a boundary vertex on another part's "
+                                    "boundary edge) as they are");
+    no_stitch->excludes(no_merge);
+    auto* stitch_ratio =
+        app->add_option("--stitch-ratio", s->stitch_ratio,
+                        "stitch a boundary vertex into a boundary edge at most R times the "
+                        "edge's length off it (default 0.05, less than 0.5)")
+            ->type_name("R");
+    stitch_ratio->excludes(no_stitch)->excludes(no_merge);
     app->add_flag("--no-orient", s->no_orient, "leave the faces' winding as it is");
     auto* min_faces =
         app->add_option("--min-component-faces", s->min_faces,
@@ -85,10 +107,13 @@ Command add_repair(CLI::App& meshedit) {
         ") and repairs it before it becomes a halfedge mesh: merges\n"
         "vertices closer than the merge distance (which stitches an unwelded soup's coincident\n"
         "edges), removes degenerate faces (fewer than 3 distinct corners, or zero area) and\n"
-        "duplicate faces, and turns faces over so that neighbours agree and closed parts face\n"
-        "outward. With --min-component-faces it removes small floating parts, with --fill-holes\n"
-        "it fills small holes of the built mesh. Each change is reported on stderr, one line a\n"
-        "step (\"meshedit: IN: merged 12 vertices …\"); OUT is written as convert writes it.\n"
+        "duplicate faces, stitches T-junctions (a boundary vertex lying on another part's\n"
+        "boundary edge, as between patches a CAD exporter tessellated apart, goes into that\n"
+        "edge's face; then the merge joins them), and turns faces over so that neighbours\n"
+        "agree and closed parts face outward. With --min-component-faces it removes small\n"
+        "floating parts, with --fill-holes it fills small holes of the built mesh. Each change\n"
+        "is reported on stderr, one line a step (\"meshedit: IN: merged 12 vertices …\"); OUT\n"
+        "is written as convert writes it.\n"
         "Texture coordinates, normals, materials and other values stay with their corners,\n"
         "faces and vertices. Repairing OUT again changes nothing.\n"
         "\n"
@@ -100,8 +125,9 @@ Command add_repair(CLI::App& meshedit) {
         "\n"
         "Exit status: 0 ok, 1 a repair that would leave no face, 2 bad usage, bad input or an\n"
         "unwritable output.");
-    return {app, [s, distance, relative, min_faces, fill_holes] {
+    return {app, [s, distance, relative, min_faces, fill_holes, stitch_ratio] {
                 check_amount(distance, s->distance);
+                check_ratio(stitch_ratio, s->stitch_ratio);
                 check_amount(relative, s->relative);
                 check_count(min_faces, s->min_faces);
                 check_count(fill_holes, s->fill_holes);
@@ -116,6 +142,8 @@ Command add_repair(CLI::App& meshedit) {
                 options.merge = !s->no_merge;
                 options.tolerance = distance->count() > 0 ? MergeTolerance{s->distance, false}
                                                           : MergeTolerance{s->relative, true};
+                options.stitch = !s->no_stitch;
+                options.stitch_options.ratio = s->stitch_ratio;
                 options.orient = !s->no_orient;
                 options.components.min_faces = static_cast<std::size_t>(s->min_faces);
                 options.fill_holes = static_cast<std::size_t>(s->fill_holes);

@@ -143,6 +143,24 @@ StepResult run_merge_by_distance(Mesh& mesh, const Step& step, const RunOptions&
                    [&](MeshSoup& soup) { return one_step(merge_vertices(soup, tolerance)); });
 }
 
+// stitch:R, R the farthest a vertex may be off an edge, as a share of its length.
+OpStatus check_stitch(const Mesh& mesh, const Step& step) {
+    const double r = step.amounts[0];
+    if (!(r > 0.0 && r < 0.5)) {
+        return OpStatus::composed(
+            "cannot stitch: the ratio must be more than 0 and less than 0.5 of an edge's "
+            "length, not " +
+            number_text(r));
+    }
+    return check_mesh(mesh, "stitch");
+}
+StepResult run_stitch(Mesh& mesh, const Step& step, const RunOptions&) {
+    StitchOptions options;
+    options.ratio = step.amounts[0];
+    return on_soup(mesh, step,
+                   [&](MeshSoup& soup) { return one_step(stitch_borders(soup, options)); });
+}
+
 OpStatus check_remove_degenerate(const Mesh& mesh, const Step&) {
     return check_mesh(mesh, "remove degenerate faces");
 }
@@ -167,6 +185,7 @@ StepResult run_orient(Mesh& mesh, const Step& step, const RunOptions&) {
         options.tolerance = {0.0, false};
         options.remove_degenerate = false;
         options.remove_duplicates = false;
+        options.stitch = false;
         return repair(soup, options);
     });
 }

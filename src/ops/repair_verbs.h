@@ -1,6 +1,6 @@
 #pragma once
 // Private to meshedit_ops: the functions of the repair verbs (repair, merge_by_distance,
-// remove_degenerate, orient, remove_small, fill_holes, fill_holes_fair), whose rows are in
+// stitch, remove_degenerate, orient, remove_small, fill_holes, fill_holes_fair), whose rows are in
 // verbs.cpp's table.
 
 #include "meshedit/ops/ops.h"
@@ -11,6 +11,8 @@ OpStatus check_repair(const Mesh& mesh, const Step& step);
 StepResult run_repair(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_merge_by_distance(const Mesh& mesh, const Step& step);
 StepResult run_merge_by_distance(Mesh& mesh, const Step& step, const RunOptions& options);
+OpStatus check_stitch(const Mesh& mesh, const Step& step);
+StepResult run_stitch(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_remove_degenerate(const Mesh& mesh, const Step& step);
 StepResult run_remove_degenerate(Mesh& mesh, const Step& step, const RunOptions& options);
 OpStatus check_orient(const Mesh& mesh, const Step& step);

@@ -665,13 +665,20 @@ constexpr std::array kVerbs{
          false, kChangesTopology},
     Verb{"repair", kWholeMesh, 0, 0, kNoDefaults, "repair",
          "`meshedit repair`'s safe sequence: merge vertices within 1e-6 of the bounding-box "
-         "diagonal, remove degenerate and duplicate faces, orient faces (closed parts outward)",
-         "repair the mesh (merge, clean, orient)", check_repair, run_repair},
+         "diagonal, remove degenerate and duplicate faces, stitch T-junctions (as `stitch`), "
+         "orient faces (closed parts outward)",
+         "repair the mesh (merge, clean, stitch, orient)", check_repair, run_repair},
     Verb{"merge_by_distance", kWholeMesh, 2, 0, {1e-6, 0.0},
          "merge_by_distance, merge_by_distance:T, merge_by_distance:T,A",
          "merges vertices closer than T times the bounding-box diagonal (default 1e-6; with "
          "A = 1, T is a distance), stitching coincident boundary edges",
          "merge vertices by distance", check_merge_by_distance, run_merge_by_distance},
+    Verb{"stitch", kWholeMesh, 1, 0, {0.05}, "stitch, stitch:R",
+         "puts each boundary vertex that lies on another part's boundary edge (a T-junction: "
+         "at most R of the edge's length off it, default 0.05) into that edge's face, then "
+         "merges the vertices that now share edges: closes the cracks between patches "
+         "tessellated apart",
+         "stitch T-junctions", check_stitch, run_stitch},
     Verb{"remove_degenerate", kWholeMesh, 0, 0, kNoDefaults, "remove_degenerate",
          "removes faces of zero area or a repeated corner, and duplicate faces",
          "remove degenerate and duplicate faces", check_remove_degenerate, run_remove_degenerate},

@@ -90,7 +90,7 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
         "select_creases, select_valence, select_degree, crease, crease_by_angle, move, "
         "loop, loop_step, cc_step, catmull_clark, linear, simplify, remesh, smooth, smooth_cotan, "
         "taubin, smooth_implicit, smooth_region, fair, repair, merge_by_distance, "
-        "remove_degenerate, orient, "
+        "stitch, remove_degenerate, orient, "
         "remove_small, fill_holes, fill_holes_fair, triangulate, flip_orientation or compact)");
     EXPECT_EQ(syntax_error("flip:0"),
               "bad op 'flip:0': expected flip:A-B with A-B (an edge by its two vertex indices)");

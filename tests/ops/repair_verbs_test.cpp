@@ -12,6 +12,7 @@
 #include "meshedit/core/attributes.h"
 #include "meshedit/core/shapes.h"
 #include "meshedit/core/smoothing.h"
+#include "meshedit/core/topology.h"
 #include "meshedit/io/io.h"
 #include "meshedit/ops/ops.h"
 #include "meshedit/repair/repair.h"
@@ -192,11 +193,30 @@ TEST(RepairVerbs, RepairTwiceIsRepairOnce) {
     EXPECT_EQ(second.message, "nothing to repair");
     EXPECT_FALSE(second.topology);
     EXPECT_TRUE(test::identical(mesh, once));
-    for (const char* step :
-         {"merge_by_distance", "remove_degenerate", "orient", "remove_small:2", "fill_holes:10"}) {
+    for (const char* step : {"merge_by_distance", "stitch", "remove_degenerate", "orient",
+                             "remove_small:2", "fill_holes:10"}) {
         run_step(mesh, parse_step(step));
         EXPECT_TRUE(test::identical(mesh, once)) << step;
     }
+}
+
+TEST(RepairVerbs, StitchClosesACrackBetweenTwoTessellations) {
+    // The lower triangle's top side runs from (2,0) to (0,0); the upper part's two triangles
+    // meet at (1,0) on it, with their own corners at its ends (repair/stitch_test.cpp).
+    Mesh mesh = test::mesh_from_faces(
+        {{0, 0, 0}, {2, 0, 0}, {1, -1, 0}, {0, 0, 0}, {2, 0, 0}, {1, 0, 0}, {1, 1, 0}},
+        {{0, 2, 1}, {3, 5, 6}, {5, 4, 6}});
+    EXPECT_EQ(count_boundary_loops(mesh), 2u);
+    const StepResult result = run_step(mesh, parse_step("stitch"));
+    EXPECT_VALID(mesh);
+    EXPECT_TRUE(result.topology);
+    EXPECT_EQ(result.message.rfind("stitched 1 boundary vertex", 0), 0u) << result.message;
+    EXPECT_EQ(mesh.n_vertices(), 5u);
+    EXPECT_EQ(mesh.n_faces(), 4u);
+    EXPECT_EQ(count_boundary_loops(mesh), 1u);
+    const Mesh once = mesh;
+    EXPECT_EQ(run_step(mesh, parse_step("stitch")).message, "nothing to repair");
+    EXPECT_TRUE(test::identical(mesh, once));
 }
 
 TEST(RepairVerbs, RemoveSmallAndRemoveDegenerate) {
@@ -224,11 +244,13 @@ TEST(RepairVerbs, RefusalsLeaveTheMeshBitForBit) {
     EXPECT_NE(refusal(mesh, "remove_small:0").find("whole number"), std::string::npos);
     EXPECT_NE(refusal(mesh, "remove_small:1.5").find("whole number"), std::string::npos);
     EXPECT_NE(refusal(mesh, "fill_holes:2").find("whole number from 3"), std::string::npos);
+    EXPECT_NE(refusal(mesh, "stitch:0").find("more than 0 and less than 0.5"), std::string::npos);
+    EXPECT_NE(refusal(mesh, "stitch:0.5").find("more than 0 and less than 0.5"), std::string::npos);
     // A tolerance larger than the mesh would merge every face away.
     EXPECT_NE(refusal(mesh, "merge_by_distance:2").find("no face of 12 would be left"),
               std::string::npos);
     Mesh empty;
-    for (const char* step : {"repair", "merge_by_distance", "remove_degenerate", "orient",
+    for (const char* step : {"repair", "merge_by_distance", "stitch", "remove_degenerate", "orient",
                              "remove_small:3", "fill_holes:3"}) {
         EXPECT_NE(refusal(empty, step).find("the mesh has no faces"), std::string::npos) << step;
     }

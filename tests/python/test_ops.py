@@ -175,3 +175,21 @@ def test_problems_are_the_clis_and_a_fair_fill_closes_the_hole(sample, cli):
     mesh.fill_holes_fair()
     assert mesh.problems() == []
     assert mesh.validate() is None
+
+
+def test_stitch_closes_a_crack_as_the_cli_does():
+    # The lower triangle's top side runs from (2,0) to (0,0); the upper two triangles meet at
+    # (1,0) on it with their own corners at its ends (tests/repair/stitch_test.cpp).
+    V = np.array([[0, 0, 0], [2, 0, 0], [1, -1, 0], [0, 0, 0], [2, 0, 0], [1, 0, 0], [1, 1, 0]],
+                 dtype=float)
+    mesh = meshedit.Mesh.from_arrays(V, [[0, 2, 1], [3, 5, 6], [5, 4, 6]])
+    assert len(mesh.problems()) > 0
+    mesh.stitch()
+    assert mesh.validate() is None
+    assert len(mesh.V) == 5 and len(mesh.faces()) == 4
+    assert [p["kind"] for p in mesh.problems()] == ["hole"]  # the outline only
+    before = snapshot(mesh)
+    with pytest.raises(meshedit.Refused, match="less than 0.5 of an edge's length"):
+        mesh.stitch(ratio=0.5)
+    after = snapshot(mesh)
+    assert np.array_equal(before[0], after[0]) and before[1] == after[1]

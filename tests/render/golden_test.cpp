@@ -268,6 +268,16 @@ const std::vector<GoldenCase>& golden_cases() {
         {"shark_fill_fair",
          "demo:mech-holes-shark",
          {"--ops", "fill_holes_fair", "--flat", "--wireframe"}},
+        // assimp's 2CylinderEngine, whose exporter tessellated each surface patch apart:
+        // merged by distance, the cracks between patches stay open (red borders all over the
+        // fins, 894 loops); repaired, the T-junction stitch closes most of them (393 loops,
+        // the rest farther apart than the tolerances; docs/repair.md).
+        {"engine_merged",
+         "assimp:glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+         {"--ops", "merge_by_distance,remove_degenerate"}},
+        {"engine_stitched",
+         "assimp:glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+         {"--ops", "repair"}},
         // The Problems panel's marks (--problems), each kind in its colour through the
         // surface: CGAL's cube-shuffled, whose disagreeing faces the loader cut apart
         // (magenta dots where it cut), leaving holes (yellow loops) and small parts (brown);

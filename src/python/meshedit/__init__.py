@@ -56,6 +56,7 @@ AMOUNT_NAMES = {
     "inset_region": ("thickness",),
     "simplify_region": ("ratio",),  # a share of the region's faces, below 1
     "merge_by_distance": ("tolerance", "absolute"),  # absolute=1: a distance, not a share
+    "stitch": ("ratio",),  # a share of each edge's length
     "remove_small": ("faces",),
     "fill_holes": ("max_edges",),
 }
