@@ -240,6 +240,29 @@ StepResult run_fill_holes(Mesh& mesh, const Step& step, const RunOptions&) {
     return filled_step(filled);
 }
 
+// fill_fair:A-B: the one hole that boundary edge A-B borders, as fill_holes_fair fills each;
+// the rest of the mesh is not read (fill_hole_fair(), repair.h).
+OpStatus check_fill_fair(const Mesh& mesh, const Step& step) {
+    if (!mesh.is_boundary(named_edge(mesh, step))) {
+        return OpStatus::refused("cannot fill: the edge is not on a hole (pick a boundary edge)");
+    }
+    return check_mesh(mesh, "fill the hole");
+}
+StepResult run_fill_fair(Mesh& mesh, const Step& step, const RunOptions&) {
+    const Edge e = named_edge(mesh, step);
+    const Halfedge h =
+        mesh.is_boundary(mesh.halfedge(e, 0)) ? mesh.halfedge(e, 0) : mesh.halfedge(e, 1);
+    const RepairResult filled = fill_hole_fair(mesh, h, FairFillOptions{});
+    if (filled.count == 0) {
+        // Decided before the first change (repair.h): the mesh is as it was.
+        throw OpError(step.text + " refused: " + filled.sentence, true);
+    }
+    StepResult result;
+    result.topology = true;
+    result.message = filled.sentence;
+    return result;
+}
+
 StepResult run_fill_holes_fair(Mesh& mesh, const Step& step, const RunOptions&) {
     FairFillOptions options;
     options.max_edges = static_cast<std::size_t>(step.amounts[0]);

@@ -1,7 +1,7 @@
 #pragma once
 // Private to meshedit_ops: the functions of the repair verbs (repair, merge_by_distance,
-// stitch, remove_degenerate, orient, remove_small, fill_holes, fill_holes_fair), whose rows are in
-// verbs.cpp's table.
+// stitch, remove_degenerate, orient, remove_small, fill_holes, fill_holes_fair, fill_fair), whose
+// rows are in verbs.cpp's table.
 
 #include "meshedit/ops/ops.h"
 
@@ -22,5 +22,7 @@ StepResult run_remove_small(Mesh& mesh, const Step& step, const RunOptions& opti
 OpStatus check_fill_holes(const Mesh& mesh, const Step& step);
 StepResult run_fill_holes(Mesh& mesh, const Step& step, const RunOptions& options);
 StepResult run_fill_holes_fair(Mesh& mesh, const Step& step, const RunOptions& options);
+OpStatus check_fill_fair(const Mesh& mesh, const Step& step);
+StepResult run_fill_fair(Mesh& mesh, const Step& step, const RunOptions& options);
 
 }  // namespace meshedit::ops

@@ -696,6 +696,12 @@ constexpr std::array kVerbs{
          "fills every hole (or those of at most K edges) with triangles as long as the edges "
          "around it, faired so the patch continues the surface (Liepa 2003)",
          "fill holes, refined and faired", check_fill_holes, run_fill_holes_fair},
+    Verb{"fill_fair", kEdgeArg, 0, 0, kNoDefaults, "fill_fair:A-B",
+         "fills the one hole that boundary edge A-B borders as fill_holes_fair fills each "
+         "(refined and faired), reading only that hole and the faces around it; a part it "
+         "closes keeps the orientation of the surface around the hole",
+         "fill the hole beside the selected boundary edge, refined and faired", check_fill_fair,
+         run_fill_fair},
     Verb{"triangulate", kWholeMesh | kFaceArg, 0, 0, kNoDefaults, "triangulate, triangulate:fI",
          "cuts every polygon (or face I) into triangles by diagonals inside it",
          "triangulate every polygon", check_triangulate, run_triangulate},

@@ -60,6 +60,7 @@ constexpr std::array kTable{
     Binding{key_of('M'), kShift, kMeshModes, edit("smooth"), "Shift+M", {}},
     Binding{key_of('R'), kAlt | kShift, kMeshModes, edit("repair"), "Alt+Shift+R", {}},
     Binding{key_of('F'), kCtrl, kMeshModes, edit("fill_holes_fair"), "Ctrl+F", {}},
+    Binding{key_of('F'), kCtrl | kShift, kMeshModes, edit("fill_fair"), "Ctrl+Shift+F", {}},
     Binding{key_of('M'), kAlt, kMeshModes, edit("fair"), "Alt+M", {}},
     Binding{key_of('M'), kCtrl | kShift, kMeshModes, edit("smooth_region"), "Ctrl+Shift+M", {}},
     // Selecting.

@@ -126,8 +126,8 @@ bool places_off_affine(std::string_view verb) {
            verb == "move" || verb == "simplify" || verb == "simplify_region" || verb == "remesh" ||
            verb == "loop_step" || verb == "smooth" || verb == "smooth_cotan" || verb == "taubin" ||
            verb == "smooth_implicit" || verb == "fair" || verb == "smooth_region" ||
-           verb == "fill_holes_fair" || verb == "cc_step" || verb == "loop_region" ||
-           verb == "remesh_region" || verb == "catmull_clark_region";
+           verb == "fill_holes_fair" || verb == "fill_fair" || verb == "cc_step" ||
+           verb == "loop_region" || verb == "remesh_region" || verb == "catmull_clark_region";
 }
 
 ElementRef random_live(const Mesh& mesh, Kind kind, std::mt19937& rng) {

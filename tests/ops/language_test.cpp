@@ -91,7 +91,8 @@ TEST(OpsLanguage, SyntaxErrorsNameTheItem) {
         "loop, loop_step, cc_step, catmull_clark, linear, simplify, remesh, smooth, smooth_cotan, "
         "taubin, smooth_implicit, smooth_region, fair, repair, merge_by_distance, "
         "stitch, remove_degenerate, orient, "
-        "remove_small, fill_holes, fill_holes_fair, triangulate, flip_orientation or compact)");
+        "remove_small, fill_holes, fill_holes_fair, fill_fair, triangulate, flip_orientation or "
+        "compact)");
     EXPECT_EQ(syntax_error("flip:0"),
               "bad op 'flip:0': expected flip:A-B with A-B (an edge by its two vertex indices)");
     EXPECT_EQ(syntax_error("flip:3-3"), "bad op 'flip:3-3': an edge needs two different vertices");

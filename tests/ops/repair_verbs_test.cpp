@@ -219,6 +219,37 @@ TEST(RepairVerbs, StitchClosesACrackBetweenTwoTessellations) {
     EXPECT_TRUE(test::identical(mesh, once));
 }
 
+TEST(RepairVerbs, FillFairFillsTheOneHoleItsEdgeBorders) {
+    // Two holes cut from a sphere, far apart; the edge names the first.
+    Mesh mesh = shapes::icosphere(2);
+    run_step(mesh, parse_step("make_boundary:f0"));
+    run_step(mesh, parse_step("make_boundary:f200"));
+    ASSERT_EQ(count_boundary_loops(mesh), 2u);
+    Halfedge border;
+    for (const Halfedge h : mesh.halfedges()) {
+        if (mesh.is_boundary(h) && !border.is_valid()) {
+            border = h;
+        }
+    }
+    const Vertex a = mesh.from_vertex(border), b = mesh.to_vertex(border);
+    const std::string step = "fill_fair:" + std::to_string(a.idx()) + "-" + std::to_string(b.idx());
+    Mesh by_library = mesh;
+    const RepairResult expected = fill_hole_fair(by_library, border, FairFillOptions{});
+    ASSERT_EQ(expected.count, 1u);
+
+    const StepResult result = run_step(mesh, parse_step(step));
+    EXPECT_VALID(mesh);
+    EXPECT_TRUE(result.topology);
+    EXPECT_EQ(result.message, expected.sentence);
+    EXPECT_EQ(count_boundary_loops(mesh), 1u);
+    EXPECT_TRUE(test::identical(mesh, by_library));
+
+    // An edge that is not on a hole: refused, the mesh as it was.
+    const Mesh before = mesh;
+    EXPECT_NE(refusal(mesh, step).find("not on a hole"), std::string::npos);
+    EXPECT_TRUE(test::identical(mesh, before));
+}
+
 TEST(RepairVerbs, RemoveSmallAndRemoveDegenerate) {
     Mesh mesh = test::two_copies(shapes::icosphere(1), {5, 0, 0});
     const std::size_t faces = mesh.n_faces();

@@ -29,6 +29,7 @@ def test_every_verb_is_a_method():
     (("bevel", (0, 1, 0.25), {}), "bevel:0-1:0.25"),
     (("bevel", (), {"v": 3, "t": 0.25}), "bevel:v3:0.25"),
     (("weld", ((0, 1), (5, 6)), {}), "weld:0-1+5-6"),
+    (("fill_fair", (1, 1372), {}), "fill_fair:1-1372"),
     (("move", (3, 1, 2, 3), {}), "move:v3:1,2,3"),
     (("loop", (), {}), "loop"),
     (("loop", (2,), {}), "loop:2"),

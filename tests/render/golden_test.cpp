@@ -268,6 +268,11 @@ const std::vector<GoldenCase>& golden_cases() {
         {"shark_fill_fair",
          "demo:mech-holes-shark",
          {"--ops", "fill_holes_fair", "--flat", "--wireframe"}},
+        // One hole filled by an edge of its border (fill_fair:1-1372, Ctrl+Shift+F): the
+        // 48-edge hole along the top; the other three stay open (red).
+        {"shark_fill_one_fair",
+         "demo:mech-holes-shark",
+         {"--ops", "fill_fair:1-1372", "--flat", "--wireframe"}},
         // assimp's 2CylinderEngine, whose exporter tessellated each surface patch apart:
         // merged by distance, the cracks between patches stay open (red borders all over the
         // fins, 894 loops); repaired, the T-junction stitch closes most of them (393 loops,

@@ -87,6 +87,7 @@ const std::vector<Expected>& expected_bindings() {
             {key_of('M'), kShift, kMeshModes, edit("smooth")},
             {key_of('R'), kAlt | kShift, kMeshModes, edit("repair")},
             {key_of('F'), kCtrl, kMeshModes, edit("fill_holes_fair")},
+            {key_of('F'), kCtrl | kShift, kMeshModes, edit("fill_fair")},
             {key_of('M'), kAlt, kMeshModes, edit("fair")},
             {key_of('M'), kCtrl | kShift, kMeshModes, edit("smooth_region")},
             {key_of('A'), kCtrl, kMeshModes, {Command::SelectAll}},
