@@ -137,10 +137,14 @@ std::vector<Insert> find_inserts(const PolygonSoup& s, const std::vector<Border>
         return inserts;
     }
     const double cell = std::max(total / static_cast<double>(borders.size()), merge);
-    const auto key = [cell](const Vec3& p) {
-        return CellKey{static_cast<std::int64_t>(std::floor(p.x / cell)),
-                       static_cast<std::int64_t>(std::floor(p.y / cell)),
-                       static_cast<std::int64_t>(std::floor(p.z / cell))};
+    // Clamped, so that a position far from the others (1e300 against edges of 1e-10) makes
+    // an extreme cell rather than an overflowing conversion.
+    const auto coordinate = [cell](double x) {
+        const double q = std::floor(x / cell);
+        return std::isnan(q) ? 0 : static_cast<std::int64_t>(std::clamp(q, -4e18, 4e18));
+    };
+    const auto key = [&coordinate](const Vec3& p) {
+        return CellKey{coordinate(p.x), coordinate(p.y), coordinate(p.z)};
     };
     std::vector<std::pair<CellKey, std::uint32_t>> grid;  // every border vertex, by i
     grid.reserve(nb);
@@ -212,8 +216,8 @@ std::vector<Insert> find_inserts(const PolygonSoup& s, const std::vector<Border>
         const Vec3 pa = s.positions[e.a];
         const Vec3 pb = s.positions[e.b];
         const double reach = ratio * norm(pb - pa);
-        if (!(reach > 0.0)) {
-            continue;
+        if (!(reach > 0.0 && std::isfinite(reach))) {
+            continue;  // no length, or past the largest double (nothing lies on it here)
         }
         const Vec3 pad{reach, reach, reach};
         const Vec3 low{std::min(pa.x, pb.x), std::min(pa.y, pb.y), std::min(pa.z, pb.z)};

@@ -143,6 +143,22 @@ TEST(RepairStitch, TwoVerticesOnOneSideMakeAFanAndACreaseFollowsThem) {
     EXPECT_EQ(count_boundary_loops(mesh), 1u);
 }
 
+TEST(RepairStitch, AFarAwayTriangleDoesNotOverflowTheGrid) {
+    // Edges of length 1 beside a triangle near the largest double (whose sides' lengths and
+    // the box's diagonal overflow): the cells are clamped. The merge distance is absolute: a
+    // share of that diagonal would take in the whole crack.
+    MeshSoup soup = crack(0.0);
+    const auto n = static_cast<std::uint32_t>(soup.soup.positions.size());
+    soup.soup.positions.insert(soup.soup.positions.end(),
+                               {{1e300, 0, 0}, {1e300, 1e299, 0}, {-1e300, 0, 1e300}});
+    soup.soup.add_face({n, n + 1, n + 2});
+    soup.corner_texcoords.insert(soup.corner_texcoords.end(), 3, Vec2{0, 0});
+    soup.face_materials.push_back(0);
+    const RepairResult r = stitch_borders(soup, {}, MergeTolerance{1e-9, false});
+    EXPECT_EQ(r.count, 1u);
+    EXPECT_TRUE(has(r.sentence, "then merged 2 vertices")) << r.sentence;
+}
+
 TEST(RepairStitch, RefusesARatioOutsideItsRange) {
     MeshSoup soup = crack(0.0);
     for (const double ratio : {0.0, -1.0, 0.5, std::nan("")}) {
