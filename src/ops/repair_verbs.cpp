@@ -240,19 +240,27 @@ StepResult run_fill_holes(Mesh& mesh, const Step& step, const RunOptions&) {
     return filled_step(filled);
 }
 
+Halfedge hole_side(const Mesh& mesh, Edge e) {
+    const Halfedge h = mesh.halfedge(e, 0);
+    return mesh.is_boundary(h) ? h : mesh.halfedge(e, 1);
+}
+OpStatus check_on_a_hole(const Mesh& mesh, Edge e) {
+    return mesh.is_boundary(e)
+               ? OpStatus::ok()
+               : OpStatus::refused("cannot fill: the edge is not on a hole (pick a boundary edge)");
+}
+
 // fill_fair:A-B: the one hole that boundary edge A-B borders, as fill_holes_fair fills each;
 // the rest of the mesh is not read (fill_hole_fair(), repair.h).
 OpStatus check_fill_fair(const Mesh& mesh, const Step& step) {
-    if (!mesh.is_boundary(named_edge(mesh, step))) {
-        return OpStatus::refused("cannot fill: the edge is not on a hole (pick a boundary edge)");
+    if (const OpStatus on_hole = check_on_a_hole(mesh, named_edge(mesh, step)); !on_hole) {
+        return on_hole;
     }
     return check_mesh(mesh, "fill the hole");
 }
 StepResult run_fill_fair(Mesh& mesh, const Step& step, const RunOptions&) {
-    const Edge e = named_edge(mesh, step);
-    const Halfedge h =
-        mesh.is_boundary(mesh.halfedge(e, 0)) ? mesh.halfedge(e, 0) : mesh.halfedge(e, 1);
-    const RepairResult filled = fill_hole_fair(mesh, h, FairFillOptions{});
+    const RepairResult filled =
+        fill_hole_fair(mesh, hole_side(mesh, named_edge(mesh, step)), FairFillOptions{});
     if (filled.count == 0) {
         // Decided before the first change (repair.h): the mesh is as it was.
         throw OpError(step.text + " refused: " + filled.sentence, true);

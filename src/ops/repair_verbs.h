@@ -22,6 +22,10 @@ StepResult run_remove_small(Mesh& mesh, const Step& step, const RunOptions& opti
 OpStatus check_fill_holes(const Mesh& mesh, const Step& step);
 StepResult run_fill_holes(Mesh& mesh, const Step& step, const RunOptions& options);
 StepResult run_fill_holes_fair(Mesh& mesh, const Step& step, const RunOptions& options);
+// The hole an edge names (fill, fill_fair): its boundary halfedge is the one without a face.
+Halfedge hole_side(const Mesh& mesh, Edge e);
+// "cannot fill: the edge is not on a hole …", or ok.
+OpStatus check_on_a_hole(const Mesh& mesh, Edge e);
 OpStatus check_fill_fair(const Mesh& mesh, const Step& step);
 StepResult run_fill_fair(Mesh& mesh, const Step& step, const RunOptions& options);
 

@@ -123,15 +123,10 @@ StepResult run_make_boundary(Mesh& mesh, const Step& step, const RunOptions&) {
                  "face " + idx(f.idx()) + " is now a hole");
 }
 
-// The hole is named by one of its edges; its boundary halfedge is the one without a face.
-Halfedge hole_side(const Mesh& mesh, Edge e) {
-    const Halfedge h = mesh.halfedge(e, 0);
-    return mesh.is_boundary(h) ? h : mesh.halfedge(e, 1);
-}
 OpStatus check_fill(const Mesh& mesh, const Step& step) {
     const Edge e = named_edge(mesh, step);
-    if (!mesh.is_boundary(e)) {
-        return OpStatus::refused("cannot fill: the edge is not on a hole (pick a boundary edge)");
+    if (const OpStatus on_hole = check_on_a_hole(mesh, e); !on_hole) {
+        return on_hole;
     }
     return is_fill_hole_ok(mesh, hole_side(mesh, e));
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "meshedit/core/number_text.h"
@@ -121,6 +122,54 @@ void keep_faces(MeshSoup& soup, const std::vector<bool>& keep) {
     }
     s.indices.resize(out);
     s.face_offsets = std::move(offsets);
+}
+
+void rebuild_faces(MeshSoup& soup, const std::vector<NewCorner>& corners,
+                   const std::vector<std::uint32_t>& offsets,
+                   const std::vector<std::uint32_t>& source) {
+    PolygonSoup& s = soup.soup;
+    const auto blend = [](const auto& values, const NewCorner& k) {
+        return values[k.c] * (1.0 - k.t) + values[k.d] * k.t;
+    };
+    const auto corner_values = [&](auto& values, auto finish) {
+        if (values.size() != s.indices.size()) {
+            return;  // absent (or ignored by the builder, as keep_if leaves them)
+        }
+        std::remove_reference_t<decltype(values)> out;
+        out.reserve(corners.size());
+        for (const NewCorner& k : corners) {
+            out.push_back(finish(blend(values, k)));
+        }
+        values = std::move(out);
+    };
+    const auto same = [](const auto& x) { return x; };
+    corner_values(soup.corner_texcoords, same);
+    corner_values(soup.corner_texcoords1, same);
+    corner_values(soup.corner_normals, [](const Vec3& n) {
+        const double length = norm(n);
+        return length > 0.0 ? n / length : n;
+    });
+    const auto face_values = [&](auto& values) {
+        if (values.size() != s.n_faces()) {
+            return;
+        }
+        std::remove_reference_t<decltype(values)> out;
+        out.reserve(source.size());
+        for (const std::uint32_t f : source) {
+            out.push_back(values[f]);
+        }
+        values = std::move(out);
+    };
+    face_values(soup.face_materials);
+    face_values(soup.face_colors);
+    for (UserProperty& property : soup.face_properties) {
+        face_values(property.values);
+    }
+    s.indices.resize(corners.size());
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        s.indices[i] = corners[i].vertex;
+    }
+    s.face_offsets = offsets;
 }
 
 void keep_corners(MeshSoup& soup, const std::vector<bool>& keep) {

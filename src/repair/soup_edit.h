@@ -47,6 +47,20 @@ std::vector<bool> used_vertices(const PolygonSoup& soup);
 /// property values; the others go with theirs.
 void keep_faces(MeshSoup& soup, const std::vector<bool>& keep);
 
+/// A corner of a rebuilt face (rebuild_faces()): vertex `vertex`, with the attributes of old
+/// corner `c` moved `t` of the way to those of old corner `d` (t = 0: c's as they are).
+struct NewCorner {
+    std::uint32_t vertex, c, d;
+    double t;
+};
+
+/// Replaces every face: new face k has the corners [offsets[k], offsets[k + 1]) of `corners`
+/// (texture coordinates blended, normals blended and normalised) and old face source[k]'s
+/// material, colour and property values. Vertices and creases stay as they are.
+void rebuild_faces(MeshSoup& soup, const std::vector<NewCorner>& corners,
+                   const std::vector<std::uint32_t>& offsets,
+                   const std::vector<std::uint32_t>& source);
+
 /// Keeps the corners with keep[c] (with their attributes); each face keeps its kept corners
 /// in order, and may be left with fewer than 3 (the caller removes it).
 void keep_corners(MeshSoup& soup, const std::vector<bool>& keep);

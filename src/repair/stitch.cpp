@@ -299,12 +299,6 @@ void drop_unsafe(const PolygonSoup& s, const std::vector<Side>& sides,
     }
 }
 
-// a moved t of the way to b.
-template <class T>
-T blend(const T& a, const T& b, double t) {
-    return a * (1.0 - t) + b * t;
-}
-
 // Rebuilds the faces with each vertex of `inserts` a corner of its side's face. A triangle
 // split on one side becomes a fan from its third corner; any other face keeps the new corners
 // as a polygon. \return how many vertices went in.
@@ -326,44 +320,15 @@ std::size_t insert_corners(MeshSoup& soup, const std::vector<Border>& borders,
         note_first(result, v);
     }
 
-    const bool has_uv = soup.corner_texcoords.size() == s.indices.size();
-    const bool has_uv1 = soup.corner_texcoords1.size() == s.indices.size();
-    const bool has_normals = soup.corner_normals.size() == s.indices.size();
-    const bool has_materials = soup.face_materials.size() == s.n_faces();
-    const bool has_colors = soup.face_colors.size() == s.n_faces();
-    MeshSoup out;
-    PolygonSoup& o = out.soup;
-    std::vector<std::vector<double>> face_values(soup.face_properties.size());
-    // Appends a corner: vertex v, with the attributes of corner c moved t towards corner d.
-    const auto corner = [&](std::uint32_t v, std::uint32_t c, std::uint32_t d, double t) {
-        o.indices.push_back(v);
-        if (has_uv) {
-            out.corner_texcoords.push_back(
-                blend(soup.corner_texcoords[c], soup.corner_texcoords[d], t));
-        }
-        if (has_uv1) {
-            out.corner_texcoords1.push_back(
-                blend(soup.corner_texcoords1[c], soup.corner_texcoords1[d], t));
-        }
-        if (has_normals) {
-            const Vec3 n = blend(soup.corner_normals[c], soup.corner_normals[d], t);
-            const double length = norm(n);
-            out.corner_normals.push_back(length > 0.0 ? n / length : n);
-        }
+    std::vector<NewCorner> corners;
+    std::vector<std::uint32_t> offsets{0}, source;
+    corners.reserve(s.indices.size() + 3 * at.size());
+    const auto corner = [&corners](std::uint32_t v, std::uint32_t c, std::uint32_t d, double t) {
+        corners.push_back({v, c, d, t});
     };
     const auto close_face = [&](std::size_t f) {
-        o.face_offsets.push_back(static_cast<std::uint32_t>(o.indices.size()));
-        if (has_materials) {
-            out.face_materials.push_back(soup.face_materials[f]);
-        }
-        if (has_colors) {
-            out.face_colors.push_back(soup.face_colors[f]);
-        }
-        for (std::size_t p = 0; p < face_values.size(); ++p) {
-            if (soup.face_properties[p].values.size() == s.n_faces()) {
-                face_values[p].push_back(soup.face_properties[p].values[f]);
-            }
-        }
+        offsets.push_back(static_cast<std::uint32_t>(corners.size()));
+        source.push_back(static_cast<std::uint32_t>(f));
     };
 
     std::size_t next = 0;  // into `at`
@@ -435,18 +400,7 @@ std::size_t insert_corners(MeshSoup& soup, const std::vector<Border>& borders,
         creases.push_back({from, b});
     }
 
-    s.indices = std::move(o.indices);
-    s.face_offsets = std::move(o.face_offsets);
-    soup.corner_texcoords = std::move(out.corner_texcoords);
-    soup.corner_texcoords1 = std::move(out.corner_texcoords1);
-    soup.corner_normals = std::move(out.corner_normals);
-    soup.face_materials = std::move(out.face_materials);
-    soup.face_colors = std::move(out.face_colors);
-    for (std::size_t p = 0; p < face_values.size(); ++p) {
-        if (!face_values[p].empty()) {
-            soup.face_properties[p].values = std::move(face_values[p]);
-        }
-    }
+    rebuild_faces(soup, corners, offsets, source);
     soup.creases = std::move(creases);
     return at.size();
 }
