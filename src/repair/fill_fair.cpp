@@ -3,17 +3,21 @@
 //
 //   1. cover the hole with triangles (hole_triangles.h: minimum weight, or ears when large),
 //   2. refine: poke each triangle whose centroid lies farther than its corners' edge lengths
-//      allow (σ: a corner's mean edge length, a new vertex's the mean of its triangle's), and
-//      flip the patch's edges toward Delaunay after each round, until no triangle is poked,
+//      allow (σ: a corner's mean edge length, a new vertex's the mean of its triangle's),
+//      flipping the poked triangle's sides toward Delaunay at once and the whole patch's
+//      after each round, until no triangle is poked; then dissolve the new vertices left
+//      with three edges (a poke no flip reached: fairing pulls such a vertex onto the side
+//      its clamped cotangent weights favour, a 179° cap),
 //   3. fair: the new vertices solve the bi-Laplacian with everything else fixed (fair(),
-//      smoothing.h), so the patch continues the surface around it.
+//      smoothing.h), so the patch continues the surface around it; then flip toward
+//      Delaunay once more, on the faired shape (its worst caps lean on the hole's border).
 //
-// Every change goes through the local operations (fill_hole, triangulate, flip, poke), so
-// attributes are carried by each operation's rule and the result is valid after each step.
+// Every change goes through the local operations (fill_hole, triangulate, flip, poke,
+// dissolve), so attributes are carried by each operation's rule and the result is valid after
+// each step.
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -37,9 +41,6 @@ constexpr std::size_t kMaxNewVertices = 1'000'000;
 // Holes of more sides are left with their reason: a border of 100,000 edges took 50 s and
 // 9.8 GB (measured); the fills here are for holes, not for closing a whole scan's border.
 constexpr std::size_t kMaxHoleEdges = 20'000;
-// Fairing more new vertices than this is skipped (and said): the sparse factorisation's
-// memory grows faster than the vertices (100,000 in a thin strip took 9.8 GB).
-constexpr std::size_t kMaxFaired = 60'000;
 
 std::vector<std::vector<Halfedge>> boundary_loops(const Mesh& mesh) {
     std::vector<std::vector<Halfedge>> loops;
@@ -67,12 +68,6 @@ double mean_edge_length(const Mesh& mesh, Vertex v) {
     return n > 0 ? sum / static_cast<double>(n) : 0.0;
 }
 
-// The angle at c of triangle a, b, c.
-double angle_at(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 u = a - c, v = b - c;
-    return std::atan2(norm(cross(u, v)), dot(u, v));
-}
-
 struct Filler {
     Mesh& mesh;
     const FairFillOptions& options;
@@ -83,9 +78,30 @@ struct Filler {
 
     bool in_patch(Face f, std::size_t first) const { return f.is_valid() && f.idx() >= first; }
 
-    // Flips the patch's inner edges whose opposite angles sum past π (Delaunay's test) until
-    // none does, or a bound of passes.
-    void relax(std::size_t first) {
+    // Whether h's edge lies inside the patch and is not Delaunay: the angles across it sum
+    // past π, i.e. cot α + cot β < 0 (no arc functions: this test is most of relax()'s time).
+    // Never when the two far corners touch (a pinched border).
+    bool wants_flip(Halfedge h, std::size_t first) const {
+        const Halfedge t = Mesh::twin(h);
+        if (!in_patch(mesh.face(h), first) || !in_patch(mesh.face(t), first)) {
+            return false;  // the hole's border stays
+        }
+        const Vec3 a = mesh.position(mesh.from_vertex(h));
+        const Vec3 b = mesh.position(mesh.to_vertex(h));
+        const Vec3 c = mesh.position(mesh.to_vertex(mesh.next(h)));
+        const Vec3 d = mesh.position(mesh.to_vertex(mesh.next(t)));
+        const double dot_c = dot(a - c, b - c), dot_d = dot(a - d, b - d);
+        const double sin_c = norm(cross(a - c, b - c)), sin_d = norm(cross(a - d, b - d));
+        // sin(α + β) · (the positive lengths): negative past π.
+        const double sum = dot_c * sin_d + dot_d * sin_c;
+        return sum < -1e-9 * (std::abs(dot_c) * sin_d + std::abs(dot_d) * sin_c) &&
+               norm(c - d) > touching;
+    }
+
+    // Flips the patch's inner edges that are not Delaunay until none is, or a bound of
+    // passes. \return the flips made.
+    std::size_t relax(std::size_t first) {
+        std::size_t total = 0;
         for (int pass = 0; pass < 64; ++pass) {
             std::size_t flipped = 0;
             for (std::size_t fi = first; fi < mesh.faces_size(); ++fi) {
@@ -98,31 +114,54 @@ struct Filler {
                     if (t.idx() < h.idx() && in_patch(mesh.face(t), first)) {
                         continue;  // seen from the other side
                     }
-                    if (!in_patch(mesh.face(t), first)) {
-                        continue;  // the hole's border stays
-                    }
-                    const Vec3 a = mesh.position(mesh.from_vertex(h));
-                    const Vec3 b = mesh.position(mesh.to_vertex(h));
-                    const Vec3 c = mesh.position(mesh.to_vertex(mesh.next(h)));
-                    const Vec3 d = mesh.position(mesh.to_vertex(mesh.next(t)));
-                    if (angle_at(a, b, c) + angle_at(a, b, d) <= std::numbers::pi + 1e-9 ||
-                        norm(c - d) <= touching) {
-                        continue;  // Delaunay already, or c and d touch (a pinched border)
-                    }
-                    if (flip(mesh, Mesh::edge(h))) {
+                    if (wants_flip(h, first) && flip(mesh, Mesh::edge(h))) {
                         ++flipped;
                         break;  // f changed: its halfedges are another loop now
                     }
                 }
             }
+            total += flipped;
             if (flipped == 0) {
-                return;
+                break;
+            }
+        }
+        return total;
+    }
+
+    // Flips the sides of the triangle poked into v toward Delaunay (Liepa's and CGAL's
+    // refinement do it at each poke: the patch's next pokes then see rounder triangles).
+    void relax_around(Vertex v, std::size_t first) {
+        std::vector<Halfedge> sides;  // collected first: a flip changes v's ring
+        for (const Halfedge h : mesh.halfedges(v)) {
+            sides.push_back(mesh.next(h));
+        }
+        for (const Halfedge h : sides) {
+            if (wants_flip(h, first)) {
+                flip(mesh, Mesh::edge(h));
             }
         }
     }
 
-    // Liepa's refinement. \return false when it stopped at kMaxNewVertices.
-    bool refine(std::size_t first, std::size_t& added) {
+    // Dissolves the new vertices (index from `first_vertex` on) that kept three edges, each
+    // into the triangle of its neighbours. \return how many.
+    std::size_t dissolve_threes(std::size_t first_vertex) {
+        std::size_t gone = 0;
+        for (std::size_t vi = first_vertex; vi < mesh.vertices_size(); ++vi) {
+            const Vertex v(static_cast<std::uint32_t>(vi));
+            if (!mesh.is_deleted(v) && !mesh.is_boundary(v) && mesh.valence(v) == 3 &&
+                dissolve_vertex(mesh, v)) {
+                ++gone;
+            }
+        }
+        return gone;
+    }
+
+    enum class Refined { done, paused, capped };
+
+    // Liepa's refinement of the faces from `first` on: capped when it stopped at
+    // kMaxNewVertices, paused when `added` reached `pause_at` first (to be faired while the
+    // solve is small enough, then refined on: refine() again).
+    Refined refine(std::size_t first, std::size_t& added, std::size_t pause_at) {
         for (int round = 0; round < 256; ++round) {
             std::size_t poked = 0;
             const std::size_t faces = mesh.faces_size();
@@ -144,23 +183,28 @@ struct Filler {
                 if (!split) {
                     continue;
                 }
+                if (added >= pause_at) {
+                    relax(first);
+                    return Refined::paused;
+                }
                 const OpResult<Vertex> v = poke(mesh, f);
                 if (!v) {
                     continue;
                 }
                 sigma[(*v).idx()] = sc;
+                relax_around(*v, first);
                 ++poked;
                 if (++added >= kMaxNewVertices) {
                     relax(first);
-                    return false;
+                    return Refined::capped;
                 }
             }
             if (poked == 0) {
-                return true;
+                return Refined::done;
             }
             relax(first);
         }
-        return true;
+        return Refined::done;
     }
 };
 
@@ -216,8 +260,10 @@ RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
     RepairResult result;
     Filler filler{mesh, options, {}, touching_distance(mesh)};
     const std::size_t first_face = mesh.faces_size();
+    const std::size_t first_vertex = mesh.vertices_size();
     std::size_t large = 0, triangles = 0, added = 0, filled_edges = 0;
     bool capped = false;
+    std::optional<std::size_t> paused;  // the first patch whose refinement waits for fairing
     const double touching = filler.touching;
     std::vector<std::string> why;  // of the holes left, in order
     for (const std::vector<Halfedge>& sides : loops) {
@@ -280,18 +326,26 @@ RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
             }
         }
         if (options.refine) {
-            capped = !filler.refine(patch, added) || capped;
+            // Past what the fairing solves for, the patches are faired part-refined and
+            // refined on after, so their new vertices still lie on a faired surface.
+            const Filler::Refined r =
+                filler.refine(patch, added, options.fair ? options.max_faired : kMaxNewVertices);
+            capped = capped || r == Filler::Refined::capped;
+            if (r == Filler::Refined::paused && !paused) {
+                paused = patch;
+            }
         }
         ++result.count;
         filled_edges += n;
         note_first(result, corner[0].idx());
     }
+    if (added > 0) {
+        added -= filler.dissolve_threes(first_vertex);
+        filler.relax(first_face);
+    }
     std::size_t faired = 0;
     std::string fair_note;
-    if (options.fair && added > kMaxFaired) {
-        fair_note = "not faired: " + std::to_string(added) + " new vertices, more than the " +
-                    std::to_string(kMaxFaired) + " this fairing solves for";
-    } else if (options.fair && added > 0) {
+    if (options.fair && added > 0) {
         std::vector<Face> region;
         for (std::size_t fi = first_face; fi < mesh.faces_size(); ++fi) {
             if (!mesh.is_deleted(Face(static_cast<std::uint32_t>(fi)))) {
@@ -304,9 +358,15 @@ RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
         }
         if (const OpStatus ok = check_fair(mesh, region, fo); ok) {
             faired = fair(mesh, region, fo).moved;
+            filler.relax(first_face);  // Delaunay on the faired shape
         } else {
             fair_note = "not faired: " + ok.text();
         }
+    }
+    const std::size_t faired_at = added;
+    if (paused) {  // refined on, on the faired surface
+        capped =
+            filler.refine(*paused, added, kMaxNewVertices) == Filler::Refined::capped || capped;
     }
     std::vector<Face> patches;
     for (std::size_t fi = first_face; fi < mesh.faces_size(); ++fi) {
@@ -331,6 +391,10 @@ RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
         }
         if (faired > 0) {
             text += ", faired";
+        }
+        if (faired > 0 && added > faired_at) {
+            text += " at " + count_of(faired_at, "new vertex", "new vertices") +
+                    " (the most one fairing solves for) and refined on after";
         }
         parts.push_back(text + "; a vertex of each" + listed(at));
     }

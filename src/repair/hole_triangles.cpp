@@ -23,12 +23,14 @@ Vec3 unit_or_zero(const Vec3& v) {
     return l > 0.0 ? v / l : Vec3{};
 }
 
-// Liepa's weight of a set of triangles: the largest dihedral angle first, then the area.
+// Liepa's weight of a set of triangles: the largest dihedral angle first, then the area. The
+// angle is kept as its negated cosine, `fold` (−1 flat, 1 folded back), which orders the same
+// without an arccosine in the O(n³) loop.
 struct Weight {
-    double angle = kInf;
+    double fold = kInf;
     double area = kInf;
     bool operator<(const Weight& o) const {
-        return angle < o.angle || (angle == o.angle && area < o.area);
+        return fold < o.fold || (fold == o.fold && area < o.area);
     }
 };
 
@@ -47,16 +49,19 @@ HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
         longest = std::max(longest, sqrnorm(p[(i + 1) % n] - p[i]));
     }
     // W[i * n + k]: the best triangulation of corners i..k (i < k) closed by the side or
-    // diagonal i–k; L the middle corner of its triangle on i–k.
+    // diagonal i–k, mirrored at W[k * n + i] so that the loop below reads both of its
+    // operands along a row (a column's stride missed the cache; 300 corners: 1.4 MB); L
+    // the middle corner of its triangle on i–k.
     std::vector<Weight> w(n * n);
     std::vector<std::uint32_t> lambda(n * n, 0);
     // The unit normal across i–k inside the patch: the outside face for a side, else the
     // sub-solution's triangle on i–k, kept so that the O(n³) loop below reads it instead of
-    // making it again for every middle corner.
+    // making it again for every middle corner; mirrored as W.
     std::vector<Vec3> normal(n * n);
     for (std::size_t i = 0; i + 1 < n; ++i) {
-        w[i * n + i + 1] = {0.0, 0.0};
-        normal[i * n + i + 1] = hole.outside_normals[i];  // across a side: the face outside
+        w[i * n + i + 1] = w[(i + 1) * n + i] = {-1.0, 0.0};  // no triangle, no angle
+        // across a side: the face outside
+        normal[i * n + i + 1] = normal[(i + 1) * n + i] = hole.outside_normals[i];
     }
     for (std::size_t len = 2; len < n; ++len) {
         for (std::size_t i = 0; i + len < n; ++i) {
@@ -66,19 +71,18 @@ HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
                 continue;  // i–k is an edge the mesh has already
             }
             Weight best;
-            double best_cos = -2.0;  // cos(best.angle), below any cosine while there is none
             std::uint32_t best_m = 0;
             for (std::size_t m = i + 1; m < k; ++m) {
                 const Weight& a = w[i * n + m];
-                const Weight& b = w[m * n + k];
-                if (a.angle == kInf || b.angle == kInf) {
+                const Weight& b = w[k * n + m];
+                if (a.fold == kInf || b.fold == kInf) {
                     continue;
                 }
                 // The largest angle only grows as triangles join: a candidate already past
-                // the best cannot win, so it is dropped before its arccosines (which are
-                // most of this loop's time). Equal angles go on, to compare areas.
-                double angle = std::max(a.angle, b.angle);
-                if (angle > best.angle) {
+                // the best cannot win, so it is dropped before its cross product. Equal
+                // angles go on, to compare areas.
+                double fold = std::max(a.fold, b.fold);
+                if (fold > best.fold) {
                     continue;
                 }
                 const Vec3 c = cross(p[m] - p[i], p[k] - p[i]);
@@ -87,43 +91,25 @@ HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
                     continue;  // a flat triangle
                 }
                 const Vec3 nt = c / (2.0 * area);
-                bool loses = false;
-                const auto join = [&](const Vec3& q) {
-                    const double d = dot(nt, q);
-                    // A cosine clearly below the best's is an angle clearly above it (the
-                    // margin covers the rounding of cos and acos).
-                    if (d < best_cos - 1e-9) {
-                        loses = true;
-                        return;
-                    }
-                    angle = std::max(angle, std::acos(std::clamp(d, -1.0, 1.0)));
-                    loses = angle > best.angle;
-                };
-                join(normal[i * n + m]);
-                if (!loses) {
-                    join(normal[m * n + k]);
+                fold = std::max({fold, -dot(nt, normal[i * n + m]), -dot(nt, normal[k * n + m])});
+                if (side) {
+                    fold = std::max(fold, -dot(nt, hole.outside_normals[n - 1]));
                 }
-                if (!loses && side) {
-                    join(hole.outside_normals[n - 1]);
-                }
-                if (loses) {
-                    continue;
-                }
-                const Weight total{angle, a.area + b.area + area};
+                const Weight total{fold, a.area + b.area + area};
                 if (total < best) {
                     best = total;
-                    best_cos = std::cos(best.angle);
                     best_m = static_cast<std::uint32_t>(m);
                 }
             }
-            w[i * n + k] = best;
+            w[i * n + k] = w[k * n + i] = best;
             lambda[i * n + k] = best_m;
-            if (best.angle != kInf) {
-                normal[i * n + k] = unit_or_zero(cross(p[best_m] - p[i], p[k] - p[i]));
+            if (best.fold != kInf) {
+                normal[i * n + k] = normal[k * n + i] =
+                    unit_or_zero(cross(p[best_m] - p[i], p[k] - p[i]));
             }
         }
     }
-    if (w[n - 1].angle == kInf) {
+    if (w[n - 1].fold == kInf) {
         out.why = "every triangulation has a flat triangle or an edge the mesh already has";
         return out;
     }

@@ -67,6 +67,10 @@ RepairedMesh repair_and_build(MeshSoup soup, const RepairOptions& options,
         fair.max_edges = options.fill_holes;
         RepairResult filled = options.fair_holes ? fill_holes_fair(out.loaded.mesh, fair)
                                                  : fill_holes(out.loaded.mesh, options.fill_holes);
+        // The refinement dissolves some of its new vertices: compact, so that the repaired
+        // mesh is numbered as it is written and read back (only the patches' elements, which
+        // come last, move).
+        out.loaded.mesh.garbage_collection();
         if (!filled.sentence.empty()) {
             out.report.lines.push_back(filled.sentence);
         }

@@ -95,7 +95,9 @@ OpStatus check_fair(const Mesh& mesh, std::span<const Face> region, const FairOp
 
 /// Bi-Laplacian fairing: the region's inner vertices (those whose every face is in the region
 /// and that are not on the mesh's boundary) solve L² x = 0 with every other vertex fixed, so
-/// the patch joins the fixed surface around it smoothly (two rings of it take part).
+/// the patch joins the fixed surface around it smoothly (two rings of it take part). L is the
+/// Laplace-Beltrami operator for cotangent weights (divided by each vertex's mixed Voronoi
+/// area, as CGAL's and pmp's fairing), the umbrella operator for uniform ones.
 /// \pre check_fair() returned ok. \post validate(mesh) passes.
 FairReport fair(Mesh& mesh, std::span<const Face> region, const FairOptions& options);
 

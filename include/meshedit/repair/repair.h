@@ -157,16 +157,21 @@ struct FairFillOptions {
     /// Liepa's density α: a triangle is split when its centroid is farther than 1/α times
     /// the wanted edge length from each corner; larger gives more, smaller triangles.
     double density = 1.4142135623730951;
+    /// The most new vertices one fairing solves for (its factorisation's time and memory
+    /// grow faster than they do): refinement pauses there, the patches are faired, and
+    /// refinement goes on after on the faired surface, unfaired.
+    std::size_t max_faired = 20'000;
 };
 
 /// Fills holes as Liepa (2003) does and CGAL's triangulate_refine_and_fair_hole: the
 /// triangulation whose largest dihedral angle is smallest (O(n³); holes of more than 300
 /// edges are covered by ear clipping, smallest inside angle first), refined until its edges
-/// match the lengths around the hole with Delaunay flips between rounds, then faired
-/// (fair(), smoothing.h) with every old vertex fixed. Made with the local operations
-/// (fill_hole, triangulate, flip, poke), so attributes are carried. A hole it cannot cover
-/// (every triangulation repeats an edge the mesh has, or is flat) is left, named in the
-/// sentence with its reason; nothing loops without a bound. `first` lists a vertex of each
+/// match the lengths around the hole with Delaunay flips at each split and between rounds,
+/// new vertices left with three edges dissolved, then faired (fair(), smoothing.h) with
+/// every old vertex fixed and flipped to Delaunay on the faired shape. Made with the local
+/// operations (fill_hole, triangulate, flip, poke, dissolve), so attributes are carried. A hole it
+/// cannot cover (every triangulation repeats an edge the mesh has, or is flat) is left, named in
+/// the sentence with its reason; nothing loops without a bound. `first` lists a vertex of each
 /// filled hole. \post validate(mesh) passes.
 RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options);
 
