@@ -167,35 +167,69 @@ double mixed_area(const Mesh& mesh, Vertex v) {
 // vertex, a degenerate triangle): the caller tries uniform weights.
 bool solve(const Mesh& mesh, const std::vector<Vertex>& order, const LocalIndex& local,
            std::size_t n_free, std::size_t n_rows, SmoothWeights weights, Eigen::MatrixX3d& x) {
-    std::vector<Eigen::Triplet<double>> entries;
-    Eigen::VectorXd inverse_d(static_cast<Eigen::Index>(n_rows));
+    // K's rows, compressed: row i's entries are [start[i], start[i + 1]) of col and val.
+    std::vector<std::size_t> start(n_rows + 1, 0);
+    std::vector<std::int64_t> col;
+    std::vector<double> val;
+    std::vector<double> inverse_d(n_rows);
     for (std::size_t i = 0; i < n_rows; ++i) {
         double sum = 0.0;
         for (const Halfedge h : mesh.halfedges(order[i])) {
             const double wij = laplacian::edge_weight(mesh, Mesh::edge(h), weights);
-            entries.emplace_back(i, local.at(mesh.to_vertex(h).idx()), wij);
+            col.push_back(local.at(mesh.to_vertex(h).idx()));
+            val.push_back(wij);
             sum += wij;
         }
-        entries.emplace_back(i, i, -sum);
+        col.push_back(static_cast<std::int64_t>(i));
+        val.push_back(-sum);
+        start[i + 1] = col.size();
         const double d = weights == SmoothWeights::Cotangent ? mixed_area(mesh, order[i]) : sum;
         // A vertex whose weights (or area) vanish adds nothing to its neighbours' rows.
-        inverse_d[static_cast<Eigen::Index>(i)] = sum > 0.0 && d > 0.0 ? 1.0 / d : 0.0;
+        inverse_d[i] = sum > 0.0 && d > 0.0 ? 1.0 / d : 0.0;
+    }
+    // Row i of K D⁻¹ K, for each free i, gathered in a sparse accumulator (the free vertices'
+    // neighbours are all rows of K): the free columns go to the matrix, the fixed ones times
+    // their positions to the right-hand side. (Eigen's sparse products did the same in three
+    // passes and two copies: a fifth of the fairing's time on a 300-edge hole.)
+    const std::size_t all = order.size();
+    std::vector<double> sum(all, 0.0);
+    std::vector<std::uint8_t> seen(all, 0);
+    std::vector<std::int64_t> touched;
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(static_cast<Eigen::Index>(n_free), 3);
+    for (std::size_t i = 0; i < n_free; ++i) {
+        for (std::size_t e = start[i]; e < start[i + 1]; ++e) {
+            const auto j = static_cast<std::size_t>(col[e]);
+            const double f = val[e] * inverse_d[j];
+            for (std::size_t e2 = start[j]; f != 0.0 && e2 < start[j + 1]; ++e2) {
+                const auto l = static_cast<std::size_t>(col[e2]);
+                if (seen[l] == 0) {
+                    seen[l] = 1;
+                    touched.push_back(col[e2]);
+                }
+                sum[l] += f * val[e2];
+            }
+        }
+        for (const std::int64_t l : touched) {
+            const auto at = static_cast<std::size_t>(l);
+            if (at < n_free) {
+                entries.emplace_back(static_cast<Eigen::Index>(i), l, sum[at]);
+            } else {
+                const Vec3& p = mesh.position(order[at]);
+                const auto row = static_cast<Eigen::Index>(i);
+                rhs(row, 0) -= sum[at] * p.x;
+                rhs(row, 1) -= sum[at] * p.y;
+                rhs(row, 2) -= sum[at] * p.z;
+            }
+            sum[at] = 0.0;
+            seen[at] = 0;
+        }
+        touched.clear();
     }
     const auto free = static_cast<Eigen::Index>(n_free);
-    const auto all = static_cast<Eigen::Index>(order.size());
-    Eigen::SparseMatrix<double> k(static_cast<Eigen::Index>(n_rows), all);
-    k.setFromTriplets(entries.begin(), entries.end());
-    const Eigen::SparseMatrix<double> free_rows =
-        k.topRows(free).leftCols(static_cast<Eigen::Index>(n_rows));
-    const Eigen::SparseMatrix<double> a = free_rows * inverse_d.asDiagonal() * k;
-    Eigen::MatrixX3d fixed(all - free, 3);
-    for (Eigen::Index i = free; i < all; ++i) {
-        const Vec3& p = mesh.position(order[static_cast<std::size_t>(i)]);
-        fixed.row(i - free) << p.x, p.y, p.z;
-    }
-    const Eigen::MatrixX3d rhs = -(a.rightCols(all - free) * fixed);
-    const Eigen::SparseMatrix<double> a_free = a.leftCols(free);
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(a_free);
+    Eigen::SparseMatrix<double> a_free(free, free);
+    a_free.setFromTriplets(entries.begin(), entries.end());
+    const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> solver(a_free);
     if (solver.info() != Eigen::Success) {
         return false;
     }
@@ -228,14 +262,16 @@ OpStatus check_fair(const Mesh& mesh, std::span<const Face> region, const FairOp
     // Only what the solve reads must be finite and, for cotangent weights, triangles: a
     // polygon or a NaN far from the region does not touch it.
     const Stencil st = stencil_of(mesh, inner);
-    std::vector<Vertex> sorted = st.order;
-    std::sort(sorted.begin(), sorted.end());
-    for (const Vertex v : sorted) {
+    const auto finite = [&](Vertex v) {
         const Vec3& p = mesh.position(v);
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-            return OpStatus::composed("cannot fair: vertex " + std::to_string(v.idx()) +
-                                      " has a position that is not a finite number");
-        }
+        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    };
+    if (!std::all_of(st.order.begin(), st.order.end(), finite)) {
+        std::vector<Vertex> sorted = st.order;  // to name the first, by index
+        std::sort(sorted.begin(), sorted.end());
+        const Vertex v = *std::find_if_not(sorted.begin(), sorted.end(), finite);
+        return OpStatus::composed("cannot fair: vertex " + std::to_string(v.idx()) +
+                                  " has a position that is not a finite number");
     }
     if (options.weights == SmoothWeights::Cotangent) {
         for (std::size_t i = 0; i < st.n_rows; ++i) {

@@ -1,7 +1,8 @@
 // fill_holes_fair() and fill_hole_fair() (repair.h): Liepa's hole filling (2003), as CGAL's
 // triangulate_refine_and_fair_hole and pmp's fill_hole + fair do it —
 //
-//   1. cover the hole with triangles (hole_triangles.h: minimum weight, or ears when large),
+//   1. cover the hole with triangles (hole_triangles.h: minimum weight, or ears when large,
+//      then flipped to Delaunay),
 //   2. refine: poke each triangle whose centroid lies farther than its corners' edge lengths
 //      allow (σ: a corner's mean edge length, a new vertex's the mean of its triangle's),
 //      flipping the poked triangle's sides toward Delaunay at once and the whole patch's
@@ -74,7 +75,8 @@ struct Filler {
     // By vertex index: the edge length wanted at a corner or new vertex of a patch (a map,
     // not an array over the mesh, so that a small hole costs its own size).
     std::unordered_map<std::uint32_t, double> sigma;
-    double touching = 0.0;  // corners closer than this are one point to repair()
+    double touching = 0.0;         // corners closer than this are one point to repair()
+    std::size_t first_vertex = 0;  // the new vertices' indices start here
 
     bool in_patch(Face f, std::size_t first) const { return f.is_valid() && f.idx() >= first; }
 
@@ -94,8 +96,14 @@ struct Filler {
         const double sin_c = norm(cross(a - c, b - c)), sin_d = norm(cross(a - d, b - d));
         // sin(α + β) · (the positive lengths): negative past π.
         const double sum = dot_c * sin_d + dot_d * sin_c;
+        // Nor when a new vertex would be left with three edges: fairing pulls such a vertex
+        // onto a side (see dissolve_threes()).
+        const auto keeps_four = [&](Vertex v) {
+            return v.idx() < first_vertex || mesh.valence(v) > 4;
+        };
         return sum < -1e-9 * (std::abs(dot_c) * sin_d + std::abs(dot_d) * sin_c) &&
-               norm(c - d) > touching;
+               norm(c - d) > touching && keeps_four(mesh.from_vertex(h)) &&
+               keeps_four(mesh.to_vertex(h));
     }
 
     // Flips the patch's inner edges that are not Delaunay until none is, or a bound of
@@ -258,9 +266,9 @@ std::optional<std::uint32_t> free_apex(const HoleLoop& hole) {
 RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
                         const std::vector<std::vector<Halfedge>>& loops, bool turn) {
     RepairResult result;
-    Filler filler{mesh, options, {}, touching_distance(mesh)};
     const std::size_t first_face = mesh.faces_size();
     const std::size_t first_vertex = mesh.vertices_size();
+    Filler filler{mesh, options, {}, touching_distance(mesh), first_vertex};
     std::size_t large = 0, triangles = 0, added = 0, filled_edges = 0;
     bool capped = false;
     std::optional<std::size_t> paused;  // the first patch whose refinement waits for fairing
@@ -325,6 +333,12 @@ RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
                 }
             }
         }
+        if (cover.clipped) {
+            // Ears flipped to Delaunay: the outline's constrained Delaunay triangulation in
+            // its plane (as CGAL's 2D path). Thin ears left as they are put the first new
+            // vertices beside the border: a 5° angle on a sphere's cap, 12° flipped.
+            filler.relax(patch);
+        }
         if (options.refine) {
             // Past what the fairing solves for, the patches are faired part-refined and
             // refined on after, so their new vertices still lie on a faired surface.
@@ -339,8 +353,8 @@ RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
         filled_edges += n;
         note_first(result, corner[0].idx());
     }
-    if (added > 0) {
-        added -= filler.dissolve_threes(first_vertex);
+    if (const std::size_t gone = added > 0 ? filler.dissolve_threes(first_vertex) : 0; gone > 0) {
+        added -= gone;
         filler.relax(first_face);
     }
     std::size_t faired = 0;

@@ -1,6 +1,5 @@
-// The triangles that cover a hole (hole_triangles.h): Liepa's minimum-weight triangulation
-// for holes of up to kMaxDynamicSides sides, ear clipping for larger ones, and the edge
-// flips that turn a fan into either.
+// The triangles that cover a hole (hole_triangles.h): Liepa's minimum-weight triangulation,
+// ear clipping, and the edge flips that turn a fan into either.
 
 #include "hole_triangles.h"
 
@@ -33,6 +32,73 @@ struct Weight {
         return fold < o.fold || (fold == o.fold && area < o.area);
     }
 };
+
+// A corner in the hole's mean plane.
+struct Plane2 {
+    double x = 0.0, y = 0.0;
+};
+
+double turn(const Plane2& a, const Plane2& b, const Plane2& c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// The corners in the plane through the origin with unit `normal`, turning counter-clockwise
+// when the loop turns about the normal; empty when the normal is zero.
+std::vector<Plane2> projected(const std::vector<Vec3>& p, const Vec3& normal) {
+    if (sqrnorm(normal) == 0.0) {
+        return {};
+    }
+    const Vec3 helper = std::abs(normal.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    const Vec3 u = unit_or_zero(cross(helper, normal));
+    const Vec3 v = cross(normal, u);
+    std::vector<Plane2> out(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        out[i] = {dot(p[i], u), dot(p[i], v)};
+    }
+    return out;
+}
+
+// Whether segments ab and cd cross or touch (collinear overlaps included).
+bool segments_meet(const Plane2& a, const Plane2& b, const Plane2& c, const Plane2& d) {
+    const double d1 = turn(c, d, a), d2 = turn(c, d, b), d3 = turn(a, b, c), d4 = turn(a, b, d);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
+        return true;
+    }
+    const auto on = [](const Plane2& p, const Plane2& q, const Plane2& r, double t) {
+        return t == 0.0 && std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) &&
+               std::min(p.y, q.y) <= r.y && r.y <= std::max(p.y, q.y);
+    };
+    return on(c, d, a, d1) || on(c, d, b, d2) || on(a, b, c, d3) || on(a, b, d, d4);
+}
+
+// Whether the closed outline has no two sides that meet but at their shared corner. O(n²).
+bool is_simple(const std::vector<Plane2>& q) {
+    const std::size_t n = q.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t k = i + 2; k < n; ++k) {
+            if (i == 0 && k == n - 1) {
+                continue;  // neighbours through corner 0
+            }
+            if (segments_meet(q[i], q[(i + 1) % n], q[k], q[(k + 1) % n])) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+// Whether no corner left on the outline (after b, through `next`, up to a) lies in or on
+// the triangle a, c, b (counter-clockwise), so that clipping it leaves a simple outline.
+bool empty_ear(const std::vector<Plane2>& q, std::uint32_t a, std::uint32_t c, std::uint32_t b,
+               const std::vector<std::uint32_t>& next) {
+    for (std::uint32_t x = next[b]; x != a; x = next[x]) {
+        if (turn(q[a], q[c], q[x]) >= 0.0 && turn(q[c], q[b], q[x]) >= 0.0 &&
+            turn(q[b], q[a], q[x]) >= 0.0) {
+            return false;
+        }
+    }
+    return true;
+}
 
 }  // namespace
 
@@ -72,23 +138,23 @@ HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
             }
             Weight best;
             std::uint32_t best_m = 0;
-            for (std::size_t m = i + 1; m < k; ++m) {
+            const auto consider = [&](std::size_t m) {
                 const Weight& a = w[i * n + m];
                 const Weight& b = w[k * n + m];
                 if (a.fold == kInf || b.fold == kInf) {
-                    continue;
+                    return;
                 }
                 // The largest angle only grows as triangles join: a candidate already past
                 // the best cannot win, so it is dropped before its cross product. Equal
                 // angles go on, to compare areas.
                 double fold = std::max(a.fold, b.fold);
                 if (fold > best.fold) {
-                    continue;
+                    return;
                 }
                 const Vec3 c = cross(p[m] - p[i], p[k] - p[i]);
                 const double area = 0.5 * norm(c);
                 if (area <= 1e-12 * longest) {
-                    continue;  // a flat triangle
+                    return;  // a flat triangle
                 }
                 const Vec3 nt = c / (2.0 * area);
                 fold = std::max({fold, -dot(nt, normal[i * n + m]), -dot(nt, normal[k * n + m])});
@@ -96,9 +162,21 @@ HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
                     fold = std::max(fold, -dot(nt, hole.outside_normals[n - 1]));
                 }
                 const Weight total{fold, a.area + b.area + area};
-                if (total < best) {
+                // Ties go to the smallest m, so the order tried does not change the result.
+                if (total < best || (!(best < total) && m < best_m)) {
                     best = total;
                     best_m = static_cast<std::uint32_t>(m);
+                }
+            };
+            // The middle corner that won for i..k−1 first: it is often near the best here,
+            // and a good bound early drops most of the others before their cross products.
+            const std::size_t hint = len > 2 ? lambda[i * n + k - 1] : 0;
+            if (hint > i && hint < k) {
+                consider(hint);
+            }
+            for (std::size_t m = i + 1; m < k; ++m) {
+                if (m != hint) {
+                    consider(m);
                 }
             }
             w[i * n + k] = w[k * n + i] = best;
@@ -129,7 +207,7 @@ HoleTriangles minimum_weight_triangles(const HoleLoop& hole) {
     return out;
 }
 
-HoleTriangles clipped_ears(const HoleLoop& hole) {
+HoleTriangles clipped_ears(const HoleLoop& hole, bool strict) {
     const std::size_t n = hole.points.size();
     HoleTriangles out;
     const auto& p = hole.points;
@@ -139,6 +217,15 @@ HoleTriangles clipped_ears(const HoleLoop& hole) {
         normal += cross(p[i], p[(i + 1) % n]);
     }
     normal = unit_or_zero(normal);
+    // Strict: the corners in the mean plane, and the outline there must be simple.
+    std::vector<Plane2> flat;
+    if (strict) {
+        flat = projected(p, normal);
+        if (flat.empty() || !is_simple(flat)) {
+            out.why = "its outline is not a simple polygon in its mean plane";
+            return out;
+        }
+    }
     std::vector<std::uint32_t> prev(n), next(n), version(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
         prev[i] = static_cast<std::uint32_t>((i + n - 1) % n);
@@ -168,9 +255,11 @@ HoleTriangles clipped_ears(const HoleLoop& hole) {
             continue;
         }
         const std::uint32_t a = prev[c], b = next[c];
-        const bool flat = norm(cross(p[c] - p[a], p[b] - p[a])) <=
+        const bool thin = norm(cross(p[c] - p[a], p[b] - p[a])) <=
                           1e-12 * std::max(sqrnorm(p[c] - p[a]), sqrnorm(p[b] - p[a]));
-        if (hole.forbidden(a, b) || made.count(ordered(a, b)) > 0 || flat) {
+        const bool not_an_ear =
+            strict && (angle >= std::numbers::pi || !empty_ear(flat, a, c, b, next));
+        if (hole.forbidden(a, b) || made.count(ordered(a, b)) > 0 || thin || not_an_ear) {
             blocked.emplace_back(angle, c, ver);  // may become an ear when a neighbour goes
             continue;
         }
@@ -200,12 +289,22 @@ HoleTriangles clipped_ears(const HoleLoop& hole) {
     }
     const std::uint32_t c = next[a], b = next[c];
     out.triangles.push_back({a, c, b});  // its sides are the loop's: sides or diagonals made
+    out.clipped = true;
     return out;
 }
 
 HoleTriangles hole_triangles(const HoleLoop& hole) {
-    return hole.points.size() <= kMaxDynamicSides ? minimum_weight_triangles(hole)
-                                                  : clipped_ears(hole);
+    const std::size_t n = hole.points.size();
+    if (n <= kMinEarSides) {
+        return minimum_weight_triangles(hole);
+    }
+    if (n <= kMaxStrictEarSides) {
+        HoleTriangles ears = clipped_ears(hole, true);
+        if (!ears.triangles.empty()) {
+            return ears;
+        }
+    }
+    return n <= kMaxDynamicSides ? minimum_weight_triangles(hole) : clipped_ears(hole, false);
 }
 
 std::vector<FanFlip> flips_from_fan(const std::vector<HoleTriangle>& triangles, std::size_t n,

@@ -56,10 +56,14 @@ double mean_edge_length(const Mesh& mesh, std::size_t first_vertex) {
     return n > 0 ? sum / static_cast<double>(n) : 0.0;
 }
 
-// The highest new vertex and the largest distance of a new vertex from the unit sphere.
+// The highest new vertex and the largest distance of a new vertex from the unit sphere (of
+// those left: the fill dissolves some).
 std::pair<double, double> top_and_error(const Mesh& mesh, std::size_t first_vertex) {
     double top = 0.0, worst = 0.0;
     for (std::size_t v = first_vertex; v < mesh.vertices_size(); ++v) {
+        if (mesh.is_deleted(Vertex(static_cast<std::uint32_t>(v)))) {
+            continue;
+        }
         const Vec3 p = mesh.position(Vertex(static_cast<std::uint32_t>(v)));
         top = std::max(top, p.z);
         worst = std::max(worst, std::abs(norm(p) - 1.0));
@@ -431,12 +435,50 @@ TEST(FillFair, PastTheFairingsLimitItFairsThenRefinesOn) {
     const auto [whole_top, whole_error] = top_and_error(whole, first_vertex);
     EXPECT_GT(top, 0.75);
     EXPECT_NEAR(top, whole_top, 0.02);
-    EXPECT_LT(error, 0.4);  // the centroids of the faired coarse triangles sit inside it
+    // As far from the sphere as fairing every vertex leaves it (0.227; 0.237 here: the
+    // centroids of the faired coarser triangles sit a little inside it).
+    EXPECT_LT(error, whole_error + 0.02);
     std::size_t live = 0;
     for (std::size_t v = first_vertex; v < paused.vertices_size(); ++v) {
         live += paused.is_deleted(Vertex(static_cast<std::uint32_t>(v))) ? 0 : 1;
     }
     EXPECT_GT(live, 1000u) << "refined on past the 500";
+}
+
+// A hole of 148 edges cut from a cylinder's wall over 240° of its turn: in its mean plane the
+// outline folds back over itself (the arcs turn past the plane's edge), so clipping ears there
+// would lay triangles over each other. The fill sees that (the outline is not simple in its
+// plane) and takes the minimum-weight cover instead: every new face turns outward as the wall
+// does, and only the cylinder's two ends stay open.
+TEST(FillFair, AHoleThatFoldsInItsPlaneIsNotClippedThere) {
+    Mesh mesh = without(shapes::cylinder(90, 30),
+                        [](const Vec3& c) { return c.x > -0.5 && std::abs(c.z) < 0.45; });
+    ASSERT_EQ(count_boundary_loops(mesh), 3u);
+    Halfedge border;
+    for (const Halfedge h : mesh.halfedges()) {
+        if (mesh.is_boundary(h) && std::abs(mesh.position(mesh.to_vertex(h)).z) < 0.9) {
+            border = h;
+        }
+    }
+    std::size_t sides = 0;
+    Halfedge h = border;
+    do {
+        ++sides;
+        h = mesh.next(h);
+    } while (h != border && sides < 1000);
+    ASSERT_EQ(sides, 148u);  // past the minimum-weight search's 100: ears are tried first
+    const std::size_t first_face = mesh.faces_size();
+    const RepairResult r = fill_hole_fair(mesh, border, {});
+    ASSERT_VALID(mesh);
+    EXPECT_EQ(r.count, 1u) << r.sentence;
+    EXPECT_EQ(count_boundary_loops(mesh), 2u);
+    for (std::size_t fi = first_face; fi < mesh.faces_size(); ++fi) {
+        const Face f(static_cast<std::uint32_t>(fi));
+        if (!mesh.is_deleted(f)) {
+            const Vec3 c = face_centroid(mesh, f);
+            EXPECT_GT(dot(face_normal(mesh, f), Vec3{c.x, c.y, 0.0}), 0.0) << fi;
+        }
+    }
 }
 
 }  // namespace

@@ -164,15 +164,17 @@ struct FairFillOptions {
 };
 
 /// Fills holes as Liepa (2003) does and CGAL's triangulate_refine_and_fair_hole: the
-/// triangulation whose largest dihedral angle is smallest (O(n³); holes of more than 300
-/// edges are covered by ear clipping, smallest inside angle first), refined until its edges
-/// match the lengths around the hole with Delaunay flips at each split and between rounds,
-/// new vertices left with three edges dissolved, then faired (fair(), smoothing.h) with
-/// every old vertex fixed and flipped to Delaunay on the faired shape. Made with the local
-/// operations (fill_hole, triangulate, flip, poke, dissolve), so attributes are carried. A hole it
-/// cannot cover (every triangulation repeats an edge the mesh has, or is flat) is left, named in
-/// the sentence with its reason; nothing loops without a bound. `first` lists a vertex of each
-/// filled hole. \post validate(mesh) passes.
+/// triangulation whose largest dihedral angle is smallest (O(n³), up to 100 edges; a larger
+/// hole whose outline is simple in its mean plane is covered by ears clipped there, smallest
+/// inside angle first, and flipped to Delaunay: its constrained Delaunay triangulation in that
+/// plane; one that folds there by the O(n³) search up to 300 edges, then by ears), refined
+/// until its edges match the lengths around the hole with Delaunay flips at each split and
+/// between rounds, new vertices left with three edges dissolved, then faired (fair(),
+/// smoothing.h) with every old vertex fixed and flipped to Delaunay on the faired shape. Made
+/// with the local operations (fill_hole, triangulate, flip, poke, dissolve), so attributes
+/// are carried. A hole it cannot cover (every triangulation repeats an edge the mesh has, or
+/// is flat) is left, named in the sentence with its reason; nothing loops without a bound.
+/// `first` lists a vertex of each filled hole. \post validate(mesh) passes.
 RepairResult fill_holes_fair(Mesh& mesh, const FairFillOptions& options);
 
 /// Fills the one hole whose border the boundary halfedge `h` lies on, as fill_holes_fair()
