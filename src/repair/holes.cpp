@@ -224,7 +224,7 @@ std::size_t turn_closed_parts_outward(Mesh& mesh, const std::vector<Face>& fille
     const std::vector<std::uint32_t> root = component_roots(mesh);
     struct Part {
         Vec3 origin;  // of the volume: the first filled face's first corner, as flip's tests
-        double volume = 0.0;
+        Enclosure inside;
         bool open = false;
         std::size_t faces = 0;
     };
@@ -259,15 +259,14 @@ std::size_t turn_closed_parts_outward(Mesh& mesh, const std::vector<Face>& fille
         const Halfedge h0 = mesh.halfedge(f);
         const Vec3 p0 = mesh.position(mesh.from_vertex(h0)) - part.origin;
         for (Halfedge h = h0; mesh.next(mesh.next(h)) != h0; h = mesh.next(h)) {
-            part.volume +=
-                dot(p0, cross(mesh.position(mesh.to_vertex(h)) - part.origin,
-                              mesh.position(mesh.to_vertex(mesh.next(h))) - part.origin));
+            part.inside.add(p0, mesh.position(mesh.to_vertex(h)) - part.origin,
+                            mesh.position(mesh.to_vertex(mesh.next(h))) - part.origin);
         }
     }
     std::vector<Halfedge> turn;  // the halfedges of the parts to turn over
     std::size_t parts = 0;
     for (const Part& part : touched) {
-        if (!part.open && part.volume < 0.0) {
+        if (!part.open && part.inside.faces_inward()) {
             ++parts;
             faces += part.faces;
         }
@@ -276,7 +275,7 @@ std::size_t turn_closed_parts_outward(Mesh& mesh, const std::vector<Face>& fille
         for (const Face f : mesh.faces()) {
             const std::int32_t k = part_of(f);
             if (k >= 0 && !touched[static_cast<std::size_t>(k)].open &&
-                touched[static_cast<std::size_t>(k)].volume < 0.0) {
+                touched[static_cast<std::size_t>(k)].inside.faces_inward()) {
                 for (const Halfedge h : mesh.halfedges(f)) {
                     turn.push_back(h);
                 }

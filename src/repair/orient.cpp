@@ -57,11 +57,11 @@ void link_faces(const PolygonSoup& s, std::vector<Link>& links, std::vector<bool
     }
 }
 
-// Six times the signed volume the faces enclose, each face taken turned over where `flip`
-// says, about `origin` (a corner of the part, for the digits).
-double signed_volume(const PolygonSoup& s, const std::vector<std::uint32_t>& faces,
-                     const std::vector<bool>& flip, const Vec3& origin) {
-    double volume = 0.0;
+// What the faces enclose (Enclosure), each face taken turned over where `flip` says, about
+// `origin` (a corner of the part, for the digits).
+Enclosure enclosure(const PolygonSoup& s, const std::vector<std::uint32_t>& faces,
+                    const std::vector<bool>& flip, const Vec3& origin) {
+    Enclosure out;
     for (const std::uint32_t f : faces) {
         const std::uint32_t begin = s.face_offsets[f];
         const std::uint32_t end = s.face_offsets[f + 1];
@@ -69,14 +69,17 @@ double signed_volume(const PolygonSoup& s, const std::vector<std::uint32_t>& fac
             continue;
         }
         const Vec3 p0 = s.positions[s.indices[begin]] - origin;
-        double face = 0.0;
         for (std::uint32_t c = begin + 1; c + 1 < end; ++c) {
-            face += dot(p0, cross(s.positions[s.indices[c]] - origin,
-                                  s.positions[s.indices[c + 1]] - origin));
+            const Vec3 p1 = s.positions[s.indices[c]] - origin;
+            const Vec3 p2 = s.positions[s.indices[c + 1]] - origin;
+            if (flip[f]) {
+                out.add(p0, p2, p1);
+            } else {
+                out.add(p0, p1, p2);
+            }
         }
-        volume += flip[f] ? -face : face;
     }
-    return volume;
+    return out;
 }
 
 }  // namespace
@@ -145,7 +148,7 @@ RepairResult orient_faces(MeshSoup& soup) {
             flip[f] = parity[f] != keep;
         }
         if (closed && part.size() > 1 &&
-            signed_volume(s, part, flip, s.positions[s.indices[s.face_offsets[seed]]]) < 0.0) {
+            enclosure(s, part, flip, s.positions[s.indices[s.face_offsets[seed]]]).faces_inward()) {
             ++outward_parts;
             for (const std::uint32_t f : part) {
                 flip[f] = !flip[f];

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "meshedit/core/normals.h"
+#include "soup_edit.h"
 
 namespace meshedit {
 namespace {
@@ -82,7 +83,8 @@ void degenerate_faces(const Mesh& mesh, Collector& out) {
     }
 }
 
-// Parts joined across edges: small ones, and closed ones that enclose a negative volume.
+// Parts joined across edges: small ones, and closed ones that enclose a negative volume (not a
+// flat one: a double-sided sheet has no inside, Enclosure).
 void parts(const Mesh& mesh, Collector& out, const ProblemOptions& options) {
     std::vector<std::int32_t> part(mesh.faces_size(), -1);
     std::vector<std::vector<Face>> members;
@@ -105,7 +107,7 @@ void parts(const Mesh& mesh, Collector& out, const ProblemOptions& options) {
     }
     for (const std::vector<Face>& faces : members) {
         bool closed = true;
-        double volume = 0.0;
+        repair_detail::Enclosure inside;
         const Vec3 origin = mesh.position(mesh.to_vertex(mesh.halfedge(faces[0])));
         for (const Face f : faces) {
             const Halfedge h0 = mesh.halfedge(f);
@@ -114,12 +116,12 @@ void parts(const Mesh& mesh, Collector& out, const ProblemOptions& options) {
                 closed = closed && !mesh.is_boundary(Mesh::twin(h));
             }
             for (Halfedge h = mesh.next(h0); mesh.next(h) != h0; h = mesh.next(h)) {
-                volume += dot(p0, cross(mesh.position(mesh.from_vertex(h)) - origin,
-                                        mesh.position(mesh.to_vertex(h)) - origin));
+                inside.add(p0, mesh.position(mesh.from_vertex(h)) - origin,
+                           mesh.position(mesh.to_vertex(h)) - origin);
             }
         }
         const ElementRef where = ElementRef::face(faces[0]);
-        if (closed && volume < 0.0) {
+        if (closed && inside.faces_inward()) {
             out.add(ProblemKind::InsideOut, where, faces.size(),
                     "closed part of " + plural(faces.size(), "face", "faces") + " at face " +
                         std::to_string(faces[0].idx()) + " faces inward (negative volume)");

@@ -19,6 +19,29 @@ inline constexpr std::uint32_t kGone = UINT32_MAX;
 /// `fraction` of the box's diagonal, clamped to the largest double (no overflow).
 double fraction_of_diagonal(const BoundingBox& box, double fraction);
 
+/// Whether a closed part has an inside and which way it faces, summed triangle by triangle
+/// (corners relative to one origin, for the digits): six times the signed volume, twice the
+/// area, and the extent. A flat part, a double-sided sheet (6|V| ≤ 1e-6 · 2A · diagonal:
+/// thinner than a millionth of its size), encloses nothing and faces neither way; its sign
+/// is the rounding's (the fills closed one in 2CylinderEngine.glb, which `check --problems`
+/// called inside out while repair, from another origin, left it). Orienting, the fills' turn
+/// and the Problems panel all decide by this.
+struct Enclosure {
+    double six_volume = 0.0;
+    double twice_area = 0.0;
+    BoundingBox box;
+
+    void add(const Vec3& a, const Vec3& b, const Vec3& c) {
+        const Vec3 n = cross(b - a, c - a);
+        six_volume += dot(a, cross(b, c));
+        twice_area += norm(n);
+        box.add(a);
+        box.add(b);
+        box.add(c);
+    }
+    bool faces_inward() const { return six_volume < -1e-6 * twice_area * box.diagonal(); }
+};
+
 /// The merge distance `tolerance` names for the vertices faces use.
 double merge_distance(const PolygonSoup& soup, const MergeTolerance& tolerance);
 

@@ -12,7 +12,9 @@
 #include "meshedit/core/build.h"
 #include "meshedit/core/local_ops.h"
 #include "meshedit/core/shapes.h"
+#include "meshedit/repair/repair.h"
 #include "support/fixtures.h"
+#include "support/mesh_compare.h"
 
 namespace meshedit::test {
 namespace {
@@ -110,6 +112,31 @@ TEST(Problems, InsideOutSmallAndDegenerateParts) {
         EXPECT_LE(r.problems[i - 1].kind, r.problems[i].kind);
     }
     EXPECT_EQ(r.summary(), "2 holes, 1 degenerate face, 1 part inside out, 2 small parts");
+}
+
+// A double-sided square (two triangles up, two down, across the other diagonal): closed, and
+// it encloses nothing, so it faces neither way, whichever way its fourth corner's rounding
+// bends it (the fills closed one in 2CylinderEngine.glb that was called inside out). Bent
+// by a tenth of its side it has an inside, and the inward one is named. Orienting (repair's
+// step) leaves the flat one as it is.
+TEST(Problems, AFlatClosedSheetIsNotInsideOut) {
+    for (const double bend : {1e-9, -1e-9, 0.1, -0.1}) {
+        SCOPED_TRACE(bend);
+        PolygonSoup soup;
+        soup.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, bend}};
+        soup.add_face({0, 1, 2});
+        soup.add_face({0, 2, 3});
+        soup.add_face({1, 0, 3});
+        soup.add_face({1, 3, 2});
+        const Mesh mesh = build_mesh(soup);
+        ASSERT_VALID(mesh);
+        // Bent up, the down faces' diagonal (1–3) rises above the up faces' (0–2): inward.
+        const bool inward = bend == 0.1;
+        EXPECT_EQ(count(find_problems(mesh, nullptr), ProblemKind::InsideOut), inward ? 1u : 0u);
+        MeshSoup ms;
+        ms.soup = soup;
+        EXPECT_EQ(orient_faces(ms).count, inward ? 4u : 0u);
+    }
 }
 
 TEST(Problems, TheLoadersCutsAreListedWithTheirVertices) {
