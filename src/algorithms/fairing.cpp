@@ -161,10 +161,57 @@ double mixed_area(const Mesh& mesh, Vertex v) {
     return area;
 }
 
+// Whether each piece of the free vertices (the first x.rows() of `order`, joined by K's
+// entries `start`/`col`) solved within half a diagonal of the box of the fixed vertices its
+// rows read.
+bool within_reach(const Mesh& mesh, const std::vector<Vertex>& order,
+                  const std::vector<std::size_t>& start, const std::vector<std::int64_t>& col,
+                  const Eigen::MatrixX3d& x) {
+    const auto n_free = static_cast<std::size_t>(x.rows());
+    std::vector<std::size_t> piece(n_free);
+    for (std::size_t i = 0; i < n_free; ++i) {
+        piece[i] = i;
+    }
+    const auto root = [&](std::size_t i) {
+        while (piece[i] != i) {
+            i = piece[i] = piece[piece[i]];
+        }
+        return i;
+    };
+    for (std::size_t i = 0; i < n_free; ++i) {
+        for (std::size_t e = start[i]; e < start[i + 1]; ++e) {
+            if (static_cast<std::size_t>(col[e]) < n_free) {
+                piece[root(i)] = root(static_cast<std::size_t>(col[e]));
+            }
+        }
+    }
+    std::vector<BoundingBox> around(n_free);  // by root
+    for (std::size_t i = 0; i < n_free; ++i) {
+        for (std::size_t e = start[i]; e < start[i + 1]; ++e) {
+            const auto j = static_cast<std::size_t>(col[e]);
+            if (j >= n_free) {
+                around[root(i)].add(mesh.position(order[j]));
+            }
+        }
+    }
+    for (std::size_t i = 0; i < n_free; ++i) {
+        const BoundingBox& box = around[root(i)];
+        const Vec3 p{x(static_cast<Eigen::Index>(i), 0), x(static_cast<Eigen::Index>(i), 1),
+                     x(static_cast<Eigen::Index>(i), 2)};
+        const Vec3 below = box.min - p, above = p - box.max;
+        if (std::max({below.x, below.y, below.z, above.x, above.y, above.z}) >
+            0.5 * box.diagonal()) {
+            return false;
+        }
+    }
+    return true;
+}
+
 // Solves the free rows of K D⁻¹ K x = 0 for the first `n_free` vertices of `order` (then its
 // first ring up to `n_rows`, then the second ring; `local` numbers them). False when the
 // factorisation fails or the result is not finite (cotangent weights all clamped to 0 around a
-// vertex, a degenerate triangle): the caller tries uniform weights.
+// vertex, a degenerate triangle) or, for cotangent weights, lands far outside the fixed
+// vertices around it (within_reach()): the caller tries uniform weights.
 bool solve(const Mesh& mesh, const std::vector<Vertex>& order, const LocalIndex& local,
            std::size_t n_free, std::size_t n_rows, SmoothWeights weights, Eigen::MatrixX3d& x) {
     // K's rows, compressed: row i's entries are [start[i], start[i + 1]) of col and val.
@@ -234,7 +281,18 @@ bool solve(const Mesh& mesh, const std::vector<Vertex>& order, const LocalIndex&
         return false;
     }
     x = solver.solve(rhs);
-    return solver.info() == Eigen::Success && x.allFinite();
+    if (solver.info() != Eigen::Success || !x.allFinite()) {
+        return false;
+    }
+    // Cotangent weights over areas are only as well conditioned as the triangles: near-flat
+    // ones around a hole (assimp's regr01.obj) put new vertices 10⁹ away. A patch (a piece
+    // of the free vertices) reaches past the box of the fixed vertices around it by a
+    // fraction of that box (a sphere's cap cut at its equator: a fifth of its diagonal);
+    // past half of it is a failed solve, and the caller takes uniform weights.
+    if (weights == SmoothWeights::Cotangent && !within_reach(mesh, order, start, col, x)) {
+        return false;
+    }
+    return true;
 }
 
 }  // namespace

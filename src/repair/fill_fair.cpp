@@ -101,9 +101,12 @@ struct Filler {
         const auto keeps_four = [&](Vertex v) {
             return v.idx() < first_vertex || mesh.valence(v) > 4;
         };
+        // Nor onto a flat triangle (c, d and an end on a line), as CGAL's flippable().
+        const double flat = 1e-12 * sqrnorm(c - d);
         return sum < -1e-9 * (std::abs(dot_c) * sin_d + std::abs(dot_d) * sin_c) &&
                norm(c - d) > touching && keeps_four(mesh.from_vertex(h)) &&
-               keeps_four(mesh.to_vertex(h));
+               keeps_four(mesh.to_vertex(h)) && norm(cross(d - c, a - c)) > flat &&
+               norm(cross(d - c, b - c)) > flat;
     }
 
     // Flips the patch's inner edges that are not Delaunay until none is, or a bound of
