@@ -155,7 +155,7 @@ struct Filler {
 
     // Dissolves the new vertices (index from `first_vertex` on) that kept three edges, each
     // into the triangle of its neighbours. \return how many.
-    std::size_t dissolve_threes(std::size_t first_vertex) {
+    std::size_t dissolve_threes() {
         std::size_t gone = 0;
         for (std::size_t vi = first_vertex; vi < mesh.vertices_size(); ++vi) {
             const Vertex v(static_cast<std::uint32_t>(vi));
@@ -356,7 +356,7 @@ RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
         filled_edges += n;
         note_first(result, corner[0].idx());
     }
-    if (const std::size_t gone = added > 0 ? filler.dissolve_threes(first_vertex) : 0; gone > 0) {
+    if (const std::size_t gone = added > 0 ? filler.dissolve_threes() : 0; gone > 0) {
         added -= gone;
         filler.relax(first_face);
     }

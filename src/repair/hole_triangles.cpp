@@ -248,11 +248,21 @@ HoleTriangles clipped_ears(const HoleLoop& hole, bool strict) {
     }
     std::size_t left = n;
     std::vector<Entry> blocked;
+    // Strict: the corners tested against ears so far. Blocked corners are tried again after
+    // every clip, each test O(left): an outline with many reflex corners (a comb) could
+    // take O(n³); past this bound the strict clipping gives up, and the caller falls back.
+    std::size_t tested = 0;
+    constexpr std::size_t kMostTested = 50'000'000;
     while (left > 3 && !queue.empty()) {
         const auto [angle, c, ver] = queue.top();
         queue.pop();
         if (ver != version[c]) {
             continue;
+        }
+        if (strict && (tested += left) > kMostTested) {
+            out.triangles.clear();
+            out.why = "clipping its ears in its plane took too long (a comb-like outline)";
+            return out;
         }
         const std::uint32_t a = prev[c], b = next[c];
         const bool thin = norm(cross(p[c] - p[a], p[b] - p[a])) <=
