@@ -143,7 +143,9 @@ def job_title(job):
                 "cotangent weights), the fill call alone timed. Of the patch: `hausdorff_pct`, "
                 "the symmetric Hausdorff distance to the faces cut away (100,000 points sampled "
                 "by area on each side), `patch_to_original_pct` the patch's side alone, in % of "
-                "the scan's bounding-box diagonal; `min_angle_deg`, `patch_faces`, "
+                "the scan's bounding-box diagonal; `bounded_hausdorff_pct` and "
+                "`bounded_patch_to_original_pct` the same by CGAL's bounded-error Hausdorff "
+                "distance (within 0.1% of the true one); `min_angle_deg`, `patch_faces`, "
                 "`patch_vertices` (new), `faired`")
     m = re.fullmatch(r"loop_100k_levels_(\d+)", job)
     if m:

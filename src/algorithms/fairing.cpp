@@ -34,20 +34,43 @@ using LocalIndex = std::unordered_map<std::uint32_t, std::int64_t>;
 
 // The region's inner vertices: every face around them in the region, not on the boundary.
 std::vector<Vertex> inner_vertices(const Mesh& mesh, std::span<const Face> region) {
-    IndexSet in_region(region.size());
+    // Membership of the region's faces: flags over the span of their indices when it is
+    // compact (a fill's patch: the faces it appended), else a hash set.
+    std::uint32_t lo = UINT32_MAX, hi = 0;
     for (const Face f : region) {
-        in_region.insert(f.idx());
+        lo = std::min(lo, f.idx());
+        hi = std::max(hi, f.idx());
     }
-    IndexSet seen(region.size());
+    const bool compact = !region.empty() && hi - lo < 4 * region.size() + 64;
+    std::vector<std::uint8_t> flags(compact ? hi - lo + 1 : 0, 0);
+    IndexSet in_set(compact ? 0 : region.size());
+    for (const Face f : region) {
+        if (compact) {
+            flags[f.idx() - lo] = 1;
+        } else {
+            in_set.insert(f.idx());
+        }
+    }
+    const auto in_region = [&](Face f) {
+        if (!f.is_valid()) {
+            return false;
+        }
+        if (compact) {
+            return f.idx() >= lo && f.idx() <= hi && flags[f.idx() - lo] != 0;
+        }
+        return in_set.contains(f.idx());
+    };
+    // Each vertex is looked at once, from the face of its anchor (mesh.halfedge(v)): when
+    // that face is outside the region, the vertex is not inner. Boundary vertices never are.
     std::vector<Vertex> inner;
     for (const Face f : region) {
         for (const Vertex v : mesh.vertices(f)) {
-            if (!seen.insert(v.idx()).second) {
+            if (mesh.is_boundary(v) || mesh.face(mesh.halfedge(v)) != f) {
                 continue;
             }
-            bool all = !mesh.is_boundary(v);
+            bool all = true;
             for (const Halfedge h : mesh.halfedges(v)) {
-                all = all && in_region.contains(mesh.face(h).idx());
+                all = all && in_region(mesh.face(h));
             }
             if (all) {
                 inner.push_back(v);

@@ -72,11 +72,24 @@ double mean_edge_length(const Mesh& mesh, Vertex v) {
 struct Filler {
     Mesh& mesh;
     const FairFillOptions& options;
-    // By vertex index: the edge length wanted at a corner or new vertex of a patch (a map,
-    // not an array over the mesh, so that a small hole costs its own size).
-    std::unordered_map<std::uint32_t, double> sigma;
-    double touching = 0.0;         // corners closer than this are one point to repair()
-    std::size_t first_vertex = 0;  // the new vertices' indices start here
+    // The edge length wanted at a hole's corner (by vertex index: a map, not an array over
+    // the mesh, so that a small hole costs its own size); new vertices' in new_sigma.
+    std::unordered_map<std::uint32_t, double> corner_sigma;
+    double touching = 0.0;          // corners closer than this are one point to repair()
+    std::size_t first_vertex = 0;   // the new vertices' indices start here
+    std::vector<double> new_sigma;  // of the new vertices, from first_vertex on (most lookups)
+    std::vector<Halfedge> sides;    // relax_around()'s scratch
+
+    double& sigma(Vertex v) {
+        if (v.idx() < first_vertex) {
+            return corner_sigma[v.idx()];
+        }
+        const std::size_t i = v.idx() - first_vertex;
+        if (i >= new_sigma.size()) {
+            new_sigma.resize(std::max(2 * new_sigma.size(), i + 1), 0.0);
+        }
+        return new_sigma[i];
+    }
 
     bool in_patch(Face f, std::size_t first) const { return f.is_valid() && f.idx() >= first; }
 
@@ -142,7 +155,7 @@ struct Filler {
     // Flips the sides of the triangle poked into v toward Delaunay (Liepa's and CGAL's
     // refinement do it at each poke: the patch's next pokes then see rounder triangles).
     void relax_around(Vertex v, std::size_t first) {
-        std::vector<Halfedge> sides;  // collected first: a flip changes v's ring
+        sides.clear();  // collected first: a flip changes v's ring
         for (const Halfedge h : mesh.halfedges(v)) {
             sides.push_back(mesh.next(h));
         }
@@ -184,12 +197,12 @@ struct Filler {
                 const Vec3 c = face_centroid(mesh, f);
                 double sc = 0.0;
                 for (const Vertex v : mesh.vertices(f)) {
-                    sc += sigma[v.idx()] / 3.0;
+                    sc += sigma(v) / 3.0;
                 }
                 bool split = true;
                 for (const Vertex v : mesh.vertices(f)) {
                     const double d = options.density * norm(c - mesh.position(v));
-                    split = split && d > sc && d > sigma[v.idx()];
+                    split = split && d > sc && d > sigma(v);
                 }
                 if (!split) {
                     continue;
@@ -202,7 +215,7 @@ struct Filler {
                 if (!v) {
                     continue;
                 }
-                sigma[(*v).idx()] = sc;
+                sigma(*v) = sc;
                 relax_around(*v, first);
                 ++poked;
                 if (++added >= kMaxNewVertices) {
@@ -223,10 +236,19 @@ struct Filler {
 // closer corners are one point to repair().
 double touching_distance(const Mesh& mesh) {
     Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    for (const Vertex v : mesh.vertices()) {
-        const Vec3 p = mesh.position(v);
+    const auto add = [&](const Vec3& p) {
         lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
         hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    };
+    if (mesh.n_vertices() == mesh.vertices_size()) {
+        // Nothing deleted: one pass over the positions' array, no deleted flags read.
+        for (const Vec3& p : mesh.position_vector()) {
+            add(p);
+        }
+    } else {
+        for (const Vertex v : mesh.vertices()) {
+            add(mesh.position(v));
+        }
     }
     return MergeTolerance{}.value * (mesh.n_vertices() > 0 ? norm(hi - lo) : 0.0);
 }
@@ -295,7 +317,7 @@ RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
             corner[i] = mesh.from_vertex(sides[i]);
             hole.points.push_back(mesh.position(corner[i]));
             hole.outside_normals.push_back(face_normal(mesh, mesh.face(Mesh::twin(sides[i]))));
-            filler.sigma[corner[i].idx()] = mean_edge_length(mesh, corner[i]);
+            filler.sigma(corner[i]) = mean_edge_length(mesh, corner[i]);
         }
         if (repeats_a_face(mesh, corner)) {
             why.push_back("a hole of 3 edges at vertex " + std::to_string(corner[0].idx()) +
@@ -370,10 +392,12 @@ RepairResult fill_loops(Mesh& mesh, const FairFillOptions& options,
             }
         }
         FairOptions fo;  // cotangent weights where the faces the solve reads are triangles
-        if (!check_fair(mesh, region, fo)) {
+        OpStatus ok = check_fair(mesh, region, fo);
+        if (!ok) {
             fo.weights = SmoothWeights::Uniform;  // polygons beside the holes
+            ok = check_fair(mesh, region, fo);
         }
-        if (const OpStatus ok = check_fair(mesh, region, fo); ok) {
+        if (ok) {
             faired = fair(mesh, region, fo).moved;
             filler.relax(first_face);  // Delaunay on the faired shape
         } else {
